@@ -1,0 +1,45 @@
+# Finds every dependency; a missing one stops configuration with the Debian package to
+# install. scripts/install-deps.sh installs all of them.
+
+find_package(PkgConfig REQUIRED)
+
+macro(plumbago_require name package)
+  find_package(${name} CONFIG QUIET ${ARGN})
+  if(NOT ${name}_FOUND)
+    message(FATAL_ERROR "Plumbago needs ${name}: install the Debian package '${package}' "
+                        "(or run scripts/install-deps.sh).")
+  endif()
+endmacro()
+
+plumbago_require(glm libglm-dev)
+plumbago_require(nlohmann_json nlohmann-json3-dev)
+plumbago_require(TBB libtbb-dev)
+plumbago_require(OpenImageIO libopenimageio-dev)
+plumbago_require(OpenMesh libopenmesh-dev)
+plumbago_require(Eigen3 libeigen3-dev)
+plumbago_require(embree libembree-dev)
+plumbago_require(CLI11 libcli11-dev)
+plumbago_require(GTest "libgtest-dev libgmock-dev")
+plumbago_require(benchmark libbenchmark-dev)
+
+set(CGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE TRUE)
+set(CGAL_DATA_DIR "${CMAKE_BINARY_DIR}")
+find_package(CGAL QUIET)
+if(NOT CGAL_FOUND)
+  message(FATAL_ERROR "Plumbago needs CGAL: install the Debian package 'libcgal-dev'.")
+endif()
+
+if(PLUMBAGO_GL STREQUAL "egl")
+  set(OpenGL_GL_PREFERENCE GLVND)
+  find_package(OpenGL QUIET COMPONENTS OpenGL EGL)
+  if(NOT TARGET OpenGL::OpenGL OR NOT TARGET OpenGL::EGL)
+    message(FATAL_ERROR "Plumbago's EGL build needs libOpenGL and libEGL: install the "
+                        "Debian packages 'libopengl-dev libegl-dev libgl-dev'.")
+  endif()
+else()
+  pkg_check_modules(OSMesa IMPORTED_TARGET osmesa)
+  if(NOT OSMesa_FOUND)
+    message(FATAL_ERROR "Plumbago's OSMesa build needs OSMesa: install the Debian package "
+                        "'libosmesa6-dev'.")
+  endif()
+endif()

@@ -1,0 +1,39 @@
+#include "common/camera.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace plumbago {
+
+glm::mat4 Camera::view() const { return glm::lookAt(eye, target, up); }
+
+glm::mat4 Camera::projection(float aspect) const {
+  return glm::perspective(glm::radians(fov_deg), aspect, near, far);
+}
+
+glm::vec3 Camera::forward() const { return glm::normalize(target - eye); }
+
+glm::vec3 Camera::ray_direction(float px, float py, int width, int height) const {
+  float tan_half = std::tan(glm::radians(fov_deg) * 0.5f);
+  float aspect = float(width) / float(height);
+  float x = (2.0f * px / float(width) - 1.0f) * tan_half * aspect;
+  float y = (2.0f * py / float(height) - 1.0f) * tan_half;
+  glm::mat3 camera_to_world = glm::mat3(glm::inverse(view()));
+  return glm::normalize(camera_to_world * glm::vec3(x, y, -1.0f));
+}
+
+Camera fit_camera(glm::vec3 center, float radius, glm::vec3 direction, float fov_deg) {
+  Camera c;
+  c.fov_deg = fov_deg;
+  float distance = radius / std::sin(glm::radians(fov_deg) * 0.5f) * 1.05f;
+  c.target = center;
+  c.eye = center + glm::normalize(direction) * distance;
+  glm::vec3 d = glm::normalize(direction);
+  c.up = std::abs(d.y) > 0.99f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
+  c.near = std::max(distance - radius * 1.5f, distance * 0.01f);
+  c.far = distance + radius * 1.5f;
+  return c;
+}
+
+}  // namespace plumbago

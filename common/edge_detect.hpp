@@ -1,0 +1,25 @@
+// Edge detection (SPEC 2.2; Nienhaus & Döllner 2003 as given in Pacheco §2).
+//   I_n = clamp(1/2 (N_A.N_H + N_C.N_F), 0, 1)
+//   I_z = (1 - min(1, s/2 |z_A - z_H|))^2 (1 - min(1, s/2 |z_C - z_F|))^2
+//   contour darkness d = 1 - I_n I_z
+// Neighbors A (top-left) .. H (bottom-right) one pixel apart, clamp-to-edge outside.
+#pragma once
+
+namespace plumbago {
+
+enum class EdgeNormals { Interpolated, Face };
+
+struct EdgeDetectParams {
+  static constexpr const char* stage = "edge";
+  float depth_scale;
+  EdgeNormals normals;
+  template <class V>
+  void visit(V& v) {
+    v.real(depth_scale, "depth_scale", 50.0, 0.0, 10000.0,
+           "s in I_z: normalized-depth difference that darkens a contour (see docs/parameters.md)");
+    v.choice(normals, "normals", EdgeNormals::Interpolated, {"interpolated", "face"},
+             "normals compared by I_n: shading (interpolated) or geometric (face)");
+  }
+};
+
+}  // namespace plumbago

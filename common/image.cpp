@@ -1,0 +1,66 @@
+#include "common/image.hpp"
+
+#include <OpenImageIO/imageio.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+#include "common/output_file.hpp"
+
+namespace plumbago {
+
+namespace {
+
+// OpenImageIO stores the top row first; ours is the bottom row first.
+Image flipped(const Image& img) {
+  Image out(img.width, img.height, img.channels);
+  size_t row = size_t(img.width) * img.channels;
+  for (int y = 0; y < img.height; ++y)
+    std::copy_n(&img.data[size_t(y) * row], row, &out.data[size_t(img.height - 1 - y) * row]);
+  return out;
+}
+
+}  // namespace
+
+void write_image(const Image& img, const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  bool is_float = ext == ".exr";
+  if (!is_float && ext != ".png")
+    throw std::runtime_error(path + ": unsupported image extension '" + ext + "' (use .png or .exr)");
+  OutputFile file(path);
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) throw std::runtime_error(path + ": " + OIIO::geterror());
+  OIIO::ImageSpec spec(img.width, img.height, img.channels,
+                       is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+  Image top_first = flipped(img);
+  if (!out->open(file.temporary_path(), spec) ||
+      !out->write_image(OIIO::TypeDesc::FLOAT, top_first.data.data()) || !out->close())
+    throw std::runtime_error(path + ": " + out->geterror());
+  file.commit();
+}
+
+Image read_image(const std::string& path) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) throw std::runtime_error(path + ": " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  Image img(spec.width, spec.height, spec.nchannels);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.data.data()))
+    throw std::runtime_error(path + ": " + in->geterror());
+  return flipped(img);
+}
+
+Image channel(const Image& img, int c) {
+  Image out(img.width, img.height, 1);
+  for (size_t i = 0; i < img.pixels(); ++i) out.data[i] = img.data[i * img.channels + c];
+  return out;
+}
+
+bool has_non_finite(const Image& img) {
+  for (float v : img.data)
+    if (!std::isfinite(v)) return true;
+  return false;
+}
+
+}  // namespace plumbago

@@ -1,0 +1,41 @@
+// Images shared by both backends. Row 0 is the BOTTOM row (OpenGL window convention,
+// SPEC §0); files are flipped on write so they look right in a viewer.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace plumbago {
+
+template <class T>
+struct ImageT {
+  int width = 0, height = 0, channels = 0;
+  std::vector<T> data;  // row-major from the bottom row, channels interleaved
+
+  ImageT() = default;
+  ImageT(int w, int h, int c, T fill = T{}) : width(w), height(h), channels(c), data(size_t(w) * h * c, fill) {}
+
+  T& at(int x, int y, int c = 0) { return data[(size_t(y) * width + x) * channels + c]; }
+  const T& at(int x, int y, int c = 0) const { return data[(size_t(y) * width + x) * channels + c]; }
+  T* pixel(int x, int y) { return &data[(size_t(y) * width + x) * channels]; }
+  const T* pixel(int x, int y) const { return &data[(size_t(y) * width + x) * channels]; }
+  size_t pixels() const { return size_t(width) * height; }
+  bool empty() const { return data.empty(); }
+};
+
+using Image = ImageT<float>;
+using ImageU32 = ImageT<uint32_t>;
+
+// Writes PNG (8-bit, clamped to [0,1]) or EXR (float), chosen by extension, through
+// OpenImageIO. Writes to a temporary name and renames when complete, so a failure leaves
+// no partial file. Throws std::runtime_error naming the path.
+void write_image(const Image& img, const std::string& path);
+Image read_image(const std::string& path);  // float, bottom row first
+
+// One channel of `img` as a single-channel image.
+Image channel(const Image& img, int c);
+// Any NaN or Inf value?
+bool has_non_finite(const Image& img);
+
+}  // namespace plumbago

@@ -1,0 +1,32 @@
+// Interior shading parameters (SPEC 2.5). The G-buffer's Gouraud channel reads them.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "common/scene.hpp"
+
+namespace plumbago {
+
+enum class InteriorShading { Gouraud, Phong };
+
+struct InteriorParams {
+  static constexpr const char* stage = "interior";
+  float ambient, diffuse;
+  InteriorShading shading;
+  bool brightness_sqrt;
+  template <class V>
+  void visit(V& v) {
+    v.real(ambient, "ambient", 0.1, 0.0, 1.0, "ambient term k_a of the interior intensity (SPEC 2.5)");
+    v.real(diffuse, "diffuse", 0.9, 0.0, 4.0, "diffuse weight k_d of the interior intensity (SPEC 2.5)");
+    v.choice(shading, "shading", InteriorShading::Gouraud, {"gouraud", "phong"},
+             "interior intensity per vertex (Lee) or per pixel");
+    v.boolean(brightness_sqrt, "brightness_sqrt", true,
+              "brightness adjustment I' = sqrt(I) (Lee §5.2; Pacheco turns it off)");
+  }
+};
+
+// I = clamp(k_a + k_d sum_lights intensity * max(0, n.L)), n a unit world normal (SPEC 2.5).
+float lambert_intensity(glm::vec3 n, const std::vector<Light>& lights, const InteriorParams& p);
+
+}  // namespace plumbago

@@ -1,0 +1,66 @@
+#include "common/passes.hpp"
+
+#include <algorithm>
+#include <set>
+#include <stdexcept>
+
+namespace plumbago {
+
+const std::vector<PassDef>& pass_table() {
+  static const std::vector<PassDef> table = {
+      {"gbuffer", PassKind::Stage, {}, "G-buffer: normals, depth, ids, barycentrics, Gouraud (SPEC 2.1)"},
+      {"edge_detect", PassKind::Stage, {"gbuffer"}, "contour darkness from normal and depth discontinuities (SPEC 2.2)"},
+      {"compose", PassKind::Stage, {"edge_detect"}, "final image on white paper (SPEC 2.11)"},
+  };
+  return table;
+}
+
+const std::vector<EffectDef>& effect_table() {
+  static const std::vector<EffectDef> table = {
+      {"contours", {"edge_detect", "compose"}, "image-space contours (Lee 2006 §4)"},
+  };
+  return table;
+}
+
+bool is_effect(const std::string& name) {
+  const auto& t = effect_table();
+  return std::any_of(t.begin(), t.end(), [&](const EffectDef& e) { return e.name == name; });
+}
+
+std::string effect_names() {
+  std::string names;
+  for (const auto& e : effect_table()) names += (names.empty() ? "" : ", ") + e.name;
+  return names;
+}
+
+namespace {
+
+const PassDef& find_pass(const std::string& name) {
+  for (const auto& p : pass_table())
+    if (p.name == name) return p;
+  throw std::logic_error("pass table names an unknown pass '" + name + "'");
+}
+
+void add_with_needs(const std::string& name, std::set<std::string>& chosen) {
+  if (!chosen.insert(name).second) return;
+  for (const auto& n : find_pass(name).needs) add_with_needs(n, chosen);
+}
+
+}  // namespace
+
+std::vector<std::string> passes_for(const std::vector<std::string>& effects) {
+  std::set<std::string> chosen;
+  for (const auto& effect : effects) {
+    auto it = std::find_if(effect_table().begin(), effect_table().end(),
+                           [&](const EffectDef& e) { return e.name == effect; });
+    if (it == effect_table().end())
+      throw std::invalid_argument("unknown effect '" + effect + "' (known: " + effect_names() + ")");
+    for (const auto& p : it->passes) add_with_needs(p, chosen);
+  }
+  std::vector<std::string> ordered;
+  for (const auto& p : pass_table())
+    if (chosen.count(p.name)) ordered.push_back(p.name);
+  return ordered;
+}
+
+}  // namespace plumbago

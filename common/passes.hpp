@@ -1,0 +1,36 @@
+// The pass table (DESIGN.md principle 2): each effect names the passes it needs, each
+// pass names the passes it reads from; the pipeline runs exactly the closure, in table
+// order, on either backend.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace plumbago {
+
+enum class PassKind { Preprocessing, Stage };
+
+struct PassDef {
+  std::string name;
+  PassKind kind;
+  std::vector<std::string> needs;  // passes whose outputs this one reads
+  std::string doc;
+};
+
+struct EffectDef {
+  std::string name;
+  std::vector<std::string> passes;
+  std::string doc;
+};
+
+// Every pass, in an order where each comes after what it needs.
+const std::vector<PassDef>& pass_table();
+const std::vector<EffectDef>& effect_table();
+bool is_effect(const std::string& name);
+std::string effect_names();  // "contours, ..." for messages
+
+// The passes `effects` need, dependencies included, in table order. Throws
+// std::invalid_argument naming an unknown effect.
+std::vector<std::string> passes_for(const std::vector<std::string>& effects);
+
+}  // namespace plumbago

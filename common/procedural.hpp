@@ -1,0 +1,16 @@
+// Procedural meshes for the built-in scenes and the analytic test surfaces.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "common/mesh.hpp"
+
+namespace plumbago {
+
+// Kinds: "torus", "sphere", "cad" (a part with sharp creases next to smooth patches),
+// "plane", "cylinder". `resolution` scales the tessellation (1 = default).
+Mesh make_procedural(const std::string& kind, float resolution = 1.0f);
+std::vector<std::string> procedural_kinds();
+
+}  // namespace plumbago

@@ -1,0 +1,61 @@
+// Scenes: what to draw, from where, in which styles, with which effects and parameters.
+// The file format is documented in docs/scene-format.md and scenes/scene.schema.json.
+#pragma once
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "common/camera.hpp"
+#include "common/mesh.hpp"
+#include "common/params.hpp"
+
+namespace plumbago {
+
+enum class Style { Pencil, Sketchy, Shaded };
+
+struct SceneObject {
+  std::shared_ptr<const Mesh> mesh;
+  glm::mat4 transform{1.0f};  // object to world
+  Style style = Style::Pencil;
+  glm::vec3 color{1.0f};
+  bool flat = false;          // shading normals = face normals
+};
+
+struct Light {
+  glm::vec3 direction{0, 0, 1};  // world space, from the surface towards the light
+  float intensity = 1.0f;
+};
+
+struct Scene {
+  std::string source;  // scene file path or "builtin:<name>"
+  std::vector<SceneObject> objects;
+  Camera camera;
+  std::vector<Light> lights;
+  int width = 800, height = 800;
+  uint32_t seed = 1;
+  std::vector<std::string> effects{"contours"};
+  ParamSet params;
+};
+
+// A scene refused: the message names the file and the JSON path of the offending key.
+struct SceneError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Loads a scene file; relative mesh paths resolve against the scene file's folder.
+Scene load_scene(const std::string& path);
+// Parses scene JSON text; `source` names it in messages, `base_dir` resolves paths.
+Scene parse_scene(const std::string& json_text, const std::string& source, const std::string& base_dir);
+
+// Built-in procedural scenes (no files needed): "torus", "sphere", "cad".
+Scene builtin_scene(const std::string& name);
+std::vector<std::string> builtin_scene_names();
+
+// World-space bounding sphere of all objects.
+void scene_bounds(const Scene& scene, glm::vec3& center, float& radius);
+
+}  // namespace plumbago

@@ -1,0 +1,17 @@
+// The list of every stage's parameter struct, in pipeline order. Adding a stage's
+// struct here is all it takes for `plumbago params`, --set, scene files and the GLSL
+// declarations to know its parameters.
+#pragma once
+
+#include "common/edge_detect.hpp"
+#include "common/gbuffer.hpp"
+#include "common/interior.hpp"
+
+namespace plumbago {
+
+template <class... T>
+struct TypeList {};
+
+using AllParamStructs = TypeList<GBufferParams, EdgeDetectParams, InteriorParams>;
+
+}  // namespace plumbago
