@@ -1,0 +1,28 @@
+// plumbago: render, compare, inspect. See README.md and DESIGN.md "The command line".
+#include <cstdio>
+#include <exception>
+
+#include "apps/command.hpp"
+
+namespace plumbago {
+std::vector<CommandSetup>& command_registry() {
+  static std::vector<CommandSetup> registry;
+  return registry;
+}
+}  // namespace plumbago
+
+int main(int argc, char** argv) {
+  CLI::App app{"Plumbago: real-time pencil and sketch rendering, with a CPU reference for every stage"};
+  app.require_subcommand(1);
+  for (auto setup : plumbago::command_registry()) setup(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    int rc = app.exit(e);
+    return rc == 0 ? 0 : 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "plumbago: error: %s\n", e.what());
+    return 2;
+  }
+  return 0;
+}
