@@ -14,7 +14,12 @@ endmacro()
 plumbago_require(glm libglm-dev)
 plumbago_require(nlohmann_json nlohmann-json3-dev)
 plumbago_require(TBB libtbb-dev)
-plumbago_require(OpenImageIO libopenimageio-dev)
+# OpenImageIO through pkg-config: Debian's CMake config of it names /usr/include/opencv4,
+# which exists only when OpenCV's headers happen to be installed.
+pkg_check_modules(OpenImageIO IMPORTED_TARGET OpenImageIO)
+if(NOT OpenImageIO_FOUND)
+  message(FATAL_ERROR "Plumbago needs OpenImageIO: install the Debian package 'libopenimageio-dev'.")
+endif()
 plumbago_require(OpenMesh libopenmesh-dev)
 plumbago_require(Eigen3 libeigen3-dev)
 plumbago_require(embree libembree-dev)

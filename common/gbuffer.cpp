@@ -1,5 +1,6 @@
 #include "common/gbuffer.hpp"
 
+#include "common/frame.hpp"
 #include "common/interior.hpp"
 
 namespace plumbago {
@@ -28,6 +29,12 @@ WorldObject world_object(const SceneObject& obj, const std::vector<Light>& light
 
 }  // namespace
 
+glm::vec3 face_normal(const WorldObject& obj, size_t t) {
+  const glm::uvec3& tri = obj.triangles[t];
+  glm::vec3 p0 = obj.positions[tri[0]], p1 = obj.positions[tri[1]], p2 = obj.positions[tri[2]];
+  return unit_or_z(glm::cross(p1 - p0, p2 - p0));
+}
+
 std::vector<WorldObject> world_geometry(const Scene& scene) {
   InteriorParams ip = scene.params.get<InteriorParams>();
   std::vector<WorldObject> out;
@@ -39,6 +46,21 @@ Image normalized_depth(const GBuffer& g) {
   Image z(g.depth.width, g.depth.height, 1);
   for (size_t i = 0; i < z.pixels(); ++i) z.data[i] = (g.depth.data[i] - g.near) / (g.far - g.near);
   return z;
+}
+
+}  // namespace plumbago
+
+namespace plumbago {
+
+void add_gbuffer_buffers(const GBuffer& g, std::map<std::string, Image>& out) {
+  out["gbuffer.normal"] = g.normal;
+  out["gbuffer.face_normal"] = g.face_normal;
+  out["gbuffer.depth"] = normalized_depth(g);
+  out["gbuffer.bary"] = g.bary;
+  out["gbuffer.gouraud"] = g.gouraud;
+  Image ids(g.ids.width, g.ids.height, 2);
+  for (size_t i = 0; i < g.ids.data.size(); ++i) ids.data[i] = float(g.ids.data[i]);
+  out["gbuffer.ids"] = ids;
 }
 
 }  // namespace plumbago

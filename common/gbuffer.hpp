@@ -45,6 +45,10 @@ struct WorldObject {
 
 std::vector<WorldObject> world_geometry(const Scene& scene);
 
+// Unit geometric normal of triangle t, normalize(cross(p1 - p0, p2 - p0)); (0,0,1) for a
+// zero-area triangle, never NaN.
+glm::vec3 face_normal(const WorldObject& obj, size_t t);
+
 // Normalized depth z = (d - near) / (far - near): 1 for background (SPEC §0).
 Image normalized_depth(const GBuffer& g);
 

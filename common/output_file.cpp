@@ -13,9 +13,10 @@ OutputFile::OutputFile(std::string path) : path_(std::move(path)) {
   fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
   if (!fs::is_directory(dir))
     throw std::runtime_error(path_ + ": folder '" + dir.string() + "' does not exist");
-  temporary_ = (dir / ("." + p.stem().string() + ".partial-" + std::to_string(::getpid()) +
-                       p.extension().string()))
-                   .string();
+  std::string name = p.stem().string();
+  name.insert(0, 1, '.');
+  name.append(".partial-").append(std::to_string(::getpid())).append(p.extension().string());
+  temporary_ = (dir / name).string();
 }
 
 OutputFile::~OutputFile() {

@@ -3,6 +3,7 @@
 // declarations to know its parameters.
 #pragma once
 
+#include "common/compose.hpp"
 #include "common/edge_detect.hpp"
 #include "common/gbuffer.hpp"
 #include "common/interior.hpp"
@@ -12,6 +13,6 @@ namespace plumbago {
 template <class... T>
 struct TypeList {};
 
-using AllParamStructs = TypeList<GBufferParams, EdgeDetectParams, InteriorParams>;
+using AllParamStructs = TypeList<GBufferParams, EdgeDetectParams, InteriorParams, ComposeParams>;
 
 }  // namespace plumbago

@@ -1,0 +1,51 @@
+#include "apps/scene_options.hpp"
+
+#include <regex>
+#include <stdexcept>
+
+namespace plumbago {
+
+const char* const kDefaultBuiltinScene = "cad";
+
+void SceneOptions::add_to(CLI::App* cmd, bool scene_required) {
+  auto* opt = cmd->add_option("scene", scene, "Scene file (JSON), or builtin:NAME (torus, sphere, cad)");
+  if (scene_required) opt->required();
+  cmd->add_option("--size", size, "Image size WxH (overrides the scene's resolution)");
+  cmd->add_option("--set", assignments, "Override a parameter: stage.name=value (see `plumbago params`)");
+}
+
+namespace {
+
+void apply_size(const std::string& size, Scene& scene) {
+  std::smatch m;
+  if (!std::regex_match(size, m, std::regex(R"((\d{1,5})x(\d{1,5}))")))
+    throw std::invalid_argument("--size: '" + size + "' is not WxH (e.g. 800x800)");
+  int w = std::stoi(m[1]), h = std::stoi(m[2]);
+  if (w < 1 || h < 1 || w > 16384 || h > 16384)
+    throw std::invalid_argument("--size: " + size + " is out of range (1..16384 each)");
+  scene.width = w;
+  scene.height = h;
+}
+
+}  // namespace
+
+Scene SceneOptions::load() const {
+  Scene s;
+  if (scene.empty())
+    s = builtin_scene(kDefaultBuiltinScene);
+  else if (scene.rfind("builtin:", 0) == 0)
+    s = builtin_scene(scene.substr(8));
+  else
+    s = load_scene(scene);
+  if (!size.empty()) apply_size(size, s);
+  for (const auto& a : assignments) {
+    try {
+      s.params.set_assignment(a);
+    } catch (const ParamError& e) {
+      throw ParamError(std::string("--set: ") + e.what());
+    }
+  }
+  return s;
+}
+
+}  // namespace plumbago

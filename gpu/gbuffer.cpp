@@ -1,0 +1,148 @@
+#include "gpu/gbuffer.hpp"
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace plumbago::gpu {
+
+namespace {
+
+// One vertex of the triangle soup; the layout matches shaders/gbuffer.vert.
+struct Corner {
+  glm::vec3 position, normal, face_normal, corner;
+  float gouraud;
+};
+
+std::vector<Corner> triangle_soup(const WorldObject& obj) {
+  static const glm::vec3 unit[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  std::vector<Corner> soup;
+  soup.reserve(obj.triangles.size() * 3);
+  for (size_t t = 0; t < obj.triangles.size(); ++t) {
+    glm::vec3 fn = face_normal(obj, t);
+    for (int k = 0; k < 3; ++k) {
+      uint32_t v = obj.triangles[t][k];
+      soup.push_back({obj.positions[v], obj.flat ? fn : obj.normals[v], fn, unit[k], obj.gouraud[v]});
+    }
+  }
+  return soup;
+}
+
+void describe_attribute(GLuint vao, GLuint index, int size, size_t offset) {
+  glEnableVertexArrayAttrib(vao, index);
+  glVertexArrayAttribFormat(vao, index, size, GL_FLOAT, GL_FALSE, GLuint(offset));
+  glVertexArrayAttribBinding(vao, index, 0);
+}
+
+GLenum normal_storage(GBufferFormat f) {
+  switch (f) {
+    case GBufferFormat::RGBA16F: return GL_RGBA16F;
+    case GBufferFormat::RGBA8: return GL_RGBA8_SNORM;
+    default: return GL_RGBA32F;
+  }
+}
+
+}  // namespace
+
+GBufferTargets make_gbuffer_targets(int width, int height, GBufferFormat normal_format) {
+  GBufferTargets t;
+  t.normal = make_texture(width, height, normal_storage(normal_format));
+  t.face_normal = make_texture(width, height, normal_storage(normal_format));
+  t.depth = make_texture(width, height, GL_R32F);
+  t.ids = make_texture(width, height, GL_RG32UI);
+  t.bary = make_texture(width, height, GL_RGBA32F);
+  t.gouraud = make_texture(width, height, GL_R32F);
+  return t;
+}
+
+GBuffer download_gbuffer(const GBufferTargets& t) {
+  GBuffer g;
+  g.normal = download_texture(t.normal, 3);
+  g.face_normal = download_texture(t.face_normal, 3);
+  g.depth = download_texture(t.depth, 1);
+  g.ids = download_texture_u32(t.ids, 2);
+  g.bary = download_texture(t.bary, 3);
+  g.gouraud = download_texture(t.gouraud, 1);
+  g.near = t.near;
+  g.far = t.far;
+  return g;
+}
+
+GBufferTargets upload_gbuffer(const GBuffer& g) {
+  GBufferTargets t;
+  t.normal = upload_texture(g.normal, GL_RGBA32F);
+  t.face_normal = upload_texture(g.face_normal, GL_RGBA32F);
+  t.depth = upload_texture(g.depth, GL_R32F);
+  t.ids = make_texture(g.ids.width, g.ids.height, GL_RG32UI);
+  glTextureSubImage2D(t.ids.id(), 0, 0, 0, g.ids.width, g.ids.height, GL_RG_INTEGER, GL_UNSIGNED_INT,
+                      g.ids.data.data());
+  t.bary = upload_texture(g.bary, GL_RGBA32F);
+  t.gouraud = upload_texture(g.gouraud, GL_R32F);
+  t.near = g.near;
+  t.far = g.far;
+  return t;
+}
+
+GBufferPass::GBufferPass(const Scene& scene) : program_("gbuffer.vert", "gbuffer.frag"), fbo_(make_framebuffer()) {
+  for (const WorldObject& obj : world_geometry(scene)) {
+    std::vector<Corner> soup = triangle_soup(obj);
+    Batch b{make_buffer(soup.data(), soup.size() * sizeof(Corner)), make_vertex_array(), GLsizei(soup.size())};
+    GLuint vao = b.layout.id();
+    glVertexArrayVertexBuffer(vao, 0, b.vertices.id(), 0, sizeof(Corner));
+    describe_attribute(vao, 0, 3, offsetof(Corner, position));
+    describe_attribute(vao, 1, 3, offsetof(Corner, normal));
+    describe_attribute(vao, 2, 3, offsetof(Corner, face_normal));
+    describe_attribute(vao, 3, 3, offsetof(Corner, corner));
+    describe_attribute(vao, 4, 1, offsetof(Corner, gouraud));
+    batches_.push_back(std::move(b));
+  }
+}
+
+void GBufferPass::render(const Scene& scene, GBufferTargets& t) {
+  int w = t.width(), h = t.height();
+  if (w != depth_test_width_ || h != depth_test_height_) {
+    depth_test_ = make_renderbuffer(w, h, GL_DEPTH_COMPONENT32F);
+    depth_test_width_ = w;
+    depth_test_height_ = h;
+  }
+  GLuint fbo = fbo_.id();
+  const Texture* color[] = {&t.normal, &t.face_normal, &t.depth, &t.ids, &t.bary, &t.gouraud};
+  GLenum draw[6];
+  for (int i = 0; i < 6; ++i) {
+    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0 + i, color[i]->id(), 0);
+    draw[i] = GL_COLOR_ATTACHMENT0 + i;
+  }
+  glNamedFramebufferRenderbuffer(fbo, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_test_.id());
+  glNamedFramebufferDrawBuffers(fbo, 6, draw);
+
+  const Camera& cam = scene.camera;
+  t.near = cam.near;
+  t.far = cam.far;
+  const float zero[4] = {0, 0, 0, 0}, far[4] = {cam.far, 0, 0, 0}, white[4] = {1, 0, 0, 0}, one = 1;
+  const GLuint no_ids[4] = {0, 0, 0, 0};
+  glClearNamedFramebufferfv(fbo, GL_COLOR, 0, zero);
+  glClearNamedFramebufferfv(fbo, GL_COLOR, 1, zero);
+  glClearNamedFramebufferfv(fbo, GL_COLOR, 2, far);
+  glClearNamedFramebufferuiv(fbo, GL_COLOR, 3, no_ids);
+  glClearNamedFramebufferfv(fbo, GL_COLOR, 4, zero);
+  glClearNamedFramebufferfv(fbo, GL_COLOR, 5, white);
+  glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &one);
+
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glViewport(0, 0, w, h);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);
+  glUseProgram(program_.id());
+  glm::mat4 view = cam.view(), projection = cam.projection(float(w) / float(h));
+  glUniformMatrix4fv(program_.uniform("view"), 1, GL_FALSE, glm::value_ptr(view));
+  glUniformMatrix4fv(program_.uniform("projection"), 1, GL_FALSE, glm::value_ptr(projection));
+  for (size_t i = 0; i < batches_.size(); ++i) {
+    glUniform1ui(program_.uniform("object_id"), GLuint(i + 1));
+    glBindVertexArray(batches_[i].layout.id());
+    glDrawArrays(GL_TRIANGLES, 0, batches_[i].corners);
+  }
+  glBindVertexArray(0);
+  glDisable(GL_DEPTH_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+}  // namespace plumbago::gpu

@@ -1,0 +1,44 @@
+// Rasterized G-buffer (SPEC 2.1), the twin of reference/gbuffer.cpp.
+#pragma once
+
+#include <vector>
+
+#include "common/gbuffer.hpp"
+#include "gpu/gl_objects.hpp"
+#include "gpu/program.hpp"
+
+namespace plumbago::gpu {
+
+// The G-buffer's render targets, kept on the GPU for the stages that read them.
+struct GBufferTargets {
+  Texture normal, face_normal, depth, ids, bary, gouraud;
+  float near = 0, far = 1;
+  int width() const { return depth.width; }
+  int height() const { return depth.height; }
+};
+
+GBufferTargets make_gbuffer_targets(int width, int height, GBufferFormat normal_format);
+GBuffer download_gbuffer(const GBufferTargets& targets);
+// The reference's G-buffer on the GPU, so that a later stage gets identical inputs.
+GBufferTargets upload_gbuffer(const GBuffer& g);
+
+// Uploads a scene's geometry once; render() draws it into targets of any size.
+class GBufferPass {
+ public:
+  explicit GBufferPass(const Scene& scene);
+  void render(const Scene& scene, GBufferTargets& targets);
+
+ private:
+  struct Batch {
+    Buffer vertices;
+    VertexArray layout;
+    GLsizei corners = 0;
+  };
+  Program program_;
+  std::vector<Batch> batches_;  // one per object
+  Framebuffer fbo_;
+  Renderbuffer depth_test_;
+  int depth_test_width_ = 0, depth_test_height_ = 0;
+};
+
+}  // namespace plumbago::gpu

@@ -1,0 +1,85 @@
+#include "gpu/pipeline.hpp"
+
+#include <functional>
+#include <map>
+#include <stdexcept>
+
+#include "common/compose.hpp"
+#include "common/passes.hpp"
+#include "gpu/compose.hpp"
+#include "gpu/context.hpp"
+#include "gpu/edge_detect.hpp"
+#include "gpu/gbuffer.hpp"
+#include "gpu/timer.hpp"
+
+namespace plumbago::gpu {
+
+struct Renderer::State {
+  const Scene& scene;
+  std::vector<std::string> passes = passes_for(scene.effects);
+  GBufferPass gbuffer_pass{scene};
+  EdgeDetectPass edge_pass;
+  ComposePass compose_pass;
+  GBufferTargets gbuffer = make_gbuffer_targets(scene.width, scene.height,
+                                                scene.params.get<GBufferParams>().normal_format);
+  Texture contour_darkness = make_texture(scene.width, scene.height, GL_R32F);
+  Texture color = make_texture(scene.width, scene.height, GL_RGBA8);
+  PassTimer timer;
+
+  explicit State(const Scene& s) : scene(s) {}
+
+  void run(const std::string& pass) {
+    if (pass == "gbuffer") {
+      gbuffer_pass.render(scene, gbuffer);
+    } else if (pass == "edge_detect") {
+      edge_pass.run(gbuffer, scene.params.get<EdgeDetectParams>(), contour_darkness);
+    } else if (pass == "compose") {
+      compose_pass.run(contour_darkness, scene.params.get<ComposeParams>(), color);
+    } else {
+      throw std::runtime_error("pass '" + pass + "' is not implemented on the GPU backend");
+    }
+  }
+
+  void run_frame() {
+    for (const std::string& pass : passes) {
+      timer.begin(pass);
+      run(pass);
+      timer.end();
+      Context::get().check_errors(pass);
+    }
+    glFinish();
+  }
+};
+
+Renderer::Renderer(const Scene& scene) {
+  Context& context = Context::get();  // before any GL call
+  state_ = std::make_unique<State>(scene);
+  context.check_errors("setting up the GPU renderer");
+}
+
+Renderer::~Renderer() = default;
+
+double Renderer::render_only() {
+  Stopwatch watch;
+  state_->run_frame();
+  state_->timer.results();
+  return watch.ms();
+}
+
+Frame Renderer::render(const FrameOptions& options) {
+  Frame frame;
+  state_->run_frame();
+  frame.ran = state_->timer.results();
+  Stopwatch readback;
+  frame.color = download_texture(state_->color, 3);
+  frame.ran.push_back({"readback", readback.ms()});
+  if (options.keep_buffers) {
+    add_gbuffer_buffers(download_gbuffer(state_->gbuffer), frame.buffers);
+    frame.buffers["edge_detect.contour_darkness"] = download_texture(state_->contour_darkness, 1);
+    frame.buffers["compose.color"] = frame.color;
+  }
+  Context::get().check_errors("reading back the frame");
+  return frame;
+}
+
+}  // namespace plumbago::gpu

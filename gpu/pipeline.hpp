@@ -1,0 +1,29 @@
+// The GPU backend: runs the passes a scene's effects need (common/passes.hpp), keeping
+// every intermediate buffer in GPU memory. A frame ends with glFinish; per-pass times come
+// from GL timer queries.
+#pragma once
+
+#include <memory>
+
+#include "common/frame.hpp"
+#include "common/scene.hpp"
+
+namespace plumbago::gpu {
+
+class Renderer {
+ public:
+  // Uploads the scene's geometry and compiles the programs the scene's passes need.
+  explicit Renderer(const Scene& scene);
+  ~Renderer();
+  // Renders one frame and reads it back. `ran` holds GPU times per pass, plus
+  // "readback" (CPU wall time of downloading the image).
+  Frame render(const FrameOptions& options = {});
+  // Renders one frame without reading anything back; returns wall-clock ms to glFinish.
+  double render_only();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace plumbago::gpu

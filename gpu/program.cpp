@@ -1,0 +1,85 @@
+#include "gpu/program.hpp"
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace plumbago::gpu {
+
+namespace detail {
+std::string upper(std::string s) {
+  for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+}  // namespace detail
+
+namespace {
+
+std::string shader_dir() {
+  const char* env = std::getenv("PLUMBAGO_SHADER_DIR");
+  return env && *env ? env : PLUMBAGO_SHADER_DIR;
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read shader " + path + " (set PLUMBAGO_SHADER_DIR?)");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+GLuint compile(GLenum kind, const std::string& file, const std::string& prelude) {
+  std::string src = shader_source(file);
+  auto eol = src.find('\n');  // the #version line stays first
+  src = src.substr(0, eol + 1) + prelude + "#line 2\n" + src.substr(eol + 1);
+  GLuint s = glCreateShader(kind);
+  const char* text = src.c_str();
+  glShaderSource(s, 1, &text, nullptr);
+  glCompileShader(s);
+  GLint ok = 0;
+  glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char log[4096] = {};
+    glGetShaderInfoLog(s, sizeof log, nullptr, log);
+    glDeleteShader(s);
+    throw std::runtime_error("shader " + file + " does not compile:\n" + log);
+  }
+  return s;
+}
+
+}  // namespace
+
+std::string shader_source(const std::string& file) {
+  std::istringstream in(read_file(shader_dir() + "/" + file));
+  std::string out, line;
+  while (std::getline(in, line)) {
+    if (line.rfind("#include \"", 0) == 0) {
+      out += shader_source(line.substr(10, line.rfind('"') - 10));
+    } else {
+      out += line + "\n";
+    }
+  }
+  return out;
+}
+
+Program::Program(const std::string& vertex, const std::string& fragment, const std::string& prelude) {
+  GLuint vs = compile(GL_VERTEX_SHADER, vertex, prelude);
+  GLuint fs = compile(GL_FRAGMENT_SHADER, fragment, prelude);
+  GLuint p = glCreateProgram();
+  glAttachShader(p, vs);
+  glAttachShader(p, fs);
+  glLinkProgram(p);
+  glDeleteShader(vs);
+  glDeleteShader(fs);
+  name_ = GlName<detail::delete_program>(p);
+  GLint ok = 0;
+  glGetProgramiv(p, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[4096] = {};
+    glGetProgramInfoLog(p, sizeof log, nullptr, log);
+    throw std::runtime_error("program " + vertex + " + " + fragment + " does not link:\n" + log);
+  }
+}
+
+}  // namespace plumbago::gpu

@@ -1,0 +1,60 @@
+#include "reference/pipeline.hpp"
+
+#include <functional>
+#include <stdexcept>
+
+#include "common/compose.hpp"
+#include "common/edge_detect.hpp"
+#include "common/passes.hpp"
+#include "reference/compose.hpp"
+#include "reference/edge_detect.hpp"
+#include "reference/gbuffer.hpp"
+
+namespace plumbago::reference {
+
+namespace {
+
+// The buffers passes hand to each other within one frame.
+struct FrameState {
+  GBuffer gbuffer;
+  Image contour_darkness;
+  Image color;
+};
+
+using PassFn = std::function<void(const Scene&, FrameState&)>;
+
+const std::map<std::string, PassFn>& passes() {
+  static const std::map<std::string, PassFn> table = {
+      {"gbuffer", [](const Scene& s, FrameState& f) { f.gbuffer = trace_gbuffer(s, s.width, s.height); }},
+      {"edge_detect",
+       [](const Scene& s, FrameState& f) {
+         f.contour_darkness = contour_darkness(f.gbuffer, s.params.get<EdgeDetectParams>());
+       }},
+      {"compose",
+       [](const Scene& s, FrameState& f) { f.color = compose(f.contour_darkness, s.params.get<ComposeParams>()); }},
+  };
+  return table;
+}
+
+}  // namespace
+
+Frame render(const Scene& scene, const FrameOptions& options) {
+  FrameState state;
+  Frame frame;
+  for (const std::string& name : passes_for(scene.effects)) {
+    auto it = passes().find(name);
+    if (it == passes().end()) throw std::runtime_error("pass '" + name + "' is not implemented on the reference backend");
+    Stopwatch watch;
+    it->second(scene, state);
+    frame.ran.push_back({name, watch.ms()});
+  }
+  frame.color = state.color;
+  if (options.keep_buffers) {
+    add_gbuffer_buffers(state.gbuffer, frame.buffers);
+    frame.buffers["edge_detect.contour_darkness"] = state.contour_darkness;
+    frame.buffers["compose.color"] = state.color;
+  }
+  return frame;
+}
+
+}  // namespace plumbago::reference

@@ -1,0 +1,31 @@
+#version 450 core
+// G-buffer (SPEC 2.1). Perspective-correct interpolation gives the same barycentrics as
+// the ray tracer's hit coordinates; normals are normalized after interpolation.
+in vec3 v_normal;
+in vec3 v_face_normal;
+in vec3 v_bary;
+in float v_depth;
+in float v_gouraud;
+
+uniform uint object_id;  // object index + 1
+
+layout(location = 0) out vec4 out_normal;
+layout(location = 1) out vec4 out_face_normal;
+layout(location = 2) out float out_depth;
+layout(location = 3) out uvec2 out_ids;
+layout(location = 4) out vec4 out_bary;
+layout(location = 5) out float out_gouraud;
+
+vec3 unit_or_zero(vec3 v) {
+  float len = length(v);
+  return len > 0.0 ? v / len : vec3(0.0);
+}
+
+void main() {
+  out_normal = vec4(unit_or_zero(v_normal), 0.0);
+  out_face_normal = vec4(unit_or_zero(v_face_normal), 0.0);
+  out_depth = v_depth;
+  out_ids = uvec2(object_id, uint(gl_PrimitiveID));
+  out_bary = vec4(v_bary, 0.0);
+  out_gouraud = v_gouraud;
+}

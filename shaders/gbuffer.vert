@@ -1,0 +1,26 @@
+#version 450 core
+// G-buffer (SPEC 2.1): world-space triangle soup, one vertex per triangle corner.
+layout(location = 0) in vec3 position;     // world
+layout(location = 1) in vec3 normal;       // world, unit (shading)
+layout(location = 2) in vec3 face_normal;  // world, unit (geometric)
+layout(location = 3) in vec3 corner;       // (1,0,0), (0,1,0) or (0,0,1)
+layout(location = 4) in float gouraud;     // SPEC 2.5, per vertex
+
+uniform mat4 view;
+uniform mat4 projection;
+
+out vec3 v_normal;
+out vec3 v_face_normal;
+out vec3 v_bary;
+out float v_depth;
+out float v_gouraud;
+
+void main() {
+  vec4 view_position = view * vec4(position, 1.0);
+  gl_Position = projection * view_position;
+  v_normal = mat3(view) * normal;
+  v_face_normal = mat3(view) * face_normal;
+  v_bary = corner;
+  v_depth = -view_position.z;  // linear view depth d = -z_view (SPEC 0)
+  v_gouraud = gouraud;
+}
