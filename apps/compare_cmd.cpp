@@ -1,0 +1,72 @@
+// plumbago compare SCENE [--stages all|a,b] [--json] [--out DIR]
+// Exit code 0 when every stage passes, 1 when one fails, 2 on bad input.
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "apps/command.hpp"
+#include "apps/parity.hpp"
+#include "apps/scene_options.hpp"
+#include "common/visualize.hpp"
+#include "gpu/context.hpp"
+
+namespace plumbago {
+namespace {
+
+struct CompareOptions {
+  SceneOptions scene;
+  std::vector<std::string> stages;
+  std::string out_dir;
+  bool json = false;
+};
+
+void write_images(const std::vector<StageParity>& results, const std::string& dir) {
+  std::filesystem::create_directories(dir);
+  for (const auto& s : results) {
+    std::string base = (std::filesystem::path(dir) / s.name).string();
+    write_image(viewable(s.name, s.reference), base + ".reference.png");
+    write_image(viewable(s.name, s.gpu), base + ".gpu.png");
+    write_image(diff_heatmap(s.reference, s.gpu, s.diff.tolerance), base + ".diff.png");
+  }
+}
+
+void print(const std::vector<StageParity>& results, bool all_pass, bool json) {
+  if (json) {
+    nlohmann::json j{{"pass", all_pass}, {"renderer", gpu::Context::get().renderer()}, {"stages", nlohmann::json::array()}};
+    for (const auto& s : results)
+      j["stages"].push_back({{"name", s.name}, {"pass", s.pass}, {"max_abs", s.diff.max_abs}, {"rmse", s.diff.rmse},
+                             {"over_tolerance", s.diff.over_tolerance}, {"tolerance", s.diff.tolerance},
+                             {"compared_pixels", s.diff.compared}, {"note", s.note}});
+    std::printf("%s\n", j.dump(2).c_str());
+    return;
+  }
+  for (const auto& s : results)
+    std::printf("%s  %s  [%s]\n", s.pass ? "PASS" : "FAIL", format_diff(s.name, s.diff).c_str(), s.note.c_str());
+  std::printf("%s\n", all_pass ? "all stages agree" : "some stages disagree");
+}
+
+void run(const CompareOptions& o) {
+  Scene scene = o.scene.load();
+  std::vector<std::string> stages = o.stages;
+  if (stages.size() == 1 && stages[0] == "all") stages.clear();
+  auto results = run_parity(scene, stages);
+  bool all_pass = std::all_of(results.begin(), results.end(), [](const StageParity& s) { return s.pass; });
+  if (!o.out_dir.empty()) write_images(results, o.out_dir);
+  print(results, all_pass, o.json);
+  if (!all_pass) throw CLI::RuntimeError(1);
+}
+
+void setup(CLI::App& app) {
+  auto o = std::make_shared<CompareOptions>();
+  auto* cmd = app.add_subcommand("compare", "Run each stage on both backends with the same inputs and compare");
+  o->scene.add_to(cmd, true);
+  cmd->add_option("--stages", o->stages, "all, or a comma-separated list of stages")->delimiter(',');
+  cmd->add_flag("--json", o->json, "One JSON object: {pass, stages: [{name, pass, max_abs, rmse, ...}]}");
+  cmd->add_option("--out", o->out_dir, "Write each stage's reference, gpu and heat-map images into DIR");
+  cmd->callback([o] { run(*o); });
+}
+
+PLUMBAGO_COMMAND(setup);
+
+}  // namespace
+}  // namespace plumbago

@@ -1,0 +1,158 @@
+#include "apps/parity.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <stdexcept>
+
+#include "common/compose.hpp"
+#include "common/edge_detect.hpp"
+#include "common/gbuffer.hpp"
+#include "gpu/compose.hpp"
+#include "gpu/context.hpp"
+#include "gpu/edge_detect.hpp"
+#include "gpu/gbuffer.hpp"
+#include "reference/compose.hpp"
+#include "reference/edge_detect.hpp"
+#include "reference/gbuffer.hpp"
+
+namespace plumbago {
+
+namespace {
+
+// SPEC §5 tolerances.
+constexpr double kDepthTolerance = 1e-4;   // normalized depth, raster vs ray
+constexpr double kNormalTolerance = 1e-3;  // unit normals and barycentrics, raster vs ray
+constexpr double kFloatTolerance = 1e-4;   // a float stage fed identical inputs (measured ~1e-7)
+constexpr double kByteTolerance = 2.0 / 255.0;
+constexpr float kDepthJump = 0.01f;        // relative linear-depth step that makes a discontinuity
+
+bool across_discontinuity(const GBuffer& g, int x, int y, int nx, int ny) {
+  if (g.ids.at(x, y, 0) != g.ids.at(nx, ny, 0)) return true;
+  float d = g.depth.at(x, y), dn = g.depth.at(nx, ny);
+  return std::abs(d - dn) > kDepthJump * std::min(d, dn);
+}
+
+bool near_discontinuity(const GBuffer& g, int x, int y) {
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      int nx = std::clamp(x + dx, 0, g.depth.width - 1), ny = std::clamp(y + dy, 0, g.depth.height - 1);
+      if (across_discontinuity(g, x, y, nx, ny)) return true;
+    }
+  return false;
+}
+
+Image same_triangle(const GBuffer& a, const GBuffer& b, const Image& interior) {
+  Image m = interior;
+  for (int y = 0; y < m.height; ++y)
+    for (int x = 0; x < m.width; ++x)
+      if (a.ids.at(x, y, 1) != b.ids.at(x, y, 1)) m.at(x, y) = 0;
+  return m;
+}
+
+StageParity compared(std::string name, Image ref, Image gpu, double tol, const Image* mask, std::string note) {
+  StageParity s{std::move(name), compare_images(ref, gpu, tol, mask), false, std::move(ref), std::move(gpu), std::move(note)};
+  s.pass = s.diff.over_tolerance == 0;
+  return s;
+}
+
+double share(const Image& mask) {
+  double n = 0;
+  for (float v : mask.data) n += v > 0.5f;
+  return n / double(mask.pixels());
+}
+
+std::vector<StageParity> gbuffer_parity(const Scene& scene, const GBuffer& ref) {
+  gpu::GBufferTargets targets = gpu::make_gbuffer_targets(scene.width, scene.height, GBufferFormat::RGBA32F);
+  gpu::GBufferPass(scene).render(scene, targets);
+  GBuffer ras = gpu::download_gbuffer(targets);
+  gpu::Context::get().check_errors("gbuffer parity");
+  Image interior = interior_mask(ref, ras), triangle = same_triangle(ref, ras, interior);
+  Image covered(ref.ids.width, ref.ids.height, 1);
+  for (size_t i = 0; i < covered.pixels(); ++i) covered.data[i] = ref.ids.data[i * 2] || ras.ids.data[i * 2];
+  char band[160];
+  std::snprintf(band, sizeof band, "interior %.1f%% of the image; band excluded %.2f%% of the image",
+                100 * share(interior), 100 * (share(covered) - share(interior)));
+  return {
+      compared("gbuffer.depth", normalized_depth(ref), normalized_depth(ras), kDepthTolerance, &interior, band),
+      compared("gbuffer.normal", ref.normal, ras.normal, kNormalTolerance, &interior, band),
+      compared("gbuffer.face_normal", ref.face_normal, ras.face_normal, kNormalTolerance, &triangle,
+               "interior pixels that both backends give the same triangle"),
+      compared("gbuffer.bary", ref.bary, ras.bary, kNormalTolerance, &triangle,
+               "interior pixels that both backends give the same triangle"),
+      compared("gbuffer.gouraud", ref.gouraud, ras.gouraud, kNormalTolerance, &interior, band),
+  };
+}
+
+StageParity edge_parity(const Scene& scene, const GBuffer& ref) {
+  auto p = scene.params.get<EdgeDetectParams>();
+  gpu::GBufferTargets inputs = gpu::upload_gbuffer(ref);
+  gpu::Texture out = gpu::make_texture(scene.width, scene.height, GL_R32F);
+  gpu::EdgeDetectPass().run(inputs, p, out);
+  Image gpu_out = gpu::download_texture(out, 1);
+  gpu::Context::get().check_errors("edge_detect parity");
+  return compared("edge_detect", reference::contour_darkness(ref, p), gpu_out, kFloatTolerance, nullptr,
+                  "both fed the reference G-buffer; float target");
+}
+
+StageParity compose_parity(const Scene& scene, const GBuffer& ref) {
+  Image darkness = reference::contour_darkness(ref, scene.params.get<EdgeDetectParams>());
+  auto p = scene.params.get<ComposeParams>();
+  gpu::Texture in = gpu::upload_texture(darkness, GL_R32F);
+  gpu::Texture out = gpu::make_texture(scene.width, scene.height, GL_RGBA8);
+  gpu::ComposePass().run(in, p, out);
+  Image gpu_out = gpu::download_texture(out, 3);
+  gpu::Context::get().check_errors("compose parity");
+  return compared("compose", reference::compose(darkness, p), gpu_out, kByteTolerance, nullptr,
+                  "both fed the reference contour darkness; 8-bit target");
+}
+
+using ParityFn = std::function<std::vector<StageParity>(const Scene&, const GBuffer&)>;
+
+const std::vector<std::pair<std::string, ParityFn>>& parity_table() {
+  static const std::vector<std::pair<std::string, ParityFn>> table = {
+      {"gbuffer", gbuffer_parity},
+      {"edge_detect", [](const Scene& s, const GBuffer& g) { return std::vector{edge_parity(s, g)}; }},
+      {"compose", [](const Scene& s, const GBuffer& g) { return std::vector{compose_parity(s, g)}; }},
+  };
+  return table;
+}
+
+}  // namespace
+
+Image interior_mask(const GBuffer& a, const GBuffer& b) {
+  Image m(a.depth.width, a.depth.height, 1);
+  for (int y = 0; y < m.height; ++y)
+    for (int x = 0; x < m.width; ++x) {
+      bool hit = !a.background(x, y) && a.ids.at(x, y, 0) == b.ids.at(x, y, 0);
+      m.at(x, y) = hit && !near_discontinuity(a, x, y) && !near_discontinuity(b, x, y) ? 1.0f : 0.0f;
+    }
+  return m;
+}
+
+std::vector<std::string> parity_stages() {
+  std::vector<std::string> names;
+  for (const auto& [name, fn] : parity_table()) names.push_back(name);
+  return names;
+}
+
+std::vector<StageParity> run_parity(const Scene& scene, const std::vector<std::string>& stages) {
+  const auto known = parity_stages();
+  for (const auto& s : stages)
+    if (std::find(known.begin(), known.end(), s) == known.end()) {
+      std::string list;
+      for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+      throw std::invalid_argument("unknown stage '" + s + "' (known: " + list + ")");
+    }
+  gpu::Context::get();
+  GBuffer ref = reference::trace_gbuffer(scene, scene.width, scene.height);
+  std::vector<StageParity> out;
+  for (const auto& [name, fn] : parity_table()) {
+    if (!stages.empty() && std::find(stages.begin(), stages.end(), name) == stages.end()) continue;
+    for (auto& s : fn(scene, ref)) out.push_back(std::move(s));
+  }
+  return out;
+}
+
+}  // namespace plumbago

@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Builds Plumbago and runs the whole test suite: the EGL build (default) with ctest, then
+# the OSMesa build's GPU tests (same GPU code through the other GL platform).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+werror=${PLUMBAGO_WERROR:-OFF}
+BUILD_DIR=build scripts/build.sh -DPLUMBAGO_WERROR="$werror"
+(cd build && ctest --output-on-failure -j"$(nproc)" --timeout 900)
+BUILD_DIR=build-osmesa scripts/build.sh -DPLUMBAGO_GL=osmesa -DPLUMBAGO_WERROR="$werror"
+(cd build-osmesa && ctest --output-on-failure -j"$(nproc)" --timeout 900 -R "GlContext|Parity|Gl")

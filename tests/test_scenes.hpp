@@ -1,0 +1,43 @@
+// Scenes the tests share: the built-in ones and the shared models (skipped when absent).
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "common/scene.hpp"
+#include "gpu/context.hpp"
+
+namespace plumbago::testing {
+
+inline std::string model_path(const std::string& name) { return std::string(PLUMBAGO_MODELS_DIR) + "/" + name; }
+inline bool have_model(const std::string& name) { return std::filesystem::exists(model_path(name)); }
+
+// A one-object scene of a shared model, camera and lights fitted by the scene parser.
+inline Scene model_scene(const std::string& name, int width, int height) {
+  std::string json = "{\"mesh\": \"" + name + "\", \"resolution\": [" + std::to_string(width) + ", " +
+                     std::to_string(height) + "]}";
+  return parse_scene(json, "test:" + name, PLUMBAGO_MODELS_DIR);
+}
+
+inline Scene builtin_at(const std::string& name, int width, int height) {
+  Scene s = builtin_scene(name);
+  s.width = width;
+  s.height = height;
+  return s;
+}
+
+// Any GL error a test causes fails that test.
+class GlTest : public ::testing::Test {
+ protected:
+  void SetUp() override { gpu::Context::get(); }
+  void TearDown() override {
+    EXPECT_NO_THROW(gpu::Context::get().check_errors(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+  }
+};
+
+}  // namespace plumbago::testing
+
+#define PLUMBAGO_REQUIRE_MODEL(name) \
+  if (!::plumbago::testing::have_model(name)) GTEST_SKIP() << "../shared/models/" << (name) << " is not here"
