@@ -1,0 +1,123 @@
+// The command line as a user meets it: exit codes, messages naming file/line/key, and no
+// output file left behind by a failed run (DESIGN.md principle 7).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace plumbago {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Run {
+  int code;
+  std::string out, err;
+};
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("plumbago-cli-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  void write(const std::string& name, const std::string& text) const { std::ofstream(path(name)) << text; }
+  static std::string slurp(const std::string& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  }
+
+  Run run(const std::string& args) const {
+    std::string cmd = std::string(PLUMBAGO_CLI) + " " + args + " >" + path("stdout") + " 2>" + path("stderr");
+    int status = std::system(cmd.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(path("stdout")), slurp(path("stderr"))};
+  }
+
+  // Exit code 2, the message contains each of `needles`, no output image, no partial file.
+  void expect_refused(const std::string& args, std::initializer_list<std::string> needles) const {
+    Run r = run(args + " -o " + path("out.png"));
+    EXPECT_EQ(r.code, 2) << r.err;
+    for (const auto& n : needles) EXPECT_NE(r.err.find(n), std::string::npos) << "'" << n << "' not in: " << r.err;
+    for (const auto& e : fs::directory_iterator(dir_))
+      EXPECT_TRUE(e.path().filename() == "stdout" || e.path().filename() == "stderr" ||
+                  e.path().extension() == ".json" || e.path().extension() == ".obj")
+          << "left behind: " << e.path();
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(Cli, RendersTheBuiltinSceneAndReportsWhatRan) {
+  Run r = run("render --size 160x120 --stats --json -o " + path("out.png"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(path("out.png")));
+  auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j["ran"].is_array());
+  std::vector<std::string> ran;
+  for (const auto& p : j["ran"]) {
+    ran.push_back(p["name"]);
+    EXPECT_GE(p["ms"].get<double>(), 0.0);
+  }
+  EXPECT_NE(std::find(ran.begin(), ran.end(), "edge_detect"), ran.end());
+  EXPECT_FALSE(j["renderer"].get<std::string>().empty());
+}
+
+TEST_F(Cli, MissingSceneFile) { expect_refused("render " + path("nope.json"), {"nope.json"}); }
+
+TEST_F(Cli, MalformedSceneJsonNamesTheLine) {
+  write("bad.json", "{\n  \"mesh\": {\"procedural\": \"torus\"},\n  \"seed\": ,\n}\n");
+  expect_refused("render " + path("bad.json"), {"bad.json", "line 3"});
+}
+
+TEST_F(Cli, UnknownEffectNamesTheKey) {
+  write("fx.json", R"({"mesh": {"procedural": "torus"}, "effects": ["contours", "watercolor"]})");
+  expect_refused("render " + path("fx.json"), {"fx.json", "/effects/1", "watercolor"});
+}
+
+TEST_F(Cli, UnknownParameterOnTheCommandLine) {
+  expect_refused("render --set edge.depth_scal=3", {"edge.depth_scal", "edge.depth_scale"});
+}
+
+TEST_F(Cli, OutOfRangeParameterInASceneFile) {
+  write("p.json", R"({"mesh": {"procedural": "torus"}, "params": {"edge.depth_scale": -4}})");
+  expect_refused("render " + path("p.json"), {"p.json", "/params/edge.depth_scale", "out of range"});
+}
+
+TEST_F(Cli, NanCoordinatesNameTheMeshFileAndLine) {
+  write("nan.obj", "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n");
+  write("nan.json", R"({"mesh": "nan.obj"})");
+  expect_refused("render " + path("nan.json"), {"nan.obj", "3"});
+}
+
+TEST_F(Cli, BadSizeIsRefused) { expect_refused("render --size 0x10", {"--size"}); }
+
+TEST_F(Cli, CompareReportsEveryStageAsJson) {
+  Run r = run("compare builtin:torus --size 160x120 --json");
+  ASSERT_EQ(r.code, 0) << r.err << r.out;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["pass"].get<bool>());
+  ASSERT_GE(j["stages"].size(), 3u);
+  for (const auto& s : j["stages"])
+    for (const char* key : {"name", "pass", "max_abs", "rmse", "over_tolerance", "tolerance"})
+      EXPECT_TRUE(s.contains(key)) << key;
+}
+
+TEST_F(Cli, ParamsListsEveryStage) {
+  Run r = run("params");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* key : {"edge.depth_scale", "edge.normals", "compose.contrast"})
+    EXPECT_NE(r.out.find(key), std::string::npos) << key;
+  EXPECT_EQ(run("params nosuchstage").code, 2);
+}
+
+}  // namespace
+}  // namespace plumbago
