@@ -3,22 +3,32 @@
 //   I_z = (1 - min(1, s/2 |z_A - z_H|))^2 (1 - min(1, s/2 |z_C - z_F|))^2
 //   contour darkness d = 1 - I_n I_z
 // Neighbors A (top-left) .. H (bottom-right) one pixel apart, clamp-to-edge outside.
+//
+// Reading (docs/readings.md): background normals are (0,0,0), so taken literally every
+// background pixel has I_n = 0 and is drawn as contour. With `background_pairs =
+// continuous` (default) a pair of two background pixels counts as N.N = 1; a pair of an
+// object and a background pixel keeps N.N = 0, so silhouettes stay dark. `formula` is
+// the literal reading.
 #pragma once
 
 namespace plumbago {
 
 enum class EdgeNormals { Interpolated, Face };
+enum class BackgroundPairs { Continuous, Formula };
 
 struct EdgeDetectParams {
   static constexpr const char* stage = "edge";
   float depth_scale;
   EdgeNormals normals;
+  BackgroundPairs background_pairs;
   template <class V>
   void visit(V& v) {
-    v.real(depth_scale, "depth_scale", 50.0, 0.0, 10000.0,
+    v.real(depth_scale, "depth_scale", 10.0, 0.0, 10000.0,
            "s in I_z: normalized-depth difference that darkens a contour (see docs/parameters.md)");
     v.choice(normals, "normals", EdgeNormals::Interpolated, {"interpolated", "face"},
              "normals compared by I_n: shading (interpolated) or geometric (face)");
+    v.choice(background_pairs, "background_pairs", BackgroundPairs::Continuous, {"continuous", "formula"},
+             "N.N of two background pixels: 1 (continuous) or 0 as the zero normals give (formula)");
   }
 };
 

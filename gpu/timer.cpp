@@ -2,23 +2,26 @@
 
 namespace plumbago::gpu {
 
-void PassTimer::begin(const std::string& pass) {
+PassTimer::Query PassTimer::timestamp() {
   GLuint id = 0;
-  glCreateQueries(GL_TIME_ELAPSED, 1, &id);
-  queries_.push_back({pass, GlName<detail::delete_query>(id)});
-  glBeginQuery(GL_TIME_ELAPSED, id);
+  glCreateQueries(GL_TIMESTAMP, 1, &id);
+  glQueryCounter(id, GL_TIMESTAMP);
+  return Query(id);
 }
 
-void PassTimer::end() { glEndQuery(GL_TIME_ELAPSED); }
+void PassTimer::begin(const std::string& pass) { spans_.push_back({pass, timestamp(), Query()}); }
+
+void PassTimer::end() { spans_.back().stop = timestamp(); }
 
 std::vector<PassTime> PassTimer::results() {
   std::vector<PassTime> out;
-  for (const Query& q : queries_) {
-    GLuint64 ns = 0;
-    glGetQueryObjectui64v(q.name.id(), GL_QUERY_RESULT, &ns);
-    out.push_back({q.pass, double(ns) * 1e-6});
+  for (const Span& s : spans_) {
+    GLuint64 t0 = 0, t1 = 0;
+    glGetQueryObjectui64v(s.start.id(), GL_QUERY_RESULT, &t0);
+    glGetQueryObjectui64v(s.stop.id(), GL_QUERY_RESULT, &t1);
+    out.push_back({s.pass, double(t1 - t0) * 1e-6});
   }
-  queries_.clear();
+  spans_.clear();
   return out;
 }
 

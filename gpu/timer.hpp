@@ -1,4 +1,7 @@
-// GL timer queries (GL_TIME_ELAPSED) around each pass of a frame.
+// GPU time of each pass of a frame, from GL timestamp queries (glQueryCounter with
+// GL_TIMESTAMP) at the start and end of the pass.
+// (GL_TIME_ELAPSED is not used: llvmpipe on Mesa 22.3 answers the first elapsed-time
+// query around a freshly bound framebuffer with the time since boot.)
 #pragma once
 
 #include <string>
@@ -17,11 +20,13 @@ class PassTimer {
   std::vector<PassTime> results();
 
  private:
-  struct Query {
+  using Query = GlName<detail::delete_query>;
+  struct Span {
     std::string pass;
-    GlName<detail::delete_query> name;
+    Query start, stop;
   };
-  std::vector<Query> queries_;
+  static Query timestamp();
+  std::vector<Span> spans_;
 };
 
 }  // namespace plumbago::gpu

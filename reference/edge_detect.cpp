@@ -23,10 +23,16 @@ glm::vec3 normal_at(const Image& n, int x, int y) { return {n.at(x, y, 0), n.at(
 // z = (d - near) / (far - near) (SPEC 0).
 float normalized_depth_at(const GBuffer& g, int x, int y) { return (g.depth.at(x, y) - g.near) / (g.far - g.near); }
 
+// N_1.N_2, with the background reading of common/edge_detect.hpp.
+float normal_agreement(glm::vec3 n1, glm::vec3 n2, BackgroundPairs mode) {
+  bool both_background = glm::dot(n1, n1) == 0.0f && glm::dot(n2, n2) == 0.0f;
+  return both_background && mode == BackgroundPairs::Continuous ? 1.0f : glm::dot(n1, n2);
+}
+
 // I_n = clamp(1/2 (N_A.N_H + N_C.N_F), 0, 1)
-float normal_intensity(const Image& n, const Diagonals& d) {
-  float s = glm::dot(normal_at(n, d.ax, d.ay), normal_at(n, d.hx, d.hy)) +
-            glm::dot(normal_at(n, d.cx, d.cy), normal_at(n, d.fx, d.fy));
+float normal_intensity(const Image& n, const Diagonals& d, BackgroundPairs mode) {
+  float s = normal_agreement(normal_at(n, d.ax, d.ay), normal_at(n, d.hx, d.hy), mode) +
+            normal_agreement(normal_at(n, d.cx, d.cy), normal_at(n, d.fx, d.fy), mode);
   return std::clamp(0.5f * s, 0.0f, 1.0f);
 }
 
@@ -51,7 +57,7 @@ Image contour_darkness(const GBuffer& g, const EdgeDetectParams& p) {
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       Diagonals d = diagonals(x, y, w, h);
-      out.at(x, y) = 1.0f - normal_intensity(normals, d) * depth_intensity(g, d, p.depth_scale);
+      out.at(x, y) = 1.0f - normal_intensity(normals, d, p.background_pairs) * depth_intensity(g, d, p.depth_scale);
     }
   return out;
 }

@@ -12,6 +12,13 @@ ivec2 clamped(ivec2 p) { return clamp(p, ivec2(0), textureSize(depth, 0) - 1); }
 vec3 normal_at(ivec2 p) { return texelFetch(normals, clamped(p), 0).xyz; }
 float normalized_depth_at(ivec2 p) { return (texelFetch(depth, clamped(p), 0).r - near_plane) / (far_plane - near_plane); }
 
+// N_1.N_2; two background pixels (zero normals) count as continuous unless the
+// literal formula is asked for (common/edge_detect.hpp).
+float normal_agreement(vec3 n1, vec3 n2) {
+  bool both_background = dot(n1, n1) == 0.0 && dot(n2, n2) == 0.0;
+  return both_background && edge.background_pairs == EDGE_BACKGROUND_PAIRS_CONTINUOUS ? 1.0 : dot(n1, n2);
+}
+
 float depth_factor(float z1, float z2) {
   float f = 1.0 - min(1.0, 0.5 * edge.depth_scale * abs(z1 - z2));
   return f * f;
@@ -20,7 +27,7 @@ float depth_factor(float z1, float z2) {
 void main() {
   ivec2 x = ivec2(gl_FragCoord.xy);
   ivec2 a = x + ivec2(-1, 1), h = x + ivec2(1, -1), c = x + ivec2(1, 1), f = x + ivec2(-1, -1);
-  float i_n = clamp(0.5 * (dot(normal_at(a), normal_at(h)) + dot(normal_at(c), normal_at(f))), 0.0, 1.0);
+  float i_n = clamp(0.5 * (normal_agreement(normal_at(a), normal_at(h)) + normal_agreement(normal_at(c), normal_at(f))), 0.0, 1.0);
   float i_z = depth_factor(normalized_depth_at(a), normalized_depth_at(h)) *
               depth_factor(normalized_depth_at(c), normalized_depth_at(f));
   contour_darkness = 1.0 - i_n * i_z;
