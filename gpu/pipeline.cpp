@@ -59,11 +59,12 @@ Renderer::Renderer(const Scene& scene) {
 
 Renderer::~Renderer() = default;
 
-double Renderer::render_only() {
+double Renderer::render_frame(Frame& timing) {
   Stopwatch watch;
   state_->run_frame();
-  state_->timer.results();
-  return watch.ms();
+  double ms = watch.ms();
+  timing.ran = state_->timer.results();
+  return ms;
 }
 
 Frame Renderer::render(const FrameOptions& options) {

@@ -18,8 +18,9 @@ class Renderer {
   // Renders one frame and reads it back. `ran` holds GPU times per pass, plus
   // "readback" (CPU wall time of downloading the image).
   Frame render(const FrameOptions& options = {});
-  // Renders one frame without reading anything back; returns wall-clock ms to glFinish.
-  double render_only();
+  // Renders one frame without reading anything back; returns wall-clock ms to glFinish
+  // and fills `timing.ran` with the GPU time of each pass.
+  double render_frame(Frame& timing);
 
  private:
   struct State;

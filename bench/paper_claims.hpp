@@ -1,0 +1,34 @@
+// The frame rates the papers claim, in one table (../shared/papers/README.md).
+// `plumbago bench --paper` prints ours for the closest configuration next to them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace plumbago {
+
+struct PaperClaim {
+  std::string paper;     // short citation
+  std::string scene;     // what was drawn
+  int faces;             // 0 when the paper gives no count
+  std::string resolution;
+  double fps_low, fps_high;  // a single figure has low == high
+  std::string hardware;
+  std::string style;     // the closest Plumbago effects/style
+};
+
+inline const std::vector<PaperClaim>& paper_claims() {
+  static const std::vector<PaperClaim> claims = {
+      {"Lee et al. 2006", "reasonably complicated meshes", 0, "not stated", 15, 60,
+       "GeForce 7800GTX, Pentium IV 630", "pencil"},
+      {"Nienhaus & Doellner 2004", "Ogre", 124008, "800x800", 20, 20, "GeForce FX 5600", "sketchy"},
+      {"Kalnins et al. 2002", "cup, 25 strokes", 5000, "not stated", 20, 20, "GeForce3, Pentium IV 1.5 GHz", "strokes"},
+      {"Kalnins et al. 2002", "statue, 100 strokes", 120000, "not stated", 10, 10, "GeForce3, Pentium IV 1.5 GHz", "strokes"},
+      {"Kalnins et al. 2002", "building, 7000 strokes", 16000, "not stated", 3, 3, "GeForce3, Pentium IV 1.5 GHz", "strokes"},
+      {"Kalnins et al. 2002", "breakfast, 400 strokes", 25000, "not stated", 9, 9, "GeForce3, Pentium IV 1.5 GHz", "strokes"},
+      {"Kalnins et al. 2002", "snowman, 250 strokes", 10000, "not stated", 11, 11, "GeForce3, Pentium IV 1.5 GHz", "strokes"},
+  };
+  return claims;
+}
+
+}  // namespace plumbago
