@@ -13,9 +13,11 @@
 #include "gpu/context.hpp"
 #include "gpu/edge_detect.hpp"
 #include "gpu/gbuffer.hpp"
+#include "gpu/interior_intensity.hpp"
 #include "reference/compose.hpp"
 #include "reference/edge_detect.hpp"
 #include "reference/gbuffer.hpp"
+#include "reference/interior_intensity.hpp"
 
 namespace plumbago {
 
@@ -108,12 +110,26 @@ StageParity compose_parity(const Scene& scene, const GBuffer& ref) {
                   "both fed the reference contour darkness; 8-bit target");
 }
 
+StageParity interior_intensity_parity(const Scene& scene, const GBuffer& ref) {
+  auto p = scene.params.get<InteriorParams>();
+  std::vector<Light> lights = view_space_lights(scene);
+  gpu::GBufferTargets inputs = gpu::upload_gbuffer(ref);
+  gpu::Texture out = gpu::make_texture(scene.width, scene.height, GL_R32F);
+  gpu::InteriorIntensityPass().run(inputs, lights, p, out);
+  Image gpu_out = gpu::download_texture(out, 1);
+  gpu::Context::get().check_errors("interior_intensity parity");
+  return compared("interior_intensity", reference::interior_intensity(ref, lights, p), gpu_out, kFloatTolerance,
+                  nullptr, "both fed the reference G-buffer; float target");
+}
+
 using ParityFn = std::function<std::vector<StageParity>(const Scene&, const GBuffer&)>;
 
 const std::vector<std::pair<std::string, ParityFn>>& parity_table() {
   static const std::vector<std::pair<std::string, ParityFn>> table = {
       {"gbuffer", gbuffer_parity},
       {"edge_detect", [](const Scene& s, const GBuffer& g) { return std::vector{edge_parity(s, g)}; }},
+      {"interior_intensity",
+       [](const Scene& s, const GBuffer& g) { return std::vector{interior_intensity_parity(s, g)}; }},
       {"compose", [](const Scene& s, const GBuffer& g) { return std::vector{compose_parity(s, g)}; }},
   };
   return table;

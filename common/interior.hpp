@@ -29,4 +29,11 @@ struct InteriorParams {
 // I = clamp(k_a + k_d sum_lights intensity * max(0, n.L)), n a unit world normal (SPEC 2.5).
 float lambert_intensity(glm::vec3 n, const std::vector<Light>& lights, const InteriorParams& p);
 
+// The scene's lights with directions turned into view space (unit), for per-pixel
+// shading of view-space normals.
+std::vector<Light> view_space_lights(const Scene& scene);
+
+// Brightness adjustment I' = sqrt(I) when p.brightness_sqrt (Lee §5.2).
+float adjusted_brightness(float intensity, const InteriorParams& p);
+
 }  // namespace plumbago

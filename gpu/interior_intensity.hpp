@@ -1,0 +1,25 @@
+// Interior intensity and brightness on the GPU (SPEC 2.5), the twin of
+// reference/interior_intensity.cpp.
+#pragma once
+
+#include "common/interior.hpp"
+#include "gpu/framebuffer.hpp"
+#include "gpu/gbuffer.hpp"
+
+namespace plumbago::gpu {
+
+class InteriorIntensityPass {
+ public:
+  InteriorIntensityPass();
+  // Writes I' into `out` (R32F).
+  void run(const GBufferTargets& g, const std::vector<Light>& view_lights, const InteriorParams& p, Texture& out);
+
+ private:
+  Program program_;
+  FullscreenPass pass_;
+};
+
+// Sets the uniforms of shaders/common_lights.glsl; throws past its MAX_LIGHTS (8).
+void set_lights(const Program& program, const std::vector<Light>& view_lights);
+
+}  // namespace plumbago::gpu

@@ -1,0 +1,14 @@
+// Interior intensity and brightness, CPU reference (SPEC 2.5).
+#pragma once
+
+#include "common/gbuffer.hpp"
+#include "common/interior.hpp"
+
+namespace plumbago::reference {
+
+// I' per pixel (1 channel): Gouraud (the G-buffer's interpolated per-vertex intensity)
+// or Phong (the same Lambert formula on the pixel's view-space normal), then sqrt when
+// brightness_sqrt. Background: 1.
+Image interior_intensity(const GBuffer& g, const std::vector<Light>& view_lights, const InteriorParams& p);
+
+}  // namespace plumbago::reference
