@@ -4,6 +4,7 @@
 #pragma once
 
 #include "common/compose.hpp"
+#include "common/curvature.hpp"
 #include "common/edge_detect.hpp"
 #include "common/gbuffer.hpp"
 #include "common/interior.hpp"
@@ -13,6 +14,6 @@ namespace plumbago {
 template <class... T>
 struct TypeList {};
 
-using AllParamStructs = TypeList<GBufferParams, EdgeDetectParams, InteriorParams, ComposeParams>;
+using AllParamStructs = TypeList<CurvatureParams, GBufferParams, EdgeDetectParams, InteriorParams, ComposeParams>;
 
 }  // namespace plumbago

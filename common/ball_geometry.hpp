@@ -1,0 +1,18 @@
+// Exact measures of mesh pieces inside a ball, for the curvature tensor's |e ∩ B| and
+// |B| (SPEC §1.1).
+#pragma once
+
+#include <glm/glm.hpp>
+
+namespace plumbago {
+
+// Length of the segment [p, q] inside the ball of center c and radius r.
+double segment_length_in_ball(const glm::dvec3& p, const glm::dvec3& q, const glm::dvec3& c, double r);
+
+// Area of triangle (a, b, d) inside the ball of center c and radius r: the ball cuts the
+// triangle's plane in a disk, and the area of triangle ∩ disk is the sum over the
+// triangle's edges of the signed area of disk ∩ (center, edge).
+double triangle_area_in_ball(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& d, const glm::dvec3& c,
+                             double r);
+
+}  // namespace plumbago

@@ -1,0 +1,250 @@
+// The curvature tensor of Cohen-Steiner & Morvan (Alliez et al. 2003, §3), SPEC §1.1.
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+#include "common/ball_geometry.hpp"
+#include "common/curvature_internal.hpp"
+
+namespace plumbago {
+namespace curvature {
+
+double signed_dihedral_angle(const glm::dvec3& n0, const glm::dvec3& n1, const glm::dvec3& along) {
+  return std::atan2(glm::dot(glm::cross(n0, n1), along), glm::dot(n0, n1));
+}
+
+void tangent_basis(const glm::dvec3& n, glm::dvec3& t1, glm::dvec3& t2) {
+  double sign = std::copysign(1.0, n.z);
+  double a = -1.0 / (sign + n.z), b = n.x * n.y * a;
+  t1 = glm::dvec3(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
+  t2 = glm::dvec3(b, sign + n.y * n.y * a, -n.y);
+}
+
+namespace {
+
+// Symmetric 3x3 sum of w ê êᵀ.
+struct SymmetricTensor {
+  double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
+  void add(double w, const glm::dvec3& e) {
+    xx += w * e.x * e.x, xy += w * e.x * e.y, xz += w * e.x * e.z;
+    yy += w * e.y * e.y, yz += w * e.y * e.z, zz += w * e.z * e.z;
+  }
+  glm::dvec3 apply(const glm::dvec3& v) const {
+    return {xx * v.x + xy * v.y + xz * v.z, xy * v.x + yy * v.y + yz * v.z, xz * v.x + yz * v.y + zz * v.z};
+  }
+};
+
+struct FaceGeometry {
+  glm::dvec3 normal;  // unit, or 0 for a zero-area face
+  double area;
+};
+
+struct EdgeGeometry {
+  glm::dvec3 unit;  // along the edge, or 0 for a zero-length edge
+  double length;
+  double beta;      // signed dihedral angle, 0 on boundary edges
+};
+
+struct Geometry {
+  std::vector<glm::dvec3> position;
+  std::vector<FaceGeometry> faces;
+  std::vector<EdgeGeometry> edges;
+};
+
+glm::dvec3 unit_or_zero(const glm::dvec3& v) {
+  double len = glm::length(v);
+  return len > 0 && std::isfinite(len) ? v / len : glm::dvec3(0);
+}
+
+Geometry precompute_geometry(const Mesh& mesh, const MeshTopology& topo) {
+  Geometry g;
+  g.position.assign(mesh.positions.begin(), mesh.positions.end());
+  g.faces.resize(mesh.triangles.size());
+  tbb::parallel_for(size_t(0), g.faces.size(), [&](size_t f) {
+    const auto& t = mesh.triangles[f];
+    glm::dvec3 n = glm::cross(g.position[t[1]] - g.position[t[0]], g.position[t[2]] - g.position[t[0]]);
+    g.faces[f] = {unit_or_zero(n), 0.5 * glm::length(n)};
+  });
+  g.edges.resize(topo.edges.size());
+  tbb::parallel_for(size_t(0), g.edges.size(), [&](size_t e) {
+    const auto& edge = topo.edges[e];
+    glm::dvec3 d = g.position[edge.to] - g.position[edge.from];
+    glm::dvec3 unit = unit_or_zero(d);
+    double beta = edge.face[1] < 0 ? 0.0
+                                   : signed_dihedral_angle(g.faces[edge.face[0]].normal,
+                                                           g.faces[edge.face[1]].normal, unit);
+    g.edges[e] = {unit, glm::length(d), beta};
+  });
+  return g;
+}
+
+// The sums over B for one vertex: T (not yet divided by |B|), |B|, and the area-weighted
+// face normal.
+struct BallSums {
+  SymmetricTensor tensor;
+  double area = 0;
+  glm::dvec3 normal{0};
+};
+
+// Per-thread marks of the faces and edges already visited for the current vertex.
+struct Scratch {
+  std::vector<uint32_t> face_mark, edge_mark, queue;
+  uint32_t stamp = 0;
+  Scratch(size_t faces, size_t edges) : face_mark(faces, 0), edge_mark(edges, 0) {}
+  void next_vertex() {
+    if (++stamp == 0) {
+      std::fill(face_mark.begin(), face_mark.end(), 0);
+      std::fill(edge_mark.begin(), edge_mark.end(), 0);
+      stamp = 1;
+    }
+    queue.clear();
+  }
+  bool first_visit(std::vector<uint32_t>& marks, uint32_t i) {
+    if (marks[i] == stamp) return false;
+    marks[i] = stamp;
+    return true;
+  }
+};
+
+// 1-ring (radius 0): the faces around v; edges at v whole, edges opposite v half.
+BallSums one_ring_sums(uint32_t v, const MeshTopology& topo, const Geometry& g, Scratch& s) {
+  BallSums sums;
+  for (uint32_t f : topo.faces_of(v)) {
+    sums.area += g.faces[f].area;
+    sums.normal += g.faces[f].area * g.faces[f].normal;
+    for (uint32_t e : topo.face_edges[f]) {
+      if (!s.first_visit(s.edge_mark, e)) continue;
+      const auto& edge = topo.edges[e];
+      double weight = edge.from == v || edge.to == v ? 1.0 : 0.5;
+      sums.tensor.add(weight * g.edges[e].beta * g.edges[e].length, g.edges[e].unit);
+    }
+  }
+  return sums;
+}
+
+// The connected part of the surface within distance r of v, grown face by face across
+// edges that reach into the ball; each edge and face clipped exactly.
+BallSums ball_sums(uint32_t v, double r, const Mesh& mesh, const MeshTopology& topo, const Geometry& g, Scratch& s) {
+  BallSums sums;
+  const glm::dvec3 c = g.position[v];
+  for (uint32_t f : topo.faces_of(v))
+    if (s.first_visit(s.face_mark, f)) s.queue.push_back(f);
+  for (size_t next = 0; next < s.queue.size(); ++next) {
+    uint32_t f = s.queue[next];
+    const auto& t = mesh.triangles[f];
+    const glm::dvec3 p[3] = {g.position[t[0]], g.position[t[1]], g.position[t[2]]};
+    bool inside[3];
+    for (int k = 0; k < 3; ++k) inside[k] = glm::dot(p[k] - c, p[k] - c) <= r * r;
+    double area = inside[0] && inside[1] && inside[2] ? g.faces[f].area : triangle_area_in_ball(p[0], p[1], p[2], c, r);
+    sums.area += area;
+    sums.normal += area * g.faces[f].normal;
+    for (int k = 0; k < 3; ++k) {
+      uint32_t e = topo.face_edges[f][k];
+      if (!s.first_visit(s.edge_mark, e)) continue;
+      double length = inside[k] && inside[(k + 1) % 3] ? g.edges[e].length
+                                                       : segment_length_in_ball(p[k], p[(k + 1) % 3], c, r);
+      if (!(length > 0)) continue;
+      sums.tensor.add(g.edges[e].beta * length, g.edges[e].unit);
+      for (int32_t other : topo.edges[e].face)
+        if (other >= 0 && s.first_visit(s.face_mark, uint32_t(other))) s.queue.push_back(uint32_t(other));
+    }
+  }
+  return sums;
+}
+
+struct Frame {
+  glm::dvec3 normal, d_min, d_max;
+  double k_min, k_max;
+};
+
+// T restricted to the tangent plane of n: the larger eigenvalue is k_max and its
+// eigenvector d_min (the roles swap, see curvature.hpp).
+Frame tangent_plane_frame(const SymmetricTensor& t, const glm::dvec3& n) {
+  glm::dvec3 t1, t2;
+  tangent_basis(n, t1, t2);
+  double a = glm::dot(t1, t.apply(t1)), b = glm::dot(t1, t.apply(t2)), d = glm::dot(t2, t.apply(t2));
+  double mean = 0.5 * (a + d), deviation = std::hypot(0.5 * (a - d), b);
+  double theta = 0.5 * std::atan2(2 * b, a - d);  // eigenvector of the larger eigenvalue
+  glm::dvec3 larger = std::cos(theta) * t1 + std::sin(theta) * t2;
+  return {n, larger, glm::cross(n, larger), mean - deviation, mean + deviation};
+}
+
+// SPEC's literal reading: the eigenvector of the smallest-magnitude eigenvalue is the
+// normal (oriented like `oriented`), the other two swap roles as above.
+Frame tensor_eigen_frame(const SymmetricTensor& t, const glm::dvec3& oriented) {
+  Eigen::Matrix3d m;
+  m << t.xx, t.xy, t.xz, t.xy, t.yy, t.yz, t.xz, t.yz, t.zz;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(m);
+  const auto& values = eig.eigenvalues();  // ascending
+  int normal = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::abs(values[i]) < std::abs(values[normal])) normal = i;
+  int lower = normal == 0 ? 1 : 0, upper = normal == 2 ? 1 : 2;
+  auto column = [&](int i) { return glm::dvec3(eig.eigenvectors()(0, i), eig.eigenvectors()(1, i), eig.eigenvectors()(2, i)); };
+  glm::dvec3 n = column(normal);
+  if (glm::dot(n, oriented) < 0) n = -n;
+  return {n, column(upper), column(lower), values[lower], values[upper]};
+}
+
+Frame vertex_frame(const BallSums& sums, const glm::dvec3& mesh_normal, CurvatureNormal mode) {
+  glm::dvec3 n = unit_or_zero(sums.normal);
+  if (n == glm::dvec3(0)) n = mesh_normal;
+  SymmetricTensor t = sums.tensor;
+  double inverse_area = sums.area > 0 ? 1.0 / sums.area : 0.0;
+  for (double* x : {&t.xx, &t.xy, &t.xz, &t.yy, &t.yz, &t.zz}) *x *= inverse_area;
+  return mode == CurvatureNormal::Tensor && sums.area > 0 ? tensor_eigen_frame(t, n) : tangent_plane_frame(t, n);
+}
+
+double ring_radius(uint32_t v, const MeshTopology& topo, const Geometry& g) {
+  double r = 0;
+  for (uint32_t u : topo.neighbors_of(v)) r = std::max(r, glm::length(g.position[u] - g.position[v]));
+  return r;
+}
+
+}  // namespace
+
+Curvature tensor_curvature(const Mesh& mesh, const MeshTopology& topo, const CurvatureParams& p, Progress& progress) {
+  Geometry g = precompute_geometry(mesh, topo);
+  const double radius = double(p.radius) * double(mesh.bbox_diagonal());
+  const size_t n = mesh.positions.size();
+  Curvature c;
+  c.k_min.resize(n), c.k_max.resize(n), c.normal.resize(n), c.d_min.resize(n), c.d_max.resize(n);
+  tbb::enumerable_thread_specific<Scratch> scratch(g.faces.size(), g.edges.size());
+  tbb::parallel_for(tbb::blocked_range<uint32_t>(0, uint32_t(n), 1024), [&](const tbb::blocked_range<uint32_t>& range) {
+    Scratch& s = scratch.local();
+    for (uint32_t v = range.begin(); v != range.end(); ++v) {
+      s.next_vertex();
+      BallSums sums = p.radius == 0         ? one_ring_sums(v, topo, g, s)
+                      : p.ball_covers_ring ? ball_sums(v, std::max(radius, ring_radius(v, topo, g)), mesh, topo, g, s)
+                                           : ball_sums(v, radius, mesh, topo, g, s);
+      Frame f = vertex_frame(sums, glm::dvec3(mesh.normals[v]), p.normal);
+      c.normal[v] = f.normal, c.d_min[v] = f.d_min, c.d_max[v] = f.d_max;
+      c.k_min[v] = float(f.k_min), c.k_max[v] = float(f.k_max);
+    }
+    progress.advance(range.size());
+  });
+  return c;
+}
+
+}  // namespace curvature
+
+Curvature estimate_curvature(const Mesh& input, const CurvatureParams& p, bool show_progress) {
+  Mesh with_normals;
+  const Mesh* mesh = &input;
+  if (input.normals.size() != input.positions.size()) {
+    with_normals = input;
+    compute_normals(with_normals);
+    mesh = &with_normals;
+  }
+  MeshTopology topo = build_topology(*mesh);
+  bool tensor = p.method == CurvatureMethod::Tensor;
+  Progress progress(tensor ? "curvature (tensor)" : "curvature (jet)", mesh->positions.size(), show_progress);
+  Curvature c = tensor ? curvature::tensor_curvature(*mesh, topo, p, progress)
+                       : curvature::jet_curvature(*mesh, topo, p, progress);
+  curvature::propagate_directions(topo, p, mesh->bbox_diagonal(), c);
+  return c;
+}
+
+}  // namespace plumbago

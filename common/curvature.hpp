@@ -1,0 +1,98 @@
+// Principal curvature per vertex (SPEC §1.1; Lee §5.3; Pacheco §6; Alliez et al. 2003).
+//
+// Sign convention: k > 0 where the surface bends away from its normal (a sphere with
+// outward normals has k_min = k_max = 1/R), k < 0 where it bends towards it.
+//
+// `tensor` (Cohen-Steiner & Morvan 2003, as used by Alliez et al. 2003):
+//   T(v) = 1/|B| sum_{e in B} beta(e) |e ∩ B| ê êᵀ
+// over B, the part of the surface within distance r of v that is connected to v
+// (the connected component of surface ∩ ball(v, r) holding v; to second order in r the
+// geodesic ball). |e ∩ B| is the exact length of the clipped edge, |B| the exact area of
+// the clipped triangles (triangle ∩ disk in each triangle's plane). beta(e) is the
+// signed dihedral angle, > 0 on convex edges, from atan2. The eigenvector of the
+// *larger* eigenvalue is the direction of *minimum* curvature (Cohen-Steiner & Morvan:
+// an edge bends the surface across itself), so k_max = larger eigenvalue with d_min its
+// eigenvector, k_min = smaller eigenvalue with d_max its eigenvector.
+// r = radius x bbox diagonal; radius = 0 is the 1-ring: B = the faces around v, the
+// edges at v counted whole and the edges opposite v counted half (each face lies in
+// three 1-rings and each edge in two as a spoke and two as an opposite edge, so this
+// weighting counts the tensor as often as the area).
+//
+// Readings (docs/readings.md, "Principal curvature"):
+//  - `normal = ball` (default): n = area-weighted face normal over B and T restricted to
+//    n's tangent plane. SPEC's literal reading, `normal = tensor`, takes the eigenvector
+//    of the smallest-magnitude eigenvalue; wherever k_min ~ 0 (a cylinder, the torus's
+//    top and bottom circles) two eigenvalues are ~0 and that choice is arbitrary.
+//  - `ball_covers_ring = true` (default): B never stops short of v's neighbors. The
+//    tensor lives on edges, so a ball that cuts every edge at v short of its far end
+//    overestimates |k| by about (edge length / r); SPEC's literal radius is `false`.
+//
+// `jet`: CGAL's Monge_via_jet_fitting (Cazals & Pouget 2005) of degree `jet_degree` on
+// the `jet_rings`-ring of v (grown until it has enough points for the degree), with the
+// Monge normal made to agree with the mesh's orientation.
+//
+// Umbilic and flat vertices (Lee §5.3): where |k_max - k_min| < umbilic_ratio
+// (|k_max| + |k_min|) + flat_curvature / bbox diagonal, d_min is propagated from the
+// neighbors (curvature_directions.cpp).
+#pragma once
+
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+#include "common/mesh.hpp"
+
+namespace plumbago {
+
+enum class CurvatureMethod { Tensor, Jet };
+enum class CurvatureNormal { Ball, Tensor };
+
+struct CurvatureParams {
+  static constexpr const char* stage = "curvature";
+  CurvatureMethod method;
+  float radius;
+  CurvatureNormal normal;
+  bool ball_covers_ring;
+  int jet_degree, jet_rings;
+  float umbilic_ratio, flat_curvature;
+  template <class V>
+  void visit(V& v) {
+    v.choice(method, "method", CurvatureMethod::Tensor, {"tensor", "jet"},
+             "estimator: Cohen-Steiner/Morvan tensor (the paper's) or CGAL jet fitting");
+    v.real(radius, "radius", 0.01, 0.0, 0.5,
+           "tensor: geodesic ball radius x bbox diagonal (Pacheco: 0.01); 0 = the 1-ring");
+    v.choice(normal, "normal", CurvatureNormal::Ball, {"ball", "tensor"},
+             "tensor: normal from the ball's faces, or the tensor's smallest eigenvector (SPEC literal)");
+    v.boolean(ball_covers_ring, "ball_covers_ring", true,
+              "tensor: grow the ball to reach v's neighbors (false: the literal radius)");
+    v.integer(jet_degree, "jet_degree", 2, 2, 4, "jet: degree of the fitted polynomial");
+    v.integer(jet_rings, "jet_rings", 2, 1, 8, "jet: rings of neighbors fitted (more if too few points)");
+    v.real(umbilic_ratio, "umbilic_ratio", 0.05, 0.0, 1.0,
+           "directions propagated where |k_max - k_min| < this x (|k_max| + |k_min|) + flat");
+    v.real(flat_curvature, "flat_curvature", 1e-3, 0.0, 1.0,
+           "the + flat term of the umbilic test, x 1 / bbox diagonal");
+  }
+};
+
+// Per vertex: unit normal agreeing with the mesh orientation, k_min <= k_max, unit
+// directions tangent to the normal and orthogonal to each other. Never NaN.
+struct Curvature {
+  std::vector<float> k_min, k_max;
+  std::vector<glm::vec3> normal, d_min, d_max;
+  size_t size() const { return k_min.size(); }
+};
+
+struct CurvatureOptions {
+  bool use_cache = true;  // read and write the on-disk cache (curvature_cache.hpp)
+  std::string cache_dir;  // empty: curvature_cache_dir()
+  bool progress = true;   // show progress on stderr when a computation runs long
+};
+
+// Cached: keyed by the mesh content, the method and every parameter. A stale or corrupt
+// cache file is reported on stderr (unless !progress) and recomputed.
+Curvature compute_curvature(const Mesh& mesh, const CurvatureParams& params, const CurvatureOptions& options = {});
+
+// The computation itself, no cache.
+Curvature estimate_curvature(const Mesh& mesh, const CurvatureParams& params, bool progress = false);
+
+}  // namespace plumbago

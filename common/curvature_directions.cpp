@@ -1,0 +1,153 @@
+// Directions where the estimate has none (Lee §5.3, SPEC §1.1): umbilic and flat
+// vertices take d_min from their neighbors, front by front, as the average of the
+// neighbors' directions projected to their tangent plane. Directions are lines, so the
+// average is the main axis of sum w wᵀ over the projected neighbor directions w, signed
+// like the first of them. A connected piece with no defined direction at all (a plane,
+// a sphere) is seeded with the world axis that lies most in its tangent planes, where
+// that axis projects to at least half its length; a plane gets a constant field and a
+// sphere one along its great circles through the two poles of that axis.
+#include <tbb/parallel_for.h>
+
+#include <array>
+#include <cmath>
+#include <numeric>
+
+#include "common/curvature_internal.hpp"
+
+namespace plumbago::curvature {
+
+bool directions_undefined(float k_min, float k_max, const CurvatureParams& p, float bbox_diagonal) {
+  double flat = bbox_diagonal > 0 ? double(p.flat_curvature) / double(bbox_diagonal) : 0.0;
+  double spread = std::abs(double(k_max) - double(k_min));
+  return !(spread >= double(p.umbilic_ratio) * (std::abs(double(k_max)) + std::abs(double(k_min))) + flat);
+}
+
+namespace {
+
+bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Unit normals and finite curvatures; returns which vertices have a usable d_min (made
+// unit and tangent).
+std::vector<uint8_t> defined_directions(const CurvatureParams& p, float bbox_diagonal, Curvature& c) {
+  std::vector<uint8_t> known(c.size(), 0);
+  tbb::parallel_for(size_t(0), c.size(), [&](size_t v) {
+    glm::dvec3 n = c.normal[v];
+    double len = glm::length(n);
+    n = finite(n) && len > 0 ? n / len : glm::dvec3(0, 0, 1);
+    c.normal[v] = n;
+    if (!std::isfinite(c.k_min[v]) || !std::isfinite(c.k_max[v])) c.k_min[v] = c.k_max[v] = 0;
+    glm::dvec3 d = c.d_min[v];
+    d -= glm::dot(d, n) * n;
+    double d_len = glm::length(d);
+    known[v] = finite(d) && d_len > 1e-6 && !directions_undefined(c.k_min[v], c.k_max[v], p, bbox_diagonal);
+    if (known[v]) c.d_min[v] = d / d_len;
+  });
+  return known;
+}
+
+// Connected components of the vertex graph, as a component index per vertex.
+std::vector<uint32_t> vertex_components(const MeshTopology& topo) {
+  std::vector<uint32_t> component(topo.vertex_count(), UINT32_MAX), stack;
+  uint32_t next = 0;
+  for (uint32_t seed = 0; seed < component.size(); ++seed) {
+    if (component[seed] != UINT32_MAX) continue;
+    component[seed] = next;
+    stack.assign(1, seed);
+    while (!stack.empty()) {
+      uint32_t v = stack.back();
+      stack.pop_back();
+      for (uint32_t u : topo.neighbors_of(v))
+        if (component[u] == UINT32_MAX) component[u] = next, stack.push_back(u);
+    }
+    ++next;
+  }
+  return component;
+}
+
+void seed_components_without_directions(const MeshTopology& topo, Curvature& c, std::vector<uint8_t>& known) {
+  std::vector<uint32_t> component = vertex_components(topo);
+  size_t count = component.empty() ? 0 : *std::max_element(component.begin(), component.end()) + 1;
+  std::vector<uint8_t> has_direction(count, 0);
+  std::vector<std::array<double, 3>> normal_along_axis(count, {0, 0, 0});
+  for (size_t v = 0; v < c.size(); ++v) {
+    has_direction[component[v]] |= known[v];
+    for (int a = 0; a < 3; ++a) normal_along_axis[component[v]][a] += std::abs(c.normal[v][a]);
+  }
+  for (size_t v = 0; v < c.size(); ++v) {
+    if (has_direction[component[v]]) continue;
+    const auto& along = normal_along_axis[component[v]];
+    glm::dvec3 axis(0);
+    axis[int(std::min_element(along.begin(), along.end()) - along.begin())] = 1;
+    glm::dvec3 n = c.normal[v], d = axis - glm::dot(axis, n) * n;
+    if (glm::length(d) < 0.5) continue;
+    c.d_min[v] = glm::normalize(d);
+    known[v] = 1;
+  }
+}
+
+// d_min of v from its known neighbors, or false if none of them projects to its plane.
+bool direction_from_neighbors(uint32_t v, const MeshTopology& topo, const Curvature& c,
+                              const std::vector<uint8_t>& known, glm::vec3& out) {
+  glm::dvec3 t1, t2;
+  tangent_basis(c.normal[v], t1, t2);
+  double a = 0, b = 0, d = 0;
+  glm::dvec2 first(0);
+  for (uint32_t u : topo.neighbors_of(v)) {
+    if (!known[u]) continue;
+    glm::dvec2 w(glm::dot(glm::dvec3(c.d_min[u]), t1), glm::dot(glm::dvec3(c.d_min[u]), t2));
+    a += w.x * w.x, b += w.x * w.y, d += w.y * w.y;
+    if (first == glm::dvec2(0)) first = w;
+  }
+  if (first == glm::dvec2(0)) return false;
+  double theta = 0.5 * std::atan2(2 * b, a - d);
+  glm::dvec2 axis(std::cos(theta), std::sin(theta));
+  if (glm::dot(axis, first) < 0) axis = -axis;
+  out = axis.x * t1 + axis.y * t2;
+  return true;
+}
+
+// Front by front: every unknown vertex next to a known one takes its neighbors' average,
+// all of a front from the previous fronts only, so the result does not depend on order.
+void propagate_fronts(const MeshTopology& topo, Curvature& c, std::vector<uint8_t>& known) {
+  std::vector<uint8_t> queued(c.size(), 0);
+  std::vector<uint32_t> front;
+  auto enqueue_unknown_neighbors = [&](uint32_t v, std::vector<uint32_t>& into) {
+    for (uint32_t u : topo.neighbors_of(v))
+      if (!known[u] && !queued[u]) queued[u] = 1, into.push_back(u);
+  };
+  for (uint32_t v = 0; v < c.size(); ++v)
+    if (known[v]) enqueue_unknown_neighbors(v, front);
+  while (!front.empty()) {
+    std::vector<uint8_t> assigned(front.size(), 0);
+    tbb::parallel_for(size_t(0), front.size(), [&](size_t i) {
+      assigned[i] = direction_from_neighbors(front[i], topo, c, known, c.d_min[front[i]]);
+    });
+    std::vector<uint32_t> next;
+    for (size_t i = 0; i < front.size(); ++i) {
+      known[front[i]] = assigned[i];
+      queued[front[i]] = assigned[i];
+    }
+    for (size_t i = 0; i < front.size(); ++i)
+      if (assigned[i]) enqueue_unknown_neighbors(front[i], next);
+    front.swap(next);
+  }
+}
+
+}  // namespace
+
+void propagate_directions(const MeshTopology& topo, const CurvatureParams& p, float bbox_diagonal, Curvature& c) {
+  std::vector<uint8_t> known = defined_directions(p, bbox_diagonal, c);
+  seed_components_without_directions(topo, c, known);
+  propagate_fronts(topo, c, known);
+  tbb::parallel_for(size_t(0), c.size(), [&](size_t v) {
+    glm::dvec3 n = c.normal[v], t1, t2;
+    tangent_basis(n, t1, t2);
+    glm::dvec3 d = known[v] ? glm::dvec3(c.d_min[v]) : t1;
+    d -= glm::dot(d, n) * n;
+    d = glm::length(d) > 1e-6 ? glm::normalize(d) : t1;
+    c.d_min[v] = d;
+    c.d_max[v] = glm::cross(n, d);
+  });
+}
+
+}  // namespace plumbago::curvature
