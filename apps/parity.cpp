@@ -9,12 +9,15 @@
 #include "common/compose.hpp"
 #include "common/edge_detect.hpp"
 #include "common/gbuffer.hpp"
+#include "common/lights.hpp"
 #include "gpu/compose.hpp"
+#include "gpu/contour_light.hpp"
 #include "gpu/context.hpp"
 #include "gpu/edge_detect.hpp"
 #include "gpu/gbuffer.hpp"
 #include "gpu/interior_intensity.hpp"
 #include "reference/compose.hpp"
+#include "reference/contour_light.hpp"
 #include "reference/edge_detect.hpp"
 #include "reference/gbuffer.hpp"
 #include "reference/interior_intensity.hpp"
@@ -122,12 +125,27 @@ StageParity interior_intensity_parity(const Scene& scene, const GBuffer& ref) {
                   nullptr, "both fed the reference G-buffer; float target");
 }
 
+StageParity contour_light_parity(const Scene& scene, const GBuffer& ref) {
+  auto p = scene.params.get<ContourLightParams>();
+  std::vector<Light> lights = view_space_lights(scene);
+  Image darkness = reference::contour_darkness(ref, scene.params.get<EdgeDetectParams>());
+  gpu::GBufferTargets inputs = gpu::upload_gbuffer(ref);
+  gpu::Texture in = gpu::upload_texture(darkness, GL_R32F);
+  gpu::Texture out = gpu::make_texture(scene.width, scene.height, GL_R32F);
+  gpu::ContourLightPass().run(in, inputs, lights, p, out);
+  Image gpu_out = gpu::download_texture(out, 1);
+  gpu::Context::get().check_errors("contour_light parity");
+  return compared("contour_light", reference::lit_contour_darkness(darkness, ref, lights, p), gpu_out,
+                  kFloatTolerance, nullptr, "both fed the reference G-buffer and contour darkness; float target");
+}
+
 using ParityFn = std::function<std::vector<StageParity>(const Scene&, const GBuffer&)>;
 
 const std::vector<std::pair<std::string, ParityFn>>& parity_table() {
   static const std::vector<std::pair<std::string, ParityFn>> table = {
       {"gbuffer", gbuffer_parity},
       {"edge_detect", [](const Scene& s, const GBuffer& g) { return std::vector{edge_parity(s, g)}; }},
+      {"contour_light", [](const Scene& s, const GBuffer& g) { return std::vector{contour_light_parity(s, g)}; }},
       {"interior_intensity",
        [](const Scene& s, const GBuffer& g) { return std::vector{interior_intensity_parity(s, g)}; }},
       {"compose", [](const Scene& s, const GBuffer& g) { return std::vector{compose_parity(s, g)}; }},

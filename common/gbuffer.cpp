@@ -2,6 +2,7 @@
 
 #include "common/frame.hpp"
 #include "common/interior.hpp"
+#include "common/lights.hpp"
 
 namespace plumbago {
 
@@ -38,7 +39,8 @@ glm::vec3 face_normal(const WorldObject& obj, size_t t) {
 std::vector<WorldObject> world_geometry(const Scene& scene) {
   InteriorParams ip = scene.params.get<InteriorParams>();
   std::vector<WorldObject> out;
-  for (const auto& obj : scene.objects) out.push_back(world_object(obj, scene.lights, ip));
+  std::vector<Light> lights = unit_world_lights(scene);
+  for (const auto& obj : scene.objects) out.push_back(world_object(obj, lights, ip));
   return out;
 }
 

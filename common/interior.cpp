@@ -1,21 +1,14 @@
 #include "common/interior.hpp"
 
+#include "common/lights.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 namespace plumbago {
 
-float lambert_intensity(glm::vec3 n, const std::vector<Light>& lights, const InteriorParams& p) {
-  float sum = 0;
-  for (const Light& l : lights) sum += l.intensity * std::max(0.0f, glm::dot(n, glm::normalize(l.direction)));
-  return std::clamp(p.ambient + p.diffuse * sum, 0.0f, 1.0f);
-}
-
-std::vector<Light> view_space_lights(const Scene& scene) {
-  glm::mat3 rotation(scene.camera.view());
-  std::vector<Light> out;
-  for (const Light& l : scene.lights) out.push_back({glm::normalize(rotation * l.direction), l.intensity});
-  return out;
+float lambert_intensity(glm::vec3 n, const std::vector<Light>& unit_lights, const InteriorParams& p) {
+  return std::clamp(p.ambient + p.diffuse * light_sum(n, unit_lights), 0.0f, 1.0f);
 }
 
 float adjusted_brightness(float intensity, const InteriorParams& p) {

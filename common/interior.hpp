@@ -26,12 +26,9 @@ struct InteriorParams {
   }
 };
 
-// I = clamp(k_a + k_d sum_lights intensity * max(0, n.L)), n a unit world normal (SPEC 2.5).
-float lambert_intensity(glm::vec3 n, const std::vector<Light>& lights, const InteriorParams& p);
-
-// The scene's lights with directions turned into view space (unit), for per-pixel
-// shading of view-space normals.
-std::vector<Light> view_space_lights(const Scene& scene);
+// I = clamp(k_a + k_d sum_lights intensity * max(0, n.L)) (SPEC 2.5); unit light
+// directions in the space of n (common/lights.hpp).
+float lambert_intensity(glm::vec3 n, const std::vector<Light>& unit_lights, const InteriorParams& p);
 
 // Brightness adjustment I' = sqrt(I) when p.brightness_sqrt (Lee §5.2).
 float adjusted_brightness(float intensity, const InteriorParams& p);

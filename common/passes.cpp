@@ -10,14 +10,15 @@ const std::vector<PassDef>& pass_table() {
   static const std::vector<PassDef> table = {
       {"gbuffer", PassKind::Stage, {}, "G-buffer: normals, depth, ids, barycentrics, Gouraud (SPEC 2.1)"},
       {"edge_detect", PassKind::Stage, {"gbuffer"}, "contour darkness from normal and depth discontinuities (SPEC 2.2)"},
-      {"compose", PassKind::Stage, {"edge_detect"}, "final image on white paper (SPEC 2.11)"},
+      {"contour_light", PassKind::Stage, {"edge_detect"}, "lit contours drawn lighter (SPEC 2.3, Lee Eq. 1)"},
+      {"compose", PassKind::Stage, {"contour_light"}, "final image on white paper (SPEC 2.11)"},
   };
   return table;
 }
 
 const std::vector<EffectDef>& effect_table() {
   static const std::vector<EffectDef> table = {
-      {"contours", {"edge_detect", "compose"}, "image-space contours (Lee 2006 §4)"},
+      {"contours", {"edge_detect", "contour_light", "compose"}, "image-space contours (Lee 2006 §4)"},
   };
   return table;
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "common/compose.hpp"
+#include "common/contour_light.hpp"
 #include "common/curvature.hpp"
 #include "common/edge_detect.hpp"
 #include "common/gbuffer.hpp"
@@ -14,6 +15,6 @@ namespace plumbago {
 template <class... T>
 struct TypeList {};
 
-using AllParamStructs = TypeList<CurvatureParams, GBufferParams, EdgeDetectParams, InteriorParams, ComposeParams>;
+using AllParamStructs = TypeList<CurvatureParams, GBufferParams, EdgeDetectParams, ContourLightParams, InteriorParams, ComposeParams>;
 
 }  // namespace plumbago

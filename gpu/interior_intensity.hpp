@@ -19,7 +19,4 @@ class InteriorIntensityPass {
   FullscreenPass pass_;
 };
 
-// Sets the uniforms of shaders/common_lights.glsl; throws past its MAX_LIGHTS (8).
-void set_lights(const Program& program, const std::vector<Light>& view_lights);
-
 }  // namespace plumbago::gpu

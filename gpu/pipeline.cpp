@@ -6,7 +6,9 @@
 
 #include "common/compose.hpp"
 #include "common/passes.hpp"
+#include "common/lights.hpp"
 #include "gpu/compose.hpp"
+#include "gpu/contour_light.hpp"
 #include "gpu/context.hpp"
 #include "gpu/edge_detect.hpp"
 #include "gpu/gbuffer.hpp"
@@ -19,10 +21,12 @@ struct Renderer::State {
   std::vector<std::string> passes = passes_for(scene.effects);
   GBufferPass gbuffer_pass{scene};
   EdgeDetectPass edge_pass;
+  ContourLightPass contour_light_pass;
   ComposePass compose_pass;
   GBufferTargets gbuffer = make_gbuffer_targets(scene.width, scene.height,
                                                 scene.params.get<GBufferParams>().normal_format);
   Texture contour_darkness = make_texture(scene.width, scene.height, GL_R32F);
+  Texture lit_contour_darkness = make_texture(scene.width, scene.height, GL_R32F);
   Texture color = make_texture(scene.width, scene.height, GL_RGBA8);
   PassTimer timer;
 
@@ -33,8 +37,11 @@ struct Renderer::State {
       gbuffer_pass.render(scene, gbuffer);
     } else if (pass == "edge_detect") {
       edge_pass.run(gbuffer, scene.params.get<EdgeDetectParams>(), contour_darkness);
+    } else if (pass == "contour_light") {
+      contour_light_pass.run(contour_darkness, gbuffer, view_space_lights(scene), scene.params.get<ContourLightParams>(),
+                             lit_contour_darkness);
     } else if (pass == "compose") {
-      compose_pass.run(contour_darkness, scene.params.get<ComposeParams>(), color);
+      compose_pass.run(lit_contour_darkness, scene.params.get<ComposeParams>(), color);
     } else {
       throw std::runtime_error("pass '" + pass + "' is not implemented on the GPU backend");
     }
@@ -77,6 +84,7 @@ Frame Renderer::render(const FrameOptions& options) {
   if (options.keep_buffers) {
     add_gbuffer_buffers(download_gbuffer(state_->gbuffer), frame.buffers);
     frame.buffers["edge_detect.contour_darkness"] = download_texture(state_->contour_darkness, 1);
+    frame.buffers["contour_light.lit_contour_darkness"] = download_texture(state_->lit_contour_darkness, 1);
     frame.buffers["compose.color"] = frame.color;
   }
   Context::get().check_errors("reading back the frame");

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "common/scene.hpp"
 #include "gpu/gl.hpp"
 #include "gpu/gl_objects.hpp"
 
@@ -87,6 +88,10 @@ std::string glsl_params() {
   p.visit(d);
   return d.text();
 }
+
+// Sets the uniforms of shaders/common_lights.glsl from view-space unit lights; throws
+// past its MAX_LIGHTS (8).
+void set_lights(const Program& program, const std::vector<Light>& view_lights);
 
 // Reads shaders/<file> (PLUMBAGO_SHADER_DIR, overridable by the environment variable of
 // the same name), expanding includes.

@@ -3,6 +3,7 @@
 
 #include "common/gbuffer.hpp"
 #include "common/interior.hpp"
+#include "common/lights.hpp"
 
 namespace plumbago::reference {
 

@@ -6,7 +6,9 @@
 #include "common/compose.hpp"
 #include "common/edge_detect.hpp"
 #include "common/passes.hpp"
+#include "common/lights.hpp"
 #include "reference/compose.hpp"
+#include "reference/contour_light.hpp"
 #include "reference/edge_detect.hpp"
 #include "reference/gbuffer.hpp"
 
@@ -18,6 +20,7 @@ namespace {
 struct FrameState {
   GBuffer gbuffer;
   Image contour_darkness;
+  Image lit_contour_darkness;
   Image color;
 };
 
@@ -30,8 +33,13 @@ const std::map<std::string, PassFn>& passes() {
        [](const Scene& s, FrameState& f) {
          f.contour_darkness = contour_darkness(f.gbuffer, s.params.get<EdgeDetectParams>());
        }},
+      {"contour_light",
+       [](const Scene& s, FrameState& f) {
+         f.lit_contour_darkness = lit_contour_darkness(f.contour_darkness, f.gbuffer, view_space_lights(s),
+                                                       s.params.get<ContourLightParams>());
+       }},
       {"compose",
-       [](const Scene& s, FrameState& f) { f.color = compose(f.contour_darkness, s.params.get<ComposeParams>()); }},
+       [](const Scene& s, FrameState& f) { f.color = compose(f.lit_contour_darkness, s.params.get<ComposeParams>()); }},
   };
   return table;
 }
@@ -52,6 +60,7 @@ Frame render(const Scene& scene, const FrameOptions& options) {
   if (options.keep_buffers) {
     add_gbuffer_buffers(state.gbuffer, frame.buffers);
     frame.buffers["edge_detect.contour_darkness"] = state.contour_darkness;
+    frame.buffers["contour_light.lit_contour_darkness"] = state.lit_contour_darkness;
     frame.buffers["compose.color"] = state.color;
   }
   return frame;

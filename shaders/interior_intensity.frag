@@ -14,7 +14,8 @@ void main() {
     interior_intensity = 1.0;
     return;
   }
-  float i = interior.shading == INTERIOR_SHADING_GOURAUD ? texelFetch(gouraud, p, 0).r
-                                                         : lambert_intensity(texelFetch(normals, p, 0).xyz);
+  float i = interior.shading == INTERIOR_SHADING_GOURAUD
+                ? texelFetch(gouraud, p, 0).r
+                : clamp(interior.ambient + interior.diffuse * light_sum(texelFetch(normals, p, 0).xyz), 0.0, 1.0);
   interior_intensity = interior.brightness_sqrt ? sqrt(i) : i;
 }

@@ -23,7 +23,7 @@ bool ran(const Frame& f, const std::string& pass) {
 }
 
 TEST(PassTable, ContoursNeedOnlyGBufferEdgesAndComposition) {
-  EXPECT_EQ(passes_for({"contours"}), (std::vector<std::string>{"gbuffer", "edge_detect", "compose"}));
+  EXPECT_EQ(passes_for({"contours"}), (std::vector<std::string>{"gbuffer", "edge_detect", "contour_light", "compose"}));
   EXPECT_THROW(passes_for({"watercolor"}), std::invalid_argument);
 }
 
