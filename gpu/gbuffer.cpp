@@ -26,10 +26,11 @@ std::vector<Corner> triangle_soup(const WorldObject& obj) {
   return soup;
 }
 
-void describe_attribute(GLuint vao, GLuint index, int size, size_t offset) {
-  glEnableVertexArrayAttrib(vao, index);
-  glVertexArrayAttribFormat(vao, index, size, GL_FLOAT, GL_FALSE, GLuint(offset));
-  glVertexArrayAttribBinding(vao, index, 0);
+// With the vertex array bound: attribute `index` reads `size` floats at `offset`.
+void describe_attribute(GLuint index, int size, size_t offset) {
+  glEnableVertexAttribArray(index);
+  glVertexAttribFormat(index, size, GL_FLOAT, GL_FALSE, GLuint(offset));
+  glVertexAttribBinding(index, 0);
 }
 
 GLenum normal_storage(GBufferFormat f) {
@@ -72,8 +73,7 @@ GBufferTargets upload_gbuffer(const GBuffer& g) {
   t.face_normal = upload_texture(g.face_normal, GL_RGBA32F);
   t.depth = upload_texture(g.depth, GL_R32F);
   t.ids = make_texture(g.ids.width, g.ids.height, GL_RG32UI);
-  glTextureSubImage2D(t.ids.id(), 0, 0, 0, g.ids.width, g.ids.height, GL_RG_INTEGER, GL_UNSIGNED_INT,
-                      g.ids.data.data());
+  write_texture(t.ids, 2, true, g.ids.data.data());
   t.bary = upload_texture(g.bary, GL_RGBA32F);
   t.gouraud = upload_texture(g.gouraud, GL_R32F);
   t.near = g.near;
@@ -85,13 +85,14 @@ GBufferPass::GBufferPass(const Scene& scene) : program_("gbuffer.vert", "gbuffer
   for (const WorldObject& obj : world_geometry(scene)) {
     std::vector<Corner> soup = triangle_soup(obj);
     Batch b{make_buffer(soup.data(), soup.size() * sizeof(Corner)), make_vertex_array(), GLsizei(soup.size())};
-    GLuint vao = b.layout.id();
-    glVertexArrayVertexBuffer(vao, 0, b.vertices.id(), 0, sizeof(Corner));
-    describe_attribute(vao, 0, 3, offsetof(Corner, position));
-    describe_attribute(vao, 1, 3, offsetof(Corner, normal));
-    describe_attribute(vao, 2, 3, offsetof(Corner, face_normal));
-    describe_attribute(vao, 3, 3, offsetof(Corner, corner));
-    describe_attribute(vao, 4, 1, offsetof(Corner, gouraud));
+    glBindVertexArray(b.layout.id());
+    glBindVertexBuffer(0, b.vertices.id(), 0, sizeof(Corner));
+    describe_attribute(0, 3, offsetof(Corner, position));
+    describe_attribute(1, 3, offsetof(Corner, normal));
+    describe_attribute(2, 3, offsetof(Corner, face_normal));
+    describe_attribute(3, 3, offsetof(Corner, corner));
+    describe_attribute(4, 1, offsetof(Corner, gouraud));
+    glBindVertexArray(0);
     batches_.push_back(std::move(b));
   }
 }
@@ -103,30 +104,29 @@ void GBufferPass::render(const Scene& scene, GBufferTargets& t) {
     depth_test_width_ = w;
     depth_test_height_ = h;
   }
-  GLuint fbo = fbo_.id();
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   const Texture* color[] = {&t.normal, &t.face_normal, &t.depth, &t.ids, &t.bary, &t.gouraud};
   GLenum draw[6];
   for (int i = 0; i < 6; ++i) {
-    glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0 + i, color[i]->id(), 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + i, GL_TEXTURE_2D, color[i]->id(), 0);
     draw[i] = GL_COLOR_ATTACHMENT0 + i;
   }
-  glNamedFramebufferRenderbuffer(fbo, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_test_.id());
-  glNamedFramebufferDrawBuffers(fbo, 6, draw);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_test_.id());
+  glDrawBuffers(6, draw);
 
   const Camera& cam = scene.camera;
   t.near = cam.near;
   t.far = cam.far;
   const float zero[4] = {0, 0, 0, 0}, far[4] = {cam.far, 0, 0, 0}, white[4] = {1, 0, 0, 0}, one = 1;
   const GLuint no_ids[4] = {0, 0, 0, 0};
-  glClearNamedFramebufferfv(fbo, GL_COLOR, 0, zero);
-  glClearNamedFramebufferfv(fbo, GL_COLOR, 1, zero);
-  glClearNamedFramebufferfv(fbo, GL_COLOR, 2, far);
-  glClearNamedFramebufferuiv(fbo, GL_COLOR, 3, no_ids);
-  glClearNamedFramebufferfv(fbo, GL_COLOR, 4, zero);
-  glClearNamedFramebufferfv(fbo, GL_COLOR, 5, white);
-  glClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &one);
+  glClearBufferfv(GL_COLOR, 0, zero);
+  glClearBufferfv(GL_COLOR, 1, zero);
+  glClearBufferfv(GL_COLOR, 2, far);
+  glClearBufferuiv(GL_COLOR, 3, no_ids);
+  glClearBufferfv(GL_COLOR, 4, zero);
+  glClearBufferfv(GL_COLOR, 5, white);
+  glClearBufferfv(GL_DEPTH, 0, &one);
 
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
   glViewport(0, 0, w, h);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);

@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <string>
 
+// Written against GL 4.3 bind-to-edit entry points, not 4.5 direct state access: Mesa's
+// libOSMesa exports no DSA functions, and the OSMesa build links them statically.
 namespace plumbago::gpu {
 
 namespace {
@@ -27,67 +29,103 @@ GLenum integer_format_of(int channels) {
   throw std::invalid_argument("images have 1 to 4 channels, not " + std::to_string(channels));
 }
 
+template <class T>
+void read_texture(const Texture& tex, GLenum format, GLenum type, std::vector<T>& out) {
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glBindTexture(GL_TEXTURE_2D, tex.id());
+  glGetTexImage(GL_TEXTURE_2D, 0, format, type, out.data());
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
 }  // namespace
 
 Texture make_texture(int width, int height, GLenum internal_format) {
   GLuint id = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &id);
+  glGenTextures(1, &id);
   Texture t{GlName<detail::delete_texture>(id), width, height, internal_format};
-  glTextureStorage2D(id, 1, internal_format, width, height);
-  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glBindTexture(GL_TEXTURE_2D, id);
+  glTexStorage2D(GL_TEXTURE_2D, 1, internal_format, width, height);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glBindTexture(GL_TEXTURE_2D, 0);
   return t;
+}
+
+void write_texture(const Texture& tex, int channels, bool integer, const void* data) {
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glBindTexture(GL_TEXTURE_2D, tex.id());
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, tex.width, tex.height,
+                  integer ? integer_format_of(channels) : format_of(channels), integer ? GL_UNSIGNED_INT : GL_FLOAT,
+                  data);
+  glBindTexture(GL_TEXTURE_2D, 0);
 }
 
 Texture upload_texture(const Image& img, GLenum internal_format) {
   Texture t = make_texture(img.width, img.height, internal_format);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTextureSubImage2D(t.id(), 0, 0, 0, img.width, img.height, format_of(img.channels), GL_FLOAT, img.data.data());
+  write_texture(t, img.channels, false, img.data.data());
   return t;
 }
 
 Image download_texture(const Texture& tex, int channels) {
   Image img(tex.width, tex.height, channels);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(tex.id(), 0, format_of(channels), GL_FLOAT, GLsizei(img.data.size() * sizeof(float)),
-                    img.data.data());
+  read_texture(tex, format_of(channels), GL_FLOAT, img.data);
   return img;
 }
 
 ImageU32 download_texture_u32(const Texture& tex, int channels) {
   ImageU32 img(tex.width, tex.height, channels);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(tex.id(), 0, integer_format_of(channels), GL_UNSIGNED_INT,
-                    GLsizei(img.data.size() * sizeof(uint32_t)), img.data.data());
+  read_texture(tex, integer_format_of(channels), GL_UNSIGNED_INT, img.data);
   return img;
+}
+
+void set_sampling(const Texture& tex, GLenum filter, GLenum wrap) {
+  glBindTexture(GL_TEXTURE_2D, tex.id());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GLint(filter));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GLint(filter));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GLint(wrap));
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GLint(wrap));
+  glBindTexture(GL_TEXTURE_2D, 0);
 }
 
 Buffer make_buffer(const void* data, size_t bytes) {
   GLuint id = 0;
-  glCreateBuffers(1, &id);
-  glNamedBufferStorage(id, GLsizeiptr(bytes), data, 0);
+  glGenBuffers(1, &id);
+  glBindBuffer(GL_ARRAY_BUFFER, id);
+  glBufferStorage(GL_ARRAY_BUFFER, GLsizeiptr(bytes), data, 0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
   return Buffer(id);
 }
 
 VertexArray make_vertex_array() {
   GLuint id = 0;
-  glCreateVertexArrays(1, &id);
+  glGenVertexArrays(1, &id);
   return VertexArray(id);
 }
 
 Framebuffer make_framebuffer() {
   GLuint id = 0;
-  glCreateFramebuffers(1, &id);
+  glGenFramebuffers(1, &id);
   return Framebuffer(id);
 }
 
 Renderbuffer make_renderbuffer(int width, int height, GLenum internal_format) {
   GLuint id = 0;
-  glCreateRenderbuffers(1, &id);
-  glNamedRenderbufferStorage(id, internal_format, width, height);
+  glGenRenderbuffers(1, &id);
+  glBindRenderbuffer(GL_RENDERBUFFER, id);
+  glRenderbufferStorage(GL_RENDERBUFFER, internal_format, width, height);
+  glBindRenderbuffer(GL_RENDERBUFFER, 0);
   return Renderbuffer(id);
+}
+
+void bind_textures(std::initializer_list<const Texture*> textures) {
+  GLenum unit = 0;
+  for (const Texture* t : textures) {
+    glActiveTexture(GL_TEXTURE0 + unit++);
+    glBindTexture(GL_TEXTURE_2D, t->id());
+  }
+  glActiveTexture(GL_TEXTURE0);
 }
 
 }  // namespace plumbago::gpu

@@ -1,6 +1,7 @@
 // RAII owners of GL objects (direct state access, GL 4.5) and image transfer.
 #pragma once
 
+#include <initializer_list>
 #include <utility>
 
 #include "common/image.hpp"
@@ -59,6 +60,12 @@ struct Texture {
 Texture make_texture(int width, int height, GLenum internal_format);
 // Uploads a float image (1-4 channels) into a texture of `internal_format`.
 Texture upload_texture(const Image& img, GLenum internal_format);
+// Replaces a texture's contents: `channels` floats (or uint32 when `integer`) per texel.
+void write_texture(const Texture& tex, int channels, bool integer, const void* data);
+// Filter (GL_NEAREST/GL_LINEAR) and wrap mode (GL_REPEAT/GL_CLAMP_TO_EDGE) of a texture.
+void set_sampling(const Texture& tex, GLenum filter, GLenum wrap);
+// Binds `textures` to texture units 0, 1, ... in order.
+void bind_textures(std::initializer_list<const Texture*> textures);
 // Reads back `channels` float channels (row 0 = bottom, as GL stores it).
 Image download_texture(const Texture& tex, int channels);
 ImageU32 download_texture_u32(const Texture& tex, int channels);

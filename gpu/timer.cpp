@@ -2,14 +2,37 @@
 
 namespace plumbago::gpu {
 
-PassTimer::Query PassTimer::timestamp() {
-  GLuint id = 0;
-  glCreateQueries(GL_TIMESTAMP, 1, &id);
-  glQueryCounter(id, GL_TIMESTAMP);
-  return Query(id);
+#if PLUMBAGO_GL_OSMESA
+
+void PassTimer::begin(const std::string& pass) {
+  glFinish();
+  spans_.push_back({pass, Query(), Query(), Stopwatch()});
 }
 
-void PassTimer::begin(const std::string& pass) { spans_.push_back({pass, timestamp(), Query()}); }
+void PassTimer::end() {
+  glFinish();
+  spans_.back().wall_ms = spans_.back().wall.ms();
+}
+
+std::vector<PassTime> PassTimer::results() {
+  std::vector<PassTime> out;
+  for (const Span& s : spans_) out.push_back({s.pass, s.wall_ms});
+  spans_.clear();
+  return out;
+}
+
+#else
+
+namespace {
+GlName<detail::delete_query> timestamp() {
+  GLuint id = 0;
+  glGenQueries(1, &id);
+  glQueryCounter(id, GL_TIMESTAMP);
+  return GlName<detail::delete_query>(id);
+}
+}  // namespace
+
+void PassTimer::begin(const std::string& pass) { spans_.push_back({pass, timestamp(), Query(), Stopwatch()}); }
 
 void PassTimer::end() { spans_.back().stop = timestamp(); }
 
@@ -24,5 +47,7 @@ std::vector<PassTime> PassTimer::results() {
   spans_.clear();
   return out;
 }
+
+#endif
 
 }  // namespace plumbago::gpu

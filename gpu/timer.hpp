@@ -1,7 +1,10 @@
-// GPU time of each pass of a frame, from GL timestamp queries (glQueryCounter with
-// GL_TIMESTAMP) at the start and end of the pass.
-// (GL_TIME_ELAPSED is not used: llvmpipe on Mesa 22.3 answers the first elapsed-time
-// query around a freshly bound framebuffer with the time since boot.)
+// GPU time of each pass of a frame.
+//  - EGL build: GL timestamp queries (glQueryCounter) at the start and end of the pass.
+//    (GL_TIME_ELAPSED is not used: llvmpipe on Mesa 22.3 answers the first elapsed-time
+//    query around a freshly bound framebuffer with the time since boot.)
+//  - OSMesa build: libOSMesa exports no timer-query entry points, so each pass ends
+//    with glFinish and is timed by the wall clock (exact for llvmpipe, which runs on the
+//    CPU, but it serializes the passes).
 #pragma once
 
 #include <string>
@@ -24,8 +27,9 @@ class PassTimer {
   struct Span {
     std::string pass;
     Query start, stop;
+    Stopwatch wall;
+    double wall_ms = 0;
   };
-  static Query timestamp();
   std::vector<Span> spans_;
 };
 
