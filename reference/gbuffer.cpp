@@ -1,0 +1,137 @@
+#include "reference/gbuffer.hpp"
+
+#include <embree3/rtcore.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace plumbago::reference {
+
+namespace {
+
+// An Embree scene of the world-space objects; geometry ID = object index.
+class RayScene {
+ public:
+  explicit RayScene(const std::vector<WorldObject>& objects) : device_(rtcNewDevice(nullptr)) {
+    if (!device_) throw std::runtime_error("Embree: cannot create a device");
+    scene_ = rtcNewScene(device_);
+    rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+    for (size_t i = 0; i < objects.size(); ++i) attach(objects[i], unsigned(i));
+    rtcCommitScene(scene_);
+    if (RTCError e = rtcGetDeviceError(device_); e != RTC_ERROR_NONE)
+      throw std::runtime_error("Embree could not build the scene (error " + std::to_string(int(e)) + ")");
+  }
+  ~RayScene() {
+    rtcReleaseScene(scene_);
+    rtcReleaseDevice(device_);
+  }
+  RayScene(const RayScene&) = delete;
+  RayScene& operator=(const RayScene&) = delete;
+  RTCScene get() const { return scene_; }
+
+ private:
+  void attach(const WorldObject& obj, unsigned id) {
+    RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* v = static_cast<glm::vec3*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                              sizeof(glm::vec3), obj.positions.size()));
+    std::copy(obj.positions.begin(), obj.positions.end(), v);
+    auto* t = static_cast<glm::uvec3*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                               sizeof(glm::uvec3), obj.triangles.size()));
+    std::copy(obj.triangles.begin(), obj.triangles.end(), t);
+    rtcCommitGeometry(geom);
+    rtcAttachGeometryByID(scene_, geom, id);
+    rtcReleaseGeometry(geom);
+  }
+  RTCDevice device_;
+  RTCScene scene_ = nullptr;
+};
+
+struct Hit {
+  unsigned object = RTC_INVALID_GEOMETRY_ID, triangle = 0;
+  float t = 0, u = 0, v = 0;
+};
+
+// Traces the primary rays of one 4x4 tile (a packet of 16 coherent rays).
+void trace_tile(RTCScene scene, const Camera& cam, int x0, int y0, int w, int h, Hit out[16]) {
+  alignas(64) RTCRayHit16 rays;
+  alignas(64) int valid[16];
+  for (int i = 0; i < 16; ++i) {
+    int x = x0 + i % 4, y = y0 + i / 4;
+    valid[i] = x < w && y < h ? -1 : 0;
+    glm::vec3 d = cam.ray_direction(float(x) + 0.5f, float(y) + 0.5f, w, h);  // pixel center (SPEC 0)
+    rays.ray.org_x[i] = cam.eye.x, rays.ray.org_y[i] = cam.eye.y, rays.ray.org_z[i] = cam.eye.z;
+    rays.ray.dir_x[i] = d.x, rays.ray.dir_y[i] = d.y, rays.ray.dir_z[i] = d.z;
+    rays.ray.tnear[i] = 0.0f;
+    rays.ray.tfar[i] = std::numeric_limits<float>::infinity();
+    rays.ray.mask[i] = 0xFFFFFFFFu, rays.ray.flags[i] = 0, rays.ray.time[i] = 0;
+    rays.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+  }
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  rtcIntersect16(valid, scene, &context, &rays);
+  for (int i = 0; i < 16; ++i)
+    out[i] = {rays.hit.geomID[i], rays.hit.primID[i], rays.ray.tfar[i], rays.hit.u[i], rays.hit.v[i]};
+}
+
+void set3(Image& img, int x, int y, glm::vec3 v) {
+  for (int c = 0; c < 3; ++c) img.at(x, y, c) = v[c];
+}
+
+// Fills pixel (x, y) from its hit: barycentrics w = (1-u-v, u, v) weight corners 0, 1, 2.
+void shade_hit(const Hit& hit, const std::vector<WorldObject>& objects, const Camera& cam, glm::vec3 ray_dir,
+               int x, int y, GBuffer& g) {
+  const WorldObject& obj = objects[hit.object];
+  const glm::uvec3& tri = obj.triangles[hit.triangle];
+  glm::vec3 w(1.0f - hit.u - hit.v, hit.u, hit.v);
+  glm::mat3 to_view(cam.view());
+  glm::vec3 fn = face_normal(obj, hit.triangle);
+  glm::vec3 n = obj.flat ? fn : w[0] * obj.normals[tri[0]] + w[1] * obj.normals[tri[1]] + w[2] * obj.normals[tri[2]];
+  auto unit = [](glm::vec3 v) { float len = glm::length(v); return len > 0 ? v / len : glm::vec3(0); };
+  set3(g.normal, x, y, unit(to_view * n));
+  set3(g.face_normal, x, y, unit(to_view * fn));
+  set3(g.bary, x, y, w);
+  g.depth.at(x, y) = hit.t * glm::dot(ray_dir, cam.forward());  // d = -z_view
+  g.ids.at(x, y, 0) = hit.object + 1;
+  g.ids.at(x, y, 1) = hit.triangle;
+  g.gouraud.at(x, y) = w[0] * obj.gouraud[tri[0]] + w[1] * obj.gouraud[tri[1]] + w[2] * obj.gouraud[tri[2]];
+}
+
+GBuffer background_gbuffer(int w, int h, const Camera& cam) {
+  GBuffer g;
+  g.normal = Image(w, h, 3);
+  g.face_normal = Image(w, h, 3);
+  g.depth = Image(w, h, 1, cam.far);
+  g.ids = ImageU32(w, h, 2);
+  g.bary = Image(w, h, 3);
+  g.gouraud = Image(w, h, 1, 1.0f);
+  g.near = cam.near;
+  g.far = cam.far;
+  return g;
+}
+
+}  // namespace
+
+GBuffer trace_gbuffer(const Scene& scene, int width, int height) {
+  std::vector<WorldObject> objects = world_geometry(scene);
+  RayScene rays(objects);
+  const Camera& cam = scene.camera;
+  GBuffer g = background_gbuffer(width, height, cam);
+  int tiles_x = (width + 3) / 4, tiles_y = (height + 3) / 4;
+  tbb::parallel_for(0, tiles_x * tiles_y, [&](int tile) {
+    int x0 = tile % tiles_x * 4, y0 = tile / tiles_x * 4;
+    Hit hits[16];
+    trace_tile(rays.get(), cam, x0, y0, width, height, hits);
+    for (int i = 0; i < 16; ++i) {
+      int x = x0 + i % 4, y = y0 + i / 4;
+      if (x >= width || y >= height || hits[i].object == RTC_INVALID_GEOMETRY_ID) continue;
+      glm::vec3 dir = cam.ray_direction(float(x) + 0.5f, float(y) + 0.5f, width, height);
+      shade_hit(hits[i], objects, cam, dir, x, y, g);
+    }
+  });
+  return g;
+}
+
+}  // namespace plumbago::reference

@@ -1,0 +1,13 @@
+// Ray-traced G-buffer (SPEC 2.1), the CPU reference for gpu/gbuffer.cpp: one Embree
+// primary ray through each pixel center, over the same world-space geometry.
+#pragma once
+
+#include "common/gbuffer.hpp"
+
+namespace plumbago::reference {
+
+// Every channel of GBuffer (common/gbuffer.hpp) for a width x height image of `scene`.
+// Back faces keep the mesh's orientation (their normals point away from the camera).
+GBuffer trace_gbuffer(const Scene& scene, int width, int height);
+
+}  // namespace plumbago::reference
