@@ -15,12 +15,20 @@ glm::mat4 Camera::projection(float aspect) const {
 glm::vec3 Camera::forward() const { return glm::normalize(target - eye); }
 
 glm::vec3 Camera::ray_direction(float px, float py, int width, int height) const {
-  float tan_half = std::tan(glm::radians(fov_deg) * 0.5f);
-  float aspect = float(width) / float(height);
-  float x = (2.0f * px / float(width) - 1.0f) * tan_half * aspect;
-  float y = (2.0f * py / float(height) - 1.0f) * tan_half;
-  glm::mat3 camera_to_world = glm::mat3(glm::inverse(view()));
-  return glm::normalize(camera_to_world * glm::vec3(x, y, -1.0f));
+  return PrimaryRays(*this, width, height).direction(px, py);
+}
+
+PrimaryRays::PrimaryRays(const Camera& c, int width, int height)
+    : camera_to_world_(glm::inverse(c.view())),
+      tan_half_(std::tan(glm::radians(c.fov_deg) * 0.5f)),
+      aspect_(float(width) / float(height)),
+      width_(width),
+      height_(height) {}
+
+glm::vec3 PrimaryRays::direction(float px, float py) const {
+  float x = (2.0f * px / float(width_) - 1.0f) * tan_half_ * aspect_;
+  float y = (2.0f * py / float(height_) - 1.0f) * tan_half_;
+  return glm::normalize(camera_to_world_ * glm::vec3(x, y, -1.0f));
 }
 
 Camera fit_camera(glm::vec3 center, float radius, glm::vec3 direction, float fov_deg) {

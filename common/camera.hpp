@@ -20,6 +20,19 @@ struct Camera {
   glm::vec3 forward() const;
 };
 
+// Primary-ray directions of one camera and image size, with the camera basis computed
+// once: the same formula as Camera::ray_direction.
+class PrimaryRays {
+ public:
+  PrimaryRays(const Camera& camera, int width, int height);
+  glm::vec3 direction(float px, float py) const;
+
+ private:
+  glm::mat3 camera_to_world_;
+  float tan_half_, aspect_;
+  int width_, height_;
+};
+
 // A camera fitted to a bounding sphere: looks at its center from `direction`, with the
 // sphere filling the view and near/far planes bracketing it.
 Camera fit_camera(glm::vec3 center, float radius, glm::vec3 direction, float fov_deg);

@@ -55,13 +55,14 @@ struct Hit {
 };
 
 // Traces the primary rays of one 4x4 tile (a packet of 16 coherent rays).
-void trace_tile(RTCScene scene, const Camera& cam, int x0, int y0, int w, int h, Hit out[16]) {
+void trace_tile(RTCScene scene, const Camera& cam, const PrimaryRays& primary, int x0, int y0, int w, int h,
+                Hit out[16]) {
   alignas(64) RTCRayHit16 rays;
   alignas(64) int valid[16];
   for (int i = 0; i < 16; ++i) {
     int x = x0 + i % 4, y = y0 + i / 4;
     valid[i] = x < w && y < h ? -1 : 0;
-    glm::vec3 d = cam.ray_direction(float(x) + 0.5f, float(y) + 0.5f, w, h);  // pixel center (SPEC 0)
+    glm::vec3 d = primary.direction(float(x) + 0.5f, float(y) + 0.5f);  // pixel center (SPEC 0)
     rays.ray.org_x[i] = cam.eye.x, rays.ray.org_y[i] = cam.eye.y, rays.ray.org_z[i] = cam.eye.z;
     rays.ray.dir_x[i] = d.x, rays.ray.dir_y[i] = d.y, rays.ray.dir_z[i] = d.z;
     rays.ray.tnear[i] = 0.0f;
@@ -81,19 +82,18 @@ void set3(Image& img, int x, int y, glm::vec3 v) {
 }
 
 // Fills pixel (x, y) from its hit: barycentrics w = (1-u-v, u, v) weight corners 0, 1, 2.
-void shade_hit(const Hit& hit, const std::vector<WorldObject>& objects, const Camera& cam, glm::vec3 ray_dir,
-               int x, int y, GBuffer& g) {
+void shade_hit(const Hit& hit, const std::vector<WorldObject>& objects, const glm::mat3& to_view, glm::vec3 forward,
+               glm::vec3 ray_dir, int x, int y, GBuffer& g) {
   const WorldObject& obj = objects[hit.object];
   const glm::uvec3& tri = obj.triangles[hit.triangle];
   glm::vec3 w(1.0f - hit.u - hit.v, hit.u, hit.v);
-  glm::mat3 to_view(cam.view());
   glm::vec3 fn = face_normal(obj, hit.triangle);
   glm::vec3 n = obj.flat ? fn : w[0] * obj.normals[tri[0]] + w[1] * obj.normals[tri[1]] + w[2] * obj.normals[tri[2]];
   auto unit = [](glm::vec3 v) { float len = glm::length(v); return len > 0 ? v / len : glm::vec3(0); };
   set3(g.normal, x, y, unit(to_view * n));
   set3(g.face_normal, x, y, unit(to_view * fn));
   set3(g.bary, x, y, w);
-  g.depth.at(x, y) = hit.t * glm::dot(ray_dir, cam.forward());  // d = -z_view
+  g.depth.at(x, y) = hit.t * glm::dot(ray_dir, forward);  // d = -z_view
   g.ids.at(x, y, 0) = hit.object + 1;
   g.ids.at(x, y, 1) = hit.triangle;
   g.gouraud.at(x, y) = w[0] * obj.gouraud[tri[0]] + w[1] * obj.gouraud[tri[1]] + w[2] * obj.gouraud[tri[2]];
@@ -119,16 +119,19 @@ GBuffer trace_gbuffer(const Scene& scene, int width, int height) {
   RayScene rays(objects);
   const Camera& cam = scene.camera;
   GBuffer g = background_gbuffer(width, height, cam);
+  PrimaryRays primary(cam, width, height);
+  glm::mat3 to_view(cam.view());
+  glm::vec3 forward = cam.forward();
   int tiles_x = (width + 3) / 4, tiles_y = (height + 3) / 4;
   tbb::parallel_for(0, tiles_x * tiles_y, [&](int tile) {
     int x0 = tile % tiles_x * 4, y0 = tile / tiles_x * 4;
     Hit hits[16];
-    trace_tile(rays.get(), cam, x0, y0, width, height, hits);
+    trace_tile(rays.get(), cam, primary, x0, y0, width, height, hits);
     for (int i = 0; i < 16; ++i) {
       int x = x0 + i % 4, y = y0 + i / 4;
       if (x >= width || y >= height || hits[i].object == RTC_INVALID_GEOMETRY_ID) continue;
-      glm::vec3 dir = cam.ray_direction(float(x) + 0.5f, float(y) + 0.5f, width, height);
-      shade_hit(hits[i], objects, cam, dir, x, y, g);
+      glm::vec3 dir = primary.direction(float(x) + 0.5f, float(y) + 0.5f);
+      shade_hit(hits[i], objects, to_view, forward, dir, x, y, g);
     }
   });
   return g;
