@@ -80,13 +80,31 @@ ImageU32 download_texture_u32(const Texture& tex, int channels) {
   return img;
 }
 
-void set_sampling(const Texture& tex, GLenum filter, GLenum wrap) {
-  glBindTexture(GL_TEXTURE_2D, tex.id());
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GLint(filter));
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GLint(filter));
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GLint(wrap));
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GLint(wrap));
-  glBindTexture(GL_TEXTURE_2D, 0);
+void set_sampling(const Texture& tex, GLenum filter, GLenum wrap_s, GLenum wrap_t, GLenum wrap_r) {
+  glBindTexture(tex.target, tex.id());
+  glTexParameteri(tex.target, GL_TEXTURE_MIN_FILTER, GLint(filter));
+  glTexParameteri(tex.target, GL_TEXTURE_MAG_FILTER, GLint(filter));
+  glTexParameteri(tex.target, GL_TEXTURE_WRAP_S, GLint(wrap_s));
+  glTexParameteri(tex.target, GL_TEXTURE_WRAP_T, GLint(wrap_t));
+  glTexParameteri(tex.target, GL_TEXTURE_WRAP_R, GLint(wrap_r));
+  glBindTexture(tex.target, 0);
+}
+
+Texture upload_texture_3d(const std::vector<Image>& layers, GLenum internal_format) {
+  const Image& first = layers.at(0);
+  GLuint id = 0;
+  glGenTextures(1, &id);
+  Texture t{GlName<detail::delete_texture>(id), first.width, first.height, internal_format, GL_TEXTURE_3D,
+            int(layers.size())};
+  glBindTexture(GL_TEXTURE_3D, id);
+  glTexStorage3D(GL_TEXTURE_3D, 1, internal_format, first.width, first.height, GLsizei(layers.size()));
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  for (size_t l = 0; l < layers.size(); ++l)
+    glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, GLint(l), first.width, first.height, 1, format_of(first.channels),
+                    GL_FLOAT, layers[l].data.data());
+  glBindTexture(GL_TEXTURE_3D, 0);
+  set_sampling(t, GL_LINEAR, GL_REPEAT, GL_REPEAT, GL_CLAMP_TO_EDGE);
+  return t;
 }
 
 Buffer make_buffer(const void* data, size_t bytes) {
@@ -123,7 +141,7 @@ void bind_textures(std::initializer_list<const Texture*> textures) {
   GLenum unit = 0;
   for (const Texture* t : textures) {
     glActiveTexture(GL_TEXTURE0 + unit++);
-    glBindTexture(GL_TEXTURE_2D, t->id());
+    glBindTexture(t->target, t->id());
   }
   glActiveTexture(GL_TEXTURE0);
 }

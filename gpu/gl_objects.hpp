@@ -2,6 +2,7 @@
 #pragma once
 
 #include <initializer_list>
+#include <vector>
 #include <utility>
 
 #include "common/image.hpp"
@@ -48,22 +49,27 @@ using Framebuffer = GlName<detail::delete_framebuffer>;
 using Renderbuffer = GlName<detail::delete_renderbuffer>;
 using VertexArray = GlName<detail::delete_vertex_array>;
 
-// A 2D texture with its size and format.
+// A 2D or 3D texture with its size and format.
 struct Texture {
   GlName<detail::delete_texture> name;
   int width = 0, height = 0;
   GLenum internal_format = 0;
+  GLenum target = GL_TEXTURE_2D;
+  int depth = 1;  // layers of a GL_TEXTURE_3D
   GLuint id() const { return name.id(); }
 };
 
 // Immutable storage of `internal_format`, NEAREST filtering, CLAMP_TO_EDGE.
 Texture make_texture(int width, int height, GLenum internal_format);
+// A 3D texture whose layers are `layers` (equal sizes), as the pencil stack is sampled.
+Texture upload_texture_3d(const std::vector<Image>& layers, GLenum internal_format);
 // Uploads a float image (1-4 channels) into a texture of `internal_format`.
 Texture upload_texture(const Image& img, GLenum internal_format);
 // Replaces a texture's contents: `channels` floats (or uint32 when `integer`) per texel.
 void write_texture(const Texture& tex, int channels, bool integer, const void* data);
-// Filter (GL_NEAREST/GL_LINEAR) and wrap mode (GL_REPEAT/GL_CLAMP_TO_EDGE) of a texture.
-void set_sampling(const Texture& tex, GLenum filter, GLenum wrap);
+// Filter (GL_NEAREST/GL_LINEAR) and wrap modes (GL_REPEAT/GL_CLAMP_TO_EDGE) of a texture
+// (wrap_r matters for 3D textures only).
+void set_sampling(const Texture& tex, GLenum filter, GLenum wrap_s, GLenum wrap_t, GLenum wrap_r = GL_CLAMP_TO_EDGE);
 // Binds `textures` to texture units 0, 1, ... in order.
 void bind_textures(std::initializer_list<const Texture*> textures);
 // Reads back `channels` float channels (row 0 = bottom, as GL stores it).
