@@ -7,7 +7,6 @@ namespace plumbago {
 namespace {
 
 double cross2(glm::dvec2 u, glm::dvec2 v) { return u.x * v.y - u.y * v.x; }
-double angle2(glm::dvec2 u, glm::dvec2 v) { return std::atan2(cross2(u, v), glm::dot(u, v)); }
 
 // Where the line p + t (q - p) is within distance r of c: t in [t0, t1]. False if nowhere.
 template <class V>
@@ -23,14 +22,22 @@ bool ball_interval(const V& p, const V& q, const V& c, double r, double& t0, dou
   return true;
 }
 
-// Signed area of the disk of radius r at the origin intersected with triangle (0, u, v).
-double disk_sector_triangle_area(glm::dvec2 u, glm::dvec2 v, double r) {
+double angle2(glm::dvec2 u, glm::dvec2 v) { return std::atan2(cross2(u, v), glm::dot(u, v)); }
+
+// Signed area of disk(origin, r) ∩ triangle(origin, u, v): the part of segment uv inside
+// the disk contributes its triangle with the origin, the parts outside a circular sector.
+// Each term's angle is below pi, so atan2 is never ambiguous.
+double disk_sector_triangle_area(const glm::dvec2& u, const glm::dvec2& v, double r) {
   double r2 = r * r;
-  if (glm::dot(u, u) <= r2 && glm::dot(v, v) <= r2) return 0.5 * cross2(u, v);
+  bool u_in = glm::dot(u, u) <= r2, v_in = glm::dot(v, v) <= r2;
+  if (u_in && v_in) return 0.5 * cross2(u, v);
   double t0, t1;
   if (!ball_interval(u, v, glm::dvec2(0), r, t0, t1) || t1 <= 0 || t0 >= 1) return 0.5 * r2 * angle2(u, v);
-  glm::dvec2 a = u + std::max(t0, 0.0) * (v - u), b = u + std::min(t1, 1.0) * (v - u);
-  return 0.5 * (r2 * angle2(u, a) + cross2(a, b) + r2 * angle2(b, v));
+  glm::dvec2 a = u_in ? u : u + t0 * (v - u), b = v_in ? v : u + t1 * (v - u);
+  double area = 0.5 * cross2(a, b);
+  if (!u_in) area += 0.5 * r2 * angle2(u, a);
+  if (!v_in) area += 0.5 * r2 * angle2(b, v);
+  return area;
 }
 
 }  // namespace
@@ -56,7 +63,7 @@ double triangle_area_in_ball(const glm::dvec3& a, const glm::dvec3& b, const glm
   glm::dvec2 pa = planar(a), pb = planar(b), pd = planar(d);
   double area = disk_sector_triangle_area(pa, pb, rho) + disk_sector_triangle_area(pb, pd, rho) +
                 disk_sector_triangle_area(pd, pa, rho);
-  return std::clamp(std::abs(area), 0.0, 0.5 * twice_area);
+  return std::clamp(area, 0.0, 0.5 * twice_area);
 }
 
 }  // namespace plumbago

@@ -172,29 +172,34 @@ Frame tangent_plane_frame(const SymmetricTensor& t, const glm::dvec3& n) {
 }
 
 // SPEC's literal reading: the eigenvector of the smallest-magnitude eigenvalue is the
-// normal (oriented like `oriented`), the other two swap roles as above.
-Frame tensor_eigen_frame(const SymmetricTensor& t, const glm::dvec3& oriented) {
+// normal. Where that eigenvalue ties with another (the umbilic test's tolerance: a
+// cylinder's normal and circumferential direction both have ~0, a plane all three), the
+// eigenvectors are any basis of their eigenspace, so n is the ball normal projected into
+// that eigenspace.
+glm::dvec3 tensor_normal(const SymmetricTensor& t, const glm::dvec3& ball_normal, double ratio, double flat) {
   Eigen::Matrix3d m;
   m << t.xx, t.xy, t.xz, t.xy, t.yy, t.yz, t.xz, t.yz, t.zz;
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(m);
-  const auto& values = eig.eigenvalues();  // ascending
-  int normal = 0;
-  for (int i = 1; i < 3; ++i)
-    if (std::abs(values[i]) < std::abs(values[normal])) normal = i;
-  int lower = normal == 0 ? 1 : 0, upper = normal == 2 ? 1 : 2;
-  auto column = [&](int i) { return glm::dvec3(eig.eigenvectors()(0, i), eig.eigenvectors()(1, i), eig.eigenvectors()(2, i)); };
-  glm::dvec3 n = column(normal);
-  if (glm::dot(n, oriented) < 0) n = -n;
-  return {n, column(upper), column(lower), values[lower], values[upper]};
+  Eigen::Vector3d magnitude = eig.eigenvalues().cwiseAbs();
+  double tie = ratio * magnitude.maxCoeff() + flat;
+  glm::dvec3 n(0);
+  for (int i = 0; i < 3; ++i) {
+    if (magnitude[i] > magnitude.minCoeff() + tie) continue;
+    glm::dvec3 e(eig.eigenvectors()(0, i), eig.eigenvectors()(1, i), eig.eigenvectors()(2, i));
+    n += glm::dot(ball_normal, e) * e;
+  }
+  return glm::length(n) > 1e-6 ? glm::normalize(n) : ball_normal;
 }
 
-Frame vertex_frame(const BallSums& sums, const glm::dvec3& mesh_normal, CurvatureNormal mode) {
+// T / |B| and its frame; `flat`: curvatures below it count as zero.
+Frame vertex_frame(const BallSums& sums, const glm::dvec3& mesh_normal, const CurvatureParams& p, double flat) {
   glm::dvec3 n = unit_or_zero(sums.normal);
   if (n == glm::dvec3(0)) n = mesh_normal;
   SymmetricTensor t = sums.tensor;
   double inverse_area = sums.area > 0 ? 1.0 / sums.area : 0.0;
   for (double* x : {&t.xx, &t.xy, &t.xz, &t.yy, &t.yz, &t.zz}) *x *= inverse_area;
-  return mode == CurvatureNormal::Tensor && sums.area > 0 ? tensor_eigen_frame(t, n) : tangent_plane_frame(t, n);
+  if (p.normal == CurvatureNormal::Tensor) n = tensor_normal(t, n, p.umbilic_ratio, flat);
+  return tangent_plane_frame(t, n);
 }
 
 double ring_radius(uint32_t v, const MeshTopology& topo, const Geometry& g) {
@@ -208,6 +213,7 @@ double ring_radius(uint32_t v, const MeshTopology& topo, const Geometry& g) {
 Curvature tensor_curvature(const Mesh& mesh, const MeshTopology& topo, const CurvatureParams& p, Progress& progress) {
   Geometry g = precompute_geometry(mesh, topo);
   const double radius = double(p.radius) * double(mesh.bbox_diagonal());
+  const double flat = double(p.flat_curvature) / std::max(double(mesh.bbox_diagonal()), 1e-30);
   const size_t n = mesh.positions.size();
   Curvature c;
   c.k_min.resize(n), c.k_max.resize(n), c.normal.resize(n), c.d_min.resize(n), c.d_max.resize(n);
@@ -216,10 +222,9 @@ Curvature tensor_curvature(const Mesh& mesh, const MeshTopology& topo, const Cur
     Scratch& s = scratch.local();
     for (uint32_t v = range.begin(); v != range.end(); ++v) {
       s.next_vertex();
-      BallSums sums = p.radius == 0         ? one_ring_sums(v, topo, g, s)
-                      : p.ball_covers_ring ? ball_sums(v, std::max(radius, ring_radius(v, topo, g)), mesh, topo, g, s)
-                                           : ball_sums(v, radius, mesh, topo, g, s);
-      Frame f = vertex_frame(sums, glm::dvec3(mesh.normals[v]), p.normal);
+      bool ring = p.radius == 0 || (p.ring_fallback && radius < ring_radius(v, topo, g));
+      BallSums sums = ring ? one_ring_sums(v, topo, g, s) : ball_sums(v, radius, mesh, topo, g, s);
+      Frame f = vertex_frame(sums, glm::dvec3(mesh.normals[v]), p, flat);
       c.normal[v] = f.normal, c.d_min[v] = f.d_min, c.d_max[v] = f.d_max;
       c.k_min[v] = float(f.k_min), c.k_max[v] = float(f.k_max);
     }

@@ -23,13 +23,14 @@
 //    n's tangent plane. SPEC's literal reading, `normal = tensor`, takes the eigenvector
 //    of the smallest-magnitude eigenvalue; wherever k_min ~ 0 (a cylinder, the torus's
 //    top and bottom circles) two eigenvalues are ~0 and that choice is arbitrary.
-//  - `ball_covers_ring = true` (default): B never stops short of v's neighbors. The
-//    tensor lives on edges, so a ball that cuts every edge at v short of its far end
-//    overestimates |k| by about (edge length / r); SPEC's literal radius is `false`.
+//  - `ring_fallback = true` (default): where the ball does not reach all of v's
+//    neighbors, the 1-ring is used. The tensor lives on edges, so a ball that cuts the
+//    edges at v short of their far ends overestimates |k| by about (edge length / r).
+//    SPEC's literal ball is `false`.
 //
 // `jet`: CGAL's Monge_via_jet_fitting (Cazals & Pouget 2005) of degree `jet_degree` on
-// the `jet_rings`-ring of v (grown until it has enough points for the degree), with the
-// Monge normal made to agree with the mesh's orientation.
+// the `jet_rings`-ring of v (grown until it has twice as many points as the polynomial
+// has coefficients), with the Monge normal made to agree with the mesh's orientation.
 //
 // Umbilic and flat vertices (Lee §5.3): where |k_max - k_min| < umbilic_ratio
 // (|k_max| + |k_min|) + flat_curvature / bbox diagonal, d_min is propagated from the
@@ -52,7 +53,7 @@ struct CurvatureParams {
   CurvatureMethod method;
   float radius;
   CurvatureNormal normal;
-  bool ball_covers_ring;
+  bool ring_fallback;
   int jet_degree, jet_rings;
   float umbilic_ratio, flat_curvature;
   template <class V>
@@ -63,11 +64,11 @@ struct CurvatureParams {
            "tensor: geodesic ball radius x bbox diagonal (Pacheco: 0.01); 0 = the 1-ring");
     v.choice(normal, "normal", CurvatureNormal::Ball, {"ball", "tensor"},
              "tensor: normal from the ball's faces, or the tensor's smallest eigenvector (SPEC literal)");
-    v.boolean(ball_covers_ring, "ball_covers_ring", true,
-              "tensor: grow the ball to reach v's neighbors (false: the literal radius)");
+    v.boolean(ring_fallback, "ring_fallback", true,
+              "tensor: the 1-ring where the ball misses some of v's neighbors (false: the literal ball)");
     v.integer(jet_degree, "jet_degree", 2, 2, 4, "jet: degree of the fitted polynomial");
     v.integer(jet_rings, "jet_rings", 2, 1, 8, "jet: rings of neighbors fitted (more if too few points)");
-    v.real(umbilic_ratio, "umbilic_ratio", 0.05, 0.0, 1.0,
+    v.real(umbilic_ratio, "umbilic_ratio", 0.1, 0.0, 1.0,
            "directions propagated where |k_max - k_min| < this x (|k_max| + |k_min|) + flat");
     v.real(flat_curvature, "flat_curvature", 1e-3, 0.0, 1.0,
            "the + flat term of the umbilic test, x 1 / bbox diagonal");

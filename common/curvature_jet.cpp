@@ -25,15 +25,15 @@ struct RingGatherer {
   uint32_t stamp = 0;
   explicit RingGatherer(size_t vertices) : mark(vertices, 0) {}
 
-  // At least `rings` rings, more while there are fewer than `needed` points (up to
+  // At least `rings` rings, more while there are fewer than `wanted` points (up to
   // `rings` + 4, or the whole connected component).
-  void gather(uint32_t v, int rings, size_t needed, const Mesh& mesh, const MeshTopology& topo) {
+  void gather(uint32_t v, int rings, size_t wanted, const Mesh& mesh, const MeshTopology& topo) {
     if (++stamp == 0) std::fill(mark.begin(), mark.end(), 0), stamp = 1;
     points.clear();
     ring.assign(1, v);
     mark[v] = stamp;
     add_points(mesh);
-    for (int level = 1; !ring.empty() && (level <= rings || (points.size() < needed && level <= rings + 4)); ++level) {
+    for (int level = 1; !ring.empty() && (level <= rings || (points.size() < wanted && level <= rings + 4)); ++level) {
       std::vector<uint32_t> next;
       for (uint32_t u : ring)
         for (uint32_t w : topo.neighbors_of(u))
@@ -71,7 +71,9 @@ bool fit_vertex(const RingGatherer& ring, int degree, const glm::vec3& mesh_norm
 
 Curvature jet_curvature(const Mesh& mesh, const MeshTopology& topo, const CurvatureParams& p, Progress& progress) {
   const size_t n = mesh.positions.size();
-  const size_t needed = size_t((p.jet_degree + 1) * (p.jet_degree + 2) / 2);
+  // A fit needs as many points as coefficients; with fewer than twice as many, rounding
+  // noise in the positions dominates the higher degrees.
+  const size_t needed = size_t((p.jet_degree + 1) * (p.jet_degree + 2) / 2), wanted = 2 * needed;
   Curvature c;
   c.k_min.assign(n, 0), c.k_max.assign(n, 0), c.d_min.assign(n, glm::vec3(0)), c.d_max.assign(n, glm::vec3(0));
   c.normal = mesh.normals;
@@ -79,7 +81,7 @@ Curvature jet_curvature(const Mesh& mesh, const MeshTopology& topo, const Curvat
   tbb::parallel_for(tbb::blocked_range<uint32_t>(0, uint32_t(n), 256), [&](const tbb::blocked_range<uint32_t>& range) {
     RingGatherer& ring = gatherers.local();
     for (uint32_t v = range.begin(); v != range.end(); ++v) {
-      ring.gather(v, p.jet_rings, needed, mesh, topo);
+      ring.gather(v, p.jet_rings, wanted, mesh, topo);
       glm::dvec3 normal, d_min, d_max;
       double k_min, k_max;
       if (ring.points.size() < needed || !fit_vertex(ring, p.jet_degree, mesh.normals[v], normal, d_min, d_max, k_min, k_max))

@@ -41,30 +41,40 @@ OmMesh build_halfedge_mesh(const Mesh& mesh, std::vector<uint32_t>& mesh_vertex,
   for (const auto& t : mesh.triangles) {
     std::vector<OmMesh::VertexHandle> corners{OmMesh::VertexHandle(int(t[0])), OmMesh::VertexHandle(int(t[1])),
                                               OmMesh::VertexHandle(int(t[2]))};
-    if (!om.add_face(corners).is_valid()) {
+    auto face = om.add_face(corners);
+    if (!face.is_valid()) {
       for (int k = 0; k < 3; ++k) {
         corners[k] = add_vertex(om, mesh.positions[t[k]]);
         mesh_vertex.push_back(t[k]);
       }
-      om.add_face(corners);
+      face = om.add_face(corners);
       ++topo.split_faces;
     }
     auto& edges = topo.face_edges.emplace_back();
-    for (int k = 0; k < 3; ++k) edges[k] = uint32_t(om.edge_handle(om.find_halfedge(corners[k], corners[(k + 1) % 3])).idx());
+    for (auto h : om.fh_range(face))
+      for (int k = 0; k < 3; ++k)
+        if (om.from_vertex_handle(h) == corners[k]) edges[k] = uint32_t(om.edge_handle(h).idx());
   }
   return om;
 }
 
-// CSR lists from (key, value) pairs.
-void fill_csr(size_t keys, std::vector<std::pair<uint32_t, uint32_t>>& pairs, std::vector<uint32_t>& start,
+// CSR lists from (key, value) pairs, each list sorted and without repeats.
+void fill_csr(size_t keys, const std::vector<std::pair<uint32_t, uint32_t>>& pairs, std::vector<uint32_t>& start,
               std::vector<uint32_t>& values) {
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  std::vector<uint32_t> count(keys + 1, 0);
+  for (const auto& [k, v] : pairs) ++count[k + 1];
+  for (size_t k = 0; k < keys; ++k) count[k + 1] += count[k];
+  std::vector<uint32_t> raw(pairs.size()), fill(count.begin(), count.end() - 1);
+  for (const auto& [k, v] : pairs) raw[fill[k]++] = v;
   start.assign(keys + 1, 0);
-  for (const auto& [k, v] : pairs) ++start[k + 1];
-  for (size_t k = 0; k < keys; ++k) start[k + 1] += start[k];
-  values.resize(pairs.size());
-  for (size_t i = 0; i < pairs.size(); ++i) values[i] = pairs[i].second;
+  values.clear();
+  values.reserve(raw.size());
+  for (size_t k = 0; k < keys; ++k) {
+    auto begin = raw.begin() + count[k], end = raw.begin() + count[k + 1];
+    std::sort(begin, end);
+    values.insert(values.end(), begin, std::unique(begin, end));
+    start[k + 1] = uint32_t(values.size());
+  }
 }
 
 }  // namespace

@@ -1,0 +1,528 @@
+// Principal curvature (SPEC §1.1): the pieces of the tensor, the min/max roles and the
+// sign convention, accuracy on analytic surfaces, the propagation of undefined
+// directions, and the on-disk cache.
+#include <gtest/gtest.h>
+#include <tbb/task_arena.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <glm/gtc/matrix_transform.hpp>
+#include <map>
+#include <optional>
+#include <tuple>
+
+#include "common/ball_geometry.hpp"
+#include "common/curvature_cache.hpp"
+#include "common/curvature_internal.hpp"
+#include "common/random.hpp"
+#include "tests/analytic_surfaces.hpp"
+#include "tests/curvature_checks.hpp"
+
+namespace plumbago {
+namespace {
+
+using namespace plumbago::testing;
+namespace fs = std::filesystem;
+
+constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+double percentile(std::vector<double> v, double q) {
+  if (v.empty()) return 0;
+  size_t k = std::min(v.size() - 1, size_t(q * double(v.size())));
+  std::nth_element(v.begin(), v.begin() + long(k), v.end());
+  return v[k];
+}
+
+// Angle between two lines, degrees.
+double line_angle(const glm::dvec3& a, const glm::dvec3& b) {
+  return std::acos(std::min(1.0, std::abs(glm::dot(glm::normalize(a), glm::normalize(b))))) * kDegrees;
+}
+
+// ---------------------------------------------------------------------------------
+// The pieces of T(v)
+
+TEST(CurvatureTensor, DihedralAngleIsPositiveOnConvexEdges) {
+  // A roof with its ridge along x: faces tilted towards -y and +y, normals up and out.
+  double h = 0.5;
+  glm::dvec3 n0 = glm::normalize(glm::dvec3(0, -h, 1)), n1 = glm::normalize(glm::dvec3(0, h, 1));
+  // Face 0 = (ridge end b, c0, ridge start a) runs along the ridge from b to a: -x.
+  double beta = curvature::signed_dihedral_angle(n0, n1, {-1, 0, 0});
+  EXPECT_NEAR(beta, 2 * std::atan(h), 1e-12);
+  EXPECT_NEAR(curvature::signed_dihedral_angle(n1, n0, {1, 0, 0}), beta, 1e-12);  // seen from face 1
+  EXPECT_NEAR(curvature::signed_dihedral_angle(-n0, -n1, {1, 0, 0}), -beta, 1e-12);  // a valley
+}
+
+TEST(CurvatureTensor, DihedralAngleKeepsItsDigitsNearZeroAndNearPi) {
+  for (double angle : {1e-9, 1e-5, 3.14159, 3.1415926}) {
+    glm::dvec3 n0(0, 0, 1), n1(0, -std::sin(angle), std::cos(angle));
+    EXPECT_NEAR(curvature::signed_dihedral_angle(n0, n1, {1, 0, 0}), angle, 1e-12 * std::max(1.0, angle)) << angle;
+  }
+}
+
+TEST(BallGeometry, SegmentLengthInBall) {
+  glm::dvec3 c(0);
+  EXPECT_NEAR(segment_length_in_ball({-2, 0, 0}, {2, 0, 0}, c, 1), 2, 1e-12);        // through the center
+  EXPECT_NEAR(segment_length_in_ball({0, 0, 0}, {0.5, 0, 0}, c, 1), 0.5, 1e-12);     // inside
+  EXPECT_NEAR(segment_length_in_ball({0, 0, 0}, {3, 0, 0}, c, 1), 1, 1e-12);         // leaves
+  EXPECT_NEAR(segment_length_in_ball({-2, 0.6, 0}, {2, 0.6, 0}, c, 1), 1.6, 1e-12);  // chord at height 0.6
+  EXPECT_EQ(segment_length_in_ball({-2, 1.5, 0}, {2, 1.5, 0}, c, 1), 0);             // misses
+  EXPECT_EQ(segment_length_in_ball({2, 0, 0}, {3, 0, 0}, c, 1), 0);                  // points away
+  EXPECT_EQ(segment_length_in_ball({1, 1, 1}, {1, 1, 1}, c, 1), 0);                  // zero length
+}
+
+TEST(BallGeometry, TriangleAreaInBallExactCases) {
+  const double pi = 3.14159265358979323846;
+  glm::dvec3 a(-10, -10, 0), b(10, -10, 0), d(0, 20, 0);
+  EXPECT_NEAR(triangle_area_in_ball(a, b, d, {0, 0, 0}, 1), pi, 1e-12);             // disk inside
+  EXPECT_NEAR(triangle_area_in_ball(a, b, d, {0, 0, 0.6}, 1), pi * 0.64, 1e-12);    // ball above the plane
+  EXPECT_NEAR(triangle_area_in_ball(a, b, d, {0, -10, 0}, 1), pi / 2, 1e-12);       // center on an edge
+  EXPECT_NEAR(triangle_area_in_ball({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 0}, 5), 0.5, 1e-12);  // all inside
+  EXPECT_NEAR(triangle_area_in_ball({0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {0, 0, 0}, 1), pi / 4, 1e-12);  // corner
+  EXPECT_EQ(triangle_area_in_ball(a, b, d, {0, 0, 2}, 1), 0);                        // ball off the plane
+  EXPECT_EQ(triangle_area_in_ball(a, b, d, {50, 0, 0}, 1), 0);                       // beside the triangle
+  EXPECT_EQ(triangle_area_in_ball({0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 0, 0}, 1), 0);  // zero area
+}
+
+TEST(BallGeometry, TriangleAreaInBallMatchesSampling) {
+  Rng rng(1, "triangle-area-in-ball-test");
+  auto random_point = [&] { return glm::dvec3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-0.3, 0.3)); };
+  for (int trial = 0; trial < 40; ++trial) {
+    glm::dvec3 a = random_point(), b = random_point(), d = random_point(), c = random_point();
+    double r = rng.uniform(0.2, 1.2);
+    // Uniform samples of the triangle (reflected unit square), counted inside the ball.
+    const int samples = 200000;
+    int inside = 0;
+    for (int i = 0; i < samples; ++i) {
+      double u = rng.uniform(), v = rng.uniform();
+      if (u + v > 1) u = 1 - u, v = 1 - v;
+      glm::dvec3 p = a + u * (b - a) + v * (d - a);
+      inside += glm::dot(p - c, p - c) <= r * r;
+    }
+    double area = 0.5 * glm::length(glm::cross(b - a, d - a));
+    double sampled = area * inside / samples;
+    EXPECT_NEAR(triangle_area_in_ball(a, b, d, c, r), sampled, 4 * area / std::sqrt(double(samples)) + 1e-12)
+        << "trial " << trial;
+  }
+}
+
+// ---------------------------------------------------------------------------------
+// Roles and signs
+
+struct Variant {
+  const char* name;
+  std::initializer_list<std::string> params;
+};
+const Variant kVariants[] = {{"tensor", {}},
+                             {"tensor 1-ring", {"curvature.radius=0"}},
+                             {"tensor, normal from the tensor", {"curvature.normal=tensor"}},
+                             {"tensor, literal ball", {"curvature.ring_fallback=false", "curvature.radius=0.05"}},
+                             {"jet", {"curvature.method=jet"}},
+                             {"jet degree 4", {"curvature.method=jet", "curvature.jet_degree=4"}}};
+
+// The classic bug is a swapped pair: the tensor's larger eigenvector is the direction of
+// *minimum* curvature. On a cylinder that is the axis.
+TEST(Curvature, CylinderMinimumDirectionIsTheAxis) {
+  AnalyticSurface cyl = analytic_cylinder(0.5, 1.0, 0.04, Meshing::Irregular);
+  for (const Variant& variant : kVariants) {
+    Curvature c = estimate_curvature(cyl.mesh, curvature_params(variant.params));
+    expect_valid_curvature(c, cyl.mesh.positions.size(), variant.name);
+    std::vector<double> axis_angle, k_min, k_max;
+    for (size_t v = 0; v < c.size(); ++v) {
+      if (cyl.mesh.positions[v].z < 0.25 || cyl.mesh.positions[v].z > 0.75) continue;
+      axis_angle.push_back(line_angle(c.d_min[v], {0, 0, 1}));
+      k_min.push_back(c.k_min[v]);
+      k_max.push_back(c.k_max[v]);
+    }
+    EXPECT_LT(median(axis_angle), 2.0) << variant.name;
+    EXPECT_NEAR(median(k_max), 2.0, 0.2) << variant.name;
+    EXPECT_NEAR(median(k_min), 0.0, 0.1) << variant.name;
+  }
+}
+
+Mesh turned_inside_out(Mesh mesh) {
+  for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
+  compute_normals(mesh);
+  return mesh;
+}
+
+TEST(Curvature, SphereBendsAwayFromOutwardNormalsSoItsCurvatureIsPositive) {
+  AnalyticSurface sphere = analytic_sphere(2.0, 0.1, Meshing::Irregular);
+  Mesh inside_out = turned_inside_out(sphere.mesh);
+  for (const Variant& variant : kVariants) {
+    Curvature out = estimate_curvature(sphere.mesh, curvature_params(variant.params));
+    Curvature in = estimate_curvature(inside_out, curvature_params(variant.params));
+    std::vector<double> k_out, k_in, normal_out, normal_in;
+    for (size_t v = 0; v < out.size(); ++v) {
+      glm::dvec3 outward = glm::normalize(glm::dvec3(sphere.mesh.positions[v]));
+      k_out.push_back(0.5 * (out.k_min[v] + out.k_max[v]));
+      k_in.push_back(0.5 * (in.k_min[v] + in.k_max[v]));
+      normal_out.push_back(glm::dot(glm::dvec3(out.normal[v]), outward));
+      normal_in.push_back(glm::dot(glm::dvec3(in.normal[v]), outward));
+    }
+    EXPECT_NEAR(median(k_out), 0.5, 0.03) << variant.name;
+    EXPECT_NEAR(median(k_in), -0.5, 0.03) << variant.name;
+    EXPECT_GT(*std::min_element(normal_out.begin(), normal_out.end()), 0.99) << variant.name;
+    EXPECT_LT(*std::max_element(normal_in.begin(), normal_in.end()), -0.99) << variant.name;
+  }
+}
+
+// ---------------------------------------------------------------------------------
+// Accuracy on analytic surfaces
+
+struct Accuracy {
+  double direction_deg = -1;  // -1: the surface has no defined directions (a sphere)
+  double k_min_rel, k_max_rel;
+  size_t vertices;
+};
+
+// Vertices within `margin` of an open boundary are left out (every estimator is biased
+// there). Direction errors are taken where the true directions are defined (SPEC's
+// umbilic test on the exact curvatures). The error of k is relative to |k|, or to a
+// tenth of the larger |k| where |k| is smaller than that (a cylinder's k_min = 0).
+Accuracy measure_accuracy(const AnalyticSurface& s, const Curvature& c, double margin) {
+  MeshTopology topo = build_topology(s.mesh);
+  std::vector<glm::dvec3> boundary;
+  for (const auto& e : topo.edges)
+    if (e.face[1] < 0) boundary.push_back(s.mesh.positions[e.from]);
+  CurvatureParams defaults = curvature_params();
+  std::vector<double> direction, k_min, k_max;
+  for (size_t v = 0; v < c.size(); ++v) {
+    glm::dvec3 p = s.mesh.positions[v];
+    if (std::any_of(boundary.begin(), boundary.end(), [&](const glm::dvec3& b) { return glm::length(b - p) < margin; }))
+      continue;
+    SurfaceTruth t = s.truth(p);
+    double scale = 0.1 * std::max(std::abs(t.k_min), std::abs(t.k_max));
+    k_min.push_back(std::abs(c.k_min[v] - t.k_min) / std::max(std::abs(t.k_min), scale));
+    k_max.push_back(std::abs(c.k_max[v] - t.k_max) / std::max(std::abs(t.k_max), scale));
+    if (!curvature::directions_undefined(float(t.k_min), float(t.k_max), defaults, 0))
+      direction.push_back(line_angle(c.d_min[v], t.d_min));
+  }
+  return {direction.empty() ? -1 : median(direction), median(k_min), median(k_max), k_min.size()};
+}
+
+struct SurfaceCase {
+  const char* name;
+  std::function<AnalyticSurface(double edge, Meshing)> make;
+};
+
+const SurfaceCase kSurfaces[] = {
+    {"torus", [](double e, Meshing m) { return analytic_torus(1.0, 0.5, e, m); }},
+    {"ellipsoid", [](double e, Meshing m) { return analytic_ellipsoid({1.0, 0.7, 0.5}, e, m); }},
+    {"sphere", [](double e, Meshing m) { return analytic_sphere(1.0, e, m); }},
+    {"cylinder", [](double e, Meshing m) { return analytic_cylinder(0.5, 1.0, e, m); }},
+    {"saddle", [](double e, Meshing m) { return analytic_saddle(0.5, e, m); }},
+};
+
+// A mesh of the surface with edges of 1/`edges_per_radius` of the default ball radius
+// (radius x bbox diagonal), built once for all accuracy tests.
+const AnalyticSurface& accuracy_surface(const SurfaceCase& s, Meshing m, double edges_per_radius) {
+  static std::map<std::tuple<std::string, Meshing, double>, AnalyticSurface> made;
+  auto key = std::make_tuple(std::string(s.name), m, edges_per_radius);
+  if (!made.count(key)) {
+    double diagonal = s.make(0.1, m).mesh.bbox_diagonal();
+    made.emplace(key, s.make(curvature_params().radius * diagonal / edges_per_radius, m));
+  }
+  return made.at(key);
+}
+
+void print_accuracy(const char* method, const AnalyticSurface& s, const Accuracy& a) {
+  std::printf("  %-10s %-22s %7zu vertices  direction %6.2f deg  k_min %6.2f%%  k_max %6.2f%%\n", method,
+              s.name.c_str(), a.vertices, a.direction_deg, 100 * a.k_min_rel, 100 * a.k_max_rel);
+}
+
+// The targets for the tensor at its default radius, on meshes with five edges
+// per ball radius: the ball's error falls with edge / radius, most slowly on regular
+// meshes, whose edges line up (experiments/curvature_accuracy).
+TEST(CurvatureAccuracy, TensorMeetsTheTargetsOnTorusAndEllipsoid) {
+  for (const char* name : {"torus", "ellipsoid"})
+    for (Meshing m : {Meshing::Regular, Meshing::Irregular}) {
+      const SurfaceCase& sc = *std::find_if(std::begin(kSurfaces), std::end(kSurfaces),
+                                            [&](const SurfaceCase& s) { return std::string(s.name) == name; });
+      const AnalyticSurface& s = accuracy_surface(sc, m, 5.0);
+      Curvature c = estimate_curvature(s.mesh, curvature_params());
+      Accuracy a = measure_accuracy(s, c, 0);
+      print_accuracy("tensor", s, a);
+      double k_target = m == Meshing::Regular ? 0.02 : 0.05;
+      EXPECT_LE(a.direction_deg, 2.0) << s.name;
+      EXPECT_LE(a.k_min_rel, k_target) << s.name;
+      EXPECT_LE(a.k_max_rel, k_target) << s.name;
+    }
+}
+
+// Every surface, both meshings, both methods, on coarser meshes (two edges per ball
+// radius): printed, and bounded loosely enough for any correct estimator and tightly
+// enough to catch a swapped or mis-signed one.
+TEST(CurvatureAccuracy, EverySurfaceWithBothMethods) {
+  for (const SurfaceCase& sc : kSurfaces)
+    for (Meshing m : {Meshing::Regular, Meshing::Irregular}) {
+      const AnalyticSurface& s = accuracy_surface(sc, m, 2.0);
+      double margin = 0.1 * s.mesh.bbox_diagonal();
+      for (const char* method : {"tensor", "jet"}) {
+        Curvature c = estimate_curvature(s.mesh, curvature_params({std::string("curvature.method=") + method}));
+        Accuracy a = measure_accuracy(s, c, margin);
+        print_accuracy(method, s, a);
+        EXPECT_LE(a.direction_deg, 3.0) << s.name << " " << method;
+        EXPECT_LE(a.k_min_rel, 0.15) << s.name << " " << method;
+        EXPECT_LE(a.k_max_rel, 0.15) << s.name << " " << method;
+      }
+    }
+}
+
+// ---------------------------------------------------------------------------------
+// Umbilic and flat regions (SPEC §1.1): a smooth, deterministic field everywhere
+
+// Angle between the directions at the two ends of each edge, the first projected to the
+// second's tangent plane.
+std::vector<double> neighbor_angles(const Mesh& mesh, const Curvature& c, const std::vector<uint8_t>& include) {
+  MeshTopology topo = build_topology(mesh);
+  std::vector<double> angles;
+  for (const auto& e : topo.edges) {
+    if (!include[e.from] || !include[e.to]) continue;
+    glm::dvec3 n = c.normal[e.to], d = c.d_min[e.from];
+    angles.push_back(line_angle(d - glm::dot(d, n) * n, c.d_min[e.to]));
+  }
+  return angles;
+}
+
+Mesh tilted_plane(int cells) {
+  AnalyticSurface flat = analytic_saddle(0.0, 2.0 / cells, Meshing::Irregular);
+  glm::dmat3 tilt = glm::dmat3(glm::rotate(glm::dmat4(1), 0.7, glm::normalize(glm::dvec3(1, 2, 0.5))));
+  for (auto& p : flat.mesh.positions) p = glm::vec3(tilt * glm::dvec3(p));
+  compute_normals(flat.mesh);
+  return flat.mesh;
+}
+
+TEST(CurvatureDirections, PlaneGetsOneConstantDirection) {
+  Mesh plane = tilted_plane(30);
+  for (const Variant& variant : kVariants) {
+    Curvature c = estimate_curvature(plane, curvature_params(variant.params));
+    expect_valid_curvature(c, plane.positions.size(), variant.name);
+    double worst = 0;
+    for (size_t v = 0; v < c.size(); ++v) worst = std::max(worst, line_angle(c.d_min[v], c.d_min[0]));
+    EXPECT_LT(worst, 0.1) << variant.name;
+  }
+}
+
+Curvature on_threads(int threads, const Mesh& mesh, const CurvatureParams& p) {
+  tbb::task_arena arena(threads);
+  return arena.execute([&] { return estimate_curvature(mesh, p); });
+}
+
+TEST(CurvatureDirections, SphereFieldIsSmoothAndTheSameOnAnyNumberOfThreads) {
+  AnalyticSurface sphere = analytic_sphere(1.0, 0.05, Meshing::Regular);
+  for (const Variant& variant : kVariants) {
+    CurvatureParams p = curvature_params(variant.params);
+    Curvature one = on_threads(1, sphere.mesh, p), two = on_threads(2, sphere.mesh, p);
+    expect_valid_curvature(two, sphere.mesh.positions.size(), variant.name);
+    EXPECT_EQ(one.d_min, two.d_min) << variant.name;
+    EXPECT_EQ(one.k_min, two.k_min) << variant.name;
+    std::vector<double> angles = neighbor_angles(sphere.mesh, two, std::vector<uint8_t>(two.size(), 1));
+    std::printf("  %-32s sphere: neighbor direction change median %.2f deg, 95%% %.2f deg\n", variant.name,
+                median(angles), percentile(angles, 0.95));
+    EXPECT_LT(median(angles), 2.0) << variant.name;
+    EXPECT_LT(percentile(angles, 0.95), 10.0) << variant.name;
+  }
+}
+
+// Along each edge of the cube d_min is the edge; the flat faces take their directions
+// from their edges. Fronts from perpendicular edges meet on the face diagonals, so the
+// field is constant in four triangles per face and turns only along the diagonals.
+// (Not for a degree-4 jet: its three rings reach across an edge onto the next face,
+// which is no height field over the first, so near the edges it fits noise.)
+TEST(CurvatureDirections, CubeFacesGetFieldsParallelToTheirEdges) {
+  const int cells = 24;
+  Mesh cube = subdivided_cube(cells);
+  // In-face coordinates (a, b) of vertices inside a face, or nullopt.
+  auto in_face = [](const glm::vec3& p) -> std::optional<glm::vec2> {
+    glm::vec3 a = glm::abs(p);
+    if ((a.x > 0.99f) + (a.y > 0.99f) + (a.z > 0.99f) != 1) return std::nullopt;
+    if (a.x > 0.99f) return glm::vec2(a.y, a.z);
+    if (a.y > 0.99f) return glm::vec2(a.x, a.z);
+    return glm::vec2(a.x, a.y);
+  };
+  std::vector<uint8_t> interior(cube.positions.size());
+  for (size_t v = 0; v < interior.size(); ++v) interior[v] = in_face(cube.positions[v]).has_value();
+  MeshTopology topo = build_topology(cube);
+  for (const Variant& variant : kVariants) {
+    if (std::string(variant.name) == "jet degree 4") continue;
+    Curvature c = estimate_curvature(cube, curvature_params(variant.params));
+    expect_valid_curvature(c, cube.positions.size(), variant.name);
+    for (size_t v = 0; v < c.size(); ++v) {
+      glm::vec3 a = glm::abs(cube.positions[v]);
+      if (a.x > 0.99f && a.y > 0.99f && a.z < 0.5f) {  // an edge along z, away from the corners
+        EXPECT_LT(line_angle(c.d_min[v], {0, 0, 1}), 5.0) << variant.name << " vertex " << v;
+      }
+    }
+    size_t sharp = 0, off_diagonal = 0;
+    for (const auto& e : topo.edges) {
+      if (!interior[e.from] || !interior[e.to] || line_angle(c.d_min[e.from], c.d_min[e.to]) < 30) continue;
+      ++sharp;
+      glm::vec2 f = *in_face(cube.positions[e.from]), t = *in_face(cube.positions[e.to]);
+      off_diagonal += std::min(std::abs(f.x - f.y), std::abs(t.x - t.y)) > 2.5f * 2 / cells;
+    }
+    std::printf("  %-32s cube faces: %zu edges turn > 30 deg, %zu of them off the diagonals\n", variant.name, sharp,
+                off_diagonal);
+    EXPECT_EQ(off_diagonal, 0u) << variant.name;
+  }
+}
+
+// ---------------------------------------------------------------------------------
+// The cache
+
+class CurvatureCache : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("plumbago-curvature-cache-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    options_.cache_dir = dir_.string();
+    options_.progress = false;
+    mesh_ = analytic_torus(1.0, 0.4, 0.1, Meshing::Irregular).mesh;
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::vector<fs::path> files() const {
+    std::vector<fs::path> out;
+    if (fs::exists(dir_))
+      for (const auto& e : fs::directory_iterator(dir_)) out.push_back(e.path());
+    return out;
+  }
+  std::string cache_file(const Mesh& mesh, const CurvatureParams& p) const {
+    CurvatureCacheKey key{mesh_content_hash(mesh), mesh.positions.size(), curvature_params_key(p)};
+    return (dir_ / key.file_name()).string();
+  }
+  static void expect_same(const Curvature& a, const Curvature& b) {
+    EXPECT_EQ(a.k_min, b.k_min);
+    EXPECT_EQ(a.k_max, b.k_max);
+    EXPECT_EQ(a.normal, b.normal);
+    EXPECT_EQ(a.d_min, b.d_min);
+    EXPECT_EQ(a.d_max, b.d_max);
+  }
+
+  fs::path dir_;
+  CurvatureOptions options_;
+  Mesh mesh_;
+};
+
+TEST_F(CurvatureCache, SecondCallReadsWhatTheFirstWrote) {
+  CurvatureParams p = curvature_params();
+  Curvature first = compute_curvature(mesh_, p, options_);
+  ASSERT_EQ(files().size(), 1u);
+  EXPECT_EQ(files()[0].string(), cache_file(mesh_, p));
+  std::string why;
+  auto cached = read_curvature_cache(cache_file(mesh_, p), {mesh_content_hash(mesh_), mesh_.positions.size(),
+                                                            curvature_params_key(p)}, why);
+  ASSERT_TRUE(cached.has_value()) << why;
+  expect_same(*cached, first);
+  expect_same(compute_curvature(mesh_, p, options_), estimate_curvature(mesh_, p));
+}
+
+TEST_F(CurvatureCache, KeyChangesWithTheMeshTheMethodAndEachParameter) {
+  CurvatureParams p = curvature_params();
+  std::string base = cache_file(mesh_, p);
+  Mesh moved = mesh_;
+  moved.positions[7].x += 1e-3f;
+  EXPECT_NE(cache_file(moved, p), base);
+  for (const char* change : {"curvature.method=jet", "curvature.radius=0.02", "curvature.jet_degree=3",
+                             "curvature.umbilic_ratio=0.2", "curvature.normal=tensor", "curvature.ring_fallback=false"})
+    EXPECT_NE(cache_file(mesh_, curvature_params({change})), base) << change;
+}
+
+TEST_F(CurvatureCache, CorruptFilesAreDetectedAndRecomputed) {
+  CurvatureParams p = curvature_params();
+  Curvature truth = estimate_curvature(mesh_, p);
+  std::string path = cache_file(mesh_, p);
+  compute_curvature(mesh_, p, options_);
+  std::string good;
+  {
+    std::ifstream in(path, std::ios::binary);
+    good.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  std::string flipped = good, nan_value;
+  flipped[good.size() / 2] ^= 0x10;
+  Curvature with_nan = truth;
+  with_nan.k_min[3] = std::nanf("");
+  write_curvature_cache(path, {mesh_content_hash(mesh_), mesh_.positions.size(), curvature_params_key(p)}, with_nan);
+  {
+    std::ifstream in(path, std::ios::binary);  // a NaN under a valid checksum
+    nan_value.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  for (const auto& [what, bytes] : std::map<std::string, std::string>{{"flipped byte", flipped},
+                                                                      {"truncated", good.substr(0, good.size() / 3)},
+                                                                      {"empty", ""},
+                                                                      {"not a cache file", "hello"},
+                                                                      {"NaN", nan_value}}) {
+    std::ofstream(path, std::ios::binary) << bytes;
+    std::string why;
+    EXPECT_FALSE(read_curvature_cache(path, {mesh_content_hash(mesh_), mesh_.positions.size(), curvature_params_key(p)},
+                                      why).has_value())
+        << what;
+    EXPECT_FALSE(why.empty()) << what;
+    expect_same(compute_curvature(mesh_, p, options_), truth);
+    std::ifstream in(path, std::ios::binary);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()), good)
+        << what << ": not rewritten";
+  }
+}
+
+TEST_F(CurvatureCache, StaleFileIsRecomputed) {
+  CurvatureParams p = curvature_params();
+  Mesh other = analytic_sphere(1.0, 0.2, Meshing::Regular).mesh;
+  CurvatureCacheKey other_key{mesh_content_hash(other), other.positions.size(), curvature_params_key(p)};
+  fs::create_directories(dir_);
+  // Another mesh's curvature under this mesh's file name, and this mesh's under other parameters.
+  write_curvature_cache(cache_file(mesh_, p), other_key, estimate_curvature(other, p));
+  expect_same(compute_curvature(mesh_, p, options_), estimate_curvature(mesh_, p));
+  CurvatureParams jet = curvature_params({"curvature.method=jet"});
+  write_curvature_cache(cache_file(mesh_, jet),
+                        {mesh_content_hash(mesh_), mesh_.positions.size(), curvature_params_key(p)},
+                        estimate_curvature(mesh_, p));
+  expect_same(compute_curvature(mesh_, jet, options_), estimate_curvature(mesh_, jet));
+}
+
+TEST_F(CurvatureCache, DisabledCacheWritesNothing) {
+  CurvatureOptions off = options_;
+  off.use_cache = false;
+  compute_curvature(mesh_, curvature_params(), off);
+  EXPECT_TRUE(files().empty());
+}
+
+TEST(CurvatureCacheDir, FromTheEnvironmentInOrder) {
+  auto saved = [](const char* name) {
+    const char* v = std::getenv(name);
+    return v ? std::optional<std::string>(v) : std::nullopt;
+  };
+  auto restore = [](const char* name, const std::optional<std::string>& v) {
+    if (v)
+      ::setenv(name, v->c_str(), 1);
+    else
+      ::unsetenv(name);
+  };
+  auto plumbago = saved("PLUMBAGO_CACHE_DIR"), xdg = saved("XDG_CACHE_HOME"), home = saved("HOME");
+  ::setenv("PLUMBAGO_CACHE_DIR", "/tmp/a", 1);
+  ::setenv("XDG_CACHE_HOME", "/tmp/b", 1);
+  ::setenv("HOME", "/tmp/c", 1);
+  EXPECT_EQ(curvature_cache_dir(), "/tmp/a");
+  ::unsetenv("PLUMBAGO_CACHE_DIR");
+  EXPECT_EQ(curvature_cache_dir(), "/tmp/b/plumbago");
+  ::unsetenv("XDG_CACHE_HOME");
+  EXPECT_EQ(curvature_cache_dir(), "/tmp/c/.cache/plumbago");
+  restore("PLUMBAGO_CACHE_DIR", plumbago);
+  restore("XDG_CACHE_HOME", xdg);
+  restore("HOME", home);
+}
+
+}  // namespace
+}  // namespace plumbago
