@@ -41,7 +41,7 @@ void add_pass_times(const Frame& f, int frames, std::map<std::string, double>& s
 }
 
 BenchResult bench_reference(const Scene& scene, int frames) {
-  BenchResult r{scene.source, "reference"};
+  BenchResult r{scene.source, "reference", 0, {}};
   std::vector<double> ms;
   for (int i = 0; i < frames; ++i) {
     Stopwatch w;
@@ -54,7 +54,7 @@ BenchResult bench_reference(const Scene& scene, int frames) {
 }
 
 BenchResult bench_gpu(const Scene& scene, int frames) {
-  BenchResult r{scene.source, "gpu"};
+  BenchResult r{scene.source, "gpu", 0, {}};
   gpu::Renderer renderer(scene);
   renderer.render();  // warm-up: shader compilation, first-use allocations
   std::vector<double> ms;

@@ -17,11 +17,11 @@ int main(int argc, char** argv) {
   for (auto setup : plumbago::command_registry()) setup(app);
   try {
     app.parse(argc, argv);
+  } catch (const CLI::RuntimeError& e) {  // a command's verdict, e.g. compare: 1 = a stage failed
+    return e.get_exit_code();
   } catch (const CLI::ParseError& e) {
     int rc = app.exit(e);
     return rc == 0 ? 0 : 2;
-  } catch (const CLI::RuntimeError& e) {  // a command's verdict, e.g. compare: 1 = a stage failed
-    return e.get_exit_code();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "plumbago: error: %s\n", e.what());
     return 2;

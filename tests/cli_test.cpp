@@ -13,7 +13,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
+struct CliRun {
   int code;
   std::string out, err;
 };
@@ -36,7 +36,7 @@ class Cli : public ::testing::Test {
     return ss.str();
   }
 
-  Run run(const std::string& args) const {
+  CliRun run(const std::string& args) const {
     std::string cmd = std::string(PLUMBAGO_CLI) + " " + args + " >" + path("stdout") + " 2>" + path("stderr");
     int status = std::system(cmd.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(path("stdout")), slurp(path("stderr"))};
@@ -44,7 +44,7 @@ class Cli : public ::testing::Test {
 
   // Exit code 2, the message contains each of `needles`, no output image, no partial file.
   void expect_refused(const std::string& args, std::initializer_list<std::string> needles) const {
-    Run r = run(args + " -o " + path("out.png"));
+    CliRun r = run(args + " -o " + path("out.png"));
     EXPECT_EQ(r.code, 2) << r.err;
     for (const auto& n : needles) EXPECT_NE(r.err.find(n), std::string::npos) << "'" << n << "' not in: " << r.err;
     for (const auto& e : fs::directory_iterator(dir_))
@@ -57,7 +57,7 @@ class Cli : public ::testing::Test {
 };
 
 TEST_F(Cli, RendersTheBuiltinSceneAndReportsWhatRan) {
-  Run r = run("render --size 160x120 --stats --json -o " + path("out.png"));
+  CliRun r = run("render --size 160x120 --stats --json -o " + path("out.png"));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(fs::exists(path("out.png")));
   auto j = nlohmann::json::parse(r.out);
@@ -101,7 +101,7 @@ TEST_F(Cli, NanCoordinatesNameTheMeshFileAndLine) {
 TEST_F(Cli, BadSizeIsRefused) { expect_refused("render --size 0x10", {"--size"}); }
 
 TEST_F(Cli, CompareReportsEveryStageAsJson) {
-  Run r = run("compare builtin:torus --size 160x120 --json");
+  CliRun r = run("compare builtin:torus --size 160x120 --json");
   ASSERT_EQ(r.code, 0) << r.err << r.out;
   auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j["pass"].get<bool>());
@@ -112,7 +112,7 @@ TEST_F(Cli, CompareReportsEveryStageAsJson) {
 }
 
 TEST_F(Cli, ParamsListsEveryStage) {
-  Run r = run("params");
+  CliRun r = run("params");
   ASSERT_EQ(r.code, 0) << r.err;
   for (const char* key : {"edge.depth_scale", "edge.normals", "compose.contrast"})
     EXPECT_NE(r.out.find(key), std::string::npos) << key;

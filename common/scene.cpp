@@ -1,0 +1,282 @@
+// Scene files (docs/scene-format.md, scenes/scene.schema.json) and the built-in scenes.
+#include "common/scene.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "common/passes.hpp"
+#include "common/procedural.hpp"
+
+namespace plumbago {
+
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+// Reads one scene document, naming the file and the JSON path in every refusal.
+class SceneReader {
+ public:
+  SceneReader(std::string source, std::string base_dir) : source_(std::move(source)), base_(std::move(base_dir)) {}
+
+  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
+    throw SceneError(source_ + ": " + (path.empty() ? "/" : path) + ": " + what);
+  }
+
+  void only_keys(const json& j, const std::string& path, const std::set<std::string>& allowed) const {
+    if (!j.is_object()) fail(path, "expected an object");
+    for (const auto& [key, value] : j.items())
+      if (!allowed.count(key)) {
+        std::string list;
+        for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+        fail(path + "/" + key, "unknown key (known here: " + list + ")");
+      }
+  }
+
+  double number(const json& j, const std::string& path) const {
+    if (!j.is_number()) fail(path, "expected a number");
+    double v = j.get<double>();
+    if (!std::isfinite(v)) fail(path, "expected a finite number");
+    return v;
+  }
+
+  glm::vec3 vec3(const json& j, const std::string& path) const {
+    if (!j.is_array() || j.size() != 3) fail(path, "expected an array of 3 numbers");
+    return {float(number(j[0], path + "/0")), float(number(j[1], path + "/1")), float(number(j[2], path + "/2"))};
+  }
+
+  std::shared_ptr<const Mesh> mesh(const json& j, const std::string& path) {
+    try {
+      if (j.is_string()) return mesh_file(j.get<std::string>());
+      only_keys(j, path, {"procedural", "resolution"});
+      if (!j.contains("procedural") || !j["procedural"].is_string()) fail(path + "/procedural", "expected a name");
+      float res = j.contains("resolution") ? float(number(j["resolution"], path + "/resolution")) : 1.0f;
+      return std::make_shared<Mesh>(make_procedural(j["procedural"].get<std::string>(), res));
+    } catch (const MeshError& e) {
+      fail(path, e.what());
+    } catch (const std::invalid_argument& e) {
+      fail(path, e.what());
+    }
+  }
+
+  SceneObject object(const json& j, const std::string& path) {
+    only_keys(j, path, {"mesh", "transform", "style", "color", "flat"});
+    if (!j.contains("mesh")) fail(path + "/mesh", "missing (a file path or {\"procedural\": ...})");
+    SceneObject o;
+    o.mesh = mesh(j["mesh"], path + "/mesh");
+    if (j.contains("transform")) o.transform = transform(j["transform"], path + "/transform");
+    if (j.contains("style")) o.style = style(j["style"], path + "/style");
+    if (j.contains("color")) o.color = vec3(j["color"], path + "/color");
+    if (j.contains("flat")) {
+      if (!j["flat"].is_boolean()) fail(path + "/flat", "expected true or false");
+      o.flat = j["flat"].get<bool>();
+    }
+    return o;
+  }
+
+  Camera camera(const json& j, const std::string& path, const Scene& scene) const {
+    only_keys(j, path, {"eye", "target", "up", "fov_deg", "near", "far"});
+    Camera c = fitted_camera(scene, j.contains("fov_deg") ? float(number(j["fov_deg"], path + "/fov_deg")) : 35.0f);
+    if (c.fov_deg <= 0 || c.fov_deg >= 180) fail(path + "/fov_deg", "must be in (0, 180)");
+    if (j.contains("eye")) c.eye = vec3(j["eye"], path + "/eye");
+    if (j.contains("target")) c.target = vec3(j["target"], path + "/target");
+    if (j.contains("up")) c.up = vec3(j["up"], path + "/up");
+    if (j.contains("eye") || j.contains("target")) fit_planes(scene, c);
+    if (j.contains("near")) c.near = float(number(j["near"], path + "/near"));
+    if (j.contains("far")) c.far = float(number(j["far"], path + "/far"));
+    if (!(c.near > 0 && c.far > c.near)) fail(path, "needs 0 < near < far");
+    if (glm::length(c.eye - c.target) == 0) fail(path, "eye and target coincide");
+    if (glm::length(glm::cross(c.up, c.target - c.eye)) == 0) fail(path + "/up", "is parallel to the view direction");
+    return c;
+  }
+
+  std::vector<Light> lights(const json& j, const std::string& path) const {
+    if (!j.is_array()) fail(path, "expected an array of lights");
+    std::vector<Light> out;
+    for (size_t i = 0; i < j.size(); ++i) {
+      std::string p = path + "/" + std::to_string(i);
+      only_keys(j[i], p, {"direction", "intensity"});
+      if (!j[i].contains("direction")) fail(p + "/direction", "missing");
+      Light l{vec3(j[i]["direction"], p + "/direction"), 1.0f};
+      if (glm::length(l.direction) == 0) fail(p + "/direction", "must not be zero");
+      if (j[i].contains("intensity")) l.intensity = float(number(j[i]["intensity"], p + "/intensity"));
+      if (l.intensity < 0) fail(p + "/intensity", "must not be negative");
+      out.push_back(l);
+    }
+    if (out.size() > 8) fail(path, "at most 8 lights");
+    return out;
+  }
+
+  void resolution(const json& j, const std::string& path, Scene& s) const {
+    if (!j.is_array() || j.size() != 2 || !j[0].is_number_integer() || !j[1].is_number_integer())
+      fail(path, "expected [width, height] in pixels");
+    s.width = j[0].get<int>();
+    s.height = j[1].get<int>();
+    if (s.width < 1 || s.height < 1 || s.width > 16384 || s.height > 16384) fail(path, "each must be in 1..16384");
+  }
+
+  std::vector<std::string> effects(const json& j, const std::string& path) const {
+    if (!j.is_array()) fail(path, "expected an array of effect names");
+    std::vector<std::string> out;
+    for (size_t i = 0; i < j.size(); ++i) {
+      std::string p = path + "/" + std::to_string(i);
+      if (!j[i].is_string()) fail(p, "expected an effect name");
+      if (!is_effect(j[i].get<std::string>()))
+        fail(p, "unknown effect '" + j[i].get<std::string>() + "' (known: " + effect_names() + ")");
+      out.push_back(j[i].get<std::string>());
+    }
+    return out;
+  }
+
+  void params(const json& j, const std::string& path, ParamSet& set) const {
+    if (!j.is_object()) fail(path, "expected an object of \"stage.name\": value");
+    for (const auto& [key, value] : j.items()) {
+      std::string p = path + "/" + key;
+      try {
+        if (value.is_boolean()) set.set(key, value.get<bool>() ? 1.0 : 0.0);
+        else if (value.is_number()) set.set(key, value.get<double>());
+        else if (value.is_string()) set.set(key, value.get<std::string>());
+        else fail(p, "expected a number, a boolean or a choice name");
+      } catch (const ParamError& e) {
+        fail(p, e.what());
+      }
+    }
+  }
+
+  static Camera fitted_camera(const Scene& s, float fov) {
+    glm::vec3 center;
+    float radius;
+    scene_bounds(s, center, radius);
+    return fit_camera(center, radius, glm::vec3(1.0f, 0.7f, 1.6f), fov);
+  }
+
+ private:
+  std::shared_ptr<const Mesh> mesh_file(const std::string& relative) {
+    fs::path p = fs::path(relative).is_absolute() ? fs::path(relative) : fs::path(base_) / relative;
+    std::string key = p.lexically_normal().string();
+    auto it = meshes_.find(key);
+    if (it != meshes_.end()) return it->second;
+    return meshes_[key] = std::make_shared<Mesh>(load_mesh(key));
+  }
+
+  glm::mat4 transform(const json& j, const std::string& path) const {
+    if (!j.is_array() || j.size() != 16) fail(path, "expected 16 numbers (a column-major 4x4 matrix)");
+    glm::mat4 m;
+    for (int i = 0; i < 16; ++i) m[i / 4][i % 4] = float(number(j[size_t(i)], path + "/" + std::to_string(i)));
+    if (std::abs(glm::determinant(glm::mat3(m))) < 1e-12f) fail(path, "is singular");
+    return m;
+  }
+
+  Style style(const json& j, const std::string& path) const {
+    static const std::map<std::string, Style> styles = {
+        {"pencil", Style::Pencil}, {"sketchy", Style::Sketchy}, {"shaded", Style::Shaded}};
+    if (!j.is_string() || !styles.count(j.get<std::string>())) fail(path, "expected pencil, sketchy or shaded");
+    return styles.at(j.get<std::string>());
+  }
+
+  // Near and far planes bracketing the scene's bounding sphere from the camera.
+  static void fit_planes(const Scene& s, Camera& c) {
+    glm::vec3 center;
+    float radius;
+    scene_bounds(s, center, radius);
+    float d = glm::dot(center - c.eye, c.forward());
+    c.far = std::max(d + radius * 1.5f, radius * 0.1f);
+    c.near = std::max(d - radius * 1.5f, c.far * 1e-3f);
+  }
+
+  std::string source_, base_;
+  std::map<std::string, std::shared_ptr<const Mesh>> meshes_;
+};
+
+// Lights over the camera's left shoulder, in world space.
+std::vector<Light> default_lights(const Camera& c) {
+  glm::vec3 back = -c.forward();
+  glm::vec3 right = glm::normalize(glm::cross(c.forward(), c.up));
+  glm::vec3 up = glm::cross(right, c.forward());
+  return {{glm::normalize(back + 0.6f * up - 0.5f * right), 1.0f}};
+}
+
+std::string line_and_column(const std::string& text, size_t byte) {
+  size_t line = 1, column = 1;
+  for (size_t i = 0; i + 1 < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') ++line, column = 1;
+    else ++column;
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+Scene read_scene(const json& j, SceneReader& r, const std::string& source) {
+  r.only_keys(j, "", {"mesh", "objects", "camera", "lights", "resolution", "seed", "effects", "params"});
+  Scene s;
+  s.source = source;
+  if (j.contains("mesh") == j.contains("objects")) r.fail("", "give either \"mesh\" (one object) or \"objects\"");
+  if (j.contains("mesh")) {
+    SceneObject o;
+    o.mesh = r.mesh(j["mesh"], "/mesh");
+    s.objects.push_back(o);
+  } else {
+    if (!j["objects"].is_array() || j["objects"].empty()) r.fail("/objects", "expected a non-empty array");
+    for (size_t i = 0; i < j["objects"].size(); ++i)
+      s.objects.push_back(r.object(j["objects"][i], "/objects/" + std::to_string(i)));
+  }
+  if (j.contains("resolution")) r.resolution(j["resolution"], "/resolution", s);
+  if (j.contains("seed")) {
+    if (!j["seed"].is_number_unsigned() || j["seed"].get<uint64_t>() > 0xFFFFFFFFull) r.fail("/seed", "expected an integer in 0..4294967295");
+    s.seed = uint32_t(j["seed"].get<uint64_t>());
+  }
+  if (j.contains("effects")) s.effects = r.effects(j["effects"], "/effects");
+  if (j.contains("params")) r.params(j["params"], "/params", s.params);
+  s.camera = j.contains("camera") ? r.camera(j["camera"], "/camera", s) : SceneReader::fitted_camera(s, 35.0f);
+  s.lights = j.contains("lights") ? r.lights(j["lights"], "/lights") : default_lights(s.camera);
+  return s;
+}
+
+}  // namespace
+
+void scene_bounds(const Scene& scene, glm::vec3& center, float& radius) {
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (const auto& o : scene.objects)
+    for (const auto& p : o.mesh->positions) {
+      glm::vec3 w(o.transform * glm::vec4(p, 1.0f));
+      lo = glm::min(lo, w);
+      hi = glm::max(hi, w);
+    }
+  center = (lo + hi) * 0.5f;
+  radius = std::max(glm::length(hi - lo) * 0.5f, 1e-6f);
+}
+
+Scene parse_scene(const std::string& text, const std::string& source, const std::string& base_dir) {
+  json j;
+  try {
+    j = json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw SceneError(source + ": " + line_and_column(text, e.byte) + ": not valid JSON (" + e.what() + ")");
+  }
+  SceneReader reader(source, base_dir);
+  return read_scene(j, reader, source);
+}
+
+Scene load_scene(const std::string& path) {
+  std::ifstream in(path);
+  if (!in || fs::is_directory(path)) throw SceneError(path + ": cannot read the scene file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  fs::path dir = fs::path(path).parent_path();
+  return parse_scene(ss.str(), path, dir.empty() ? "." : dir.string());
+}
+
+std::vector<std::string> builtin_scene_names() { return {"torus", "sphere", "cad"}; }
+
+Scene builtin_scene(const std::string& name) {
+  auto names = builtin_scene_names();
+  if (std::find(names.begin(), names.end(), name) == names.end())
+    throw SceneError("builtin:" + name + ": no such built-in scene (torus, sphere, cad)");
+  return parse_scene("{\"mesh\": {\"procedural\": \"" + name + "\"}}", "builtin:" + name, ".");
+}
+
+}  // namespace plumbago
