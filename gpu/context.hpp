@@ -36,8 +36,8 @@ class Context {
 
  private:
   Context();
+  std::string platform_;  // set while impl_ is made: declared first
   std::unique_ptr<Impl> impl_;
-  std::string platform_;
   std::vector<std::string> messages_;
   std::vector<std::string> errors_;
   friend void debug_callback_sink(Context&, bool is_error, std::string message);
