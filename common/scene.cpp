@@ -19,6 +19,9 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
+// Where a fitted camera looks from (world space, towards the camera).
+const glm::vec3 kViewDirection(1.0f, 0.7f, 1.6f);
+
 // Reads one scene document, naming the file and the JSON path in every refusal.
 class SceneReader {
  public:
@@ -80,8 +83,10 @@ class SceneReader {
   }
 
   Camera camera(const json& j, const std::string& path, const Scene& scene) const {
-    only_keys(j, path, {"eye", "target", "up", "fov_deg", "near", "far"});
-    Camera c = fitted_camera(scene, j.contains("fov_deg") ? float(number(j["fov_deg"], path + "/fov_deg")) : 35.0f);
+    only_keys(j, path, {"eye", "target", "up", "fov_deg", "near", "far", "view_direction"});
+    glm::vec3 direction = j.contains("view_direction") ? vec3(j["view_direction"], path + "/view_direction") : kViewDirection;
+    if (glm::length(direction) == 0) fail(path + "/view_direction", "must not be zero");
+    Camera c = fitted_camera(scene, j.contains("fov_deg") ? float(number(j["fov_deg"], path + "/fov_deg")) : 35.0f, direction);
     if (c.fov_deg <= 0 || c.fov_deg >= 180) fail(path + "/fov_deg", "must be in (0, 180)");
     if (j.contains("eye")) c.eye = vec3(j["eye"], path + "/eye");
     if (j.contains("target")) c.target = vec3(j["target"], path + "/target");
@@ -148,11 +153,12 @@ class SceneReader {
     }
   }
 
-  static Camera fitted_camera(const Scene& s, float fov) {
+  // Looks at the scene's bounding sphere from `direction`, the sphere filling the view.
+  static Camera fitted_camera(const Scene& s, float fov, glm::vec3 direction = kViewDirection) {
     glm::vec3 center;
     float radius;
     scene_bounds(s, center, radius);
-    return fit_camera(center, radius, glm::vec3(1.0f, 0.7f, 1.6f), fov);
+    return fit_camera(center, radius, direction, fov);
   }
 
  private:
