@@ -1,0 +1,162 @@
+// Scene files (common/scene.cpp): every key read, refusals with the file and JSON path,
+// relative paths, built-in scenes and procedural meshes.
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "common/procedural.hpp"
+#include "common/scene.hpp"
+#include "tests/temp_dir.hpp"
+
+namespace plumbago {
+namespace {
+
+using testing::TempDir;
+
+const char* kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+
+TEST(SceneFile, ReadsEveryKey) {
+  TempDir tmp;
+  tmp.write("tri.obj", kTriangleObj);
+  std::string path = tmp.write("s.json", R"({
+    "objects": [{"mesh": "tri.obj", "transform": [2,0,0,0, 0,2,0,0, 0,0,2,0, 1,2,3,1],
+                 "style": "sketchy", "color": [0.5, 0.25, 1], "flat": true},
+                {"mesh": "tri.obj"}],
+    "camera": {"eye": [0, 0, 9], "target": [0, 0, 0], "up": [0, 1, 0], "fov_deg": 50, "near": 0.5, "far": 30},
+    "lights": [{"direction": [0, 0, 1], "intensity": 0.5}],
+    "resolution": [320, 200], "seed": 42, "effects": ["contours"],
+    "params": {"edge.depth_scale": 12, "edge.normals": "face"}})");
+  Scene s = load_scene(path);
+  ASSERT_EQ(s.objects.size(), 2u);
+  EXPECT_EQ(s.objects[0].mesh, s.objects[1].mesh) << "a file named twice is loaded once";
+  EXPECT_EQ(s.objects[0].transform[3][0], 1.0f);  // column-major: translation in elements 12..14
+  EXPECT_EQ(s.objects[0].transform[3][2], 3.0f);
+  EXPECT_EQ(s.objects[0].style, Style::Sketchy);
+  EXPECT_EQ(s.objects[0].color, glm::vec3(0.5f, 0.25f, 1.0f));
+  EXPECT_TRUE(s.objects[0].flat);
+  EXPECT_EQ(s.camera.eye, glm::vec3(0, 0, 9));
+  EXPECT_FLOAT_EQ(s.camera.fov_deg, 50);
+  EXPECT_FLOAT_EQ(s.camera.near, 0.5f);
+  EXPECT_FLOAT_EQ(s.camera.far, 30);
+  ASSERT_EQ(s.lights.size(), 1u);
+  EXPECT_FLOAT_EQ(s.lights[0].intensity, 0.5f);
+  EXPECT_EQ(s.width, 320);
+  EXPECT_EQ(s.height, 200);
+  EXPECT_EQ(s.seed, 42u);
+  EXPECT_DOUBLE_EQ(s.params.value("edge.depth_scale"), 12);
+  EXPECT_DOUBLE_EQ(s.params.value("edge.normals"), 1);
+}
+
+TEST(SceneFile, FittedCameraSeesTheWholeScene) {
+  Scene s = parse_scene(R"({"mesh": {"procedural": "torus"}})", "t.json", ".");
+  glm::vec3 c;
+  float r;
+  scene_bounds(s, c, r);
+  EXPECT_LT(s.camera.near, glm::length(c - s.camera.eye) - r);
+  EXPECT_GT(s.camera.far, glm::length(c - s.camera.eye) + r);
+  EXPECT_FALSE(s.lights.empty());
+}
+
+std::string refusal(const std::string& json, const std::string& base = ".") {
+  try {
+    parse_scene(json, "bad.json", base);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+TEST(SceneFile, RefusalsNameTheFileAndJsonPath) {
+  const std::map<std::string, std::string> cases = {
+      {R"({"mesh": {"procedural": "torus"}, "colour": 1})", "bad.json: /colour: unknown key"},
+      {R"({"mesh": {"procedural": "torus"}, "camera": {"fov_deg": "wide"}})", "bad.json: /camera/fov_deg: expected a number"},
+      {R"({"mesh": {"procedural": "torus"}, "effects": ["contours", "oil"]})", "bad.json: /effects/1: unknown effect 'oil'"},
+      {R"({"mesh": {"procedural": "torus"}, "params": {"edge.depth_scale": -1}})", "bad.json: /params/edge.depth_scale:"},
+      {R"({"mesh": {"procedural": "torus"}, "params": {"edge.nope": 1}})", "bad.json: /params/edge.nope: unknown parameter"},
+      {R"({"mesh": {"procedural": "donut"}})", "bad.json: /mesh: unknown procedural mesh 'donut'"},
+      {R"({"objects": [{"mesh": "nowhere.obj"}]})", "bad.json: /objects/0/mesh:"},
+      {R"({"objects": [{"mesh": {"procedural": "torus"}, "transform": [1, 2]}]})", "bad.json: /objects/0/transform:"},
+      {R"({"objects": [{"mesh": {"procedural": "torus"}, "style": "oil"}]})", "bad.json: /objects/0/style:"},
+      {R"({"mesh": {"procedural": "torus"}, "resolution": [0, 10]})", "bad.json: /resolution:"},
+      {R"({"mesh": {"procedural": "torus"}, "lights": [{"direction": [0, 0, 0]}]})", "bad.json: /lights/0/direction:"},
+      {R"({"mesh": {"procedural": "torus"}, "seed": -3})", "bad.json: /seed:"},
+      {R"({"mesh": {"procedural": "torus"}, "camera": {"near": 5, "far": 1}})", "bad.json: /camera: needs 0 < near < far"},
+      {R"({"mesh": {"procedural": "torus"}, "objects": []})", "bad.json: /: give either"},
+      {R"({})", "bad.json: /: give either"},
+      {"{\n  \"mesh\": 1,,\n}", "bad.json: line 2"},
+  };
+  for (const auto& [json, expected] : cases) {
+    std::string m = refusal(json);
+    EXPECT_NE(m.find(expected), std::string::npos) << "scene " << json << "\n gave: " << m;
+  }
+}
+
+TEST(SceneFile, RelativeMeshPathsResolveAgainstTheSceneFolder) {
+  TempDir tmp;
+  std::filesystem::create_directories(tmp.path("meshes"));
+  tmp.write("meshes/tri.obj", kTriangleObj);
+  std::filesystem::create_directories(tmp.path("scenes"));
+  std::string path = tmp.write("scenes/s.json", R"({"mesh": "../meshes/tri.obj"})");
+  EXPECT_EQ(load_scene(path).objects.at(0).mesh->triangles.size(), 1u);
+  EXPECT_NE(refusal(R"({"mesh": "../meshes/tri.obj"})", tmp.dir()).find("/mesh"), std::string::npos);
+}
+
+TEST(BuiltinScenes, EachHasOneObjectAndAFittedCamera) {
+  for (const auto& name : builtin_scene_names()) {
+    Scene s = builtin_scene(name);
+    EXPECT_EQ(s.objects.size(), 1u) << name;
+    EXPECT_GT(s.camera.far, s.camera.near) << name;
+  }
+  EXPECT_THROW(builtin_scene("teapot"), SceneError);
+}
+
+// Closed procedural meshes: every edge in exactly two faces, in opposite directions,
+// and the enclosed volume positive (outward orientation).
+TEST(Procedural, ClosedKindsAreWatertightAndOutward) {
+  for (const char* kind : {"torus", "sphere", "cylinder"}) {
+    Mesh m = make_procedural(kind);
+    std::map<std::pair<unsigned, unsigned>, int> directed;
+    double volume = 0;
+    for (const auto& t : m.triangles) {
+      for (int k = 0; k < 3; ++k) directed[{t[k], t[(k + 1) % 3]}]++;
+      volume += glm::dot(m.positions[t[0]], glm::cross(m.positions[t[1]], m.positions[t[2]])) / 6.0;
+    }
+    for (const auto& [e, n] : directed) {
+      EXPECT_EQ(n, 1) << kind << " edge used twice in one direction";
+      EXPECT_EQ(directed.count({e.second, e.first}), 1u) << kind << " open edge";
+    }
+    EXPECT_GT(volume, 0) << kind;
+  }
+}
+
+TEST(Procedural, CadPartHasSharpCreasesAndSmoothPatches) {
+  Mesh m = make_procedural("cad");
+  std::map<std::pair<unsigned, unsigned>, std::vector<size_t>> faces_of_edge;
+  for (size_t f = 0; f < m.triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      auto e = std::minmax(m.triangles[f][k], m.triangles[f][(k + 1) % 3]);
+      faces_of_edge[{e.first, e.second}].push_back(f);
+    }
+  auto normal = [&](size_t f) {
+    const auto& t = m.triangles[f];
+    return glm::normalize(glm::cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]));
+  };
+  int sharp = 0, gentle = 0;
+  for (const auto& [e, fs] : faces_of_edge) {
+    if (fs.size() != 2) continue;
+    float c = glm::dot(normal(fs[0]), normal(fs[1]));
+    sharp += c < 0.2f;                  // about 80 degrees or more
+    gentle += c > 0.95f && c < 0.9999f;  // curved patch
+  }
+  EXPECT_GT(sharp, 50);
+  EXPECT_GT(gentle, 50);
+}
+
+TEST(Procedural, UnknownKindAndBadResolutionAreRefused) {
+  EXPECT_THROW(make_procedural("donut"), std::invalid_argument);
+  EXPECT_THROW(make_procedural("torus", 0.0f), std::invalid_argument);
+  EXPECT_THROW(make_procedural("torus", NAN), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace plumbago
