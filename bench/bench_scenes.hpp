@@ -4,6 +4,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -12,11 +13,17 @@
 
 namespace plumbago::bench {
 
-inline std::vector<std::string> bench_models() { return {"fandisk.obj", "stanford-bunny.obj"}; }
+inline std::vector<std::string> bench_models() { return {"fandisk.obj", "stanford-bunny.obj", "ogre.obj"}; }
+
+// The shared models' folder: $PLUMBAGO_MODELS_DIR, else ../shared/models of the source tree.
+inline std::string models_dir() {
+  const char* env = std::getenv("PLUMBAGO_MODELS_DIR");
+  return env && *env ? env : PLUMBAGO_MODELS_DIR;
+}
 
 // Returns false (and marks the benchmark skipped) when the model is not there.
 inline bool load_bench_scene(benchmark::State& state, const std::string& model, Scene& scene) {
-  std::string dir = PLUMBAGO_MODELS_DIR;
+  std::string dir = models_dir();
   if (!std::filesystem::exists(dir + "/" + model)) {
     state.SkipWithError(("../shared/models/" + model + " is not here").c_str());
     return false;
