@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "apps/command.hpp"
 #include "common/curvature.hpp"
@@ -17,7 +18,7 @@ namespace {
 
 struct CurvatureCommandOptions {
   std::string mesh, output, method;
-  double radius = -1;  // < 0: not given
+  std::optional<double> radius;
   std::vector<std::string> assignments;
   bool quiet = false, no_cache = false;
 };
@@ -53,7 +54,7 @@ CurvatureParams params_from(const CurvatureCommandOptions& o) {
   try {
     for (const auto& a : o.assignments) set.set_assignment(a);
     if (!o.method.empty()) set.set("curvature.method", o.method);
-    if (o.radius >= 0) set.set("curvature.radius", o.radius);
+    if (o.radius) set.set("curvature.radius", *o.radius);
   } catch (const ParamError& e) {
     throw ParamError(std::string("curvature: ") + e.what());
   }
