@@ -9,12 +9,13 @@
 #include "common/edge_detect.hpp"
 #include "common/gbuffer.hpp"
 #include "common/interior.hpp"
+#include "common/pencil_texture.hpp"
 
 namespace plumbago {
 
 template <class... T>
 struct TypeList {};
 
-using AllParamStructs = TypeList<CurvatureParams, GBufferParams, EdgeDetectParams, ContourLightParams, InteriorParams, ComposeParams>;
+using AllParamStructs = TypeList<CurvatureParams, PencilParams, GBufferParams, EdgeDetectParams, ContourLightParams, InteriorParams, ComposeParams>;
 
 }  // namespace plumbago

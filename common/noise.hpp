@@ -1,0 +1,45 @@
+// Tileable noise on [0, period)^2 lattices: Perlin gradient noise, its fBm, and Worley
+// (cellular) noise. Everything wraps with the given integer period, so textures made
+// from them tile without a seam. Deterministic in (seed, name).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace plumbago {
+
+class TileablePerlin {
+ public:
+  // Gradients on a period x period lattice.
+  TileablePerlin(int period, uint32_t seed, const std::string& name);
+  // Gradient noise at p (lattice units), about in [-0.7, 0.7]; wraps every `period`.
+  float operator()(glm::vec2 p) const;
+  int period() const { return period_; }
+
+ private:
+  glm::vec2 gradient(int i, int j) const;
+  int period_;
+  std::vector<glm::vec2> gradients_;
+};
+
+// Fractal sum of `octaves` Perlin noises, frequencies base x 2^o, amplitudes 2^-o.
+// u, v in [0, 1) over the tile.
+float fbm(const std::vector<TileablePerlin>& octaves, glm::vec2 uv);
+std::vector<TileablePerlin> fbm_octaves(int base_period, int octaves, uint32_t seed, const std::string& name);
+
+class TileableWorley {
+ public:
+  TileableWorley(int cells, uint32_t seed, const std::string& name);
+  // Distance to the nearest feature point, in cell units (0 at a point, ~1 far away);
+  // uv in [0, 1) over the tile.
+  float operator()(glm::vec2 uv) const;
+
+ private:
+  int cells_;
+  std::vector<glm::vec2> points_;  // one per cell, in cell-local [0,1)^2
+};
+
+}  // namespace plumbago

@@ -1,0 +1,42 @@
+// Pencil textures (SPEC 1.2; Lee §5.1, Eq. 3-4): a stack of tileable grayscale layers
+// (1 = white paper), layer 0 white, each layer the previous one plus strokes until its
+// mean intensity reaches a tone uniformly spaced from 1 down to `darkest`.
+// A stroke updates texel c_t with stroke color c_s (1 = no graphite):
+//   c_a = c_t (1 - c_s);  if c_t > white_level: c_a = mu_w c_a;  c_t' = c_t - mu_b c_a
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "common/image.hpp"
+
+namespace plumbago {
+
+struct PencilParams {
+  static constexpr const char* stage = "pencil";
+  int layers, size;
+  float mu_b, mu_w, white_level, darkest, angle_jitter_deg;
+  float stroke_length, stroke_width, stroke_bend, grain;
+  template <class V>
+  void visit(V& v) {
+    v.integer(layers, "layers", 32, 2, 256, "layers in the tone stack, white included (Lee: 32)");
+    v.integer(size, "size", 256, 16, 4096, "width and height of each tileable layer, texels");
+    v.real(mu_b, "mu_b", 0.2, 0.0, 1.0, "mu_b of Eq. 3: darkness a stroke adds (paper: 0.1-0.3)");
+    v.real(mu_w, "mu_w", 0.4, 0.0, 1.0, "mu_w of Eq. 4: white preservation (paper: 0.3-0.5; 1 = off)");
+    v.real(white_level, "white_level", 0.9, 0.0, 1.0, "texels brighter than this count as white for Eq. 4");
+    v.real(darkest, "darkest", 0.15, 0.0, 0.95, "mean intensity of the darkest layer");
+    v.real(angle_jitter_deg, "angle_jitter_deg", 8, 0, 90, "strokes run horizontally, turned by up to this angle");
+    v.real(stroke_length, "stroke_length", 0.45, 0.02, 2.0, "stroke length as a share of the tile size");
+    v.real(stroke_width, "stroke_width", 2.2, 0.5, 16.0, "width of a stroke's graphite core, texels");
+    v.real(stroke_bend, "stroke_bend", 0.02, 0.0, 0.2, "largest sideways bend of a stroke, share of its length");
+    v.real(grain, "grain", 0.45, 0.0, 1.0, "how much the graphite grain breaks up a stroke");
+  }
+};
+
+// Layer l of `pencil.layers`: size x size, 1 channel, intensity (1 = white).
+std::vector<Image> pencil_layers(const PencilParams& p, uint32_t seed);
+
+// Mean intensity layer l aims for: 1 - l / (layers - 1) (1 - darkest).
+float layer_target(const PencilParams& p, int layer);
+
+}  // namespace plumbago
