@@ -8,7 +8,9 @@
 #include "common/curvature.hpp"
 #include "common/edge_detect.hpp"
 #include "common/gbuffer.hpp"
+#include "common/distortion.hpp"
 #include "common/interior.hpp"
+#include "common/paper.hpp"
 #include "common/pencil_texture.hpp"
 
 namespace plumbago {
@@ -16,6 +18,7 @@ namespace plumbago {
 template <class... T>
 struct TypeList {};
 
-using AllParamStructs = TypeList<CurvatureParams, PencilParams, GBufferParams, EdgeDetectParams, ContourLightParams, InteriorParams, ComposeParams>;
+using AllParamStructs = TypeList<CurvatureParams, PencilParams, GBufferParams, EdgeDetectParams, ContourLightParams, ContourParams,
+                                 InteriorParams, PaperParams, ComposeParams>;
 
 }  // namespace plumbago

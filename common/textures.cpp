@@ -1,0 +1,62 @@
+#include "common/textures.hpp"
+
+#include <cstdio>
+
+#include "common/distortion.hpp"
+#include "common/paper.hpp"
+#include "common/pencil_texture.hpp"
+
+namespace plumbago {
+
+Image contact_sheet(const std::vector<Image>& layers, int columns) {
+  int s = layers.at(0).width, rows = (int(layers.size()) + columns - 1) / columns;
+  Image sheet(columns * s, rows * s, 1, 1.0f);
+  for (size_t l = 0; l < layers.size(); ++l) {
+    int ox = int(l) % columns * s, oy = (rows - 1 - int(l) / columns) * s;  // row 0 of the image is the bottom
+    for (int y = 0; y < s; ++y)
+      for (int x = 0; x < s; ++x) sheet.at(ox + x, oy + y) = layers[l].at(x, y);
+  }
+  return sheet;
+}
+
+namespace {
+
+// Offsets (dx, dy) mapped from [-(a + r), a + r] to [0, 1] in red and green.
+Image offset_view(const Image& grid, float bound) {
+  Image v(grid.width, grid.height, 3);
+  for (size_t i = 0; i < grid.pixels(); ++i)
+    for (int c = 0; c < 2; ++c) v.data[i * 3 + c] = grid.data[i * 2 + c] / (2 * bound) + 0.5f;
+  return v;
+}
+
+Image normal_view(const Image& n) {
+  Image v = n;
+  for (float& x : v.data) x = x * 0.5f + 0.5f;
+  return v;
+}
+
+}  // namespace
+
+std::map<std::string, Image> texture_gallery(const ParamSet& params, uint32_t seed, int width, int height) {
+  std::map<std::string, Image> out;
+  auto pencil = params.get<PencilParams>();
+  auto contour = params.get<ContourParams>();
+  std::vector<Image> layers = pencil_layers(pencil, seed);
+  char name[64];
+  for (size_t l = 0; l < layers.size(); ++l) {
+    std::snprintf(name, sizeof name, "pencil_layer_%02zu", l);
+    out[name] = layers[l];
+  }
+  out["pencil_contact_sheet"] = contact_sheet(layers, 8);
+  out["contour_texture"] = layers.at(size_t(std::min(contour.texture_layer, pencil.layers - 1)));
+  Paper paper = make_paper(params.get<PaperParams>(), seed);
+  out["paper_height"] = paper.height;
+  out["paper_normal"] = normal_view(paper.normal);
+  out["paper_color"] = paper.color;
+  auto grids = distortion_grids(contour, width, height, seed);
+  for (size_t k = 0; k < grids.size(); ++k)
+    out["contour_offsets_" + std::to_string(k)] = offset_view(grids[k], contour.shake_amplitude + contour.shake_noise);
+  return out;
+}
+
+}  // namespace plumbago
