@@ -10,14 +10,17 @@
 #include "common/edge_detect.hpp"
 #include "common/gbuffer.hpp"
 #include "common/lights.hpp"
+#include "common/preprocess.hpp"
 #include "gpu/compose.hpp"
 #include "gpu/contour_light.hpp"
+#include "gpu/multi_contour.hpp"
 #include "gpu/context.hpp"
 #include "gpu/edge_detect.hpp"
 #include "gpu/gbuffer.hpp"
 #include "gpu/interior_intensity.hpp"
 #include "reference/compose.hpp"
 #include "reference/contour_light.hpp"
+#include "reference/multi_contour.hpp"
 #include "reference/edge_detect.hpp"
 #include "reference/gbuffer.hpp"
 #include "reference/interior_intensity.hpp"
@@ -36,6 +39,11 @@ constexpr double kNormalTolerance = 1e-3;  // unit normals, raster vs ray
 constexpr double kBaryTolerance = 4e-3;
 constexpr double kFloatTolerance = 1e-4;   // a float stage fed identical inputs (measured ~1e-7)
 constexpr double kByteTolerance = 2.0 / 255.0;
+// A float stage that samples textures bilinearly: llvmpipe filters float textures with
+// float weights (tests/sampler_test.cpp: 1.2e-6), but the texture coordinates themselves
+// come out of slightly different float expressions; measured max 2e-5 on llvmpipe.
+// Hardware with 8-bit filter weights would need about 1/256 (SPEC 5).
+constexpr double kSampledTolerance = 1e-3;
 constexpr float kDepthJump = 0.01f;        // relative linear-depth step that makes a discontinuity
 
 bool across_discontinuity(const GBuffer& g, int x, int y, int nx, int ny) {
@@ -144,6 +152,23 @@ StageParity contour_light_parity(const Scene& scene, const GBuffer& ref) {
                   kFloatTolerance, nullptr, "both fed the reference G-buffer and contour darkness; float target");
 }
 
+StageParity multi_contour_parity(const Scene& scene, const GBuffer& ref) {
+  auto p = scene.params.get<ContourParams>();
+  Preprocessed pre = preprocess(scene, {"distortion", "contour_texture"});
+  Image lit = reference::lit_contour_darkness(reference::contour_darkness(ref, scene.params.get<EdgeDetectParams>()),
+                                              ref, view_space_lights(scene), scene.params.get<ContourLightParams>());
+  gpu::ContourInputs inputs = gpu::upload_contour_inputs(pre.offset_grids, pre.contour_texture, pre.texture_shifts);
+  gpu::Texture in = gpu::upload_texture(lit, GL_R32F);
+  gpu::Texture out = gpu::make_texture(scene.width, scene.height, GL_R32F);
+  gpu::MultiContourPass().run(in, inputs, p, out);
+  Image gpu_out = gpu::download_texture(out, 1);
+  gpu::Context::get().check_errors("multi_contour parity");
+  Image ref_out = reference::multi_contour_darkness(lit, pre.offset_grids, pre.contour_texture, pre.texture_shifts, p);
+  return compared("multi_contour", ref_out, gpu_out, kSampledTolerance, nullptr,
+                  "both fed the reference lit contours and the same offset grids and contour texture; "
+                  "bilinear lookups");
+}
+
 using ParityFn = std::function<std::vector<StageParity>(const Scene&, const GBuffer&)>;
 
 const std::vector<std::pair<std::string, ParityFn>>& parity_table() {
@@ -151,6 +176,7 @@ const std::vector<std::pair<std::string, ParityFn>>& parity_table() {
       {"gbuffer", gbuffer_parity},
       {"edge_detect", [](const Scene& s, const GBuffer& g) { return std::vector{edge_parity(s, g)}; }},
       {"contour_light", [](const Scene& s, const GBuffer& g) { return std::vector{contour_light_parity(s, g)}; }},
+      {"multi_contour", [](const Scene& s, const GBuffer& g) { return std::vector{multi_contour_parity(s, g)}; }},
       {"interior_intensity",
        [](const Scene& s, const GBuffer& g) { return std::vector{interior_intensity_parity(s, g)}; }},
       {"compose", [](const Scene& s, const GBuffer& g) { return std::vector{compose_parity(s, g)}; }},

@@ -8,17 +8,21 @@ namespace plumbago {
 
 const std::vector<PassDef>& pass_table() {
   static const std::vector<PassDef> table = {
+      {"distortion", PassKind::Preprocessing, {}, "offset grids of the contour copies (SPEC 1.4, Lee Eq. 2)"},
+      {"contour_texture", PassKind::Preprocessing, {}, "the pencil layer used as contour texture (SPEC 1.2)"},
       {"gbuffer", PassKind::Stage, {}, "G-buffer: normals, depth, ids, barycentrics, Gouraud (SPEC 2.1)"},
       {"edge_detect", PassKind::Stage, {"gbuffer"}, "contour darkness from normal and depth discontinuities (SPEC 2.2)"},
       {"contour_light", PassKind::Stage, {"edge_detect"}, "lit contours drawn lighter (SPEC 2.3, Lee Eq. 1)"},
-      {"compose", PassKind::Stage, {"contour_light"}, "final image on white paper (SPEC 2.11)"},
+      {"multi_contour", PassKind::Stage, {"contour_light", "distortion", "contour_texture"},
+       "contour copies on distorted planes with the contour texture (SPEC 2.4)"},
+      {"compose", PassKind::Stage, {"multi_contour"}, "final image on white paper (SPEC 2.11)"},
   };
   return table;
 }
 
 const std::vector<EffectDef>& effect_table() {
   static const std::vector<EffectDef> table = {
-      {"contours", {"edge_detect", "contour_light", "compose"}, "image-space contours (Lee 2006 §4)"},
+      {"contours", {"edge_detect", "contour_light", "multi_contour", "compose"}, "image-space contours (Lee 2006 §4)"},
   };
   return table;
 }
@@ -62,6 +66,13 @@ std::vector<std::string> passes_for(const std::vector<std::string>& effects) {
   for (const auto& p : pass_table())
     if (chosen.count(p.name)) ordered.push_back(p.name);
   return ordered;
+}
+
+std::vector<std::string> frame_stages(const std::vector<std::string>& passes) {
+  std::vector<std::string> stages;
+  for (const auto& p : passes)
+    if (find_pass(p).kind == PassKind::Stage) stages.push_back(p);
+  return stages;
 }
 
 }  // namespace plumbago

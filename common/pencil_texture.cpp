@@ -82,12 +82,13 @@ float layer_target(const PencilParams& p, int layer) {
   return 1.0f - float(layer) / float(p.layers - 1) * (1.0f - p.darkest);
 }
 
-std::vector<Image> pencil_layers(const PencilParams& p, uint32_t seed) {
+std::vector<Image> pencil_layers(const PencilParams& p, uint32_t seed, int last) {
   Rng rng(seed, "pencil-strokes");
   Image grain = grain_field(p, seed);
   std::vector<Image> layers{Image(p.size, p.size, 1, 1.0f)};
   double texels = double(p.size) * p.size, sum = texels;
-  for (int l = 1; l < p.layers; ++l) {
+  int end = last < 0 ? p.layers : std::min(last + 1, p.layers);
+  for (int l = 1; l < end; ++l) {
     Image next = layers.back();
     while (sum / texels > layer_target(p, l)) sum += draw_stroke(random_stroke(p, rng), p, grain, next);
     layers.push_back(std::move(next));

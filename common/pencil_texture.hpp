@@ -33,8 +33,10 @@ struct PencilParams {
   }
 };
 
-// Layer l of `pencil.layers`: size x size, 1 channel, intensity (1 = white).
-std::vector<Image> pencil_layers(const PencilParams& p, uint32_t seed);
+// Layers 0..last (all when last < 0) of the stack: size x size, 1 channel, intensity
+// (1 = white). The layers are made in order from one stream of strokes, so a prefix is
+// the same as the start of the whole stack.
+std::vector<Image> pencil_layers(const PencilParams& p, uint32_t seed, int last = -1);
 
 // Mean intensity layer l aims for: 1 - l / (layers - 1) (1 - darkest).
 float layer_target(const PencilParams& p, int layer);

@@ -90,19 +90,19 @@ void set_sampling(const Texture& tex, GLenum filter, GLenum wrap_s, GLenum wrap_
   glBindTexture(tex.target, 0);
 }
 
-Texture upload_texture_3d(const std::vector<Image>& layers, GLenum internal_format) {
+Texture upload_texture_3d(const std::vector<Image>& layers, GLenum internal_format, GLenum target) {
   const Image& first = layers.at(0);
   GLuint id = 0;
   glGenTextures(1, &id);
-  Texture t{GlName<detail::delete_texture>(id), first.width, first.height, internal_format, GL_TEXTURE_3D,
+  Texture t{GlName<detail::delete_texture>(id), first.width, first.height, internal_format, target,
             int(layers.size())};
-  glBindTexture(GL_TEXTURE_3D, id);
-  glTexStorage3D(GL_TEXTURE_3D, 1, internal_format, first.width, first.height, GLsizei(layers.size()));
+  glBindTexture(target, id);
+  glTexStorage3D(target, 1, internal_format, first.width, first.height, GLsizei(layers.size()));
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   for (size_t l = 0; l < layers.size(); ++l)
-    glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, GLint(l), first.width, first.height, 1, format_of(first.channels),
-                    GL_FLOAT, layers[l].data.data());
-  glBindTexture(GL_TEXTURE_3D, 0);
+    glTexSubImage3D(target, 0, 0, 0, GLint(l), first.width, first.height, 1, format_of(first.channels), GL_FLOAT,
+                    layers[l].data.data());
+  glBindTexture(target, 0);
   set_sampling(t, GL_LINEAR, GL_REPEAT, GL_REPEAT, GL_CLAMP_TO_EDGE);
   return t;
 }

@@ -61,8 +61,10 @@ struct Texture {
 
 // Immutable storage of `internal_format`, NEAREST filtering, CLAMP_TO_EDGE.
 Texture make_texture(int width, int height, GLenum internal_format);
-// A 3D texture whose layers are `layers` (equal sizes), as the pencil stack is sampled.
-Texture upload_texture_3d(const std::vector<Image>& layers, GLenum internal_format);
+// A GL_TEXTURE_3D (filtered across layers, as the pencil stack is sampled) or a
+// GL_TEXTURE_2D_ARRAY (layers kept apart) made of `layers` (equal sizes); LINEAR,
+// REPEAT in s and t, CLAMP_TO_EDGE in r.
+Texture upload_texture_3d(const std::vector<Image>& layers, GLenum internal_format, GLenum target = GL_TEXTURE_3D);
 // Uploads a float image (1-4 channels) into a texture of `internal_format`.
 Texture upload_texture(const Image& img, GLenum internal_format);
 // Replaces a texture's contents: `channels` floats (or uint32 when `integer`) per texel.

@@ -6,9 +6,11 @@
 
 #include "common/compose.hpp"
 #include "common/passes.hpp"
+#include "common/preprocess.hpp"
 #include "common/lights.hpp"
 #include "gpu/compose.hpp"
 #include "gpu/contour_light.hpp"
+#include "gpu/multi_contour.hpp"
 #include "gpu/context.hpp"
 #include "gpu/edge_detect.hpp"
 #include "gpu/gbuffer.hpp"
@@ -19,14 +21,20 @@ namespace plumbago::gpu {
 struct Renderer::State {
   const Scene& scene;
   std::vector<std::string> passes = passes_for(scene.effects);
+  std::vector<std::string> stages = frame_stages(passes);
+  Preprocessed pre = preprocess(scene, passes);
+  ContourInputs contour_inputs = pre.offset_grids.empty() ? ContourInputs{}
+                                 : upload_contour_inputs(pre.offset_grids, pre.contour_texture, pre.texture_shifts);
   GBufferPass gbuffer_pass{scene};
   EdgeDetectPass edge_pass;
   ContourLightPass contour_light_pass;
+  MultiContourPass multi_contour_pass;
   ComposePass compose_pass;
   GBufferTargets gbuffer = make_gbuffer_targets(scene.width, scene.height,
                                                 scene.params.get<GBufferParams>().normal_format);
   Texture contour_darkness = make_texture(scene.width, scene.height, GL_R32F);
   Texture lit_contour_darkness = make_texture(scene.width, scene.height, GL_R32F);
+  Texture multi_contour_darkness = make_texture(scene.width, scene.height, GL_R32F);
   Texture color = make_texture(scene.width, scene.height, GL_RGBA8);
   PassTimer timer;
 
@@ -40,15 +48,18 @@ struct Renderer::State {
     } else if (pass == "contour_light") {
       contour_light_pass.run(contour_darkness, gbuffer, view_space_lights(scene), scene.params.get<ContourLightParams>(),
                              lit_contour_darkness);
+    } else if (pass == "multi_contour") {
+      multi_contour_pass.run(lit_contour_darkness, contour_inputs, scene.params.get<ContourParams>(),
+                             multi_contour_darkness);
     } else if (pass == "compose") {
-      compose_pass.run(lit_contour_darkness, scene.params.get<ComposeParams>(), color);
+      compose_pass.run(multi_contour_darkness, scene.params.get<ComposeParams>(), color);
     } else {
       throw std::runtime_error("pass '" + pass + "' is not implemented on the GPU backend");
     }
   }
 
   void run_frame() {
-    for (const std::string& pass : passes) {
+    for (const std::string& pass : stages) {
       timer.begin(pass);
       run(pass);
       timer.end();
@@ -77,7 +88,8 @@ double Renderer::render_frame(Frame& timing) {
 Frame Renderer::render(const FrameOptions& options) {
   Frame frame;
   state_->run_frame();
-  frame.ran = state_->timer.results();
+  frame.ran = state_->pre.ran;  // once per Renderer, listed with every frame it renders
+  for (const PassTime& t : state_->timer.results()) frame.ran.push_back(t);
   Stopwatch readback;
   frame.color = download_texture(state_->color, 3);
   frame.ran.push_back({"readback", readback.ms()});
@@ -85,6 +97,7 @@ Frame Renderer::render(const FrameOptions& options) {
     add_gbuffer_buffers(download_gbuffer(state_->gbuffer), frame.buffers);
     frame.buffers["edge_detect.contour_darkness"] = download_texture(state_->contour_darkness, 1);
     frame.buffers["contour_light.lit_contour_darkness"] = download_texture(state_->lit_contour_darkness, 1);
+    frame.buffers["multi_contour.contour_darkness"] = download_texture(state_->multi_contour_darkness, 1);
     frame.buffers["compose.color"] = frame.color;
   }
   Context::get().check_errors("reading back the frame");

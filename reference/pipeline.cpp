@@ -6,9 +6,11 @@
 #include "common/compose.hpp"
 #include "common/edge_detect.hpp"
 #include "common/passes.hpp"
+#include "common/preprocess.hpp"
 #include "common/lights.hpp"
 #include "reference/compose.hpp"
 #include "reference/contour_light.hpp"
+#include "reference/multi_contour.hpp"
 #include "reference/edge_detect.hpp"
 #include "reference/gbuffer.hpp"
 
@@ -18,9 +20,11 @@ namespace {
 
 // The buffers passes hand to each other within one frame.
 struct FrameState {
+  Preprocessed pre;
   GBuffer gbuffer;
   Image contour_darkness;
   Image lit_contour_darkness;
+  Image multi_contour_darkness;
   Image color;
 };
 
@@ -38,8 +42,14 @@ const std::map<std::string, PassFn>& passes() {
          f.lit_contour_darkness = lit_contour_darkness(f.contour_darkness, f.gbuffer, view_space_lights(s),
                                                        s.params.get<ContourLightParams>());
        }},
+      {"multi_contour",
+       [](const Scene& s, FrameState& f) {
+         f.multi_contour_darkness = multi_contour_darkness(f.lit_contour_darkness, f.pre.offset_grids,
+                                                           f.pre.contour_texture, f.pre.texture_shifts,
+                                                           s.params.get<ContourParams>());
+       }},
       {"compose",
-       [](const Scene& s, FrameState& f) { f.color = compose(f.lit_contour_darkness, s.params.get<ComposeParams>()); }},
+       [](const Scene& s, FrameState& f) { f.color = compose(f.multi_contour_darkness, s.params.get<ComposeParams>()); }},
   };
   return table;
 }
@@ -49,7 +59,10 @@ const std::map<std::string, PassFn>& passes() {
 Frame render(const Scene& scene, const FrameOptions& options) {
   FrameState state;
   Frame frame;
-  for (const std::string& name : passes_for(scene.effects)) {
+  std::vector<std::string> all = passes_for(scene.effects);
+  state.pre = preprocess(scene, all);
+  frame.ran = state.pre.ran;
+  for (const std::string& name : frame_stages(all)) {
     auto it = passes().find(name);
     if (it == passes().end()) throw std::runtime_error("pass '" + name + "' is not implemented on the reference backend");
     Stopwatch watch;
@@ -61,6 +74,7 @@ Frame render(const Scene& scene, const FrameOptions& options) {
     add_gbuffer_buffers(state.gbuffer, frame.buffers);
     frame.buffers["edge_detect.contour_darkness"] = state.contour_darkness;
     frame.buffers["contour_light.lit_contour_darkness"] = state.lit_contour_darkness;
+    frame.buffers["multi_contour.contour_darkness"] = state.multi_contour_darkness;
     frame.buffers["compose.color"] = state.color;
   }
   return frame;

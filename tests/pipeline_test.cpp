@@ -23,7 +23,8 @@ bool ran(const Frame& f, const std::string& pass) {
 }
 
 TEST(PassTable, ContoursNeedOnlyGBufferEdgesAndComposition) {
-  EXPECT_EQ(passes_for({"contours"}), (std::vector<std::string>{"gbuffer", "edge_detect", "contour_light", "compose"}));
+  EXPECT_EQ(passes_for({"contours"}), (std::vector<std::string>{"distortion", "contour_texture", "gbuffer", "edge_detect",
+                                                               "contour_light", "multi_contour", "compose"}));
   EXPECT_THROW(passes_for({"watercolor"}), std::invalid_argument);
 }
 

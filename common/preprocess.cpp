@@ -1,0 +1,37 @@
+#include "common/preprocess.hpp"
+
+#include <algorithm>
+
+#include "common/distortion.hpp"
+#include "common/pencil_texture.hpp"
+
+namespace plumbago {
+
+namespace {
+
+bool has(const std::vector<std::string>& passes, const char* name) {
+  return std::find(passes.begin(), passes.end(), name) != passes.end();
+}
+
+}  // namespace
+
+Preprocessed preprocess(const Scene& scene, const std::vector<std::string>& passes) {
+  Preprocessed out;
+  auto contour = scene.params.get<ContourParams>();
+  if (has(passes, "distortion")) {
+    Stopwatch w;
+    out.offset_grids = distortion_grids(contour, scene.width, scene.height, scene.seed);
+    out.texture_shifts = contour_texture_shifts(contour, scene.seed);
+    out.ran.push_back({"distortion", w.ms()});
+  }
+  if (has(passes, "contour_texture")) {
+    Stopwatch w;
+    auto pencil = scene.params.get<PencilParams>();
+    int layer = std::min(contour.texture_layer, pencil.layers - 1);
+    out.contour_texture = pencil_layers(pencil, scene.seed, layer).back();
+    out.ran.push_back({"contour_texture", w.ms()});
+  }
+  return out;
+}
+
+}  // namespace plumbago
