@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <glm/glm.hpp>
 
+#include "reference/rows.hpp"
+
 namespace plumbago::reference {
 
 namespace {
@@ -54,11 +56,12 @@ Image contour_darkness(const GBuffer& g, const EdgeDetectParams& p) {
   const Image& normals = p.normals == EdgeNormals::Face ? g.face_normal : g.normal;
   int w = g.depth.width, h = g.depth.height;
   Image out(w, h, 1);
-  for (int y = 0; y < h; ++y)
+  for_each_row(h, [&](int y) {
     for (int x = 0; x < w; ++x) {
       Diagonals d = diagonals(x, y, w, h);
       out.at(x, y) = 1.0f - normal_intensity(normals, d, p.background_pairs) * depth_intensity(g, d, p.depth_scale);
     }
+  });
   return out;
 }
 

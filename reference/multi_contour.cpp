@@ -2,6 +2,8 @@
 
 #include "reference/sampler.hpp"
 
+#include "reference/rows.hpp"
+
 namespace plumbago::reference {
 
 namespace {
@@ -31,7 +33,7 @@ float copy_darkness(const Image& lit, const Image& grid, const Image& tex, glm::
 Image multi_contour_darkness(const Image& lit, const std::vector<Image>& grids, const Image& tex,
                              const std::vector<glm::vec2>& shifts, const ContourParams& p) {
   Image out(lit.width, lit.height, 1);
-  for (int y = 0; y < lit.height; ++y)
+  for_each_row(lit.height, [&](int y) {
     for (int x = 0; x < lit.width; ++x) {
       glm::vec2 center(float(x) + 0.5f, float(y) + 0.5f);
       float untouched = 1.0f;  // prod_k (1 - alpha d_k ...)
@@ -39,6 +41,7 @@ Image multi_contour_darkness(const Image& lit, const std::vector<Image>& grids, 
         untouched *= 1.0f - copy_darkness(lit, grids[k], tex, shifts[k], center, p);
       out.at(x, y) = 1.0f - untouched;
     }
+  });
   return out;
 }
 
