@@ -1,0 +1,35 @@
+// Texture generation (SPEC 1.2-1.4) at the default sizes: each generator's time.
+#include <benchmark/benchmark.h>
+
+#include "common/distortion.hpp"
+#include "common/paper.hpp"
+#include "common/params.hpp"
+#include "common/pencil_texture.hpp"
+
+namespace plumbago::bench {
+namespace {
+
+void BM_PencilLayers(benchmark::State& state) {
+  auto p = ParamSet{}.get<PencilParams>();
+  for (auto _ : state) benchmark::DoNotOptimize(pencil_layers(p, 1));
+  state.counters["layers"] = p.layers;
+  state.counters["size"] = p.size;
+}
+BENCHMARK(BM_PencilLayers)->Unit(benchmark::kMillisecond);
+
+void BM_Paper(benchmark::State& state) {
+  auto p = ParamSet{}.get<PaperParams>();
+  for (auto _ : state) benchmark::DoNotOptimize(make_paper(p, 1));
+  state.counters["size"] = p.size;
+}
+BENCHMARK(BM_Paper)->Unit(benchmark::kMillisecond);
+
+void BM_DistortionGrids(benchmark::State& state) {
+  auto p = ParamSet{}.get<ContourParams>();
+  for (auto _ : state) benchmark::DoNotOptimize(distortion_grids(p, 800, 800, 1));
+  state.counters["copies"] = p.copies;
+}
+BENCHMARK(BM_DistortionGrids)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace plumbago::bench
