@@ -44,6 +44,9 @@ constexpr double kByteTolerance = 2.0 / 255.0;
 // come out of slightly different float expressions; measured max 2e-5 on llvmpipe.
 // Hardware with 8-bit filter weights would need about 1/256 (SPEC 5).
 constexpr double kSampledTolerance = 1e-3;
+// Corner angles of SPEC 2.7: both backends evaluate the same float formula on the same
+// world-space floats (GPU in the vertex shader); measured on llvmpipe: see the test.
+constexpr double kAngleTolerance = 1e-3;
 constexpr float kDepthJump = 0.01f;        // relative linear-depth step that makes a discontinuity
 
 bool across_discontinuity(const GBuffer& g, int x, int y, int nx, int ny) {
@@ -169,6 +172,34 @@ StageParity multi_contour_parity(const Scene& scene, const GBuffer& ref) {
                   "bilinear lookups");
 }
 
+// Angles compared as (cos, sin) pairs, so that -pi and pi agree.
+Image angle_vectors(const Image& theta) {
+  Image v(theta.width, theta.height, 6);
+  for (size_t i = 0; i < theta.pixels(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      v.data[i * 6 + 2 * k] = std::cos(theta.data[i * 3 + k]);
+      v.data[i * 6 + 2 * k + 1] = std::sin(theta.data[i * 3 + k]);
+    }
+  return v;
+}
+
+// SPEC 2.7's corner angles, raster vs ray on the same curvature, where both backends see
+// the same triangle away from depth discontinuities.
+std::vector<StageParity> texture_rotation_parity(const Scene& scene, const GBuffer&) {
+  Preprocessed pre = preprocess(scene, {"curvature"});
+  GBuffer ref = reference::trace_gbuffer(scene, scene.width, scene.height, pre.curvature);
+  gpu::GBufferTargets targets = gpu::make_gbuffer_targets(scene.width, scene.height, GBufferFormat::RGBA32F);
+  gpu::GBufferPass(scene, pre.curvature).render(scene, targets);
+  GBuffer ras = gpu::download_gbuffer(targets);
+  gpu::Context::get().check_errors("texture_rotation parity");
+  Image mask = same_triangle(ref, ras, interior_mask(ref, ras));
+  const char* note = "(cos, sin) of each corner's angle; interior pixels on the same triangle";
+  return {compared("texture_rotation.theta_min", angle_vectors(ref.theta_min), angle_vectors(ras.theta_min),
+                   kAngleTolerance, &mask, note),
+          compared("texture_rotation.theta_max", angle_vectors(ref.theta_max), angle_vectors(ras.theta_max),
+                   kAngleTolerance, &mask, note)};
+}
+
 using ParityFn = std::function<std::vector<StageParity>(const Scene&, const GBuffer&)>;
 
 const std::vector<std::pair<std::string, ParityFn>>& parity_table() {
@@ -177,6 +208,7 @@ const std::vector<std::pair<std::string, ParityFn>>& parity_table() {
       {"edge_detect", [](const Scene& s, const GBuffer& g) { return std::vector{edge_parity(s, g)}; }},
       {"contour_light", [](const Scene& s, const GBuffer& g) { return std::vector{contour_light_parity(s, g)}; }},
       {"multi_contour", [](const Scene& s, const GBuffer& g) { return std::vector{multi_contour_parity(s, g)}; }},
+      {"texture_rotation", texture_rotation_parity},
       {"interior_intensity",
        [](const Scene& s, const GBuffer& g) { return std::vector{interior_intensity_parity(s, g)}; }},
       {"compose", [](const Scene& s, const GBuffer& g) { return std::vector{compose_parity(s, g)}; }},

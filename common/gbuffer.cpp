@@ -28,6 +28,15 @@ WorldObject world_object(const SceneObject& obj, const std::vector<Light>& light
   return w;
 }
 
+// Curvature directions are tangent vectors: they move with the object's linear part.
+void add_directions(const SceneObject& obj, const Curvature& c, WorldObject& w) {
+  glm::mat3 linear(obj.transform);
+  for (size_t v = 0; v < c.size(); ++v) {
+    w.d_min.push_back(unit_or_z(linear * c.d_min[v]));
+    w.d_max.push_back(unit_or_z(linear * c.d_max[v]));
+  }
+}
+
 }  // namespace
 
 glm::vec3 face_normal(const WorldObject& obj, size_t t) {
@@ -36,11 +45,14 @@ glm::vec3 face_normal(const WorldObject& obj, size_t t) {
   return unit_or_z(glm::cross(p1 - p0, p2 - p0));
 }
 
-std::vector<WorldObject> world_geometry(const Scene& scene) {
+std::vector<WorldObject> world_geometry(const Scene& scene, const std::vector<Curvature>& curvature) {
   InteriorParams ip = scene.params.get<InteriorParams>();
   std::vector<WorldObject> out;
   std::vector<Light> lights = unit_world_lights(scene);
-  for (const auto& obj : scene.objects) out.push_back(world_object(obj, lights, ip));
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    out.push_back(world_object(scene.objects[i], lights, ip));
+    if (i < curvature.size()) add_directions(scene.objects[i], curvature[i], out.back());
+  }
   return out;
 }
 
@@ -60,6 +72,8 @@ void add_gbuffer_buffers(const GBuffer& g, std::map<std::string, Image>& out) {
   out["gbuffer.depth"] = normalized_depth(g);
   out["gbuffer.bary"] = g.bary;
   out["gbuffer.gouraud"] = g.gouraud;
+  if (!g.theta_min.empty()) out["gbuffer.theta_min"] = g.theta_min;
+  if (!g.theta_max.empty()) out["gbuffer.theta_max"] = g.theta_max;
   Image ids(g.ids.width, g.ids.height, 2);
   for (size_t i = 0; i < g.ids.data.size(); ++i) ids.data[i] = float(g.ids.data[i]);
   out["gbuffer.ids"] = ids;

@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "common/curvature.hpp"
 #include "common/image.hpp"
 #include "common/scene.hpp"
 
@@ -28,6 +29,8 @@ struct GBuffer {
   ImageU32 ids;       // 2 ch: object index + 1 (0 = background), triangle index in its mesh
   Image bary;         // 3 ch: barycentric coordinates (w0, w1, w2); 0 for background
   Image gouraud;      // 1 ch: interpolated Gouraud intensity (SPEC 2.5); 1 for background
+  Image theta_min;    // 3 ch: window-space angle of each corner's min-curvature direction (SPEC 2.7)
+  Image theta_max;    // 3 ch: the same for the max-curvature direction; both 0 without curvature
   float near = 0, far = 1;
 
   bool background(int x, int y) const { return ids.at(x, y, 0) == 0; }
@@ -40,10 +43,12 @@ struct WorldObject {
   std::vector<glm::vec3> normals;      // world space, unit (face normals when flat)
   std::vector<glm::uvec3> triangles;
   std::vector<float> gouraud;          // per vertex, SPEC 2.5
+  std::vector<glm::vec3> d_min, d_max; // world space, unit; empty without curvature
   bool flat = false;
 };
 
-std::vector<WorldObject> world_geometry(const Scene& scene);
+// `curvature` holds one entry per scene object, or nothing (no texture rotation).
+std::vector<WorldObject> world_geometry(const Scene& scene, const std::vector<Curvature>& curvature = {});
 
 // Unit geometric normal of triangle t, normalize(cross(p1 - p0, p2 - p0)); (0,0,1) for a
 // zero-area triangle, never NaN.

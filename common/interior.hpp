@@ -15,6 +15,7 @@ struct InteriorParams {
   float ambient, diffuse;
   InteriorShading shading;
   bool brightness_sqrt;
+  float texture_scale, min_projected, crosshatch_below, crosshatch_band;
   template <class V>
   void visit(V& v) {
     v.real(ambient, "ambient", 0.1, 0.0, 1.0, "ambient term k_a of the interior intensity (SPEC 2.5)");
@@ -23,6 +24,11 @@ struct InteriorParams {
              "interior intensity per vertex (Lee) or per pixel");
     v.boolean(brightness_sqrt, "brightness_sqrt", true,
               "brightness adjustment I' = sqrt(I) (Lee §5.2; Pacheco turns it off)");
+    v.real(texture_scale, "texture_scale", 1.0, 0.05, 64.0, "window pixels per pencil-texture texel (SPEC 2.7)");
+    v.real(min_projected, "min_projected", 0.05, 0.0, 1.0,
+           "a projected curvature direction shorter than this (relative) is not trusted (SPEC 2.7)");
+    v.real(crosshatch_below, "crosshatch_below", 0.45, 0.0, 1.0, "T: cross hatching where I' < T (SPEC 2.9)");
+    v.real(crosshatch_band, "crosshatch_band", 0.1, 0.0, 1.0, "width of the smoothstep that fades hatching in");
   }
 };
 

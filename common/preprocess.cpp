@@ -31,6 +31,14 @@ Preprocessed preprocess(const Scene& scene, const std::vector<std::string>& pass
     out.contour_texture = pencil_layers(pencil, scene.seed, layer).back();
     out.ran.push_back({"contour_texture", w.ms()});
   }
+  if (has(passes, "curvature")) {
+    Stopwatch w;
+    auto params = scene.params.get<CurvatureParams>();
+    CurvatureOptions options;
+    options.progress = false;
+    for (const auto& obj : scene.objects) out.curvature.push_back(compute_curvature(*obj.mesh, params, options));
+    out.ran.push_back({"curvature", w.ms()});
+  }
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "common/curvature.hpp"
 #include "common/frame.hpp"
 #include "common/scene.hpp"
 
@@ -15,6 +16,7 @@ struct Preprocessed {
   std::vector<Image> offset_grids;        // "distortion": one RG grid per contour copy (SPEC 1.4)
   Image contour_texture;                  // "contour_texture": pencil layer contour.texture_layer (SPEC 1.2)
   std::vector<glm::vec2> texture_shifts;  // o_k of SPEC 2.4
+  std::vector<Curvature> curvature;       // "curvature": one per scene object (SPEC 1.1)
   std::vector<PassTime> ran;              // the steps that ran, with their times
 };
 

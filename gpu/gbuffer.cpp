@@ -1,6 +1,9 @@
 #include "gpu/gbuffer.hpp"
 
+#include <cmath>
 #include <glm/gtc/type_ptr.hpp>
+
+#include "common/interior.hpp"
 
 namespace plumbago::gpu {
 
@@ -10,6 +13,7 @@ namespace {
 struct Corner {
   glm::vec3 position, normal, face_normal, corner;
   float gouraud;
+  glm::vec3 corner_position[3], corner_d_min[3], corner_d_max[3];  // the whole triangle (SPEC 2.7)
 };
 
 std::vector<Corner> triangle_soup(const WorldObject& obj) {
@@ -18,9 +22,18 @@ std::vector<Corner> triangle_soup(const WorldObject& obj) {
   soup.reserve(obj.triangles.size() * 3);
   for (size_t t = 0; t < obj.triangles.size(); ++t) {
     glm::vec3 fn = face_normal(obj, t);
+    Corner triangle{};
     for (int k = 0; k < 3; ++k) {
       uint32_t v = obj.triangles[t][k];
-      soup.push_back({obj.positions[v], obj.flat ? fn : obj.normals[v], fn, unit[k], obj.gouraud[v]});
+      triangle.corner_position[k] = obj.positions[v];
+      if (!obj.d_min.empty()) triangle.corner_d_min[k] = obj.d_min[v], triangle.corner_d_max[k] = obj.d_max[v];
+    }
+    for (int k = 0; k < 3; ++k) {
+      uint32_t v = obj.triangles[t][k];
+      Corner c = triangle;
+      c.position = obj.positions[v], c.normal = obj.flat ? fn : obj.normals[v], c.face_normal = fn;
+      c.corner = unit[k], c.gouraud = obj.gouraud[v];
+      soup.push_back(c);
     }
   }
   return soup;
@@ -51,6 +64,8 @@ GBufferTargets make_gbuffer_targets(int width, int height, GBufferFormat normal_
   t.ids = make_texture(width, height, GL_RG32UI);
   t.bary = make_texture(width, height, GL_RGBA32F);
   t.gouraud = make_texture(width, height, GL_R32F);
+  t.theta_min = make_texture(width, height, GL_RGBA32F);
+  t.theta_max = make_texture(width, height, GL_RGBA32F);
   return t;
 }
 
@@ -62,6 +77,8 @@ GBuffer download_gbuffer(const GBufferTargets& t) {
   g.ids = download_texture_u32(t.ids, 2);
   g.bary = download_texture(t.bary, 3);
   g.gouraud = download_texture(t.gouraud, 1);
+  g.theta_min = download_texture(t.theta_min, 3);
+  g.theta_max = download_texture(t.theta_max, 3);
   g.near = t.near;
   g.far = t.far;
   return g;
@@ -76,13 +93,18 @@ GBufferTargets upload_gbuffer(const GBuffer& g) {
   write_texture(t.ids, 2, true, g.ids.data.data());
   t.bary = upload_texture(g.bary, GL_RGBA32F);
   t.gouraud = upload_texture(g.gouraud, GL_R32F);
+  t.theta_min = upload_texture(g.theta_min.empty() ? Image(g.gouraud.width, g.gouraud.height, 3) : g.theta_min, GL_RGBA32F);
+  t.theta_max = upload_texture(g.theta_max.empty() ? Image(g.gouraud.width, g.gouraud.height, 3) : g.theta_max, GL_RGBA32F);
   t.near = g.near;
   t.far = g.far;
   return t;
 }
 
-GBufferPass::GBufferPass(const Scene& scene) : program_("gbuffer.vert", "gbuffer.frag"), fbo_(make_framebuffer()) {
-  for (const WorldObject& obj : world_geometry(scene)) {
+GBufferPass::GBufferPass(const Scene& scene, const std::vector<Curvature>& curvature)
+    : program_("gbuffer.vert", "gbuffer.frag", glsl_params<InteriorParams>()),
+      has_curvature_(!curvature.empty()),
+      fbo_(make_framebuffer()) {
+  for (const WorldObject& obj : world_geometry(scene, curvature)) {
     std::vector<Corner> soup = triangle_soup(obj);
     Batch b{make_buffer(soup.data(), soup.size() * sizeof(Corner)), make_vertex_array(), GLsizei(soup.size())};
     glBindVertexArray(b.layout.id());
@@ -92,6 +114,11 @@ GBufferPass::GBufferPass(const Scene& scene) : program_("gbuffer.vert", "gbuffer
     describe_attribute(2, 3, offsetof(Corner, face_normal));
     describe_attribute(3, 3, offsetof(Corner, corner));
     describe_attribute(4, 1, offsetof(Corner, gouraud));
+    for (GLuint k = 0; k < 3; ++k) {
+      describe_attribute(5 + k, 3, offsetof(Corner, corner_position) + k * sizeof(glm::vec3));
+      describe_attribute(8 + k, 3, offsetof(Corner, corner_d_min) + k * sizeof(glm::vec3));
+      describe_attribute(11 + k, 3, offsetof(Corner, corner_d_max) + k * sizeof(glm::vec3));
+    }
     glBindVertexArray(0);
     batches_.push_back(std::move(b));
   }
@@ -105,14 +132,14 @@ void GBufferPass::render(const Scene& scene, GBufferTargets& t) {
     depth_test_height_ = h;
   }
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-  const Texture* color[] = {&t.normal, &t.face_normal, &t.depth, &t.ids, &t.bary, &t.gouraud};
-  GLenum draw[6];
-  for (int i = 0; i < 6; ++i) {
+  const Texture* color[] = {&t.normal, &t.face_normal, &t.depth, &t.ids, &t.bary, &t.gouraud, &t.theta_min, &t.theta_max};
+  GLenum draw[8];
+  for (int i = 0; i < 8; ++i) {
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + i, GL_TEXTURE_2D, color[i]->id(), 0);
     draw[i] = GL_COLOR_ATTACHMENT0 + i;
   }
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_test_.id());
-  glDrawBuffers(6, draw);
+  glDrawBuffers(8, draw);
 
   const Camera& cam = scene.camera;
   t.near = cam.near;
@@ -125,6 +152,8 @@ void GBufferPass::render(const Scene& scene, GBufferTargets& t) {
   glClearBufferuiv(GL_COLOR, 3, no_ids);
   glClearBufferfv(GL_COLOR, 4, zero);
   glClearBufferfv(GL_COLOR, 5, white);
+  glClearBufferfv(GL_COLOR, 6, zero);
+  glClearBufferfv(GL_COLOR, 7, zero);
   glClearBufferfv(GL_DEPTH, 0, &one);
 
   glViewport(0, 0, w, h);
@@ -135,6 +164,12 @@ void GBufferPass::render(const Scene& scene, GBufferTargets& t) {
   glm::mat4 view = cam.view(), projection = cam.projection(float(w) / float(h));
   glUniformMatrix4fv(program_.uniform("view"), 1, GL_FALSE, glm::value_ptr(view));
   glUniformMatrix4fv(program_.uniform("projection"), 1, GL_FALSE, glm::value_ptr(projection));
+  glm::mat4 view_projection = projection * view;
+  glUniformMatrix4fv(program_.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
+  glUniform2f(program_.uniform("window_size"), float(w), float(h));
+  glUniform1f(program_.uniform("tan_half_fov"), std::tan(glm::radians(cam.fov_deg) * 0.5f));
+  glUniform1i(program_.uniform("has_curvature"), has_curvature_);
+  program_.set_params(scene.params.get<InteriorParams>());
   for (size_t i = 0; i < batches_.size(); ++i) {
     glUniform1ui(program_.uniform("object_id"), GLuint(i + 1));
     glBindVertexArray(batches_[i].layout.id());

@@ -11,7 +11,7 @@ namespace plumbago::gpu {
 
 // The G-buffer's render targets, kept on the GPU for the stages that read them.
 struct GBufferTargets {
-  Texture normal, face_normal, depth, ids, bary, gouraud;
+  Texture normal, face_normal, depth, ids, bary, gouraud, theta_min, theta_max;
   float near = 0, far = 1;
   int width() const { return depth.width; }
   int height() const { return depth.height; }
@@ -25,7 +25,8 @@ GBufferTargets upload_gbuffer(const GBuffer& g);
 // Uploads a scene's geometry once; render() draws it into targets of any size.
 class GBufferPass {
  public:
-  explicit GBufferPass(const Scene& scene);
+  // `curvature`: one per object for the corner angles of SPEC 2.7, or none.
+  explicit GBufferPass(const Scene& scene, const std::vector<Curvature>& curvature = {});
   void render(const Scene& scene, GBufferTargets& targets);
 
  private:
@@ -36,6 +37,7 @@ class GBufferPass {
   };
   Program program_;
   std::vector<Batch> batches_;  // one per object
+  bool has_curvature_;
   Framebuffer fbo_;
   Renderbuffer depth_test_;
   int depth_test_width_ = 0, depth_test_height_ = 0;

@@ -1,12 +1,16 @@
 #include "reference/gbuffer.hpp"
 
 #include <embree3/rtcore.h>
+#include <glm/gtc/matrix_transform.hpp>
 #include <tbb/parallel_for.h>
 
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
+
+#include "common/interior.hpp"
+#include "common/texture_rotation.hpp"
 
 namespace plumbago::reference {
 
@@ -81,6 +85,16 @@ void set3(Image& img, int x, int y, glm::vec3 v) {
   for (int c = 0; c < 3; ++c) img.at(x, y, c) = v[c];
 }
 
+// SPEC 2.7: each corner's stroke angles, min and max curvature, at the corner itself.
+void corner_angles(const WorldObject& obj, const glm::uvec3& tri, const ProjectionInfo& proj, float min_projected,
+                   int x, int y, GBuffer& g) {
+  for (int k = 0; k < 3; ++k) {
+    glm::vec3 p = obj.positions[tri[k]], d_min = obj.d_min[tri[k]], d_max = obj.d_max[tri[k]];
+    g.theta_min.at(x, y, k) = stroke_angle(proj, p, d_min, d_max, min_projected);
+    g.theta_max.at(x, y, k) = stroke_angle(proj, p, d_max, d_min, min_projected);
+  }
+}
+
 // Fills pixel (x, y) from its hit: barycentrics w = (1-u-v, u, v) weight corners 0, 1, 2.
 void shade_hit(const Hit& hit, const std::vector<WorldObject>& objects, const glm::mat3& to_view, glm::vec3 forward,
                glm::vec3 ray_dir, int x, int y, GBuffer& g) {
@@ -104,6 +118,8 @@ GBuffer background_gbuffer(int w, int h, const Camera& cam) {
   g.normal = Image(w, h, 3);
   g.face_normal = Image(w, h, 3);
   g.depth = Image(w, h, 1, cam.far);
+  g.theta_min = Image(w, h, 3);
+  g.theta_max = Image(w, h, 3);
   g.ids = ImageU32(w, h, 2);
   g.bary = Image(w, h, 3);
   g.gouraud = Image(w, h, 1, 1.0f);
@@ -114,8 +130,11 @@ GBuffer background_gbuffer(int w, int h, const Camera& cam) {
 
 }  // namespace
 
-GBuffer trace_gbuffer(const Scene& scene, int width, int height) {
-  std::vector<WorldObject> objects = world_geometry(scene);
+GBuffer trace_gbuffer(const Scene& scene, int width, int height, const std::vector<Curvature>& curvature) {
+  std::vector<WorldObject> objects = world_geometry(scene, curvature);
+  ProjectionInfo proj{scene.camera.projection(float(width) / float(height)) * scene.camera.view(), float(width),
+                      float(height), std::tan(glm::radians(scene.camera.fov_deg) * 0.5f)};
+  float min_projected = scene.params.get<InteriorParams>().min_projected;
   RayScene rays(objects);
   const Camera& cam = scene.camera;
   GBuffer g = background_gbuffer(width, height, cam);
@@ -132,6 +151,8 @@ GBuffer trace_gbuffer(const Scene& scene, int width, int height) {
       if (x >= width || y >= height || hits[i].object == RTC_INVALID_GEOMETRY_ID) continue;
       glm::vec3 dir = primary.direction(float(x) + 0.5f, float(y) + 0.5f);
       shade_hit(hits[i], objects, to_view, forward, dir, x, y, g);
+      const WorldObject& obj = objects[hits[i].object];
+      if (!obj.d_min.empty()) corner_angles(obj, obj.triangles[hits[i].triangle], proj, min_projected, x, y, g);
     }
   });
   return g;

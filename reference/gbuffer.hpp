@@ -8,6 +8,7 @@ namespace plumbago::reference {
 
 // Every channel of GBuffer (common/gbuffer.hpp) for a width x height image of `scene`.
 // Back faces keep the mesh's orientation (their normals point away from the camera).
-GBuffer trace_gbuffer(const Scene& scene, int width, int height);
+// `curvature` (one per object, or none) gives the corner angles of SPEC 2.7.
+GBuffer trace_gbuffer(const Scene& scene, int width, int height, const std::vector<Curvature>& curvature = {});
 
 }  // namespace plumbago::reference

@@ -6,6 +6,8 @@ in vec3 v_face_normal;
 in vec3 v_bary;
 in float v_depth;
 in float v_gouraud;
+flat in vec3 v_theta_min;
+flat in vec3 v_theta_max;
 
 uniform uint object_id;  // object index + 1
 
@@ -15,6 +17,8 @@ layout(location = 2) out float out_depth;
 layout(location = 3) out uvec2 out_ids;
 layout(location = 4) out vec4 out_bary;
 layout(location = 5) out float out_gouraud;
+layout(location = 6) out vec4 out_theta_min;
+layout(location = 7) out vec4 out_theta_max;
 
 vec3 unit_or_zero(vec3 v) {
   float len = length(v);
@@ -28,4 +32,6 @@ void main() {
   out_ids = uvec2(object_id, uint(gl_PrimitiveID));
   out_bary = vec4(v_bary, 0.0);
   out_gouraud = v_gouraud;
+  out_theta_min = vec4(v_theta_min, 0.0);
+  out_theta_max = vec4(v_theta_max, 0.0);
 }

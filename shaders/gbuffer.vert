@@ -5,6 +5,12 @@ layout(location = 1) in vec3 normal;       // world, unit (shading)
 layout(location = 2) in vec3 face_normal;  // world, unit (geometric)
 layout(location = 3) in vec3 corner;       // (1,0,0), (0,1,0) or (0,0,1)
 layout(location = 4) in float gouraud;     // SPEC 2.5, per vertex
+// The triangle's three corners and their curvature directions (world), for SPEC 2.7.
+layout(location = 5) in vec3 corner_position[3];
+layout(location = 8) in vec3 corner_d_min[3];
+layout(location = 11) in vec3 corner_d_max[3];
+uniform bool has_curvature;
+#include "common_rotation.glsl"
 
 uniform mat4 view;
 uniform mat4 projection;
@@ -14,6 +20,8 @@ out vec3 v_face_normal;
 out vec3 v_bary;
 out float v_depth;
 out float v_gouraud;
+flat out vec3 v_theta_min;
+flat out vec3 v_theta_max;
 
 void main() {
   vec4 view_position = view * vec4(position, 1.0);
@@ -23,4 +31,10 @@ void main() {
   v_bary = corner;
   v_depth = -view_position.z;  // linear view depth d = -z_view (SPEC 0)
   v_gouraud = gouraud;
+  v_theta_min = v_theta_max = vec3(0.0);
+  if (has_curvature)
+    for (int k = 0; k < 3; ++k) {
+      v_theta_min[k] = stroke_angle(corner_position[k], corner_d_min[k], corner_d_max[k]);
+      v_theta_max[k] = stroke_angle(corner_position[k], corner_d_max[k], corner_d_min[k]);
+    }
 }

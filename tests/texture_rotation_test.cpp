@@ -1,0 +1,50 @@
+// Texture rotation (SPEC 2.7): corner angles raster vs ray, and the hard cases.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "apps/parity.hpp"
+#include "common/texture_rotation.hpp"
+#include "tests/test_scenes.hpp"
+
+namespace plumbago {
+namespace {
+
+class TextureRotationParity : public testing::GlTest, public ::testing::WithParamInterface<std::string> {};
+
+TEST_P(TextureRotationParity, CornerAnglesAgree) {
+  Scene scene = testing::builtin_at(GetParam(), 320, 240);
+  for (const StageParity& r : run_parity(scene, {"texture_rotation"})) {
+    std::printf("[%s %s] %s\n", r.name.c_str(), GetParam().c_str(), format_diff(r.name, r.diff).c_str());
+    EXPECT_GT(r.diff.compared, 1000u);
+    EXPECT_TRUE(r.pass) << r.name;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, TextureRotationParity, ::testing::Values("torus", "cad", "sphere"));
+
+ProjectionInfo looking_down_z() {
+  glm::mat4 view = glm::lookAt(glm::vec3(0, 0, 5), glm::vec3(0), glm::vec3(0, 1, 0));
+  return {glm::perspective(glm::radians(40.0f), 1.0f, 0.1f, 100.0f) * view, 400, 400, std::tan(glm::radians(20.0f))};
+}
+
+TEST(TextureRotation, DirectionsAcrossTheViewKeepTheirAngle) {
+  ProjectionInfo proj = looking_down_z();
+  EXPECT_NEAR(stroke_angle(proj, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0.05f), 0.0f, 1e-5f);
+  EXPECT_NEAR(stroke_angle(proj, {0, 0, 0}, {0, 1, 0}, {1, 0, 0}, 0.05f), 1.5707963f, 1e-5f);
+  EXPECT_NEAR(stroke_angle(proj, {0, 0, 0}, {1, 1, 0}, {0, 1, 0}, 0.05f), 0.7853982f, 1e-5f);
+}
+
+// Straight down a cylinder's axis: the direction is parallel to the view ray.
+TEST(TextureRotation, ADirectionAlongTheViewRayFallsBackWithoutNaN) {
+  ProjectionInfo proj = looking_down_z();
+  EXPECT_NEAR(stroke_angle(proj, {0, 0, 0}, {0, 0, 1}, {0, 1, 0}, 0.05f), 1.5707963f + 1.5707963f, 1e-5f);
+  float both_short = stroke_angle(proj, {0, 0, 0}, {0, 0, 1}, {0, 0, -1}, 0.05f);
+  EXPECT_EQ(both_short, 0.0f);
+  EXPECT_FALSE(window_angle(proj, {0, 0, 0}, {0, 0, 0}, 0.05f).reliable);  // zero direction
+  EXPECT_TRUE(std::isfinite(stroke_angle(proj, {0, 0, 5}, {1, 0, 0}, {0, 1, 0}, 0.05f)));  // at the eye
+}
+
+}  // namespace
+}  // namespace plumbago
