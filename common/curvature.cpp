@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <Eigen/Eigenvalues>
+#include <array>
 #include <cmath>
 
 #include "common/ball_geometry.hpp"
@@ -36,15 +37,20 @@ struct SymmetricTensor {
   }
 };
 
+// Everything the ball reads about a face or an edge in one record, so that growing the
+// ball touches few cache lines.
 struct FaceGeometry {
+  glm::dvec3 corner[3];
   glm::dvec3 normal;  // unit, or 0 for a zero-area face
   double area;
+  std::array<uint32_t, 3> edges;  // edge (corner k, corner k+1)
 };
 
 struct EdgeGeometry {
   glm::dvec3 unit;  // along the edge, or 0 for a zero-length edge
   double length;
   double beta;      // signed dihedral angle, 0 on boundary edges
+  int32_t face[2];  // face[1] = -1 on a boundary
 };
 
 struct Geometry {
@@ -64,8 +70,12 @@ Geometry precompute_geometry(const Mesh& mesh, const MeshTopology& topo) {
   g.faces.resize(mesh.triangles.size());
   tbb::parallel_for(size_t(0), g.faces.size(), [&](size_t f) {
     const auto& t = mesh.triangles[f];
-    glm::dvec3 n = glm::cross(g.position[t[1]] - g.position[t[0]], g.position[t[2]] - g.position[t[0]]);
-    g.faces[f] = {unit_or_zero(n), 0.5 * glm::length(n)};
+    FaceGeometry& face = g.faces[f];
+    for (int k = 0; k < 3; ++k) face.corner[k] = g.position[t[k]];
+    glm::dvec3 n = glm::cross(face.corner[1] - face.corner[0], face.corner[2] - face.corner[0]);
+    face.normal = unit_or_zero(n);
+    face.area = 0.5 * glm::length(n);
+    face.edges = topo.face_edges[f];
   });
   g.edges.resize(topo.edges.size());
   tbb::parallel_for(size_t(0), g.edges.size(), [&](size_t e) {
@@ -75,7 +85,7 @@ Geometry precompute_geometry(const Mesh& mesh, const MeshTopology& topo) {
     double beta = edge.face[1] < 0 ? 0.0
                                    : signed_dihedral_angle(g.faces[edge.face[0]].normal,
                                                            g.faces[edge.face[1]].normal, unit);
-    g.edges[e] = {unit, glm::length(d), beta};
+    g.edges[e] = {unit, glm::length(d), beta, {edge.face[0], edge.face[1]}};
   });
   return g;
 }
@@ -114,7 +124,7 @@ BallSums one_ring_sums(uint32_t v, const MeshTopology& topo, const Geometry& g, 
   for (uint32_t f : topo.faces_of(v)) {
     sums.area += g.faces[f].area;
     sums.normal += g.faces[f].area * g.faces[f].normal;
-    for (uint32_t e : topo.face_edges[f]) {
+    for (uint32_t e : g.faces[f].edges) {
       if (!s.first_visit(s.edge_mark, e)) continue;
       const auto& edge = topo.edges[e];
       double weight = edge.from == v || edge.to == v ? 1.0 : 0.5;
@@ -126,28 +136,27 @@ BallSums one_ring_sums(uint32_t v, const MeshTopology& topo, const Geometry& g, 
 
 // The connected part of the surface within distance r of v, grown face by face across
 // edges that reach into the ball; each edge and face clipped exactly.
-BallSums ball_sums(uint32_t v, double r, const Mesh& mesh, const MeshTopology& topo, const Geometry& g, Scratch& s) {
+BallSums ball_sums(uint32_t v, double r, const MeshTopology& topo, const Geometry& g, Scratch& s) {
   BallSums sums;
   const glm::dvec3 c = g.position[v];
   for (uint32_t f : topo.faces_of(v))
     if (s.first_visit(s.face_mark, f)) s.queue.push_back(f);
   for (size_t next = 0; next < s.queue.size(); ++next) {
-    uint32_t f = s.queue[next];
-    const auto& t = mesh.triangles[f];
-    const glm::dvec3 p[3] = {g.position[t[0]], g.position[t[1]], g.position[t[2]]};
+    const FaceGeometry& face = g.faces[s.queue[next]];
+    const glm::dvec3* p = face.corner;
     bool inside[3];
     for (int k = 0; k < 3; ++k) inside[k] = glm::dot(p[k] - c, p[k] - c) <= r * r;
-    double area = inside[0] && inside[1] && inside[2] ? g.faces[f].area : triangle_area_in_ball(p[0], p[1], p[2], c, r);
+    double area = inside[0] && inside[1] && inside[2] ? face.area : triangle_area_in_ball(p[0], p[1], p[2], c, r);
     sums.area += area;
-    sums.normal += area * g.faces[f].normal;
+    sums.normal += area * face.normal;
     for (int k = 0; k < 3; ++k) {
-      uint32_t e = topo.face_edges[f][k];
+      uint32_t e = face.edges[k];
       if (!s.first_visit(s.edge_mark, e)) continue;
-      double length = inside[k] && inside[(k + 1) % 3] ? g.edges[e].length
-                                                       : segment_length_in_ball(p[k], p[(k + 1) % 3], c, r);
+      const EdgeGeometry& edge = g.edges[e];
+      double length = inside[k] && inside[(k + 1) % 3] ? edge.length : segment_length_in_ball(p[k], p[(k + 1) % 3], c, r);
       if (!(length > 0)) continue;
-      sums.tensor.add(g.edges[e].beta * length, g.edges[e].unit);
-      for (int32_t other : topo.edges[e].face)
+      sums.tensor.add(edge.beta * length, edge.unit);
+      for (int32_t other : edge.face)
         if (other >= 0 && s.first_visit(s.face_mark, uint32_t(other))) s.queue.push_back(uint32_t(other));
     }
   }
@@ -223,7 +232,7 @@ Curvature tensor_curvature(const Mesh& mesh, const MeshTopology& topo, const Cur
     for (uint32_t v = range.begin(); v != range.end(); ++v) {
       s.next_vertex();
       bool ring = p.radius == 0 || (p.ring_fallback && radius < ring_radius(v, topo, g));
-      BallSums sums = ring ? one_ring_sums(v, topo, g, s) : ball_sums(v, radius, mesh, topo, g, s);
+      BallSums sums = ring ? one_ring_sums(v, topo, g, s) : ball_sums(v, radius, topo, g, s);
       Frame f = vertex_frame(sums, glm::dvec3(mesh.normals[v]), p, flat);
       c.normal[v] = f.normal, c.d_min[v] = f.d_min, c.d_max[v] = f.d_max;
       c.k_min[v] = float(f.k_min), c.k_max[v] = float(f.k_max);

@@ -1,0 +1,175 @@
+#!/usr/bin/python3
+"""Curvature accuracy against time: a radius sweep of the tensor and a degree sweep of
+the jet on analytic surfaces, regular and irregular meshes (see README.md).
+
+Drives `plumbago curvature` (no cache) on meshes written by surfaces.py, reads the
+computation time from its summary line, and compares the CSV with the exact curvature.
+Writes results.csv and two plots into --out (default: this folder).
+
+Run with the Debian interpreter, which has numpy and matplotlib:
+  /usr/bin/python3 experiments/curvature_accuracy/run.py [--plumbago build/plumbago]
+"""
+import argparse
+import csv
+import pathlib
+import re
+import subprocess
+import tempfile
+
+import numpy as np
+
+import surfaces
+
+HERE = pathlib.Path(__file__).resolve().parent
+ROOT = HERE.parent.parent
+
+TENSOR_RADII = [0.0, 0.005, 0.01, 0.02, 0.03, 0.05]
+JET_DEGREES = [2, 3, 4]
+DEFAULT_RADIUS = 0.01        # only to size the meshes; the sweep sets the radius explicitly
+EDGES_PER_DEFAULT_RADIUS = 2.0
+UMBILIC_RATIO = 0.1          # directions are compared where the exact ones are defined
+
+
+def write_obj(path, positions, triangles):
+    with open(path, "w") as f:
+        for p in positions:
+            f.write("v %.9g %.9g %.9g\n" % tuple(p))
+        for t in triangles:
+            f.write("f %d %d %d\n" % tuple(t + 1))
+
+
+def run_plumbago(plumbago, mesh_path, out_csv, args):
+    result = subprocess.run([plumbago, "curvature", str(mesh_path), "-o", str(out_csv), "--no-cache"] + args,
+                            capture_output=True, text=True, check=True)
+    ms = float(re.search(r"vertices, \w+, ([0-9.]+) ms", result.stderr).group(1))
+    table = np.loadtxt(out_csv, delimiter=",", skiprows=1, ndmin=2)
+    return ms, table
+
+
+def boundary_distance(positions, triangles):
+    """Distance from every vertex to the nearest vertex on an open boundary (inf if none)."""
+    edges = np.sort(np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]]), axis=1)
+    unique, count = np.unique(edges, axis=0, return_counts=True)
+    border = np.unique(unique[count == 1])
+    if border.size == 0:
+        return np.full(len(positions), np.inf)
+    out = np.empty(len(positions))
+    for start in range(0, len(positions), 4096):
+        chunk = positions[start:start + 4096]
+        d = np.linalg.norm(chunk[:, None, :] - positions[border][None, :, :], axis=2)
+        out[start:start + 4096] = d.min(axis=1)
+    return out
+
+
+def errors(table, truth, keep):
+    """Median direction error (degrees) and median relative errors of k_min and k_max,
+    as in tests/curvature_test.cpp."""
+    p = table[keep, 1:4]
+    _, k_min, k_max, d_min = truth(p)
+    scale = 0.1 * np.maximum(np.abs(k_min), np.abs(k_max))
+    e_min = np.abs(table[keep, 7] - k_min) / np.maximum(np.abs(k_min), scale)
+    e_max = np.abs(table[keep, 8] - k_max) / np.maximum(np.abs(k_max), scale)
+    defined = np.abs(k_max - k_min) >= UMBILIC_RATIO * (np.abs(k_max) + np.abs(k_min))
+    cosine = np.abs(np.einsum("ij,ij->i", table[keep, 9:12], d_min))[defined]
+    direction = np.degrees(np.arccos(np.minimum(cosine, 1.0)))
+    return (np.median(direction) if direction.size else np.nan), np.median(e_min), np.median(e_max)
+
+
+def sweep(plumbago, work):
+    rows = []
+    for name, make in surfaces.SURFACES.items():
+        for meshing in ("regular", "irregular"):
+            rng = np.random.default_rng(1)
+            coarse, _, _ = make(0.2, False, rng)
+            diagonal = np.linalg.norm(coarse.max(0) - coarse.min(0))
+            edge = DEFAULT_RADIUS * diagonal / EDGES_PER_DEFAULT_RADIUS
+            positions, triangles, truth = make(edge, meshing == "irregular", rng)
+            mesh = work / f"{name}-{meshing}.obj"
+            write_obj(mesh, positions, triangles)
+            keep = boundary_distance(positions, triangles) >= 0.1 * diagonal
+            runs = [("tensor", r, ["--method", "tensor", "--radius", str(r)]) for r in TENSOR_RADII]
+            runs += [("jet", d, ["--method", "jet", "--set", f"curvature.jet_degree={d}"]) for d in JET_DEGREES]
+            for method, setting, args in runs:
+                ms, table = run_plumbago(plumbago, mesh, work / "out.csv", args)
+                direction, e_min, e_max = errors(table, truth, keep)
+                rows.append(dict(surface=name, meshing=meshing, vertices=len(positions), method=method,
+                                 setting=setting, ms=ms, direction_deg=direction, k_min_rel=e_min, k_max_rel=e_max,
+                                 edges_per_radius=setting * diagonal / edge if method == "tensor" else np.nan))
+                print("%-9s %-9s %-6s %5g  %8.1f ms  direction %6.2f deg  k_min %6.2f%%  k_max %6.2f%%" %
+                      (name, meshing, method, setting, ms, direction, 100 * e_min, 100 * e_max), flush=True)
+    return rows
+
+
+ERROR_FLOOR = {"k_rel": 1e-4, "direction_deg": 1e-3}  # log axes: smaller errors are drawn at the floor
+
+
+def plot(rows, out):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    names = list(surfaces.SURFACES)
+    for metric, label, filename in [("k_rel", "median relative error of k (mean of k_min, k_max)",
+                                     "k_error_vs_time.png"),
+                                    ("direction_deg", "median direction error (degrees)",
+                                     "direction_error_vs_time.png")]:
+        fig, axes = plt.subplots(1, len(names), figsize=(4 * len(names), 4), sharey=False)
+        for ax, name in zip(axes, names):
+            for method, marker in (("tensor", "o"), ("jet", "s")):
+                for meshing, style in (("regular", "-"), ("irregular", "--")):
+                    sel = [r for r in rows if r["surface"] == name and r["method"] == method and r["meshing"] == meshing]
+                    x = [r["ms"] for r in sel]
+                    y = [0.5 * (r["k_min_rel"] + r["k_max_rel"]) if metric == "k_rel" else r[metric] for r in sel]
+                    y = [max(v, ERROR_FLOOR[metric]) for v in y]  # NaN (no defined directions) stays NaN
+                    ax.plot(x, y, style, marker=marker, label=f"{method} {meshing}")
+                    for r, xi, yi in zip(sel, x, y):
+                        text = ("1-ring" if r["setting"] == 0 else "r=%g" % r["setting"]) if method == "tensor" \
+                            else "d=%d" % r["setting"]
+                        ax.annotate(text, (xi, yi), fontsize=6, xytext=(2, 2), textcoords="offset points")
+            ax.set_title(f"{name} ({sel[0]['vertices']} vertices)")
+            ax.set_xscale("log")
+            if all(np.isnan(line.get_ydata()).all() for line in ax.get_lines()):
+                ax.text(0.5, 0.5, "umbilic everywhere:\nno directions to compare", ha="center",
+                        transform=ax.transAxes)
+                continue
+            ax.set_yscale("log")
+            ax.set_xlabel("time (ms, 2 cores)")
+            ax.grid(True, which="both", alpha=0.3)
+        axes[0].set_ylabel(label)
+        axes[0].legend(fontsize=7)
+        fig.tight_layout()
+        fig.savefig(out / filename, dpi=120)
+        plt.close(fig)
+
+
+def read_results(path):
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    for r in rows:
+        for key in ("vertices", "setting", "ms", "direction_deg", "k_min_rel", "k_max_rel", "edges_per_radius"):
+            r[key] = float(r[key])
+    return rows
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--plumbago", default=str(ROOT / "build" / "plumbago"), help="the plumbago program")
+    parser.add_argument("--out", default=str(HERE), help="folder for results.csv and the plots")
+    parser.add_argument("--replot", action="store_true", help="only redraw the plots from --out/results.csv")
+    args = parser.parse_args()
+    out = pathlib.Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    if args.replot:
+        plot(read_results(out / "results.csv"), out)
+        return
+    with tempfile.TemporaryDirectory(prefix="plumbago-curvature-") as work:
+        rows = sweep(args.plumbago, pathlib.Path(work))
+    with open(out / "results.csv", "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+        writer.writeheader()
+        writer.writerows(rows)
+    plot(rows, out)
+
+
+if __name__ == "__main__":
+    main()
