@@ -10,10 +10,12 @@
 #include "common/edge_detect.hpp"
 #include "common/gbuffer.hpp"
 #include "common/lights.hpp"
+#include "common/paper.hpp"
 #include "common/preprocess.hpp"
 #include "gpu/compose.hpp"
 #include "gpu/contour_light.hpp"
 #include "gpu/multi_contour.hpp"
+#include "gpu/pencil_interior.hpp"
 #include "gpu/context.hpp"
 #include "gpu/edge_detect.hpp"
 #include "gpu/gbuffer.hpp"
@@ -21,6 +23,7 @@
 #include "reference/compose.hpp"
 #include "reference/contour_light.hpp"
 #include "reference/multi_contour.hpp"
+#include "reference/pencil_interior.hpp"
 #include "reference/edge_detect.hpp"
 #include "reference/gbuffer.hpp"
 #include "reference/interior_intensity.hpp"
@@ -117,16 +120,42 @@ StageParity edge_parity(const Scene& scene, const GBuffer& ref) {
                   "both fed the reference G-buffer; float target");
 }
 
+// Contours, an interior (1 - Gouraud stands in for it) and the paper color.
 StageParity compose_parity(const Scene& scene, const GBuffer& ref) {
-  Image darkness = reference::contour_darkness(ref, scene.params.get<EdgeDetectParams>());
+  Image contours = reference::contour_darkness(ref, scene.params.get<EdgeDetectParams>());
+  Image interior = ref.gouraud;
+  for (float& v : interior.data) v = 1.0f - v;
+  Image paper = make_paper(scene.params.get<PaperParams>(), scene.seed).color;
   auto p = scene.params.get<ComposeParams>();
-  gpu::Texture in = gpu::upload_texture(darkness, GL_R32F);
+  gpu::Texture c = gpu::upload_texture(contours, GL_R32F), i = gpu::upload_texture(interior, GL_R32F);
+  gpu::Texture color = gpu::upload_texture(paper, GL_RGBA32F);
   gpu::Texture out = gpu::make_texture(scene.width, scene.height, GL_RGBA8);
-  gpu::ComposePass().run(in, p, out);
+  gpu::ComposePass().run(c, true, i, true, color, true, p, out);
   Image gpu_out = gpu::download_texture(out, 3);
   gpu::Context::get().check_errors("compose parity");
-  return compared("compose", reference::compose(darkness, p), gpu_out, kByteTolerance, nullptr,
-                  "both fed the reference contour darkness; 8-bit target");
+  return compared("compose", reference::compose(contours, interior, paper, p), gpu_out, kByteTolerance, nullptr,
+                  "both fed the reference contours, an interior and the paper color; 8-bit target");
+}
+
+// With cross hatching and the paper effect on, so that every part of SPEC 2.6-2.10 runs.
+StageParity pencil_interior_parity(const Scene& scene, const GBuffer&) {
+  Preprocessed pre = preprocess(scene, {"curvature", "pencil_textures", "paper"});
+  GBuffer ref = reference::trace_gbuffer(scene, scene.width, scene.height, pre.curvature);
+  auto ip = scene.params.get<InteriorParams>();
+  float mu_p = scene.params.get<PaperParams>().mu_p;
+  InteriorOptions all{true, true};
+  Image intensity = reference::interior_intensity(ref, view_space_lights(scene), ip);
+  gpu::GBufferTargets g = gpu::upload_gbuffer(ref);
+  gpu::Texture i = gpu::upload_texture(intensity, GL_R32F), stack = gpu::upload_texture_3d(pre.pencil_stack, GL_R32F);
+  gpu::Texture normal = gpu::upload_texture(pre.paper.normal, GL_RGBA32F);
+  gpu::Texture out = gpu::make_texture(scene.width, scene.height, GL_R32F);
+  gpu::PencilInteriorPass().run(g, i, stack, normal, all, ip, mu_p, out);
+  Image gpu_out = gpu::download_texture(out, 1);
+  gpu::Context::get().check_errors("pencil_interior parity");
+  Image ref_out = reference::interior_darkness(ref, intensity, pre.pencil_stack, pre.paper.normal, all, ip, mu_p);
+  return compared("pencil_interior", ref_out, gpu_out, kSampledTolerance, nullptr,
+                  "both fed the reference G-buffer (with corner angles), intensity, pencil stack and paper; "
+                  "crosshatch and paper on");
 }
 
 StageParity interior_intensity_parity(const Scene& scene, const GBuffer& ref) {
@@ -211,6 +240,8 @@ const std::vector<std::pair<std::string, ParityFn>>& parity_table() {
       {"texture_rotation", texture_rotation_parity},
       {"interior_intensity",
        [](const Scene& s, const GBuffer& g) { return std::vector{interior_intensity_parity(s, g)}; }},
+      {"pencil_interior",
+       [](const Scene& s, const GBuffer& g) { return std::vector{pencil_interior_parity(s, g)}; }},
       {"compose", [](const Scene& s, const GBuffer& g) { return std::vector{compose_parity(s, g)}; }},
   };
   return table;

@@ -10,12 +10,18 @@ const std::vector<PassDef>& pass_table() {
   static const std::vector<PassDef> table = {
       {"distortion", PassKind::Preprocessing, {}, "offset grids of the contour copies (SPEC 1.4, Lee Eq. 2)"},
       {"contour_texture", PassKind::Preprocessing, {}, "the pencil layer used as contour texture (SPEC 1.2)"},
+      {"curvature", PassKind::Preprocessing, {}, "principal curvature per vertex (SPEC 1.1)"},
+      {"pencil_textures", PassKind::Preprocessing, {}, "the pencil tone stack (SPEC 1.2, Lee Eq. 3-4)"},
+      {"paper", PassKind::Preprocessing, {}, "paper height, normal map and color (SPEC 1.3)"},
       {"gbuffer", PassKind::Stage, {}, "G-buffer: normals, depth, ids, barycentrics, Gouraud (SPEC 2.1)"},
       {"edge_detect", PassKind::Stage, {"gbuffer"}, "contour darkness from normal and depth discontinuities (SPEC 2.2)"},
       {"contour_light", PassKind::Stage, {"edge_detect"}, "lit contours drawn lighter (SPEC 2.3, Lee Eq. 1)"},
       {"multi_contour", PassKind::Stage, {"contour_light", "distortion", "contour_texture"},
        "contour copies on distorted planes with the contour texture (SPEC 2.4)"},
-      {"compose", PassKind::Stage, {"multi_contour"}, "final image on white paper (SPEC 2.11)"},
+      {"interior_intensity", PassKind::Stage, {"gbuffer"}, "interior intensity and brightness (SPEC 2.5)"},
+      {"pencil_interior", PassKind::Stage, {"interior_intensity", "curvature", "pencil_textures"},
+       "tone to layer, rotated pencil textures, 3-way blending, cross hatching, paper effect (SPEC 2.6-2.10)"},
+      {"compose", PassKind::Stage, {"gbuffer"}, "contours, interior and paper into the final image (SPEC 2.11)"},
   };
   return table;
 }
@@ -23,6 +29,9 @@ const std::vector<PassDef>& pass_table() {
 const std::vector<EffectDef>& effect_table() {
   static const std::vector<EffectDef> table = {
       {"contours", {"edge_detect", "contour_light", "multi_contour", "compose"}, "image-space contours (Lee 2006 §4)"},
+      {"interior", {"pencil_interior", "compose"}, "pencil textures along curvature directions (Lee 2006 §5)"},
+      {"crosshatch", {"pencil_interior", "compose"}, "cross hatching in dark regions (Lee 2006 Fig. 7)"},
+      {"paper", {"paper", "compose"}, "stroke/paper interaction and paper color (Lee 2006 §5.5)"},
   };
   return table;
 }

@@ -24,12 +24,23 @@ Preprocessed preprocess(const Scene& scene, const std::vector<std::string>& pass
     out.texture_shifts = contour_texture_shifts(contour, scene.seed);
     out.ran.push_back({"distortion", w.ms()});
   }
-  if (has(passes, "contour_texture")) {
+  auto pencil = scene.params.get<PencilParams>();
+  int contour_layer = std::min(contour.texture_layer, pencil.layers - 1);
+  if (has(passes, "pencil_textures")) {
     Stopwatch w;
-    auto pencil = scene.params.get<PencilParams>();
-    int layer = std::min(contour.texture_layer, pencil.layers - 1);
-    out.contour_texture = pencil_layers(pencil, scene.seed, layer).back();
+    out.pencil_stack = pencil_layers(pencil, scene.seed);
+    out.ran.push_back({"pencil_textures", w.ms()});
+  }
+  if (has(passes, "contour_texture")) {  // the stack's own layer; only the layers up to it when alone
+    Stopwatch w;
+    out.contour_texture = out.pencil_stack.empty() ? pencil_layers(pencil, scene.seed, contour_layer).back()
+                                                   : out.pencil_stack[size_t(contour_layer)];
     out.ran.push_back({"contour_texture", w.ms()});
+  }
+  if (has(passes, "paper")) {
+    Stopwatch w;
+    out.paper = make_paper(scene.params.get<PaperParams>(), scene.seed);
+    out.ran.push_back({"paper", w.ms()});
   }
   if (has(passes, "curvature")) {
     Stopwatch w;

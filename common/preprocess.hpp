@@ -8,6 +8,7 @@
 
 #include "common/curvature.hpp"
 #include "common/frame.hpp"
+#include "common/paper.hpp"
 #include "common/scene.hpp"
 
 namespace plumbago {
@@ -17,6 +18,8 @@ struct Preprocessed {
   Image contour_texture;                  // "contour_texture": pencil layer contour.texture_layer (SPEC 1.2)
   std::vector<glm::vec2> texture_shifts;  // o_k of SPEC 2.4
   std::vector<Curvature> curvature;       // "curvature": one per scene object (SPEC 1.1)
+  std::vector<Image> pencil_stack;        // "pencil_textures": the tone stack (SPEC 1.2)
+  Paper paper;                            // "paper" (SPEC 1.3)
   std::vector<PassTime> ran;              // the steps that ran, with their times
 };
 

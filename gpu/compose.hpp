@@ -9,8 +9,10 @@ namespace plumbago::gpu {
 class ComposePass {
  public:
   ComposePass();
-  // Writes the RGB(A) frame into `out` from contour darkness.
-  void run(const Texture& contour_darkness, const ComposeParams& p, Texture& out);
+  // Writes the RGB(A) frame into `out`. `interior_darkness` and `paper_color` are read
+  // only when the flags say they exist.
+  void run(const Texture& contour_darkness, bool has_contours, const Texture& interior_darkness, bool has_interior,
+           const Texture& paper_color, bool has_paper, const ComposeParams& p, Texture& out);
 
  private:
   Program program_;

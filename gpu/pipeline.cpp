@@ -1,16 +1,21 @@
 #include "gpu/pipeline.hpp"
 
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <stdexcept>
 
 #include "common/compose.hpp"
+#include "common/paper.hpp"
+#include "common/pencil_interior.hpp"
 #include "common/passes.hpp"
 #include "common/preprocess.hpp"
 #include "common/lights.hpp"
 #include "gpu/compose.hpp"
 #include "gpu/contour_light.hpp"
+#include "gpu/interior_intensity.hpp"
 #include "gpu/multi_contour.hpp"
+#include "gpu/pencil_interior.hpp"
 #include "gpu/context.hpp"
 #include "gpu/edge_detect.hpp"
 #include "gpu/gbuffer.hpp"
@@ -25,20 +30,29 @@ struct Renderer::State {
   Preprocessed pre = preprocess(scene, passes);
   ContourInputs contour_inputs = pre.offset_grids.empty() ? ContourInputs{}
                                  : upload_contour_inputs(pre.offset_grids, pre.contour_texture, pre.texture_shifts);
-  GBufferPass gbuffer_pass{scene};
+  Texture pencil_stack = pre.pencil_stack.empty() ? make_texture(1, 1, GL_R32F) : upload_texture_3d(pre.pencil_stack, GL_R32F);
+  Texture paper_normal = pre.paper.normal.empty() ? make_texture(1, 1, GL_RGBA32F) : upload_texture(pre.paper.normal, GL_RGBA32F);
+  Texture paper_color = pre.paper.color.empty() ? make_texture(1, 1, GL_RGBA32F) : upload_texture(pre.paper.color, GL_RGBA32F);
+  GBufferPass gbuffer_pass{scene, pre.curvature};
   EdgeDetectPass edge_pass;
   ContourLightPass contour_light_pass;
   MultiContourPass multi_contour_pass;
+  InteriorIntensityPass interior_intensity_pass;
+  PencilInteriorPass pencil_interior_pass;
   ComposePass compose_pass;
   GBufferTargets gbuffer = make_gbuffer_targets(scene.width, scene.height,
                                                 scene.params.get<GBufferParams>().normal_format);
   Texture contour_darkness = make_texture(scene.width, scene.height, GL_R32F);
   Texture lit_contour_darkness = make_texture(scene.width, scene.height, GL_R32F);
   Texture multi_contour_darkness = make_texture(scene.width, scene.height, GL_R32F);
+  Texture interior_intensity = make_texture(scene.width, scene.height, GL_R32F);
+  Texture interior_darkness = make_texture(scene.width, scene.height, GL_R32F);
   Texture color = make_texture(scene.width, scene.height, GL_RGBA8);
   PassTimer timer;
 
   explicit State(const Scene& s) : scene(s) {}
+
+  bool ran(const char* stage) const { return std::find(stages.begin(), stages.end(), stage) != stages.end(); }
 
   void run(const std::string& pass) {
     if (pass == "gbuffer") {
@@ -51,8 +65,16 @@ struct Renderer::State {
     } else if (pass == "multi_contour") {
       multi_contour_pass.run(lit_contour_darkness, contour_inputs, scene.params.get<ContourParams>(),
                              multi_contour_darkness);
+    } else if (pass == "interior_intensity") {
+      interior_intensity_pass.run(gbuffer, view_space_lights(scene), scene.params.get<InteriorParams>(),
+                                  interior_intensity);
+    } else if (pass == "pencil_interior") {
+      pencil_interior_pass.run(gbuffer, interior_intensity, pencil_stack, paper_normal, interior_options(scene.effects),
+                               scene.params.get<InteriorParams>(), scene.params.get<PaperParams>().mu_p,
+                               interior_darkness);
     } else if (pass == "compose") {
-      compose_pass.run(multi_contour_darkness, scene.params.get<ComposeParams>(), color);
+      compose_pass.run(multi_contour_darkness, ran("multi_contour"), interior_darkness, ran("pencil_interior"),
+                       paper_color, !pre.paper.color.empty(), scene.params.get<ComposeParams>(), color);
     } else {
       throw std::runtime_error("pass '" + pass + "' is not implemented on the GPU backend");
     }
@@ -94,10 +116,16 @@ Frame Renderer::render(const FrameOptions& options) {
   frame.color = download_texture(state_->color, 3);
   frame.ran.push_back({"readback", readback.ms()});
   if (options.keep_buffers) {
-    add_gbuffer_buffers(download_gbuffer(state_->gbuffer), frame.buffers);
-    frame.buffers["edge_detect.contour_darkness"] = download_texture(state_->contour_darkness, 1);
-    frame.buffers["contour_light.lit_contour_darkness"] = download_texture(state_->lit_contour_darkness, 1);
-    frame.buffers["multi_contour.contour_darkness"] = download_texture(state_->multi_contour_darkness, 1);
+    const State& s = *state_;
+    add_gbuffer_buffers(download_gbuffer(s.gbuffer), frame.buffers);
+    auto keep = [&](const char* stage, const char* name, const Texture& t) {
+      if (s.ran(stage)) frame.buffers[name] = download_texture(t, 1);
+    };
+    keep("edge_detect", "edge_detect.contour_darkness", s.contour_darkness);
+    keep("contour_light", "contour_light.lit_contour_darkness", s.lit_contour_darkness);
+    keep("multi_contour", "multi_contour.contour_darkness", s.multi_contour_darkness);
+    keep("interior_intensity", "interior_intensity.intensity", s.interior_intensity);
+    keep("pencil_interior", "pencil_interior.interior_darkness", s.interior_darkness);
     frame.buffers["compose.color"] = frame.color;
   }
   Context::get().check_errors("reading back the frame");

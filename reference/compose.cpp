@@ -22,12 +22,17 @@ float enhanced(float i, const ComposeParams& p) { return i + (smoothstep01(i) - 
 
 }  // namespace
 
-Image compose(const Image& contour_darkness, const ComposeParams& p) {
+Image compose(const Image& contour_darkness, const Image& interior_darkness, const Image& paper_color,
+              const ComposeParams& p) {
   Image out(contour_darkness.width, contour_darkness.height, 3);
-  for (size_t i = 0; i < out.pixels(); ++i) {
-    float v = enhanced(composed_intensity(contour_darkness.data[i], 0.0f, p), p);
-    for (int c = 0; c < 3; ++c) out.data[i * 3 + c] = v;  // x paper color c_p = white
-  }
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x) {
+      float d_i = interior_darkness.empty() ? 0.0f : interior_darkness.at(x, y);
+      float v = enhanced(composed_intensity(contour_darkness.at(x, y), d_i, p), p);
+      for (int c = 0; c < 3; ++c)  // out = I'' c_p
+        out.at(x, y, c) = v * (paper_color.empty() ? 1.0f
+                                                    : paper_color.at(x % paper_color.width, y % paper_color.height, c));
+    }
   return out;
 }
 

@@ -6,7 +6,9 @@
 
 namespace plumbago::reference {
 
-// RGB output from contour darkness D_c (no interior strokes, white paper: D_i = 0, c_p = 1).
-Image compose(const Image& contour_darkness, const ComposeParams& p);
+// RGB output from contour darkness D_c, interior darkness D_i (empty: no interior) and
+// the paper color c_p read texel for pixel, wrapping (empty: white paper).
+Image compose(const Image& contour_darkness, const Image& interior_darkness, const Image& paper_color,
+              const ComposeParams& p);
 
 }  // namespace plumbago::reference

@@ -13,6 +13,8 @@
 #include "reference/multi_contour.hpp"
 #include "reference/edge_detect.hpp"
 #include "reference/gbuffer.hpp"
+#include "reference/interior_intensity.hpp"
+#include "reference/pencil_interior.hpp"
 
 namespace plumbago::reference {
 
@@ -25,6 +27,8 @@ struct FrameState {
   Image contour_darkness;
   Image lit_contour_darkness;
   Image multi_contour_darkness;
+  Image interior_intensity;
+  Image interior_darkness;
   Image color;
 };
 
@@ -32,7 +36,8 @@ using PassFn = std::function<void(const Scene&, FrameState&)>;
 
 const std::map<std::string, PassFn>& passes() {
   static const std::map<std::string, PassFn> table = {
-      {"gbuffer", [](const Scene& s, FrameState& f) { f.gbuffer = trace_gbuffer(s, s.width, s.height); }},
+      {"gbuffer",
+       [](const Scene& s, FrameState& f) { f.gbuffer = trace_gbuffer(s, s.width, s.height, f.pre.curvature); }},
       {"edge_detect",
        [](const Scene& s, FrameState& f) {
          f.contour_darkness = contour_darkness(f.gbuffer, s.params.get<EdgeDetectParams>());
@@ -48,8 +53,22 @@ const std::map<std::string, PassFn>& passes() {
                                                            f.pre.contour_texture, f.pre.texture_shifts,
                                                            s.params.get<ContourParams>());
        }},
+      {"interior_intensity",
+       [](const Scene& s, FrameState& f) {
+         f.interior_intensity = interior_intensity(f.gbuffer, view_space_lights(s), s.params.get<InteriorParams>());
+       }},
+      {"pencil_interior",
+       [](const Scene& s, FrameState& f) {
+         f.interior_darkness = interior_darkness(f.gbuffer, f.interior_intensity, f.pre.pencil_stack,
+                                                 f.pre.paper.normal, interior_options(s.effects),
+                                                 s.params.get<InteriorParams>(), s.params.get<PaperParams>().mu_p);
+       }},
       {"compose",
-       [](const Scene& s, FrameState& f) { f.color = compose(f.multi_contour_darkness, s.params.get<ComposeParams>()); }},
+       [](const Scene& s, FrameState& f) {
+         Image no_contours(s.width, s.height, 1);
+         f.color = compose(f.multi_contour_darkness.empty() ? no_contours : f.multi_contour_darkness,
+                           f.interior_darkness, f.pre.paper.color, s.params.get<ComposeParams>());
+       }},
   };
   return table;
 }
@@ -72,10 +91,15 @@ Frame render(const Scene& scene, const FrameOptions& options) {
   frame.color = state.color;
   if (options.keep_buffers) {
     add_gbuffer_buffers(state.gbuffer, frame.buffers);
-    frame.buffers["edge_detect.contour_darkness"] = state.contour_darkness;
-    frame.buffers["contour_light.lit_contour_darkness"] = state.lit_contour_darkness;
-    frame.buffers["multi_contour.contour_darkness"] = state.multi_contour_darkness;
-    frame.buffers["compose.color"] = state.color;
+    auto keep = [&](const char* name, const Image& img) {
+      if (!img.empty()) frame.buffers[name] = img;
+    };
+    keep("edge_detect.contour_darkness", state.contour_darkness);
+    keep("contour_light.lit_contour_darkness", state.lit_contour_darkness);
+    keep("multi_contour.contour_darkness", state.multi_contour_darkness);
+    keep("interior_intensity.intensity", state.interior_intensity);
+    keep("pencil_interior.interior_darkness", state.interior_darkness);
+    keep("compose.color", state.color);
   }
   return frame;
 }

@@ -1,6 +1,11 @@
 #version 450 core
-// Composition and enhancement (SPEC 2.11, Lee Eq. 6); white paper, no interior yet.
+// Composition and enhancement (SPEC 2.11, Lee Eq. 6).
 uniform sampler2D contour_darkness;
+uniform sampler2D interior_darkness;
+uniform sampler2D paper_color;  // read texel for pixel, wrapping
+uniform bool has_contours;
+uniform bool has_interior;
+uniform bool has_paper;
 
 layout(location = 0) out vec4 color;
 
@@ -14,6 +19,9 @@ float composed_intensity(float d_c, float d_i) {
 float enhanced(float i) { return i + (smoothstep(0.0, 1.0, i) - i) * compose.contrast; }
 
 void main() {
-  float d_c = texelFetch(contour_darkness, ivec2(gl_FragCoord.xy), 0).r;
-  color = vec4(vec3(enhanced(composed_intensity(d_c, 0.0))), 1.0);
+  ivec2 x = ivec2(gl_FragCoord.xy);
+  float d_c = has_contours ? texelFetch(contour_darkness, x, 0).r : 0.0;
+  float d_i = has_interior ? texelFetch(interior_darkness, x, 0).r : 0.0;
+  vec3 c_p = has_paper ? texelFetch(paper_color, x % textureSize(paper_color, 0), 0).rgb : vec3(1.0);
+  color = vec4(enhanced(composed_intensity(d_c, d_i)) * c_p, 1.0);
 }
