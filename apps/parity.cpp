@@ -16,6 +16,7 @@
 #include "gpu/contour_light.hpp"
 #include "gpu/multi_contour.hpp"
 #include "gpu/pencil_interior.hpp"
+#include "gpu/pipeline.hpp"
 #include "gpu/context.hpp"
 #include "gpu/edge_detect.hpp"
 #include "gpu/gbuffer.hpp"
@@ -24,6 +25,7 @@
 #include "reference/contour_light.hpp"
 #include "reference/multi_contour.hpp"
 #include "reference/pencil_interior.hpp"
+#include "reference/pipeline.hpp"
 #include "reference/edge_detect.hpp"
 #include "reference/gbuffer.hpp"
 #include "reference/interior_intensity.hpp"
@@ -50,6 +52,9 @@ constexpr double kSampledTolerance = 1e-3;
 // Corner angles of SPEC 2.7: both backends evaluate the same float formula on the same
 // world-space floats (GPU in the vertex shader); measured on llvmpipe: see the test.
 constexpr double kAngleTolerance = 1e-3;
+// End to end: at most this share of pixels may differ by more than 2/255 (measured on
+// the built-in scenes and the shared models: see tests/end_to_end_test.cpp).
+constexpr double kEndToEndShare = 0.05;
 constexpr float kDepthJump = 0.01f;        // relative linear-depth step that makes a discontinuity
 
 bool across_discontinuity(const GBuffer& g, int x, int y, int nx, int ny) {
@@ -229,6 +234,19 @@ std::vector<StageParity> texture_rotation_parity(const Scene& scene, const GBuff
                    kAngleTolerance, &mask, note)};
 }
 
+// Whole frames (SPEC 5 "end to end"): each backend from its own G-buffer and every pass
+// of the scene's effects. Pixels differ where the rasterizer and the tracer disagree on
+// coverage (the band along silhouettes) and wherever that moves a contour copy or a
+// stroke; the share of pixels within 2/255 is what is reported and bounded per scene.
+std::vector<StageParity> end_to_end_parity(const Scene& scene, const GBuffer&) {
+  Frame ref = reference::render(scene);
+  Frame gpu_frame = gpu::Renderer(scene).render();
+  StageParity s = compared("end_to_end", ref.color, gpu_frame.color, kByteTolerance, nullptr,
+                           "whole frames, each backend from its own G-buffer");
+  s.pass = s.diff.over_tolerance <= kEndToEndShare;
+  return {s};
+}
+
 using ParityFn = std::function<std::vector<StageParity>(const Scene&, const GBuffer&)>;
 
 const std::vector<std::pair<std::string, ParityFn>>& parity_table() {
@@ -243,6 +261,7 @@ const std::vector<std::pair<std::string, ParityFn>>& parity_table() {
       {"pencil_interior",
        [](const Scene& s, const GBuffer& g) { return std::vector{pencil_interior_parity(s, g)}; }},
       {"compose", [](const Scene& s, const GBuffer& g) { return std::vector{compose_parity(s, g)}; }},
+      {"end_to_end", end_to_end_parity},
   };
   return table;
 }

@@ -77,6 +77,12 @@ std::vector<std::string> passes_for(const std::vector<std::string>& effects) {
   return ordered;
 }
 
+bool is_preprocessing(const std::string& pass) {
+  for (const auto& p : pass_table())
+    if (p.name == pass) return p.kind == PassKind::Preprocessing;
+  return false;
+}
+
 std::vector<std::string> frame_stages(const std::vector<std::string>& passes) {
   std::vector<std::string> stages;
   for (const auto& p : passes)

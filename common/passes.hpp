@@ -33,6 +33,8 @@ std::string effect_names();  // "contours, ..." for messages
 // std::invalid_argument naming an unknown effect.
 std::vector<std::string> passes_for(const std::vector<std::string>& effects);
 
+bool is_preprocessing(const std::string& pass);
+
 // The per-frame stages among `passes` (preprocessing left out).
 std::vector<std::string> frame_stages(const std::vector<std::string>& passes);
 

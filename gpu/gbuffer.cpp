@@ -13,7 +13,12 @@ namespace {
 struct Corner {
   glm::vec3 position, normal, face_normal, corner;
   float gouraud;
-  glm::vec3 corner_position[3], corner_d_min[3], corner_d_max[3];  // the whole triangle (SPEC 2.7)
+};
+
+// The whole triangle's corners and curvature directions, repeated at each corner (SPEC
+// 2.7); a second vertex buffer, made only when the scene has curvature.
+struct TriangleCurvature {
+  glm::vec3 corner_position[3], corner_d_min[3], corner_d_max[3];
 };
 
 std::vector<Corner> triangle_soup(const WorldObject& obj) {
@@ -22,28 +27,33 @@ std::vector<Corner> triangle_soup(const WorldObject& obj) {
   soup.reserve(obj.triangles.size() * 3);
   for (size_t t = 0; t < obj.triangles.size(); ++t) {
     glm::vec3 fn = face_normal(obj, t);
-    Corner triangle{};
     for (int k = 0; k < 3; ++k) {
       uint32_t v = obj.triangles[t][k];
-      triangle.corner_position[k] = obj.positions[v];
-      if (!obj.d_min.empty()) triangle.corner_d_min[k] = obj.d_min[v], triangle.corner_d_max[k] = obj.d_max[v];
-    }
-    for (int k = 0; k < 3; ++k) {
-      uint32_t v = obj.triangles[t][k];
-      Corner c = triangle;
-      c.position = obj.positions[v], c.normal = obj.flat ? fn : obj.normals[v], c.face_normal = fn;
-      c.corner = unit[k], c.gouraud = obj.gouraud[v];
-      soup.push_back(c);
+      soup.push_back({obj.positions[v], obj.flat ? fn : obj.normals[v], fn, unit[k], obj.gouraud[v]});
     }
   }
   return soup;
 }
 
-// With the vertex array bound: attribute `index` reads `size` floats at `offset`.
-void describe_attribute(GLuint index, int size, size_t offset) {
+std::vector<TriangleCurvature> curvature_soup(const WorldObject& obj) {
+  std::vector<TriangleCurvature> soup;
+  soup.reserve(obj.triangles.size() * 3);
+  for (const glm::uvec3& tri : obj.triangles) {
+    TriangleCurvature c;
+    for (int k = 0; k < 3; ++k)
+      c.corner_position[k] = obj.positions[tri[k]], c.corner_d_min[k] = obj.d_min[tri[k]],
+      c.corner_d_max[k] = obj.d_max[tri[k]];
+    soup.insert(soup.end(), 3, c);
+  }
+  return soup;
+}
+
+// With the vertex array bound: attribute `index` reads `size` floats at `offset` of the
+// vertex buffer bound to `binding`.
+void describe_attribute(GLuint index, int size, size_t offset, GLuint binding = 0) {
   glEnableVertexAttribArray(index);
   glVertexAttribFormat(index, size, GL_FLOAT, GL_FALSE, GLuint(offset));
-  glVertexAttribBinding(index, 0);
+  glVertexAttribBinding(index, binding);
 }
 
 GLenum normal_storage(GBufferFormat f) {
@@ -106,7 +116,7 @@ GBufferPass::GBufferPass(const Scene& scene, const std::vector<Curvature>& curva
       fbo_(make_framebuffer()) {
   for (const WorldObject& obj : world_geometry(scene, curvature)) {
     std::vector<Corner> soup = triangle_soup(obj);
-    Batch b{make_buffer(soup.data(), soup.size() * sizeof(Corner)), make_vertex_array(), GLsizei(soup.size())};
+    Batch b{make_buffer(soup.data(), soup.size() * sizeof(Corner)), Buffer(), make_vertex_array(), GLsizei(soup.size())};
     glBindVertexArray(b.layout.id());
     glBindVertexBuffer(0, b.vertices.id(), 0, sizeof(Corner));
     describe_attribute(0, 3, offsetof(Corner, position));
@@ -114,10 +124,15 @@ GBufferPass::GBufferPass(const Scene& scene, const std::vector<Curvature>& curva
     describe_attribute(2, 3, offsetof(Corner, face_normal));
     describe_attribute(3, 3, offsetof(Corner, corner));
     describe_attribute(4, 1, offsetof(Corner, gouraud));
-    for (GLuint k = 0; k < 3; ++k) {
-      describe_attribute(5 + k, 3, offsetof(Corner, corner_position) + k * sizeof(glm::vec3));
-      describe_attribute(8 + k, 3, offsetof(Corner, corner_d_min) + k * sizeof(glm::vec3));
-      describe_attribute(11 + k, 3, offsetof(Corner, corner_d_max) + k * sizeof(glm::vec3));
+    if (!obj.d_min.empty()) {
+      std::vector<TriangleCurvature> c = curvature_soup(obj);
+      b.curvature = make_buffer(c.data(), c.size() * sizeof(TriangleCurvature));
+      glBindVertexBuffer(1, b.curvature.id(), 0, sizeof(TriangleCurvature));
+      for (GLuint k = 0; k < 3; ++k) {
+        describe_attribute(5 + k, 3, offsetof(TriangleCurvature, corner_position) + k * sizeof(glm::vec3), 1);
+        describe_attribute(8 + k, 3, offsetof(TriangleCurvature, corner_d_min) + k * sizeof(glm::vec3), 1);
+        describe_attribute(11 + k, 3, offsetof(TriangleCurvature, corner_d_max) + k * sizeof(glm::vec3), 1);
+      }
     }
     glBindVertexArray(0);
     batches_.push_back(std::move(b));

@@ -31,7 +31,7 @@ class GBufferPass {
 
  private:
   struct Batch {
-    Buffer vertices;
+    Buffer vertices, curvature;
     VertexArray layout;
     GLsizei corners = 0;
   };
