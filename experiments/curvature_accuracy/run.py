@@ -126,7 +126,7 @@ def plot(rows, out):
                         text = ("1-ring" if r["setting"] == 0 else "r=%g" % r["setting"]) if method == "tensor" \
                             else "d=%d" % r["setting"]
                         ax.annotate(text, (xi, yi), fontsize=6, xytext=(2, 2), textcoords="offset points")
-            ax.set_title(f"{name} ({sel[0]['vertices']} vertices)")
+            ax.set_title(f"{name} ({int(sel[0]['vertices'])} vertices)")
             ax.set_xscale("log")
             if all(np.isnan(line.get_ydata()).all() for line in ax.get_lines()):
                 ax.text(0.5, 0.5, "umbilic everywhere:\nno directions to compare", ha="center",
