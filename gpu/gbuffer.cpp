@@ -1,9 +1,12 @@
 #include "gpu/gbuffer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "common/edge_detect.hpp"
 #include "common/interior.hpp"
+#include "common/pencil_interior.hpp"
 
 namespace plumbago::gpu {
 
@@ -139,7 +142,21 @@ GBufferPass::GBufferPass(const Scene& scene, const std::vector<Curvature>& curva
   }
 }
 
-void GBufferPass::render(const Scene& scene, GBufferTargets& t) {
+GBufferChannels channels_read_by(const std::vector<std::string>& stages, const Scene& scene) {
+  auto ran = [&](const char* s) { return std::find(stages.begin(), stages.end(), s) != stages.end(); };
+  bool face_edges = scene.params.get<EdgeDetectParams>().normals == EdgeNormals::Face;
+  bool phong = scene.params.get<InteriorParams>().shading == InteriorShading::Phong;
+  bool interior = ran("pencil_interior");
+  GBufferChannels c;
+  c.normal = (ran("edge_detect") && !face_edges) || ran("contour_light") || (ran("interior_intensity") && phong);
+  c.face_normal = ran("edge_detect") && face_edges;
+  c.gouraud = ran("interior_intensity") && !phong;
+  c.bary = c.theta_min = interior;
+  c.theta_max = interior && interior_options(scene.effects).crosshatch;
+  return c;
+}
+
+void GBufferPass::render(const Scene& scene, GBufferTargets& t, const GBufferChannels& channels) {
   int w = t.width(), h = t.height();
   if (w != depth_test_width_ || h != depth_test_height_) {
     depth_test_ = make_renderbuffer(w, h, GL_DEPTH_COMPONENT32F);
@@ -148,10 +165,12 @@ void GBufferPass::render(const Scene& scene, GBufferTargets& t) {
   }
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   const Texture* color[] = {&t.normal, &t.face_normal, &t.depth, &t.ids, &t.bary, &t.gouraud, &t.theta_min, &t.theta_max};
+  const bool wanted[] = {channels.normal, channels.face_normal, true, true, channels.bary, channels.gouraud,
+                         channels.theta_min, channels.theta_max};  // depth and ids: always
   GLenum draw[8];
   for (int i = 0; i < 8; ++i) {
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + i, GL_TEXTURE_2D, color[i]->id(), 0);
-    draw[i] = GL_COLOR_ATTACHMENT0 + i;
+    draw[i] = wanted[i] ? GL_COLOR_ATTACHMENT0 + i : GL_NONE;
   }
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_test_.id());
   glDrawBuffers(8, draw);
@@ -161,14 +180,10 @@ void GBufferPass::render(const Scene& scene, GBufferTargets& t) {
   t.far = cam.far;
   const float zero[4] = {0, 0, 0, 0}, far[4] = {cam.far, 0, 0, 0}, white[4] = {1, 0, 0, 0}, one = 1;
   const GLuint no_ids[4] = {0, 0, 0, 0};
-  glClearBufferfv(GL_COLOR, 0, zero);
-  glClearBufferfv(GL_COLOR, 1, zero);
-  glClearBufferfv(GL_COLOR, 2, far);
+  const float* clear[] = {zero, zero, far, nullptr, zero, white, zero, zero};
+  for (int i = 0; i < 8; ++i)
+    if (wanted[i] && clear[i]) glClearBufferfv(GL_COLOR, i, clear[i]);
   glClearBufferuiv(GL_COLOR, 3, no_ids);
-  glClearBufferfv(GL_COLOR, 4, zero);
-  glClearBufferfv(GL_COLOR, 5, white);
-  glClearBufferfv(GL_COLOR, 6, zero);
-  glClearBufferfv(GL_COLOR, 7, zero);
   glClearBufferfv(GL_DEPTH, 0, &one);
 
   glViewport(0, 0, w, h);

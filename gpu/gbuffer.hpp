@@ -1,6 +1,7 @@
 // Rasterized G-buffer (SPEC 2.1), the twin of reference/gbuffer.cpp.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "common/gbuffer.hpp"
@@ -22,12 +23,20 @@ GBuffer download_gbuffer(const GBufferTargets& targets);
 // The reference's G-buffer on the GPU, so that a later stage gets identical inputs.
 GBufferTargets upload_gbuffer(const GBuffer& g);
 
+// Which G-buffer channels a frame's stages read; the others are not written (their draw
+// buffers are GL_NONE), which saves the bandwidth of up to six float targets.
+struct GBufferChannels {
+  bool normal = true, face_normal = true, bary = true, gouraud = true, theta_min = true, theta_max = true;
+};
+// The channels `stages` (common/passes.hpp names) read, for the scene's parameters.
+GBufferChannels channels_read_by(const std::vector<std::string>& stages, const Scene& scene);
+
 // Uploads a scene's geometry once; render() draws it into targets of any size.
 class GBufferPass {
  public:
   // `curvature`: one per object for the corner angles of SPEC 2.7, or none.
   explicit GBufferPass(const Scene& scene, const std::vector<Curvature>& curvature = {});
-  void render(const Scene& scene, GBufferTargets& targets);
+  void render(const Scene& scene, GBufferTargets& targets, const GBufferChannels& channels = {});
 
  private:
   struct Batch {

@@ -49,6 +49,7 @@ struct Renderer::State {
   Texture interior_darkness = make_texture(scene.width, scene.height, GL_R32F);
   Texture color = make_texture(scene.width, scene.height, GL_RGBA8);
   PassTimer timer;
+  GBufferChannels gbuffer_channels = channels_read_by(stages, scene);  // all of them for a dump
 
   explicit State(const Scene& s) : scene(s) {}
 
@@ -56,7 +57,7 @@ struct Renderer::State {
 
   void run(const std::string& pass) {
     if (pass == "gbuffer") {
-      gbuffer_pass.render(scene, gbuffer);
+      gbuffer_pass.render(scene, gbuffer, gbuffer_channels);
     } else if (pass == "edge_detect") {
       edge_pass.run(gbuffer, scene.params.get<EdgeDetectParams>(), contour_darkness);
     } else if (pass == "contour_light") {
@@ -109,6 +110,7 @@ double Renderer::render_frame(Frame& timing) {
 
 Frame Renderer::render(const FrameOptions& options) {
   Frame frame;
+  state_->gbuffer_channels = options.keep_buffers ? GBufferChannels{} : channels_read_by(state_->stages, state_->scene);
   state_->run_frame();
   frame.ran = state_->pre.ran;  // once per Renderer, listed with every frame it renders
   for (const PassTime& t : state_->timer.results()) frame.ran.push_back(t);
