@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -40,8 +41,8 @@ struct SymmetricTensor {
 // Everything the ball reads about a face or an edge in one record, so that growing the
 // ball touches few cache lines.
 struct FaceGeometry {
-  glm::dvec3 corner[3];
-  glm::dvec3 normal;  // unit, or 0 for a zero-area face
+  glm::vec3 corner[3];  // as the mesh stores them
+  glm::dvec3 normal;    // unit, or 0 for a zero-area face
   double area;
   std::array<uint32_t, 3> edges;  // edge (corner k, corner k+1)
 };
@@ -71,8 +72,8 @@ Geometry precompute_geometry(const Mesh& mesh, const MeshTopology& topo) {
   tbb::parallel_for(size_t(0), g.faces.size(), [&](size_t f) {
     const auto& t = mesh.triangles[f];
     FaceGeometry& face = g.faces[f];
-    for (int k = 0; k < 3; ++k) face.corner[k] = g.position[t[k]];
-    glm::dvec3 n = glm::cross(face.corner[1] - face.corner[0], face.corner[2] - face.corner[0]);
+    for (int k = 0; k < 3; ++k) face.corner[k] = mesh.positions[t[k]];
+    glm::dvec3 n = glm::cross(g.position[t[1]] - g.position[t[0]], g.position[t[2]] - g.position[t[0]]);
     face.normal = unit_or_zero(n);
     face.area = 0.5 * glm::length(n);
     face.edges = topo.face_edges[f];
@@ -118,14 +119,16 @@ struct Scratch {
   }
 };
 
-// 1-ring (radius 0): the faces around v; edges at v whole, edges opposite v half.
+// 1-ring (radius 0): the faces around v; edges at v whole, edges opposite v half. The
+// few edges seen are kept in a short list rather than marked in the mesh-sized array.
 BallSums one_ring_sums(uint32_t v, const MeshTopology& topo, const Geometry& g, Scratch& s) {
   BallSums sums;
   for (uint32_t f : topo.faces_of(v)) {
     sums.area += g.faces[f].area;
     sums.normal += g.faces[f].area * g.faces[f].normal;
     for (uint32_t e : g.faces[f].edges) {
-      if (!s.first_visit(s.edge_mark, e)) continue;
+      if (std::find(s.queue.begin(), s.queue.end(), e) != s.queue.end()) continue;
+      s.queue.push_back(e);
       const auto& edge = topo.edges[e];
       double weight = edge.from == v || edge.to == v ? 1.0 : 0.5;
       sums.tensor.add(weight * g.edges[e].beta * g.edges[e].length, g.edges[e].unit);
@@ -143,7 +146,7 @@ BallSums ball_sums(uint32_t v, double r, const MeshTopology& topo, const Geometr
     if (s.first_visit(s.face_mark, f)) s.queue.push_back(f);
   for (size_t next = 0; next < s.queue.size(); ++next) {
     const FaceGeometry& face = g.faces[s.queue[next]];
-    const glm::dvec3* p = face.corner;
+    const glm::dvec3 p[3] = {face.corner[0], face.corner[1], face.corner[2]};
     bool inside[3];
     for (int k = 0; k < 3; ++k) inside[k] = glm::dot(p[k] - c, p[k] - c) <= r * r;
     double area = inside[0] && inside[1] && inside[2] ? face.area : triangle_area_in_ball(p[0], p[1], p[2], c, r);

@@ -18,7 +18,7 @@
 // three 1-rings and each edge in two as a spoke and two as an opposite edge, so this
 // weighting counts the tensor as often as the area).
 //
-// Readings (docs/readings.md, "Principal curvature"):
+// Readings (docs/curvature.md):
 //  - `normal = ball` (default): n = area-weighted face normal over B and T restricted to
 //    n's tangent plane. SPEC's literal reading, `normal = tensor`, takes the eigenvector
 //    of the smallest-magnitude eigenvalue; wherever k_min ~ 0 (a cylinder, the torus's
