@@ -51,6 +51,7 @@ class Cli : public ::testing::Test {
       EXPECT_TRUE(e.path().filename() == "stdout" || e.path().filename() == "stderr" ||
                   e.path().extension() == ".json" || e.path().extension() == ".obj")
           << "left behind: " << e.path();
+    EXPECT_FALSE(fs::exists(path("stages"))) << "a refused run dumped stages";
   }
 
   fs::path dir_;
@@ -109,6 +110,23 @@ TEST_F(Cli, CompareReportsEveryStageAsJson) {
   for (const auto& s : j["stages"])
     for (const char* key : {"name", "pass", "max_abs", "rmse", "over_tolerance", "tolerance"})
       EXPECT_TRUE(s.contains(key)) << key;
+}
+
+TEST_F(Cli, DumpStagesWritesEveryIntermediateBufferOnBothBackends) {
+  write("all.json", R"({"mesh": {"procedural": "torus"}, "resolution": [96, 72],
+                        "effects": ["contours", "interior", "crosshatch", "paper"]})");
+  for (const char* backend : {"gpu", "reference"}) {
+    CliRun r = run(std::string("render ") + path("all.json") + " --backend " + backend + " -o " + path("out.png") +
+                   " --dump-stages " + path("stages"));
+    ASSERT_EQ(r.code, 0) << r.err;
+    for (const char* buffer : {"gbuffer.normal", "gbuffer.theta_min", "edge_detect.contour_darkness",
+                               "contour_light.lit_contour_darkness", "multi_contour.contour_darkness",
+                               "interior_intensity.intensity", "pencil_interior.interior_darkness", "compose.color"}) {
+      std::string base = path("stages") + "/" + backend + "." + buffer;
+      EXPECT_TRUE(fs::exists(base + ".png")) << base;
+      EXPECT_TRUE(fs::exists(base + ".exr")) << base;
+    }
+  }
 }
 
 TEST_F(Cli, ParamsListsEveryStage) {
