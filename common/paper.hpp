@@ -18,15 +18,15 @@ struct PaperParams {
   template <class V>
   void visit(V& v) {
     v.integer(size, "size", 512, 16, 4096, "width and height of the tileable paper, texels");
-    v.integer(base_period, "base_period", 8, 1, 256, "Perlin lattice cells across the tile at the lowest octave");
+    v.integer(base_period, "base_period", 24, 1, 256, "Perlin lattice cells across the tile at the lowest octave");
     v.integer(octaves, "octaves", 5, 1, 10, "octaves of the fBm height");
     v.integer(worley_cells, "worley_cells", 48, 1, 1024, "Worley feature cells across the tile (fibre size)");
-    v.real(worley_weight, "worley_weight", 0.35, 0.0, 1.0, "share of the cellular component in the height");
+    v.real(worley_weight, "worley_weight", 0.5, 0.0, 1.0, "share of the cellular component in the height");
     v.real(bumpiness, "bumpiness", 8.0, 0.0, 1000.0, "s: slope scale of the normal map");
     v.real(mu_p, "mu_p", 0.05, 0.0, 0.5, "mu_p of Lee Eq. 5: how much the paper modulates strokes (paper: 0-0.1)");
-    v.real(valley_r, "valley_r", 0.90, 0.0, 1.0, "paper color in the valleys, red");
-    v.real(valley_g, "valley_g", 0.89, 0.0, 1.0, "paper color in the valleys, green");
-    v.real(valley_b, "valley_b", 0.85, 0.0, 1.0, "paper color in the valleys, blue");
+    v.real(valley_r, "valley_r", 0.94, 0.0, 1.0, "paper color in the valleys, red");
+    v.real(valley_g, "valley_g", 0.93, 0.0, 1.0, "paper color in the valleys, green");
+    v.real(valley_b, "valley_b", 0.90, 0.0, 1.0, "paper color in the valleys, blue");
     v.real(peak_r, "peak_r", 1.0, 0.0, 1.0, "paper color on the peaks, red");
     v.real(peak_g, "peak_g", 1.0, 0.0, 1.0, "paper color on the peaks, green");
     v.real(peak_b, "peak_b", 0.98, 0.0, 1.0, "paper color on the peaks, blue");
