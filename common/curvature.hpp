@@ -22,7 +22,8 @@
 //  - `normal = ball` (default): n = area-weighted face normal over B and T restricted to
 //    n's tangent plane. SPEC's literal reading, `normal = tensor`, takes the eigenvector
 //    of the smallest-magnitude eigenvalue; wherever k_min ~ 0 (a cylinder, the torus's
-//    top and bottom circles) two eigenvalues are ~0 and that choice is arbitrary.
+//    top and bottom circles) two eigenvalues are ~0 and that choice is arbitrary, so
+//    there the ball normal is projected into their eigenspace.
 //  - `ring_fallback = true` (default): where the ball does not reach all of v's
 //    neighbors, the 1-ring is used. The tensor lives on edges, so a ball that cuts the
 //    edges at v short of their far ends overestimates |k| by about (edge length / r).
