@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <initializer_list>
 #include <string>
+#include <vector>
 
 #include "common/curvature.hpp"
 #include "common/params.hpp"
@@ -13,7 +13,7 @@
 namespace plumbago::testing {
 
 // The curvature parameters: defaults with "curvature.name=value" overrides.
-inline CurvatureParams curvature_params(std::initializer_list<std::string> assignments = {}) {
+inline CurvatureParams curvature_params(const std::vector<std::string>& assignments = {}) {
   ParamSet set;
   for (const auto& a : assignments) set.set_assignment(a);
   return set.get<CurvatureParams>();

@@ -30,15 +30,9 @@ std::string describe(const std::vector<std::string>& params) {
   return s;
 }
 
-CurvatureParams params_of(const std::vector<std::string>& assignments) {
-  ParamSet set;
-  for (const auto& a : assignments) set.set_assignment(a);
-  return set.get<CurvatureParams>();
-}
-
 void expect_valid_everywhere(const Mesh& mesh, const std::string& name) {
   for (const auto& variant : kVariants) {
-    Curvature c = estimate_curvature(mesh, params_of(variant));
+    Curvature c = estimate_curvature(mesh, curvature_params(variant));
     expect_valid_curvature(c, mesh.positions.size(), name + ", " + describe(variant));
   }
 }
@@ -157,7 +151,7 @@ TEST(CurvatureHardCases, ScaledAndTranslatedMeshes) {
     compute_normals(scaled);
     expect_valid_everywhere(scaled, "scaled by " + std::to_string(scale));
     for (const auto& variant : kVariants) {
-      CurvatureParams p = params_of(variant);
+      CurvatureParams p = curvature_params(variant);
       Curvature a = estimate_curvature(base, p), b = estimate_curvature(scaled, p);
       std::vector<double> angle, k_error;
       for (size_t v = 0; v < a.size(); ++v) {
@@ -179,14 +173,14 @@ TEST(CurvatureHardCases, ScaledAndTranslatedMeshes) {
 TEST(CurvatureHardCases, InvalidInputIsRefusedWithAClearError) {
   Mesh nan_position = sphere(0.3);
   nan_position.positions[3].y = std::nanf("");
-  EXPECT_THROW(estimate_curvature(nan_position, params_of({})), MeshError);
+  EXPECT_THROW(estimate_curvature(nan_position, curvature_params({})), MeshError);
   Mesh bad_index = sphere(0.3);
   bad_index.triangles[2][1] = uint32_t(bad_index.positions.size() + 5);
-  EXPECT_THROW(estimate_curvature(bad_index, params_of({})), MeshError);
+  EXPECT_THROW(estimate_curvature(bad_index, curvature_params({})), MeshError);
   Mesh only_points;  // validate_mesh: a mesh without faces is no mesh
   only_points.positions = {{0, 0, 0}, {1, 2, 3}};
-  EXPECT_THROW(estimate_curvature(only_points, params_of({})), MeshError);
-  EXPECT_THROW(estimate_curvature(Mesh{}, params_of({})), MeshError);
+  EXPECT_THROW(estimate_curvature(only_points, curvature_params({})), MeshError);
+  EXPECT_THROW(estimate_curvature(Mesh{}, curvature_params({})), MeshError);
 }
 
 TEST(CurvatureHardCases, TeapotWithOpenBoundariesAndNonManifoldSeams) {

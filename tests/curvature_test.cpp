@@ -124,7 +124,7 @@ TEST(BallGeometry, TriangleAreaInBallMatchesSampling) {
 
 struct Variant {
   const char* name;
-  std::initializer_list<std::string> params;
+  std::vector<std::string> params;
 };
 const Variant kVariants[] = {{"tensor", {}},
                              {"tensor 1-ring", {"curvature.radius=0"}},
