@@ -13,7 +13,6 @@
 #include "common/paper.hpp"
 #include "common/preprocess.hpp"
 #include "gpu/compose.hpp"
-#include "gpu/contour_light.hpp"
 #include "gpu/multi_contour.hpp"
 #include "gpu/pencil_interior.hpp"
 #include "gpu/pipeline.hpp"
@@ -118,7 +117,8 @@ StageParity edge_parity(const Scene& scene, const GBuffer& ref) {
   auto p = scene.params.get<EdgeDetectParams>();
   gpu::GBufferTargets inputs = gpu::upload_gbuffer(ref);
   gpu::Texture out = gpu::make_texture(scene.width, scene.height, GL_R32F);
-  gpu::EdgeDetectPass().run(inputs, p, out);
+  gpu::Texture lit = gpu::make_texture(scene.width, scene.height, GL_R32F);
+  gpu::EdgeDetectPass().run(inputs, p, view_space_lights(scene), scene.params.get<ContourLightParams>(), out, lit);
   Image gpu_out = gpu::download_texture(out, 1);
   gpu::Context::get().check_errors("edge_detect parity");
   return compared("edge_detect", reference::contour_darkness(ref, p), gpu_out, kFloatTolerance, nullptr,
@@ -185,13 +185,14 @@ StageParity contour_light_parity(const Scene& scene, const GBuffer& ref) {
   std::vector<Light> lights = view_space_lights(scene);
   Image darkness = reference::contour_darkness(ref, scene.params.get<EdgeDetectParams>());
   gpu::GBufferTargets inputs = gpu::upload_gbuffer(ref);
-  gpu::Texture in = gpu::upload_texture(darkness, GL_R32F);
+  gpu::Texture d = gpu::make_texture(scene.width, scene.height, GL_R32F);
   gpu::Texture out = gpu::make_texture(scene.width, scene.height, GL_R32F);
-  gpu::ContourLightPass().run(in, inputs, lights, p, out);
+  gpu::EdgeDetectPass().run(inputs, scene.params.get<EdgeDetectParams>(), lights, p, d, out);
   Image gpu_out = gpu::download_texture(out, 1);
   gpu::Context::get().check_errors("contour_light parity");
   return compared("contour_light", reference::lit_contour_darkness(darkness, ref, lights, p), gpu_out,
-                  kFloatTolerance, nullptr, "both fed the reference G-buffer and contour darkness; float target");
+                  kFloatTolerance, nullptr,
+                  "both fed the reference G-buffer; the GPU lights its own d (second output of edge_detect)");
 }
 
 StageParity multi_contour_parity(const Scene& scene, const GBuffer& ref) {

@@ -36,7 +36,17 @@ void print_stats(const RenderOptions& o, const Scene& scene, const Frame& frame)
     j["renderer"] = renderer;
     j["size"] = {scene.width, scene.height};
     j["ran"] = nlohmann::json::array();
-    for (const auto& p : frame.ran) j["ran"].push_back({{"name", p.name}, {"ms", p.ms}});
+    for (const auto& p : frame.ran) {
+      // A fused GPU pass "a+b" ran both stages in one shader: each is listed, the time
+      // is the pass's, given once (on the first), and "gpu_pass" names the pass.
+      size_t plus = p.name.find('+');
+      if (plus == std::string::npos) {
+        j["ran"].push_back({{"name", p.name}, {"ms", p.ms}});
+        continue;
+      }
+      j["ran"].push_back({{"name", p.name.substr(0, plus)}, {"ms", p.ms}, {"gpu_pass", p.name}});
+      j["ran"].push_back({{"name", p.name.substr(plus + 1)}, {"ms", 0.0}, {"gpu_pass", p.name}});
+    }
     std::printf("%s\n", j.dump(2).c_str());
     return;
   }

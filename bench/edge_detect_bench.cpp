@@ -1,9 +1,11 @@
-// Edge detection (SPEC 2.2) on both backends at 800x800, on the same G-buffer.
+// Edge detection (SPEC 2.2) on both backends at 800x800, on the same G-buffer. The GPU
+// pass also writes the lit contours (SPEC 2.3) as its second output.
 // GPU: wall time to glFinish per iteration (manual time) and the GL timer query.
 #include <benchmark/benchmark.h>
 
 #include "bench/bench_scenes.hpp"
 #include "common/frame.hpp"
+#include "common/lights.hpp"
 #include "gpu/context.hpp"
 #include "gpu/edge_detect.hpp"
 #include "gpu/timer.hpp"
@@ -31,6 +33,9 @@ void edge_detect_gpu(benchmark::State& state, const std::string& model) {
   gpu::Context& ctx = gpu::Context::get();
   gpu::GBufferTargets g = gpu::upload_gbuffer(reference::trace_gbuffer(scene, scene.width, scene.height));
   gpu::Texture out = gpu::make_texture(scene.width, scene.height, GL_R32F);
+  gpu::Texture lit = gpu::make_texture(scene.width, scene.height, GL_R32F);
+  std::vector<Light> lights = view_space_lights(scene);
+  auto light = scene.params.get<ContourLightParams>();
   gpu::EdgeDetectPass pass;
   gpu::PassTimer timer;
   auto p = scene.params.get<EdgeDetectParams>();
@@ -38,7 +43,7 @@ void edge_detect_gpu(benchmark::State& state, const std::string& model) {
   for (auto _ : state) {
     Stopwatch w;
     timer.begin("edge_detect");
-    pass.run(g, p, out);
+    pass.run(g, p, lights, light, out, lit);
     timer.end();
     glFinish();
     state.SetIterationTime(w.ms() * 1e-3);

@@ -1,6 +1,9 @@
-// Edge detection on the GPU (SPEC 2.2), the twin of reference/edge_detect.cpp.
+// Edge detection (SPEC 2.2) and contour lighting (SPEC 2.3) on the GPU in one pass, the
+// twins of reference/edge_detect.cpp and reference/contour_light.cpp: one fragment
+// shader, two outputs, so both stages stay testable and the frame reads the G-buffer once.
 #pragma once
 
+#include "common/contour_light.hpp"
 #include "common/edge_detect.hpp"
 #include "gpu/framebuffer.hpp"
 #include "gpu/gbuffer.hpp"
@@ -10,8 +13,10 @@ namespace plumbago::gpu {
 class EdgeDetectPass {
  public:
   EdgeDetectPass();
-  // Writes contour darkness into `out` (R32F, the G-buffer's size).
-  void run(const GBufferTargets& g, const EdgeDetectParams& p, Texture& out);
+  // Writes contour darkness d into `darkness` and the lit d' into `lit` (R32F, the
+  // G-buffer's size).
+  void run(const GBufferTargets& g, const EdgeDetectParams& p, const std::vector<Light>& view_lights,
+           const ContourLightParams& light, Texture& darkness, Texture& lit);
 
  private:
   Program program_;

@@ -5,11 +5,24 @@ namespace plumbago::gpu {
 FullscreenPass::FullscreenPass() : fbo_(make_framebuffer()), empty_(make_vertex_array()) {}
 
 void FullscreenPass::draw(const Program& program, std::initializer_list<const Texture*> textures, Texture& target) {
+  draw(program, textures, {&target});
+}
+
+void FullscreenPass::draw(const Program& program, std::initializer_list<const Texture*> textures,
+                          std::initializer_list<Texture*> targets) {
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target.id(), 0);
-  GLenum color0 = GL_COLOR_ATTACHMENT0;
-  glDrawBuffers(1, &color0);
-  glViewport(0, 0, target.width, target.height);
+  GLenum buffers[8];
+  GLsizei n = 0;
+  for (Texture* t : targets) {
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + GLenum(n), GL_TEXTURE_2D, t->id(), 0);
+    buffers[n] = GL_COLOR_ATTACHMENT0 + GLenum(n);
+    ++n;
+  }
+  for (GLsizei k = n; k < 8; ++k)
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + GLenum(k), GL_TEXTURE_2D, 0, 0);
+  glDrawBuffers(n, buffers);
+  const Texture& first = **targets.begin();
+  glViewport(0, 0, first.width, first.height);
   bind_textures(textures);
   glUseProgram(program.id());
   glBindVertexArray(empty_.id());

@@ -12,7 +12,6 @@
 #include "common/preprocess.hpp"
 #include "common/lights.hpp"
 #include "gpu/compose.hpp"
-#include "gpu/contour_light.hpp"
 #include "gpu/interior_intensity.hpp"
 #include "gpu/multi_contour.hpp"
 #include "gpu/pencil_interior.hpp"
@@ -23,10 +22,34 @@
 
 namespace plumbago::gpu {
 
+namespace {
+
+// Stages that one GPU pass computes together (one shader, one output each), so that a
+// frame reads its inputs once: "a+b" replaces a followed by b.
+std::vector<std::string> fused(const std::vector<std::string>& stages) {
+  static const std::vector<std::pair<std::string, std::string>> pairs = {{"edge_detect", "contour_light"}};
+  std::vector<std::string> out;
+  for (size_t i = 0; i < stages.size(); ++i) {
+    bool joined = false;
+    for (const auto& [a, b] : pairs)
+      if (stages[i] == a && i + 1 < stages.size() && stages[i + 1] == b) {
+        out.push_back(a + "+" + b);
+        joined = true;
+        ++i;
+        break;
+      }
+    if (!joined) out.push_back(stages[i]);
+  }
+  return out;
+}
+
+}  // namespace
+
 struct Renderer::State {
   const Scene& scene;
   std::vector<std::string> passes = passes_for(scene.effects);
   std::vector<std::string> stages = frame_stages(passes);
+  std::vector<std::string> gpu_passes = fused(stages);
   Preprocessed pre = preprocess(scene, passes);
   ContourInputs contour_inputs = pre.offset_grids.empty() ? ContourInputs{}
                                  : upload_contour_inputs(pre.offset_grids, pre.contour_texture, pre.texture_shifts);
@@ -35,7 +58,6 @@ struct Renderer::State {
   Texture paper_color = pre.paper.color.empty() ? make_texture(1, 1, GL_RGBA32F) : upload_texture(pre.paper.color, GL_RGBA32F);
   GBufferPass gbuffer_pass{scene, pre.curvature};
   EdgeDetectPass edge_pass;
-  ContourLightPass contour_light_pass;
   MultiContourPass multi_contour_pass;
   InteriorIntensityPass interior_intensity_pass;
   PencilInteriorPass pencil_interior_pass;
@@ -58,11 +80,9 @@ struct Renderer::State {
   void run(const std::string& pass) {
     if (pass == "gbuffer") {
       gbuffer_pass.render(scene, gbuffer, gbuffer_channels);
-    } else if (pass == "edge_detect") {
-      edge_pass.run(gbuffer, scene.params.get<EdgeDetectParams>(), contour_darkness);
-    } else if (pass == "contour_light") {
-      contour_light_pass.run(contour_darkness, gbuffer, view_space_lights(scene), scene.params.get<ContourLightParams>(),
-                             lit_contour_darkness);
+    } else if (pass == "edge_detect+contour_light") {
+      edge_pass.run(gbuffer, scene.params.get<EdgeDetectParams>(), view_space_lights(scene),
+                    scene.params.get<ContourLightParams>(), contour_darkness, lit_contour_darkness);
     } else if (pass == "multi_contour") {
       multi_contour_pass.run(lit_contour_darkness, contour_inputs, scene.params.get<ContourParams>(),
                              multi_contour_darkness);
@@ -82,7 +102,7 @@ struct Renderer::State {
   }
 
   void run_frame() {
-    for (const std::string& pass : stages) {
+    for (const std::string& pass : gpu_passes) {
       timer.begin(pass);
       run(pass);
       timer.end();

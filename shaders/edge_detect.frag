@@ -1,12 +1,18 @@
 #version 450 core
 // Edge detection (SPEC 2.2): contour darkness d = 1 - I_n I_z.
 // Neighbors A B C / D X E / F G H, y up (window coordinates), clamp-to-edge.
-uniform sampler2D normals;  // view-space normals (shading or face, chosen on the CPU)
-uniform sampler2D depth;    // linear view depth
+// Also contour lighting (SPEC 2.3, Lee Eq. 1) in the same pass, as a second output:
+// d' = d (1 - lambda min(1, sum intensity max(0, N.L))), N the shading normal.
+#include "common_lights.glsl"
+
+uniform sampler2D normals;          // view-space normals (shading or face, chosen on the CPU)
+uniform sampler2D depth;            // linear view depth
+uniform sampler2D shading_normals;  // for the lighting
 uniform float near_plane;
 uniform float far_plane;
 
 layout(location = 0) out float contour_darkness;
+layout(location = 1) out float lit_contour_darkness;
 
 ivec2 clamped(ivec2 p) { return clamp(p, ivec2(0), textureSize(depth, 0) - 1); }
 vec3 normal_at(ivec2 p) { return texelFetch(normals, clamped(p), 0).xyz; }
@@ -31,4 +37,6 @@ void main() {
   float i_z = depth_factor(normalized_depth_at(a), normalized_depth_at(h)) *
               depth_factor(normalized_depth_at(c), normalized_depth_at(f));
   contour_darkness = 1.0 - i_n * i_z;
+  float l_c = 1.0 - contour.light_influence * min(1.0, light_sum(texelFetch(shading_normals, x, 0).xyz));
+  lit_contour_darkness = contour_darkness * l_c;
 }

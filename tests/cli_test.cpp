@@ -68,7 +68,9 @@ TEST_F(Cli, RendersTheBuiltinSceneAndReportsWhatRan) {
     ran.push_back(p["name"]);
     EXPECT_GE(p["ms"].get<double>(), 0.0);
   }
-  EXPECT_NE(std::find(ran.begin(), ran.end(), "edge_detect"), ran.end());
+  for (const char* stage : {"distortion", "contour_texture", "gbuffer", "edge_detect", "contour_light", "multi_contour",
+                            "compose"})
+    EXPECT_NE(std::find(ran.begin(), ran.end(), stage), ran.end()) << stage;
   EXPECT_FALSE(j["renderer"].get<std::string>().empty());
 }
 

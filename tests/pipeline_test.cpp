@@ -17,9 +17,11 @@ std::vector<std::string> names(const Frame& f) {
   return out;
 }
 
+// `pass` ran, alone or fused with others into one GPU pass ("a+b").
 bool ran(const Frame& f, const std::string& pass) {
-  auto n = names(f);
-  return std::find(n.begin(), n.end(), pass) != n.end();
+  for (const auto& n : names(f))
+    if (n == pass || n.rfind(pass + "+", 0) == 0 || n.find("+" + pass) != std::string::npos) return true;
+  return false;
 }
 
 TEST(PassTable, ContoursNeedOnlyGBufferEdgesAndComposition) {
