@@ -1,4 +1,5 @@
-// Interior pencil shading on the GPU (SPEC 2.6-2.10), the twin of
+// Interior intensity (SPEC 2.5) and interior pencil shading (SPEC 2.6-2.10) on the GPU in
+// one pass with two outputs, the twins of reference/interior_intensity.cpp and
 // reference/pencil_interior.cpp.
 #pragma once
 
@@ -13,9 +14,10 @@ class PencilInteriorPass {
  public:
   PencilInteriorPass();
   // `stack`: the pencil layers as a 3D texture; `paper_normal`: any texture when
-  // !options.paper. Writes D_i into `out` (R32F).
-  void run(const GBufferTargets& g, const Texture& intensity, const Texture& stack, const Texture& paper_normal,
-           const InteriorOptions& options, const InteriorParams& p, float mu_p, Texture& out);
+  // !options.paper. Writes D_i into `darkness` and I' into `intensity` (R32F).
+  void run(const GBufferTargets& g, const std::vector<Light>& view_lights, const Texture& stack,
+           const Texture& paper_normal, const InteriorOptions& options, const InteriorParams& p, float mu_p,
+           Texture& darkness, Texture& intensity);
 
  private:
   Program program_;

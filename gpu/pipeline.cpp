@@ -12,7 +12,6 @@
 #include "common/preprocess.hpp"
 #include "common/lights.hpp"
 #include "gpu/compose.hpp"
-#include "gpu/interior_intensity.hpp"
 #include "gpu/multi_contour.hpp"
 #include "gpu/pencil_interior.hpp"
 #include "gpu/context.hpp"
@@ -27,7 +26,8 @@ namespace {
 // Stages that one GPU pass computes together (one shader, one output each), so that a
 // frame reads its inputs once: "a+b" replaces a followed by b.
 std::vector<std::string> fused(const std::vector<std::string>& stages) {
-  static const std::vector<std::pair<std::string, std::string>> pairs = {{"edge_detect", "contour_light"}};
+  static const std::vector<std::pair<std::string, std::string>> pairs = {{"edge_detect", "contour_light"},
+                                                                         {"interior_intensity", "pencil_interior"}};
   std::vector<std::string> out;
   for (size_t i = 0; i < stages.size(); ++i) {
     bool joined = false;
@@ -59,7 +59,6 @@ struct Renderer::State {
   GBufferPass gbuffer_pass{scene, pre.curvature};
   EdgeDetectPass edge_pass;
   MultiContourPass multi_contour_pass;
-  InteriorIntensityPass interior_intensity_pass;
   PencilInteriorPass pencil_interior_pass;
   ComposePass compose_pass;
   GBufferTargets gbuffer = make_gbuffer_targets(scene.width, scene.height,
@@ -86,13 +85,10 @@ struct Renderer::State {
     } else if (pass == "multi_contour") {
       multi_contour_pass.run(lit_contour_darkness, contour_inputs, scene.params.get<ContourParams>(),
                              multi_contour_darkness);
-    } else if (pass == "interior_intensity") {
-      interior_intensity_pass.run(gbuffer, view_space_lights(scene), scene.params.get<InteriorParams>(),
-                                  interior_intensity);
-    } else if (pass == "pencil_interior") {
-      pencil_interior_pass.run(gbuffer, interior_intensity, pencil_stack, paper_normal, interior_options(scene.effects),
-                               scene.params.get<InteriorParams>(), scene.params.get<PaperParams>().mu_p,
-                               interior_darkness);
+    } else if (pass == "interior_intensity+pencil_interior") {
+      pencil_interior_pass.run(gbuffer, view_space_lights(scene), pencil_stack, paper_normal,
+                               interior_options(scene.effects), scene.params.get<InteriorParams>(),
+                               scene.params.get<PaperParams>().mu_p, interior_darkness, interior_intensity);
     } else if (pass == "compose") {
       compose_pass.run(multi_contour_darkness, ran("multi_contour"), interior_darkness, ran("pencil_interior"),
                        paper_color, !pre.paper.color.empty(), scene.params.get<ComposeParams>(), color);

@@ -1,6 +1,11 @@
 #version 450 core
-// Interior pencil shading (SPEC 2.6-2.10), formulas in common/pencil_interior.hpp.
-uniform sampler2D interior_intensity;
+// Interior intensity and brightness (SPEC 2.5) and interior pencil shading (SPEC 2.6-2.10)
+// in one pass: I' is the second output, D_i the first. Formulas in common/interior.hpp
+// and common/pencil_interior.hpp.
+#include "common_lights.glsl"
+
+uniform sampler2D gouraud;
+uniform sampler2D normals;
 uniform sampler2D bary;
 uniform sampler2D theta_min;
 uniform sampler2D theta_max;
@@ -12,6 +17,15 @@ uniform bool paper_effect;
 uniform float mu_p;
 
 layout(location = 0) out float interior_darkness;
+layout(location = 1) out float interior_intensity;
+
+// I' = sqrt(I), I Gouraud or Phong (SPEC 2.5)
+float adjusted_intensity(ivec2 x) {
+  float i = interior.shading == INTERIOR_SHADING_GOURAUD
+                ? texelFetch(gouraud, x, 0).r
+                : clamp(interior.ambient + interior.diffuse * light_sum(texelFetch(normals, x, 0).xyz), 0.0, 1.0);
+  return interior.brightness_sqrt ? sqrt(i) : i;
+}
 
 // c_k = P(R(-theta) p / texture_scale, r), then the paper effect c_k' (2.7, 2.10)
 float corner_sample(vec2 p, float theta, float r, vec3 n) {
@@ -31,9 +45,11 @@ void main() {
   ivec2 x = ivec2(gl_FragCoord.xy);
   if (texelFetch(ids, x, 0).r == 0u) {
     interior_darkness = 0.0;
+    interior_intensity = 1.0;
     return;
   }
-  float i = texelFetch(interior_intensity, x, 0).r;
+  float i = adjusted_intensity(x);
+  interior_intensity = i;
   float layers = float(textureSize(pencil_stack, 0).z);
   float r = ((1.0 - i) * (layers - 1.0) + 0.5) / layers;  // tone to layer (2.6)
   vec2 p = gl_FragCoord.xy;
