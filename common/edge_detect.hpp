@@ -24,7 +24,7 @@ struct EdgeDetectParams {
   template <class V>
   void visit(V& v) {
     v.real(depth_scale, "depth_scale", 10.0, 0.0, 10000.0,
-           "s in I_z: normalized-depth difference that darkens a contour (see docs/parameters.md)");
+           "s in I_z: normalized-depth difference that darkens a contour (see docs/readings.md)");
     v.choice(normals, "normals", EdgeNormals::Interpolated, {"interpolated", "face"},
              "normals compared by I_n: shading (interpolated) or geometric (face)");
     v.choice(background_pairs, "background_pairs", BackgroundPairs::Continuous, {"continuous", "formula"},
