@@ -39,15 +39,15 @@ OmMesh build_halfedge_mesh(const Mesh& mesh, std::vector<uint32_t>& mesh_vertex,
     mesh_vertex.push_back(v);
   }
   for (const auto& t : mesh.triangles) {
-    std::vector<OmMesh::VertexHandle> corners{OmMesh::VertexHandle(int(t[0])), OmMesh::VertexHandle(int(t[1])),
-                                              OmMesh::VertexHandle(int(t[2]))};
-    auto face = om.add_face(corners);
+    std::array<OmMesh::VertexHandle, 3> corners{OmMesh::VertexHandle(int(t[0])), OmMesh::VertexHandle(int(t[1])),
+                                                OmMesh::VertexHandle(int(t[2]))};
+    auto face = om.add_face(corners[0], corners[1], corners[2]);  // no per-face heap allocation
     if (!face.is_valid()) {
       for (int k = 0; k < 3; ++k) {
         corners[k] = add_vertex(om, mesh.positions[t[k]]);
         mesh_vertex.push_back(t[k]);
       }
-      face = om.add_face(corners);
+      face = om.add_face(corners[0], corners[1], corners[2]);
       ++topo.split_faces;
     }
     auto& edges = topo.face_edges.emplace_back();
