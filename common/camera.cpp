@@ -14,10 +14,6 @@ glm::mat4 Camera::projection(float aspect) const {
 
 glm::vec3 Camera::forward() const { return glm::normalize(target - eye); }
 
-glm::vec3 Camera::ray_direction(float px, float py, int width, int height) const {
-  return PrimaryRays(*this, width, height).direction(px, py);
-}
-
 PrimaryRays::PrimaryRays(const Camera& c, int width, int height)
     : camera_to_world_(glm::inverse(c.view())),
       tan_half_(std::tan(glm::radians(c.fov_deg) * 0.5f)),

@@ -13,18 +13,17 @@ struct Camera {
 
   glm::mat4 view() const;
   glm::mat4 projection(float aspect) const;  // OpenGL clip space, depth in [-1, 1]
-  // Unit world-space direction of the primary ray through window point (px, py) of a
-  // width x height image (pixel centers at integer + 0.5).
-  glm::vec3 ray_direction(float px, float py, int width, int height) const;
   // Unit world-space viewing direction (target - eye).
   glm::vec3 forward() const;
 };
 
-// Primary-ray directions of one camera and image size, with the camera basis computed
-// once: the same formula as Camera::ray_direction.
+// Primary-ray directions of one camera and image size (SPEC 0), the camera basis
+// computed once.
 class PrimaryRays {
  public:
   PrimaryRays(const Camera& camera, int width, int height);
+  // Unit world-space direction through window point (px, py); pixel centers sit at
+  // integer + 0.5, from the bottom-left corner.
   glm::vec3 direction(float px, float py) const;
 
  private:

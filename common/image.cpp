@@ -51,12 +51,6 @@ Image read_image(const std::string& path) {
   return flipped(img);
 }
 
-Image channel(const Image& img, int c) {
-  Image out(img.width, img.height, 1);
-  for (size_t i = 0; i < img.pixels(); ++i) out.data[i] = img.data[i * img.channels + c];
-  return out;
-}
-
 bool has_non_finite(const Image& img) {
   for (float v : img.data)
     if (!std::isfinite(v)) return true;

@@ -33,8 +33,6 @@ using ImageU32 = ImageT<uint32_t>;
 void write_image(const Image& img, const std::string& path);
 Image read_image(const std::string& path);  // float, bottom row first
 
-// One channel of `img` as a single-channel image.
-Image channel(const Image& img, int c);
 // Any NaN or Inf value?
 bool has_non_finite(const Image& img);
 

@@ -130,8 +130,6 @@ Mesh cad_part(float res) {
 
 }  // namespace
 
-std::vector<std::string> procedural_kinds() { return {"torus", "sphere", "cad", "plane", "cylinder"}; }
-
 Mesh make_procedural(const std::string& kind, float resolution) {
   if (!(resolution > 0 && resolution <= 16)) throw std::invalid_argument("procedural resolution must be in (0, 16]");
   Mesh m = kind == "torus"      ? torus(resolution)

@@ -11,6 +11,5 @@ namespace plumbago {
 // Kinds: "torus", "sphere", "cad" (a part with sharp creases next to smooth patches),
 // "plane", "cylinder". `resolution` scales the tessellation (1 = default).
 Mesh make_procedural(const std::string& kind, float resolution = 1.0f);
-std::vector<std::string> procedural_kinds();
 
 }  // namespace plumbago
