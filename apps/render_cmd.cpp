@@ -29,12 +29,15 @@ Frame render_frame(const Scene& scene, const std::string& backend, const FrameOp
 
 void print_stats(const RenderOptions& o, const Scene& scene, const Frame& frame) {
   std::string renderer = o.backend == "gpu" ? gpu::Context::get().renderer() : "CPU reference (Embree)";
+  std::vector<std::string> gl_messages;  // KHR_debug messages other than errors (those fail the run)
+  if (o.backend == "gpu") gl_messages = gpu::Context::get().take_messages();
   if (o.json) {
     nlohmann::json j;
     j["scene"] = scene.source;
     j["backend"] = o.backend;
     j["renderer"] = renderer;
     j["size"] = {scene.width, scene.height};
+    j["gl_messages"] = gl_messages;
     j["ran"] = nlohmann::json::array();
     for (const auto& p : frame.ran) {
       // A fused GPU pass "a+b" ran both stages in one shader: each is listed, the time
@@ -53,6 +56,7 @@ void print_stats(const RenderOptions& o, const Scene& scene, const Frame& frame)
   std::printf("scene     %s (%dx%d)\nbackend   %s\nrenderer  %s\n", scene.source.c_str(), scene.width,
               scene.height, o.backend.c_str(), renderer.c_str());
   for (const auto& p : frame.ran) std::printf("  %-24s %10.3f ms\n", p.name.c_str(), p.ms);
+  for (const auto& m : gl_messages) std::printf("GL: %s\n", m.c_str());
 }
 
 void run(const RenderOptions& o) {

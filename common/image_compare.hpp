@@ -13,7 +13,6 @@ struct ImageDiff {
   double over_tolerance = 0;  // share of compared pixels with any channel over tolerance
   double tolerance = 0;
   size_t compared = 0;        // pixels compared (after the mask)
-  bool pass(double allowed_share = 0) const { return over_tolerance <= allowed_share; }
 };
 
 // Compares `a` and `b` (same size and channels). `mask`, when given, is a 1-channel
