@@ -71,7 +71,7 @@ struct CurvatureParams {
     v.integer(jet_rings, "jet_rings", 2, 1, 8, "jet: rings of neighbors fitted (more if too few points)");
     v.real(umbilic_ratio, "umbilic_ratio", 0.1, 0.0, 1.0,
            "directions propagated where |k_max - k_min| < this x (|k_max| + |k_min|) + flat");
-    v.real(flat_curvature, "flat_curvature", 1e-3, 0.0, 1.0,
+    v.real(flat_curvature, "flat_curvature", 0.05, 0.0, 1.0,
            "the + flat term of the umbilic test, x 1 / bbox diagonal");
   }
 };
