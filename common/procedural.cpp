@@ -71,60 +71,95 @@ Mesh sphere(float res) {
   return m;
 }
 
-// A closed profile (counter-clockwise seen from +z) extruded from z0 to z1 in `rows`
-// rows, with flat fan caps: sharp 90-degree creases where walls meet caps.
-void add_extrusion(Mesh& m, const std::vector<glm::vec2>& profile, float z0, float z1, int rows) {
-  unsigned n = unsigned(profile.size()), base = unsigned(m.positions.size());
-  for (int r = 0; r <= rows; ++r)
-    for (const auto& p : profile) m.positions.push_back({p, z0 + (z1 - z0) * float(r) / float(rows)});
-  for (unsigned r = 0; r < unsigned(rows); ++r)
-    for (unsigned i = 0; i < n; ++i) {
-      unsigned a = base + r * n + i, b = base + r * n + (i + 1) % n;
-      m.triangles.push_back({a, b, b + n});
-      m.triangles.push_back({a, b + n, a + n});
-    }
-  glm::vec2 c(0);
-  for (const auto& p : profile) c += p / float(n);
-  unsigned bottom = unsigned(m.positions.size()), top = bottom + 1, top_ring = base + unsigned(rows) * n;
-  m.positions.push_back({c, z0});
-  m.positions.push_back({c, z1});
+// A ring of vertices around a closed profile at height z; returns its first vertex.
+unsigned add_ring(Mesh& m, const std::vector<glm::vec2>& profile, float z) {
+  unsigned first = unsigned(m.positions.size());
+  for (const auto& p : profile) m.positions.push_back({p, z});
+  return first;
+}
+
+// Quads between two rings of n vertices, both counter-clockwise seen from +z, facing
+// along (ring direction) x (from ring a to ring b): outward for a wall from a lower ring
+// to an upper one, upward for a flat annulus from an outer ring to an inner one.
+void stitch(Mesh& m, unsigned a, unsigned b, unsigned n) {
   for (unsigned i = 0; i < n; ++i) {
-    m.triangles.push_back({bottom, base + (i + 1) % n, base + i});
-    m.triangles.push_back({top, top_ring + i, top_ring + (i + 1) % n});
+    unsigned j = (i + 1) % n;
+    m.triangles.push_back({a + i, a + j, b + j});
+    m.triangles.push_back({a + i, b + j, b + i});
   }
 }
 
+// A flat cap: a fan from `apex` to a ring of n vertices, facing +z or -z.
+void add_fan(Mesh& m, unsigned ring, unsigned n, glm::vec3 apex, bool facing_up) {
+  unsigned c = unsigned(m.positions.size());
+  m.positions.push_back(apex);
+  for (unsigned i = 0; i < n; ++i) {
+    unsigned j = (i + 1) % n;
+    m.triangles.push_back(facing_up ? glm::uvec3(c, ring + i, ring + j) : glm::uvec3(c, ring + j, ring + i));
+  }
+}
+
+// A closed profile (counter-clockwise seen from +z) swept from z0 up to z1 in `rows`
+// rows; returns the first vertex of each of its rows + 1 rings, bottom to top.
+std::vector<unsigned> add_wall(Mesh& m, const std::vector<glm::vec2>& profile, float z0, float z1, int rows) {
+  std::vector<unsigned> rings;
+  for (int r = 0; r <= rows; ++r) rings.push_back(add_ring(m, profile, z0 + (z1 - z0) * float(r) / float(rows)));
+  for (int r = 0; r < rows; ++r) stitch(m, rings[r], rings[r + 1], unsigned(profile.size()));
+  return rings;
+}
+
+glm::vec2 direction(float angle) { return {std::cos(angle), std::sin(angle)}; }
+
 std::vector<glm::vec2> circle(glm::vec2 center, float radius, int n) {
   std::vector<glm::vec2> p;
-  for (int i = 0; i < n; ++i) {
-    float a = 2 * kPi * float(i) / float(n);
-    p.push_back(center + radius * glm::vec2(std::cos(a), std::sin(a)));
-  }
+  for (int i = 0; i < n; ++i) p.push_back(center + radius * direction(2 * kPi * float(i) / float(n)));
   return p;
 }
 
 Mesh cylinder(float res) {
+  int n = segments(64, res);
   Mesh m;
-  add_extrusion(m, circle({0, 0}, 0.5f, segments(64, res)), -1.0f, 1.0f, segments(8, res));
+  auto rings = add_wall(m, circle({0, 0}, 0.5f, n), -1.0f, 1.0f, segments(8, res));
+  add_fan(m, rings.front(), unsigned(n), {0, 0, -1}, false);
+  add_fan(m, rings.back(), unsigned(n), {0, 0, 1}, true);
   return m;
 }
 
-// A slab whose profile is a rectangle with one half-round end (flat walls running
-// tangentially into a smooth cylindrical patch, sharp creases at the caps), with a
-// cylindrical boss standing on its top: creases next to smooth patches, as on fandisk.
+// Where the ray from `from` at `angle` leaves the slab's outline: the rectangle
+// [-1.2, 0] x [-0.6, 0.6] joined to the disc of radius 0.6 around the origin. Both hold
+// `from`, so the ray leaves their union where it leaves the later of the two.
+glm::vec2 slab_outline(glm::vec2 from, float angle) {
+  const glm::vec2 lo(-1.2f, -0.6f), hi(0.0f, 0.6f);
+  glm::vec2 d = direction(angle);
+  float t_rect = INFINITY;
+  for (int c = 0; c < 2; ++c)
+    if (d[c] != 0) t_rect = std::min(t_rect, ((d[c] > 0 ? hi[c] : lo[c]) - from[c]) / d[c]);
+  float bd = glm::dot(from, d);  // |from + t d| = 0.6, the larger root
+  float t_disc = -bd + std::sqrt(std::max(bd * bd - glm::dot(from, from) + 0.36f, 0.0f));
+  return from + std::max(t_rect, t_disc) * d;
+}
+
+// One closed surface like a machined part: a slab with one half-round end (flat walls
+// running tangentially into a smooth cylindrical patch) and a cylindrical boss standing
+// on its top. Creases are sharp by geometry (walls meet caps at 90 degrees, the boss's
+// foot is a concave 90-degree crease), as on fandisk. Outline and boss are sampled on
+// the same rays from the boss's axis, so the slab's top is a strip between the two rings;
+// n is a multiple of 8 so that rays pass through the outline's corners and tangent points.
 Mesh cad_part(float res) {
-  std::vector<glm::vec2> profile;
-  int round = segments(32, res), straight = segments(12, res);
-  for (int i = 0; i <= straight; ++i) profile.push_back({-1.2f + 1.2f * float(i) / float(straight), -0.6f});
-  for (int i = 1; i < round; ++i) {
-    float a = -kPi / 2 + kPi * float(i) / float(round);
-    profile.push_back({0.6f * std::cos(a), 0.6f * std::sin(a)});
+  const glm::vec2 axis(-0.6f, 0.0f);
+  const unsigned n = 8 * unsigned(segments(12, res));
+  std::vector<glm::vec2> outline, boss;
+  for (unsigned k = 0; k < n; ++k) {
+    float angle = 2 * kPi * float(k) / float(n);
+    outline.push_back(slab_outline(axis, angle));
+    boss.push_back(axis + 0.3f * direction(angle));
   }
-  for (int i = 0; i <= straight; ++i) profile.push_back({-1.2f * float(i) / float(straight), 0.6f});
-  for (int i = 1; i < straight / 2; ++i) profile.push_back({-1.2f, 0.6f - 1.2f * float(i) / float(straight / 2)});
   Mesh m;
-  add_extrusion(m, profile, -0.25f, 0.25f, segments(4, res));
-  add_extrusion(m, circle({-0.6f, 0.0f}, 0.3f, segments(48, res)), 0.25f, 0.65f, segments(6, res));
+  auto slab = add_wall(m, outline, -0.25f, 0.25f, segments(4, res));
+  auto post = add_wall(m, boss, 0.25f, 0.65f, segments(6, res));
+  add_fan(m, slab.front(), n, {axis, -0.25f}, false);
+  stitch(m, slab.back(), post.front(), n);  // the slab's top, around the boss's foot
+  add_fan(m, post.back(), n, {axis, 0.65f}, true);
   return m;
 }
 

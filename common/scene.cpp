@@ -56,6 +56,7 @@ class SceneReader {
   std::shared_ptr<const Mesh> mesh(const json& j, const std::string& path) {
     try {
       if (j.is_string()) return mesh_file(j.get<std::string>());
+      if (!j.is_object()) fail(path, "expected a mesh file path or {\"procedural\": KIND}");
       only_keys(j, path, {"procedural", "resolution"});
       if (!j.contains("procedural") || !j["procedural"].is_string()) fail(path + "/procedural", "expected a name");
       float res = j.contains("resolution") ? float(number(j["resolution"], path + "/resolution")) : 1.0f;
@@ -74,7 +75,7 @@ class SceneReader {
     o.mesh = mesh(j["mesh"], path + "/mesh");
     if (j.contains("transform")) o.transform = transform(j["transform"], path + "/transform");
     if (j.contains("style")) o.style = style(j["style"], path + "/style");
-    if (j.contains("color")) o.color = vec3(j["color"], path + "/color");
+    if (j.contains("color")) o.color = color(j["color"], path + "/color");
     if (j.contains("flat")) {
       if (!j["flat"].is_boolean()) fail(path + "/flat", "expected true or false");
       o.flat = j["flat"].get<bool>();
@@ -120,9 +121,10 @@ class SceneReader {
   void resolution(const json& j, const std::string& path, Scene& s) const {
     if (!j.is_array() || j.size() != 2 || !j[0].is_number_integer() || !j[1].is_number_integer())
       fail(path, "expected [width, height] in pixels");
+    for (int k = 0; k < 2; ++k)
+      if (j[k].get<int64_t>() < 1 || j[k].get<int64_t>() > 16384) fail(path + "/" + std::to_string(k), "must be in 1..16384");
     s.width = j[0].get<int>();
     s.height = j[1].get<int>();
-    if (s.width < 1 || s.height < 1 || s.width > 16384 || s.height > 16384) fail(path, "each must be in 1..16384");
   }
 
   std::vector<std::string> effects(const json& j, const std::string& path) const {
@@ -176,6 +178,13 @@ class SceneReader {
     for (int i = 0; i < 16; ++i) m[i / 4][i % 4] = float(number(j[size_t(i)], path + "/" + std::to_string(i)));
     if (std::abs(glm::determinant(glm::mat3(m))) < 1e-12f) fail(path, "is singular");
     return m;
+  }
+
+  glm::vec3 color(const json& j, const std::string& path) const {
+    glm::vec3 c = vec3(j, path);
+    for (int k = 0; k < 3; ++k)
+      if (c[k] < 0 || c[k] > 1) fail(path + "/" + std::to_string(k), "must be in [0, 1]");
+    return c;
   }
 
   Style style(const json& j, const std::string& path) const {

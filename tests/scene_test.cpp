@@ -1,10 +1,9 @@
 // Scene files (common/scene.cpp): every key read, refusals with the file and JSON path,
-// relative paths, built-in scenes and procedural meshes.
+// relative paths, built-in scenes.
 #include <gtest/gtest.h>
 
 #include <map>
 
-#include "common/procedural.hpp"
 #include "common/scene.hpp"
 #include "tests/temp_dir.hpp"
 
@@ -77,17 +76,35 @@ TEST(SceneFile, RefusalsNameTheFileAndJsonPath) {
       {R"({"objects": [{"mesh": "nowhere.obj"}]})", "bad.json: /objects/0/mesh:"},
       {R"({"objects": [{"mesh": {"procedural": "torus"}, "transform": [1, 2]}]})", "bad.json: /objects/0/transform:"},
       {R"({"objects": [{"mesh": {"procedural": "torus"}, "style": "oil"}]})", "bad.json: /objects/0/style:"},
-      {R"({"mesh": {"procedural": "torus"}, "resolution": [0, 10]})", "bad.json: /resolution:"},
+      {R"({"mesh": {"procedural": "torus"}, "resolution": [0, 10]})", "bad.json: /resolution/0: must be in 1..16384"},
+      {R"({"mesh": {"procedural": "torus"}, "resolution": [10, 4294967396]})", "bad.json: /resolution/1: must be in"},
+      {R"({"mesh": {"procedural": "torus"}, "resolution": [800.5, 10]})", "bad.json: /resolution: expected"},
+      {R"({"mesh": 7})", "bad.json: /mesh: expected a mesh file path"},
+      {R"({"objects": [{"mesh": {"procedural": "torus"}, "color": [1, 2, 0]}]})", "bad.json: /objects/0/color/1: must be in [0, 1]"},
+      {R"({"objects": [{"mesh": {"procedural": "torus"}, "flat": 1}]})", "bad.json: /objects/0/flat: expected true or false"},
+      {R"({"objects": [{"mesh": {"procedural": "torus", "resolution": 99}}]})", "bad.json: /objects/0/mesh: procedural resolution"},
+      {R"({"mesh": {"procedural": "torus"}, "camera": {"eye": [1, 2]}})", "bad.json: /camera/eye: expected an array of 3 numbers"},
+      {R"({"mesh": {"procedural": "torus"}, "lights": [{"direction": [0, 0, 1], "power": 2}]})", "bad.json: /lights/0/power: unknown key"},
       {R"({"mesh": {"procedural": "torus"}, "lights": [{"direction": [0, 0, 0]}]})", "bad.json: /lights/0/direction:"},
       {R"({"mesh": {"procedural": "torus"}, "seed": -3})", "bad.json: /seed:"},
       {R"({"mesh": {"procedural": "torus"}, "camera": {"near": 5, "far": 1}})", "bad.json: /camera: needs 0 < near < far"},
       {R"({"mesh": {"procedural": "torus"}, "objects": []})", "bad.json: /: give either"},
       {R"({})", "bad.json: /: give either"},
-      {"{\n  \"mesh\": 1,,\n}", "bad.json: line 2"},
+      {"{\n  \"mesh\": 1,,\n}", "bad.json: line 2, column 13"},
   };
   for (const auto& [json, expected] : cases) {
     std::string m = refusal(json);
     EXPECT_NE(m.find(expected), std::string::npos) << "scene " << json << "\n gave: " << m;
+  }
+}
+
+TEST(SceneFile, MissingFileIsRefusedWithItsName) {
+  TempDir tmp;
+  try {
+    load_scene(tmp.path("absent.json"));
+    FAIL() << "accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("absent.json: cannot read"), std::string::npos) << e.what();
   }
 }
 
@@ -108,54 +125,6 @@ TEST(BuiltinScenes, EachHasOneObjectAndAFittedCamera) {
     EXPECT_GT(s.camera.far, s.camera.near) << name;
   }
   EXPECT_THROW(builtin_scene("teapot"), SceneError);
-}
-
-// Closed procedural meshes: every edge in exactly two faces, in opposite directions,
-// and the enclosed volume positive (outward orientation).
-TEST(Procedural, ClosedKindsAreWatertightAndOutward) {
-  for (const char* kind : {"torus", "sphere", "cylinder"}) {
-    Mesh m = make_procedural(kind);
-    std::map<std::pair<unsigned, unsigned>, int> directed;
-    double volume = 0;
-    for (const auto& t : m.triangles) {
-      for (int k = 0; k < 3; ++k) directed[{t[k], t[(k + 1) % 3]}]++;
-      volume += glm::dot(m.positions[t[0]], glm::cross(m.positions[t[1]], m.positions[t[2]])) / 6.0;
-    }
-    for (const auto& [e, n] : directed) {
-      EXPECT_EQ(n, 1) << kind << " edge used twice in one direction";
-      EXPECT_EQ(directed.count({e.second, e.first}), 1u) << kind << " open edge";
-    }
-    EXPECT_GT(volume, 0) << kind;
-  }
-}
-
-TEST(Procedural, CadPartHasSharpCreasesAndSmoothPatches) {
-  Mesh m = make_procedural("cad");
-  std::map<std::pair<unsigned, unsigned>, std::vector<size_t>> faces_of_edge;
-  for (size_t f = 0; f < m.triangles.size(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      auto e = std::minmax(m.triangles[f][k], m.triangles[f][(k + 1) % 3]);
-      faces_of_edge[{e.first, e.second}].push_back(f);
-    }
-  auto normal = [&](size_t f) {
-    const auto& t = m.triangles[f];
-    return glm::normalize(glm::cross(m.positions[t[1]] - m.positions[t[0]], m.positions[t[2]] - m.positions[t[0]]));
-  };
-  int sharp = 0, gentle = 0;
-  for (const auto& [e, fs] : faces_of_edge) {
-    if (fs.size() != 2) continue;
-    float c = glm::dot(normal(fs[0]), normal(fs[1]));
-    sharp += c < 0.2f;                  // about 80 degrees or more
-    gentle += c > 0.95f && c < 0.9999f;  // curved patch
-  }
-  EXPECT_GT(sharp, 50);
-  EXPECT_GT(gentle, 50);
-}
-
-TEST(Procedural, UnknownKindAndBadResolutionAreRefused) {
-  EXPECT_THROW(make_procedural("donut"), std::invalid_argument);
-  EXPECT_THROW(make_procedural("torus", 0.0f), std::invalid_argument);
-  EXPECT_THROW(make_procedural("torus", NAN), std::invalid_argument);
 }
 
 }  // namespace
