@@ -1,5 +1,6 @@
-// Mesh files through OpenMesh (OBJ, OFF, PLY, STL), plus the binary-PLY triangle strips
-// OpenMesh cannot read (../shared/models/igea.ply).
+// Mesh files through OpenMesh (OBJ, OFF, PLY, STL), with the text formats checked first so
+// that a refusal names the line, and the PLY triangle strips OpenMesh cannot read
+// (../shared/models/igea.ply).
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
@@ -10,7 +11,7 @@
 #include <unordered_map>
 
 #include "common/mesh.hpp"
-#include "common/ply_strips.hpp"
+#include "common/ply_file.hpp"
 
 namespace plumbago {
 
@@ -24,13 +25,25 @@ std::string lowercase_extension(const std::string& path) {
   return ext;
 }
 
+// A whole word that reads as a finite float (1e39 does not: it would be infinite).
+bool is_finite_number(const std::string& word) {
+  char* end = nullptr;
+  float v = std::strtof(word.c_str(), &end);
+  return !word.empty() && *end == '\0' && std::isfinite(v);
+}
+
 // OBJ text checked line by line before OpenMesh reads it, so that a bad coordinate or
 // index is reported with its line (OpenMesh skips such faces with a warning).
 void check_obj_lines(const std::string& path) {
   std::ifstream in(path);
   std::string line;
   size_t vertices = 0, number = 0;
-  std::vector<std::pair<size_t, long>> face_indices;  // (line, index)
+  struct FaceIndex {
+    size_t line;
+    long index;
+    size_t vertices_before;
+  };
+  std::vector<FaceIndex> face_indices;
   while (std::getline(in, line)) {
     ++number;
     std::istringstream ss(line);
@@ -41,35 +54,89 @@ void check_obj_lines(const std::string& path) {
       for (int k = 0; k < 3; ++k) {
         std::string word;
         ss >> word;
-        float v = std::strtof(word.c_str(), nullptr);
-        if (word.empty() || !std::isfinite(v))
+        if (!is_finite_number(word))
           throw MeshError(path + ":" + std::to_string(number) + ": vertex coordinate '" + word +
                           "' is not a finite number");
       }
     } else if (tag == "f") {
-      for (std::string corner; ss >> corner;) face_indices.push_back({number, std::atol(corner.c_str())});
+      for (std::string corner; ss >> corner;) face_indices.push_back({number, std::atol(corner.c_str()), vertices});
     }
   }
-  for (auto [at, index] : face_indices) {  // negative indices count back from the end
-    if (index == 0 || std::labs(index) > long(vertices))
-      throw MeshError(path + ":" + std::to_string(at) + ": face index " + std::to_string(index) +
-                      " is out of range (the file has " + std::to_string(vertices) + " vertices)");
+  // Positive indices count from the file's first vertex, negative ones back from the
+  // last vertex read before the face.
+  for (const FaceIndex& f : face_indices) {
+    if (f.index == 0 || (f.index > 0 && size_t(f.index) > vertices) || (f.index < 0 && size_t(-f.index) > f.vertices_before))
+      throw MeshError(path + ":" + std::to_string(f.line) + ": face index " + std::to_string(f.index) +
+                      " is out of range (" + std::to_string(f.index > 0 ? vertices : f.vertices_before) +
+                      " vertices" + (f.index > 0 ? " in the file)" : " before it)"));
   }
 }
 
-// Reads through OpenMesh with its complaints captured instead of printed.
+// OFF text checked line by line: after the keyword (OFF, COFF, NOFF, ...) every value
+// must be a finite number, and each face's indices must name one of the V vertices.
+// OpenMesh would read "nan" as garbage and misread everything after it.
+void check_off_lines(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  size_t number = 0, counts_seen = 0, vertices = 0, faces = 0, rows = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    std::istringstream ss(line.substr(0, line.find('#')));
+    std::vector<std::string> words;
+    for (std::string w; ss >> w;) words.push_back(w);
+    if (number == 1 && !words.empty() && words[0].find("OFF") != std::string::npos) {
+      if (line.find("BINARY") != std::string::npos) return;  // binary body: left to OpenMesh
+      words.erase(words.begin());
+    }
+    if (words.empty()) continue;
+    for (const auto& w : words)
+      if (!is_finite_number(w))
+        throw MeshError(path + ":" + std::to_string(number) + ": '" + w + "' is not a finite number");
+    if (counts_seen == 0) {  // "V F E"
+      vertices = std::stoul(words[0]);
+      faces = words.size() > 1 ? std::stoul(words[1]) : 0;
+      counts_seen = 1;
+    } else if (size_t row = rows++; row >= vertices && row < vertices + faces) {  // "n i1 ... in [color]"
+      size_t n = std::stoul(words[0]);
+      for (size_t k = 1; k <= n && k < words.size(); ++k)
+        if (std::stod(words[k]) < 0 || std::stod(words[k]) >= double(vertices))
+          throw MeshError(path + ":" + std::to_string(number) + ": face index " + words[k] +
+                          " is out of range (" + std::to_string(vertices) + " vertices, counted from 0)");
+    }
+  }
+}
+
+// OpenMesh's error stream captured and its log silenced while alive (OpenMesh would
+// print a warning per complex edge of a non-manifold mesh).
+class CapturedOpenMeshComplaints {
+ public:
+  CapturedOpenMeshComplaints() {
+    ::omerr().disconnect(std::cerr);
+    ::omerr().connect(text_);
+    ::omlog().disable();
+  }
+  ~CapturedOpenMeshComplaints() {
+    ::omerr().disconnect(text_);
+    ::omerr().connect(std::cerr);
+    ::omlog().enable();
+  }
+  std::string text() const { return text_.str(); }
+
+ private:
+  std::ostringstream text_;
+};
+
+// Reads through OpenMesh; what it complains about goes into the refusal, not to stderr.
 OpenMeshTri read_with_openmesh(const std::string& path) {
   OpenMeshTri om;
-  std::ostringstream complaints;
-  ::omerr().disconnect(std::cerr);
-  ::omerr().connect(complaints);
-  ::omlog().disable();
-  OpenMesh::IO::Options options;
-  bool ok = OpenMesh::IO::read_mesh(om, path, options);
-  ::omerr().disconnect(complaints);
-  ::omerr().connect(std::cerr);
-  ::omlog().enable();
-  std::string text = complaints.str();
+  std::string text;
+  bool ok;
+  {
+    CapturedOpenMeshComplaints complaints;
+    OpenMesh::IO::Options options;
+    ok = OpenMesh::IO::read_mesh(om, path, options);
+    text = complaints.text();
+  }
   if (!ok) throw MeshError(path + ": OpenMesh cannot read it (unknown format or malformed)" + (text.empty() ? "" : ": " + text));
   if (text.find("invalid vertex index") != std::string::npos)
     throw MeshError(path + ": a face has a vertex index out of range");
@@ -141,8 +208,10 @@ Mesh load_mesh(const std::string& path) {
   if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".stl")
     throw MeshError(path + ": unknown mesh format '" + ext + "' (OBJ, OFF, PLY or STL)");
   if (ext == ".obj") check_obj_lines(path);
-  Mesh m = ext == ".ply" && ply_has_triangle_strips(path) ? read_ply_triangle_strips(path)
-                                                          : flat_arrays(read_with_openmesh(path), path);
+  if (ext == ".off") check_off_lines(path);
+  bool has_strips = false;
+  Mesh strips = ext == ".ply" ? read_ply(path, has_strips) : Mesh{};  // checks every value
+  Mesh m = has_strips ? std::move(strips) : flat_arrays(read_with_openmesh(path), path);
   validate_mesh(m);
   weld_vertices(m);
   if (m.triangles.empty()) throw MeshError(path + ": every face is degenerate (no faces left after welding)");

@@ -163,17 +163,34 @@ Mesh cad_part(float res) {
   return m;
 }
 
+using Maker = Mesh (*)(float resolution);
+
+const std::vector<std::pair<std::string, Maker>>& makers() {
+  static const std::vector<std::pair<std::string, Maker>> table = {
+      {"torus", torus}, {"sphere", sphere}, {"cad", cad_part}, {"plane", plane}, {"cylinder", cylinder}};
+  return table;
+}
+
 }  // namespace
+
+const std::vector<std::string>& procedural_kinds() {
+  static const std::vector<std::string> kinds = [] {
+    std::vector<std::string> k;
+    for (const auto& [name, make] : makers()) k.push_back(name);
+    return k;
+  }();
+  return kinds;
+}
 
 Mesh make_procedural(const std::string& kind, float resolution) {
   if (!(resolution > 0 && resolution <= 16)) throw std::invalid_argument("procedural resolution must be in (0, 16]");
-  Mesh m = kind == "torus"      ? torus(resolution)
-           : kind == "sphere"   ? sphere(resolution)
-           : kind == "cad"      ? cad_part(resolution)
-           : kind == "plane"    ? plane(resolution)
-           : kind == "cylinder" ? cylinder(resolution)
-                                : throw std::invalid_argument("unknown procedural mesh '" + kind +
-                                                              "' (torus, sphere, cad, plane, cylinder)");
+  auto it = std::find_if(makers().begin(), makers().end(), [&](const auto& entry) { return entry.first == kind; });
+  if (it == makers().end()) {
+    std::string known;
+    for (const auto& k : procedural_kinds()) known += (known.empty() ? "" : ", ") + k;
+    throw std::invalid_argument("unknown procedural mesh '" + kind + "' (" + known + ")");
+  }
+  Mesh m = it->second(resolution);
   m.name = "procedural:" + kind;
   weld_vertices(m);
   compute_normals(m);

@@ -11,5 +11,7 @@ namespace plumbago {
 // Kinds: "torus", "sphere", "cad" (a part with sharp creases next to smooth patches),
 // "plane", "cylinder". `resolution` scales the tessellation (1 = default).
 Mesh make_procedural(const std::string& kind, float resolution = 1.0f);
+// The kinds above, in that order.
+const std::vector<std::string>& procedural_kinds();
 
 }  // namespace plumbago

@@ -1,6 +1,7 @@
 // Scene files (docs/scene-format.md, scenes/scene.schema.json) and the built-in scenes.
 #include "common/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -289,8 +290,11 @@ std::vector<std::string> builtin_scene_names() { return {"torus", "sphere", "cad
 
 Scene builtin_scene(const std::string& name) {
   auto names = builtin_scene_names();
-  if (std::find(names.begin(), names.end(), name) == names.end())
-    throw SceneError("builtin:" + name + ": no such built-in scene (torus, sphere, cad)");
+  if (std::find(names.begin(), names.end(), name) == names.end()) {
+    std::string known;
+    for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+    throw SceneError("builtin:" + name + ": no such built-in scene (" + known + ")");
+  }
   return parse_scene("{\"mesh\": {\"procedural\": \"" + name + "\"}}", "builtin:" + name, ".");
 }
 

@@ -127,7 +127,7 @@ TEST(Procedural, CadPartHasSharpCreasesAndSmoothPatches) {
 }
 
 TEST(Procedural, ResolutionScalesTheTessellation) {
-  for (const char* kind : {"torus", "sphere", "cad", "plane", "cylinder"})
+  for (const auto& kind : procedural_kinds())
     EXPECT_GT(make_procedural(kind, 2).triangles.size(), 2 * make_procedural(kind, 1).triangles.size()) << kind;
 }
 

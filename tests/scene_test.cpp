@@ -2,8 +2,13 @@
 // relative paths, built-in scenes.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 
+#include "common/passes.hpp"
+#include "common/procedural.hpp"
 #include "common/scene.hpp"
 #include "tests/temp_dir.hpp"
 
@@ -125,6 +130,33 @@ TEST(BuiltinScenes, EachHasOneObjectAndAFittedCamera) {
     EXPECT_GT(s.camera.far, s.camera.near) << name;
   }
   EXPECT_THROW(builtin_scene("teapot"), SceneError);
+}
+
+// Every example scene loads (those of a shared model only where the model is there).
+TEST(SceneFile, ExampleScenesLoad) {
+  size_t loaded = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(PLUMBAGO_SOURCE_DIR) + "/scenes")) {
+    std::string path = entry.path().string();
+    if (entry.path().extension() != ".json" || path.ends_with(".schema.json")) continue;
+    std::ifstream in(path);
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    if (text.find("shared/models/") != std::string::npos && !std::filesystem::exists(PLUMBAGO_MODELS_DIR)) continue;
+    Scene s = load_scene(path);
+    EXPECT_FALSE(s.objects.empty()) << path;
+    ++loaded;
+  }
+  EXPECT_GE(loaded, 2u);  // at least the procedural ones
+}
+
+// The JSON Schema names the same effects and procedural kinds as the program.
+TEST(SceneFile, SchemaListsTheProgramsEffectsAndKinds) {
+  std::ifstream in(std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/scene.schema.json");
+  nlohmann::json schema = nlohmann::json::parse(in);
+  std::vector<std::string> effects;
+  for (const auto& e : effect_table()) effects.push_back(e.name);
+  EXPECT_EQ(schema["properties"]["effects"]["items"]["enum"].get<std::vector<std::string>>(), effects);
+  EXPECT_EQ(schema["$defs"]["mesh"]["oneOf"][1]["properties"]["procedural"]["enum"].get<std::vector<std::string>>(),
+            procedural_kinds());
 }
 
 }  // namespace
