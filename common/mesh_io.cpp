@@ -4,6 +4,8 @@
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -78,7 +80,9 @@ void check_obj_lines(const std::string& path) {
 void check_off_lines(const std::string& path) {
   std::ifstream in(path);
   std::string line;
-  size_t number = 0, counts_seen = 0, vertices = 0, faces = 0, rows = 0;
+  size_t number = 0, vertices = 0, faces = 0, rows = 0;
+  bool counts_read = false;
+  auto count = [](const std::string& word) { return size_t(std::clamp(std::stod(word), 0.0, 1e15)); };
   while (std::getline(in, line)) {
     ++number;
     std::istringstream ss(line.substr(0, line.find('#')));
@@ -92,18 +96,21 @@ void check_off_lines(const std::string& path) {
     for (const auto& w : words)
       if (!is_finite_number(w))
         throw MeshError(path + ":" + std::to_string(number) + ": '" + w + "' is not a finite number");
-    if (counts_seen == 0) {  // "V F E"
-      vertices = std::stoul(words[0]);
-      faces = words.size() > 1 ? std::stoul(words[1]) : 0;
-      counts_seen = 1;
+    if (!counts_read) {  // "V F E"
+      vertices = count(words[0]);
+      faces = words.size() > 1 ? count(words[1]) : 0;
+      counts_read = true;
     } else if (size_t row = rows++; row >= vertices && row < vertices + faces) {  // "n i1 ... in [color]"
-      size_t n = std::stoul(words[0]);
+      size_t n = count(words[0]);
       for (size_t k = 1; k <= n && k < words.size(); ++k)
         if (std::stod(words[k]) < 0 || std::stod(words[k]) >= double(vertices))
           throw MeshError(path + ":" + std::to_string(number) + ": face index " + words[k] +
                           " is out of range (" + std::to_string(vertices) + " vertices, counted from 0)");
     }
   }
+  if (rows < vertices + faces)  // before OpenMesh reserves room for what the counts say
+    throw MeshError(path + ": the file ends early (" + std::to_string(vertices) + " vertices and " +
+                    std::to_string(faces) + " faces declared, " + std::to_string(rows) + " lines of them found)");
 }
 
 // OpenMesh's error stream captured and its log silenced while alive (OpenMesh would

@@ -153,6 +153,7 @@ TEST(MeshIo, RefusalsNameTheFileAndLine) {
                  {"range.ply:13:", "face 0", "index 7"});
   expect_refused(tmp.write("short.ply", std::string(kPlyHeader) + "0 0 0\n1 0 0\n"), {"short.ply", "ends early"});
   expect_refused(tmp.write("range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"), {"range.off:6:", "face index 7"});
+  expect_refused(tmp.write("short.off", "OFF\n99999999999 1 0\n0 0 0\n"), {"short.off", "ends early"});
   expect_refused(tmp.write("nan.off", "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n"), {"nan.off:4:", "'nan'"});
 }
 
