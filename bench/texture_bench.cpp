@@ -1,7 +1,8 @@
-// Texture generation (SPEC 1.2-1.4) at the default sizes: each generator's time.
+// Texture generation (SPEC 1.2-1.4, 3.2) at the default sizes: each generator's time.
 #include <benchmark/benchmark.h>
 
 #include "common/distortion.hpp"
+#include "common/noise.hpp"
 #include "common/paper.hpp"
 #include "common/params.hpp"
 #include "common/pencil_texture.hpp"
@@ -30,6 +31,13 @@ void BM_DistortionGrids(benchmark::State& state) {
   state.counters["copies"] = p.copies;
 }
 BENCHMARK(BM_DistortionGrids)->Unit(benchmark::kMillisecond);
+
+void BM_SketchyNoise(benchmark::State& state) {
+  auto p = ParamSet{}.get<NoiseTextureParams>();
+  for (auto _ : state) benchmark::DoNotOptimize(perlin_noise_texture(p, 1));
+  state.counters["size"] = p.size;
+}
+BENCHMARK(BM_SketchyNoise)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace plumbago::bench

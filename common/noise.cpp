@@ -70,4 +70,14 @@ float TileableWorley::operator()(glm::vec2 uv) const {
   return best;
 }
 
+Image perlin_noise_texture(const NoiseTextureParams& p, uint32_t seed) {
+  TileablePerlin noise(p.period, seed, "sketchy-noise");
+  Image img(p.size, p.size, 1);
+  float to_lattice = float(p.period) / float(p.size);
+  for (int y = 0; y < p.size; ++y)
+    for (int x = 0; x < p.size; ++x)
+      img.at(x, y) = std::clamp(float(M_SQRT2) * noise(glm::vec2(float(x) + 0.5f, float(y) + 0.5f) * to_lattice), -1.0f, 1.0f);
+  return img;
+}
+
 }  // namespace plumbago

@@ -9,13 +9,16 @@
 
 #include <glm/glm.hpp>
 
+#include "common/image.hpp"
+
 namespace plumbago {
 
 class TileablePerlin {
  public:
-  // Gradients on a period x period lattice.
+  // Unit gradients on a period x period lattice.
   TileablePerlin(int period, uint32_t seed, const std::string& name);
-  // Gradient noise at p (lattice units), about in [-0.7, 0.7]; wraps every `period`.
+  // Gradient noise at p (lattice units), in [-sqrt(1/2), sqrt(1/2)], 0 at lattice
+  // points; wraps every `period`.
   float operator()(glm::vec2 p) const;
   int period() const { return period_; }
 
@@ -41,5 +44,21 @@ class TileableWorley {
   int cells_;
   std::vector<glm::vec2> points_;  // one per cell, in cell-local [0,1)^2
 };
+
+// The noise texture sketchy drawing turns into turbulence (SPEC 3.2; Nienhaus & Döllner
+// 2004 §3.2): one octave of tileable Perlin noise; the octaves of the turbulence are
+// this texture sampled at 2^i times the frequency with GL_REPEAT.
+struct NoiseTextureParams {
+  static constexpr const char* stage = "noise";
+  int size, period;
+  template <class V>
+  void visit(V& v) {
+    v.integer(size, "size", 256, 8, 4096, "width and height of the tileable Perlin noise texture, texels");
+    v.integer(period, "period", 8, 1, 1024, "Perlin lattice cells across the texture (features of size/period texels)");
+  }
+};
+
+// size x size, 1 channel, Perlin noise scaled to [-1, 1], sampled at texel centers.
+Image perlin_noise_texture(const NoiseTextureParams& p, uint32_t seed);
 
 }  // namespace plumbago

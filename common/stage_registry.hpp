@@ -10,6 +10,7 @@
 #include "common/gbuffer.hpp"
 #include "common/distortion.hpp"
 #include "common/interior.hpp"
+#include "common/noise.hpp"
 #include "common/paper.hpp"
 #include "common/pencil_texture.hpp"
 
@@ -19,6 +20,6 @@ template <class... T>
 struct TypeList {};
 
 using AllParamStructs = TypeList<CurvatureParams, PencilParams, GBufferParams, EdgeDetectParams, ContourLightParams, ContourParams,
-                                 InteriorParams, PaperParams, ComposeParams>;
+                                 InteriorParams, PaperParams, ComposeParams, NoiseTextureParams>;
 
 }  // namespace plumbago

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "common/distortion.hpp"
+#include "common/noise.hpp"
 #include "common/paper.hpp"
 #include "common/pencil_texture.hpp"
 
@@ -29,7 +30,8 @@ Image offset_view(const Image& grid, float bound) {
   return v;
 }
 
-Image normal_view(const Image& n) {
+// Signed values in [-1, 1] (normals, noise) mapped to [0, 1].
+Image signed_view(const Image& n) {
   Image v = n;
   for (float& x : v.data) x = x * 0.5f + 0.5f;
   return v;
@@ -51,11 +53,12 @@ std::map<std::string, Image> texture_gallery(const ParamSet& params, uint32_t se
   out["contour_texture"] = layers.at(size_t(std::min(contour.texture_layer, pencil.layers - 1)));
   Paper paper = make_paper(params.get<PaperParams>(), seed);
   out["paper_height"] = paper.height;
-  out["paper_normal"] = normal_view(paper.normal);
+  out["paper_normal"] = signed_view(paper.normal);
   out["paper_color"] = paper.color;
   auto grids = distortion_grids(contour, width, height, seed);
   for (size_t k = 0; k < grids.size(); ++k)
     out["contour_offsets_" + std::to_string(k)] = offset_view(grids[k], contour.shake_amplitude + contour.shake_noise);
+  out["sketchy_noise"] = signed_view(perlin_noise_texture(params.get<NoiseTextureParams>(), seed));
   return out;
 }
 

@@ -11,7 +11,8 @@
 namespace plumbago {
 
 // Name -> viewable image (PNG ready): each pencil layer, a contact sheet of the stack,
-// the contour texture, paper height/normal/color, each copy's offset field.
+// the contour texture, paper height/normal/color, each copy's offset field, the
+// sketchy noise.
 std::map<std::string, Image> texture_gallery(const ParamSet& params, uint32_t seed, int width, int height);
 
 // Layers side by side, `columns` across, layer 0 at the top left.
