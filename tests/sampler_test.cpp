@@ -49,6 +49,32 @@ TEST(Sampler, NearestPicksTheTexelContainingTheCoordinate) {
   EXPECT_FLOAT_EQ(sample(img, {-0.01f, 0.5f}, nearest).x, 3.0f);
 }
 
+TEST(Sampler, NearestAtTheUpperEdgeClampsOrWraps) {
+  Image img = ramp(4, 1);
+  SamplerState clamp{Filter::Nearest};
+  SamplerState repeat{Filter::Nearest, Wrap::Repeat, Wrap::Repeat};
+  EXPECT_FLOAT_EQ(sample(img, {1.0f, 0.5f}, clamp).x, 3.0f);   // u = 4 is past the last texel
+  EXPECT_FLOAT_EQ(sample(img, {1.0f, 0.5f}, repeat).x, 0.0f);  // and wraps to the first
+}
+
+TEST(Sampler, NegativeCoordinatesRepeatWholePeriodsAndClampToTheFirstTexel) {
+  Image img = ramp(4, 3);
+  SamplerState repeat{Filter::Linear, Wrap::Repeat, Wrap::Repeat};
+  // s = 1.25 / 4 and s - 3 land on the same point of the tile: u = 0.75 and -11.25.
+  EXPECT_FLOAT_EQ(sample(img, {0.3125f - 3.0f, 0.5f / 3 - 2.0f}, repeat).x, 0.75f);
+  EXPECT_FLOAT_EQ(sample(img, {0.3125f, 0.5f / 3}, repeat).x, 0.75f);
+  EXPECT_FLOAT_EQ(sample(img, {-0.3f, -0.2f}, {}).x, 0.0f);
+  EXPECT_FLOAT_EQ(sample(img, {-0.3f, 1.5f / 3}, {}).x, 10.0f);  // s clamped to column 0; t at row 1
+}
+
+TEST(Sampler, FetchReadsTexelsAndClampsOutsideTheImage) {
+  Image img = ramp(4, 3);
+  EXPECT_EQ(fetch(img, {2, 1}).x, 12.0f);
+  EXPECT_EQ(fetch(img, {-5, 1}).x, 10.0f);
+  EXPECT_EQ(fetch(img, {9, 7}).x, 23.0f);
+  EXPECT_EQ(fetch(img, {0, 0}), glm::vec4(0, 0, 0, 1));  // missing channels read 0, alpha 1
+}
+
 TEST(Sampler, TrilinearBlendsNeighboringLayersAndClampsInR) {
   std::vector<Image> layers = {Image(2, 2, 1, 0.0f), Image(2, 2, 1, 1.0f), Image(2, 2, 1, 3.0f)};
   SamplerState s{Filter::Linear, Wrap::Repeat, Wrap::Repeat, Wrap::ClampToEdge};
