@@ -1,4 +1,5 @@
 #include "apps/parity.hpp"
+#include "apps/sketchy_parity.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -35,13 +36,6 @@ namespace {
 // SPEC §5 tolerances.
 constexpr double kDepthTolerance = 1e-4;   // normalized depth, raster vs ray
 constexpr double kNormalTolerance = 1e-3;  // unit normals, raster vs ray
-// Barycentrics, raster vs ray: the rasterizer snaps vertices to 1/2^GL_SUBPIXEL_BITS of a
-// pixel (8 bits on llvmpipe), which moves a pixel's barycentrics by about
-// (1/256 px) / (the triangle's extent in px): 1e-3 for a 4 px triangle. Measured max on the
-// Stanford bunny at 800x800 (many 2-5 px triangles): 1.08e-3. Allowed: 4e-3 (1 px triangles).
-constexpr double kBaryTolerance = 4e-3;
-constexpr double kFloatTolerance = 1e-4;   // a float stage fed identical inputs (measured ~1e-7)
-constexpr double kByteTolerance = 2.0 / 255.0;
 // A float stage that samples textures bilinearly: llvmpipe filters float textures with
 // float weights (tests/sampler_test.cpp: 1.2e-6), but the texture coordinates themselves
 // come out of slightly different float expressions; measured max 2e-5 on llvmpipe.
@@ -78,12 +72,6 @@ Image same_triangle(const GBuffer& a, const GBuffer& b, const Image& interior) {
   return m;
 }
 
-StageParity compared(std::string name, Image ref, Image gpu, double tol, const Image* mask, std::string note) {
-  StageParity s{std::move(name), compare_images(ref, gpu, tol, mask), false, std::move(ref), std::move(gpu), std::move(note)};
-  s.pass = s.diff.over_tolerance == 0;
-  return s;
-}
-
 double share(const Image& mask) {
   double n = 0;
   for (float v : mask.data) n += v > 0.5f;
@@ -106,7 +94,7 @@ std::vector<StageParity> gbuffer_parity(const Scene& scene, const GBuffer& ref) 
       compared("gbuffer.normal", ref.normal, ras.normal, kNormalTolerance, &interior, band),
       compared("gbuffer.face_normal", ref.face_normal, ras.face_normal, kNormalTolerance, &triangle,
                "interior pixels that both backends give the same triangle"),
-      compared("gbuffer.bary", ref.bary, ras.bary, kBaryTolerance, &triangle,
+      compared("gbuffer.bary", ref.bary, ras.bary, parity_tolerance::kBary, &triangle,
                "interior pixels that both backends give the same triangle"),
       compared("gbuffer.gouraud", ref.gouraud, ras.gouraud, kNormalTolerance, &interior, band),
   };
@@ -120,7 +108,7 @@ StageParity edge_parity(const Scene& scene, const GBuffer& ref) {
   gpu::EdgeDetectPass().run(inputs, p, view_space_lights(scene), scene.params.get<ContourLightParams>(), out, lit);
   Image gpu_out = gpu::download_texture(out, 1);
   gpu::Context::get().check_errors("edge_detect parity");
-  return compared("edge_detect", reference::contour_darkness(ref, p), gpu_out, kFloatTolerance, nullptr,
+  return compared("edge_detect", reference::contour_darkness(ref, p), gpu_out, parity_tolerance::kFloat, nullptr,
                   "both fed the reference G-buffer; float target");
 }
 
@@ -137,7 +125,7 @@ StageParity compose_parity(const Scene& scene, const GBuffer& ref) {
   gpu::ComposePass().run(c, true, i, true, color, true, p, out);
   Image gpu_out = gpu::download_texture(out, 3);
   gpu::Context::get().check_errors("compose parity");
-  return compared("compose", reference::compose(contours, interior, paper, p), gpu_out, kByteTolerance, nullptr,
+  return compared("compose", reference::compose(contours, interior, paper, p), gpu_out, parity_tolerance::kByte, nullptr,
                   "both fed the reference contours, an interior and the paper color; 8-bit target");
 }
 
@@ -179,7 +167,7 @@ StageParity interior_intensity_parity(const Scene& scene, const GBuffer& ref) {
   gpu::PencilInteriorPass().run(inputs, lights, white, white, {}, p, 0.0f, darkness, out);
   Image gpu_out = gpu::download_texture(out, 1);
   gpu::Context::get().check_errors("interior_intensity parity");
-  return compared("interior_intensity", reference::interior_intensity(ref, lights, p), gpu_out, kFloatTolerance,
+  return compared("interior_intensity", reference::interior_intensity(ref, lights, p), gpu_out, parity_tolerance::kFloat,
                   nullptr, "both fed the reference G-buffer; second output of the GPU's pencil_interior pass");
 }
 
@@ -194,7 +182,7 @@ StageParity contour_light_parity(const Scene& scene, const GBuffer& ref) {
   Image gpu_out = gpu::download_texture(out, 1);
   gpu::Context::get().check_errors("contour_light parity");
   return compared("contour_light", reference::lit_contour_darkness(darkness, ref, lights, p), gpu_out,
-                  kFloatTolerance, nullptr,
+                  parity_tolerance::kFloat, nullptr,
                   "both fed the reference G-buffer; the GPU lights its own d (second output of edge_detect)");
 }
 
@@ -250,7 +238,7 @@ std::vector<StageParity> texture_rotation_parity(const Scene& scene, const GBuff
 std::vector<StageParity> end_to_end_parity(const Scene& scene, const GBuffer&) {
   Frame ref = reference::render(scene);
   Frame gpu_frame = gpu::Renderer(scene).render();
-  StageParity s = compared("end_to_end", ref.color, gpu_frame.color, kByteTolerance, nullptr,
+  StageParity s = compared("end_to_end", ref.color, gpu_frame.color, parity_tolerance::kByte, nullptr,
                            "whole frames, each backend from its own G-buffer");
   s.pass = s.diff.over_tolerance <= kEndToEndShare;
   return {s};
@@ -269,12 +257,21 @@ const std::vector<std::pair<std::string, ParityFn>>& parity_table() {
        [](const Scene& s, const GBuffer& g) { return std::vector{interior_intensity_parity(s, g)}; }},
       {"pencil_interior", pencil_interior_parity},
       {"compose", [](const Scene& s, const GBuffer& g) { return std::vector{compose_parity(s, g)}; }},
+      {"sketchy_enlarged", [](const Scene& s, const GBuffer&) { return sketchy_enlarged_parity(s); }},
+      {"sketchy_maps", [](const Scene& s, const GBuffer&) { return sketchy_maps_parity(s); }},
+      {"sketchy_composite", [](const Scene& s, const GBuffer&) { return sketchy_composite_parity(s); }},
       {"end_to_end", end_to_end_parity},
   };
   return table;
 }
 
 }  // namespace
+
+StageParity compared(std::string name, Image ref, Image gpu, double tol, const Image* mask, std::string note) {
+  StageParity s{std::move(name), compare_images(ref, gpu, tol, mask), false, std::move(ref), std::move(gpu), std::move(note)};
+  s.pass = s.diff.over_tolerance == 0;
+  return s;
+}
 
 Image interior_mask(const GBuffer& a, const GBuffer& b) {
   Image m(a.depth.width, a.depth.height, 1);

@@ -20,6 +20,20 @@ struct StageParity {
   std::string note;      // what was excluded, and why the tolerance is what it is
 };
 
+// SPEC §5 tolerances shared by the parity checks.
+namespace parity_tolerance {
+// Barycentrics, raster vs ray: the rasterizer snaps vertices to 1/2^GL_SUBPIXEL_BITS of a
+// pixel (8 bits on llvmpipe), which moves a pixel's barycentrics by about
+// (1/256 px) / (the triangle's extent in px): 1e-3 for a 4 px triangle. Measured max on the
+// Stanford bunny at 800x800 (many 2-5 px triangles): 1.08e-3. Allowed: 4e-3 (1 px triangles).
+constexpr double kBary = 4e-3;
+constexpr double kFloat = 1e-4;  // a float stage fed identical inputs (measured ~1e-7)
+constexpr double kByte = 2.0 / 255.0;
+}  // namespace parity_tolerance
+
+// One comparison; it passes when no pixel (within `mask`, if given) is over `tolerance`.
+StageParity compared(std::string name, Image reference, Image gpu, double tolerance, const Image* mask, std::string note);
+
 // Stage names `run_parity` knows, in pipeline order.
 std::vector<std::string> parity_stages();
 

@@ -39,6 +39,6 @@ class Stopwatch {
 
 // The G-buffer channels as named images (ids as floats), for dumps and comparisons.
 struct GBuffer;
-void add_gbuffer_buffers(const GBuffer& g, std::map<std::string, Image>& out);
+void add_gbuffer_buffers(const GBuffer& g, std::map<std::string, Image>& out, const std::string& prefix = "gbuffer");
 
 }  // namespace plumbago

@@ -66,17 +66,17 @@ Image normalized_depth(const GBuffer& g) {
 
 namespace plumbago {
 
-void add_gbuffer_buffers(const GBuffer& g, std::map<std::string, Image>& out) {
-  out["gbuffer.normal"] = g.normal;
-  out["gbuffer.face_normal"] = g.face_normal;
-  out["gbuffer.depth"] = normalized_depth(g);
-  out["gbuffer.bary"] = g.bary;
-  out["gbuffer.gouraud"] = g.gouraud;
-  if (!g.theta_min.empty()) out["gbuffer.theta_min"] = g.theta_min;
-  if (!g.theta_max.empty()) out["gbuffer.theta_max"] = g.theta_max;
+void add_gbuffer_buffers(const GBuffer& g, std::map<std::string, Image>& out, const std::string& prefix) {
+  out[prefix + ".normal"] = g.normal;
+  out[prefix + ".face_normal"] = g.face_normal;
+  out[prefix + ".depth"] = normalized_depth(g);
+  out[prefix + ".bary"] = g.bary;
+  out[prefix + ".gouraud"] = g.gouraud;
+  if (!g.theta_min.empty()) out[prefix + ".theta_min"] = g.theta_min;
+  if (!g.theta_max.empty()) out[prefix + ".theta_max"] = g.theta_max;
   Image ids(g.ids.width, g.ids.height, 2);
   for (size_t i = 0; i < g.ids.data.size(); ++i) ids.data[i] = float(g.ids.data[i]);
-  out["gbuffer.ids"] = ids;
+  out[prefix + ".ids"] = ids;
 }
 
 }  // namespace plumbago

@@ -13,6 +13,9 @@ int wrap(int i, int n) { return ((i % n) + n) % n; }
 
 float fade(float t) { return t * t * t * (t * (t * 6 - 15) + 10); }  // Perlin 2002
 
+// 2/sqrt(3): 3D gradient noise with unit gradients lies within +-sqrt(3)/2.
+constexpr float kUnitRange3 = 1.15470054f;
+
 }  // namespace
 
 TileablePerlin::TileablePerlin(int period, uint32_t seed, const std::string& name) : period_(std::max(1, period)) {
@@ -77,6 +80,54 @@ Image perlin_noise_texture(const NoiseTextureParams& p, uint32_t seed) {
   for (int y = 0; y < p.size; ++y)
     for (int x = 0; x < p.size; ++x)
       img.at(x, y) = std::clamp(float(M_SQRT2) * noise(glm::vec2(float(x) + 0.5f, float(y) + 0.5f) * to_lattice), -1.0f, 1.0f);
+  return img;
+}
+
+TileablePerlin3::TileablePerlin3(int period, uint32_t seed, const std::string& name) : period_(std::max(1, period)) {
+  Rng rng(seed, name);
+  gradients_.resize(size_t(period_) * period_ * period_);
+  for (auto& g : gradients_) {  // uniform on the sphere
+    double z = rng.uniform(-1, 1), a = rng.uniform(0, 2 * M_PI), r = std::sqrt(1 - z * z);
+    g = {float(r * std::cos(a)), float(r * std::sin(a)), float(z)};
+  }
+}
+
+glm::vec3 TileablePerlin3::gradient(int i, int j, int k) const {
+  size_t n = size_t(period_);
+  return gradients_[(size_t(wrap(k, period_)) * n + size_t(wrap(j, period_))) * n + size_t(wrap(i, period_))];
+}
+
+float TileablePerlin3::operator()(glm::vec3 p) const {
+  glm::vec3 cell = glm::floor(p), f = p - cell;
+  glm::ivec3 c(cell);
+  float corner[8];
+  for (int n = 0; n < 8; ++n) {
+    glm::ivec3 o(n & 1, (n >> 1) & 1, (n >> 2) & 1);
+    corner[n] = glm::dot(gradient(c.x + o.x, c.y + o.y, c.z + o.z), f - glm::vec3(o));
+  }
+  float u = fade(f.x), v = fade(f.y), w = fade(f.z);
+  float front = glm::mix(glm::mix(corner[0], corner[1], u), glm::mix(corner[2], corner[3], u), v);
+  float back = glm::mix(glm::mix(corner[4], corner[5], u), glm::mix(corner[6], corner[7], u), v);
+  return glm::mix(front, back, w);
+}
+
+std::vector<Image> perlin_noise_texture_3d(int size, int period, uint32_t seed) {
+  TileablePerlin3 noise(period, seed, "sketchy-noise-3d");
+  float to_lattice = float(period) / float(size);
+  std::vector<Image> layers(size_t(size), Image(size, size, 1));
+  for (int z = 0; z < size; ++z)
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) {
+        glm::vec3 p = (glm::vec3(x, y, z) + 0.5f) * to_lattice;
+        layers[size_t(z)].at(x, y) = std::clamp(kUnitRange3 * noise(p), -1.0f, 1.0f);
+      }
+  return layers;
+}
+
+Image white_noise_texture(int size, uint32_t seed) {
+  Rng rng(seed, "sketchy-white-noise");
+  Image img(size, size, 2);
+  for (float& v : img.data) v = float(rng.uniform());
   return img;
 }
 

@@ -45,6 +45,28 @@ class TileableWorley {
   std::vector<glm::vec2> points_;  // one per cell, in cell-local [0,1)^2
 };
 
+// Tileable 3D Perlin gradient noise on a period^3 lattice (the `object` style's 3D
+// noise texture, Nienhaus & Döllner §4.3).
+class TileablePerlin3 {
+ public:
+  TileablePerlin3(int period, uint32_t seed, const std::string& name);
+  // Gradient noise at p (lattice units), 0 at lattice points; wraps every `period`.
+  float operator()(glm::vec3 p) const;
+
+ private:
+  glm::vec3 gradient(int i, int j, int k) const;
+  int period_;
+  std::vector<glm::vec3> gradients_;
+};
+
+// size^3 texels as `size` layers, TileablePerlin3 with `period` cells across, scaled to
+// [-1, 1] and sampled at texel centers (sketchy.noise3d_size, sketchy.noise3d_period).
+std::vector<Image> perlin_noise_texture_3d(int size, int period, uint32_t seed);
+
+// size x size, 2 channels of independent uniform values in [0, 1): the uncorrelated
+// offsets of the `rough` style (SPEC 3.5), read with nearest filtering.
+Image white_noise_texture(int size, uint32_t seed);
+
 // The noise texture sketchy drawing turns into turbulence (SPEC 3.2; Nienhaus & Döllner
 // 2004 §3.2): one octave of tileable Perlin noise; the octaves of the turbulence are
 // this texture sampled at 2^i times the frequency with GL_REPEAT.

@@ -4,7 +4,15 @@
 #include <set>
 #include <stdexcept>
 
+#include "common/sketchy.hpp"
+
 namespace plumbago {
+
+namespace {
+
+bool object_style(const ParamSet& p) { return p.get<SketchyParams>().style == SketchyStyle::Object; }
+
+}  // namespace
 
 const std::vector<PassDef>& pass_table() {
   static const std::vector<PassDef> table = {
@@ -22,6 +30,13 @@ const std::vector<PassDef>& pass_table() {
       {"pencil_interior", PassKind::Stage, {"interior_intensity", "curvature", "pencil_textures"},
        "tone to layer, rotated pencil textures, 3-way blending, cross hatching, paper effect (SPEC 2.6-2.10)"},
       {"compose", PassKind::Stage, {"gbuffer"}, "contours, interior and paper into the final image (SPEC 2.11)"},
+      {"sketchy_noise", PassKind::Preprocessing, {}, "noise textures of the sketchy uncertainty (SPEC 3.2, 3.5)"},
+      {"sketchy_gbuffer", PassKind::Stage, {}, "G-buffer of the objects whose style is sketchy (SPEC 3.1)"},
+      {"sketchy_enlarged", PassKind::Stage, {}, "noise coordinates on the enlarged sketchy objects (SPEC 3.5, object style)",
+       object_style},
+      {"sketchy_maps", PassKind::Stage, {"sketchy_gbuffer"}, "edge and shade maps of the sketchy objects (SPEC 3.1)"},
+      {"sketchy_composite", PassKind::Stage, {"sketchy_maps", "sketchy_noise", "sketchy_enlarged"},
+       "perturbed edges and shade, drawn as a depth sprite over the ordinary objects (SPEC 3.2-3.4)"},
   };
   return table;
 }
@@ -32,6 +47,8 @@ const std::vector<EffectDef>& effect_table() {
       {"interior", {"pencil_interior", "compose"}, "pencil textures along curvature directions (Lee 2006 §5)"},
       {"crosshatch", {"pencil_interior", "compose"}, "cross hatching in dark regions (Lee 2006 Fig. 7)"},
       {"paper", {"paper", "compose"}, "stroke/paper interaction and paper color (Lee 2006 §5.5)"},
+      {"sketchy", {"sketchy_composite"},
+       "sketchy drawing of the objects whose style is sketchy (Nienhaus & Doellner 2004); on by itself when one is"},
   };
   return table;
 }
@@ -55,21 +72,23 @@ const PassDef& find_pass(const std::string& name) {
   throw std::logic_error("pass table names an unknown pass '" + name + "'");
 }
 
-void add_with_needs(const std::string& name, std::set<std::string>& chosen) {
+void add_with_needs(const std::string& name, const ParamSet& params, std::set<std::string>& chosen) {
+  const PassDef& pass = find_pass(name);
+  if (pass.wanted && !pass.wanted(params)) return;
   if (!chosen.insert(name).second) return;
-  for (const auto& n : find_pass(name).needs) add_with_needs(n, chosen);
+  for (const auto& n : pass.needs) add_with_needs(n, params, chosen);
 }
 
 }  // namespace
 
-std::vector<std::string> passes_for(const std::vector<std::string>& effects) {
+std::vector<std::string> passes_for(const std::vector<std::string>& effects, const ParamSet& params) {
   std::set<std::string> chosen;
   for (const auto& effect : effects) {
     auto it = std::find_if(effect_table().begin(), effect_table().end(),
                            [&](const EffectDef& e) { return e.name == effect; });
     if (it == effect_table().end())
       throw std::invalid_argument("unknown effect '" + effect + "' (known: " + effect_names() + ")");
-    for (const auto& p : it->passes) add_with_needs(p, chosen);
+    for (const auto& p : it->passes) add_with_needs(p, params, chosen);
   }
   std::vector<std::string> ordered;
   for (const auto& p : pass_table())

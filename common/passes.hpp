@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "common/params.hpp"
+
 namespace plumbago {
 
 enum class PassKind { Preprocessing, Stage };
@@ -15,6 +17,7 @@ struct PassDef {
   PassKind kind;
   std::vector<std::string> needs;  // passes whose outputs this one reads
   std::string doc;
+  bool (*wanted)(const ParamSet&) = nullptr;  // when set, the pass runs only where this holds
 };
 
 struct EffectDef {
@@ -29,9 +32,9 @@ const std::vector<EffectDef>& effect_table();
 bool is_effect(const std::string& name);
 std::string effect_names();  // "contours, ..." for messages
 
-// The passes `effects` need, dependencies included, in table order. Throws
-// std::invalid_argument naming an unknown effect.
-std::vector<std::string> passes_for(const std::vector<std::string>& effects);
+// The passes `effects` need with `params`, dependencies included, in table order.
+// Throws std::invalid_argument naming an unknown effect.
+std::vector<std::string> passes_for(const std::vector<std::string>& effects, const ParamSet& params = {});
 
 bool is_preprocessing(const std::string& pass);
 

@@ -42,6 +42,11 @@ Preprocessed preprocess(const Scene& scene, const std::vector<std::string>& pass
     out.paper = make_paper(scene.params.get<PaperParams>(), scene.seed);
     out.ran.push_back({"paper", w.ms()});
   }
+  if (has(passes, "sketchy_noise")) {
+    Stopwatch w;
+    out.sketchy_noise = make_sketchy_noise(scene.params, scene.seed);
+    out.ran.push_back({"sketchy_noise", w.ms()});
+  }
   if (has(passes, "curvature")) {
     Stopwatch w;
     auto params = scene.params.get<CurvatureParams>();

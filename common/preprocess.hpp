@@ -10,6 +10,7 @@
 #include "common/frame.hpp"
 #include "common/paper.hpp"
 #include "common/scene.hpp"
+#include "common/sketchy.hpp"
 
 namespace plumbago {
 
@@ -20,6 +21,7 @@ struct Preprocessed {
   std::vector<Curvature> curvature;       // "curvature": one per scene object (SPEC 1.1)
   std::vector<Image> pencil_stack;        // "pencil_textures": the tone stack (SPEC 1.2)
   Paper paper;                            // "paper" (SPEC 1.3)
+  SketchyNoise sketchy_noise;             // "sketchy_noise" (SPEC 3.2, 3.5)
   std::vector<PassTime> ran;              // the steps that ran, with their times
 };
 

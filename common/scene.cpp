@@ -226,6 +226,20 @@ std::string line_and_column(const std::string& text, size_t byte) {
   return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
 
+// The scene's effects; "sketchy" goes with objects of that style (SPEC 3): on by itself
+// when one is, refused when none is. Without "effects": contours for the other objects.
+void set_effects(const json& j, const SceneReader& r, Scene& s) {
+  auto sketchy = [](const SceneObject& o) { return o.style == Style::Sketchy; };
+  bool any_sketchy = std::any_of(s.objects.begin(), s.objects.end(), sketchy);
+  bool all_sketchy = std::all_of(s.objects.begin(), s.objects.end(), sketchy);
+  s.effects.clear();
+  if (j.contains("effects")) s.effects = r.effects(j["effects"], "/effects");
+  else if (!all_sketchy) s.effects = {"contours"};
+  bool listed = std::find(s.effects.begin(), s.effects.end(), "sketchy") != s.effects.end();
+  if (listed && !any_sketchy) r.fail("/effects", "'sketchy' draws the objects whose style is sketchy, and no object has it");
+  if (any_sketchy && !listed) s.effects.push_back("sketchy");
+}
+
 Scene read_scene(const json& j, SceneReader& r, const std::string& source) {
   r.only_keys(j, "", {"mesh", "objects", "camera", "lights", "resolution", "seed", "effects", "params"});
   Scene s;
@@ -245,7 +259,7 @@ Scene read_scene(const json& j, SceneReader& r, const std::string& source) {
     if (!j["seed"].is_number_unsigned() || j["seed"].get<uint64_t>() > 0xFFFFFFFFull) r.fail("/seed", "expected an integer in 0..4294967295");
     s.seed = uint32_t(j["seed"].get<uint64_t>());
   }
-  if (j.contains("effects")) s.effects = r.effects(j["effects"], "/effects");
+  set_effects(j, r, s);
   if (j.contains("params")) r.params(j["params"], "/params", s.params);
   s.camera = j.contains("camera") ? r.camera(j["camera"], "/camera", s) : SceneReader::fitted_camera(s, 35.0f);
   s.lights = j.contains("lights") ? r.lights(j["lights"], "/lights") : default_lights(s.camera);

@@ -13,6 +13,7 @@
 #include "common/noise.hpp"
 #include "common/paper.hpp"
 #include "common/pencil_texture.hpp"
+#include "common/sketchy.hpp"
 
 namespace plumbago {
 
@@ -20,6 +21,6 @@ template <class... T>
 struct TypeList {};
 
 using AllParamStructs = TypeList<CurvatureParams, PencilParams, GBufferParams, EdgeDetectParams, ContourLightParams, ContourParams,
-                                 InteriorParams, PaperParams, ComposeParams, NoiseTextureParams>;
+                                 InteriorParams, PaperParams, ComposeParams, NoiseTextureParams, SketchyParams>;
 
 }  // namespace plumbago

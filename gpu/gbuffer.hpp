@@ -37,6 +37,8 @@ class GBufferPass {
   // `curvature`: one per object for the corner angles of SPEC 2.7, or none.
   explicit GBufferPass(const Scene& scene, const std::vector<Curvature>& curvature = {});
   void render(const Scene& scene, GBufferTargets& targets, const GBufferChannels& channels = {});
+  // The depth buffer of the last render: what later geometry (a depth sprite) is tested against.
+  const Renderbuffer& depth_buffer() const { return depth_test_; }
 
  private:
   struct Batch {

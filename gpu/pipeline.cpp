@@ -17,6 +17,9 @@
 #include "gpu/context.hpp"
 #include "gpu/edge_detect.hpp"
 #include "gpu/gbuffer.hpp"
+#include "gpu/sketchy_composite.hpp"
+#include "gpu/sketchy_enlarged.hpp"
+#include "gpu/sketchy_maps.hpp"
 #include "gpu/timer.hpp"
 
 namespace plumbago::gpu {
@@ -43,20 +46,51 @@ std::vector<std::string> fused(const std::vector<std::string>& stages) {
   return out;
 }
 
+// The sketchy objects' passes and buffers (SPEC 3), made only for a scene that has them.
+struct SketchyState {
+  Scene sketchy;
+  GBufferPass gbuffer_pass{sketchy};
+  GBufferTargets gbuffer;
+  std::unique_ptr<SketchyEnlargedPass> enlarged_pass;  // object style only
+  Texture noise_coordinates, edge_map, shade_map, sprite_depth;
+  SketchyNoiseTextures noise;
+  SketchyMapsPass maps_pass{object_colors(sketchy)};
+  SketchyCompositePass composite_pass;
+
+  SketchyState(const Scene& scene, const SketchyNoise& n, bool object_style)
+      : sketchy(sketchy_objects(scene)),
+        gbuffer(make_gbuffer_targets(scene.width, scene.height, scene.params.get<GBufferParams>().normal_format)),
+        enlarged_pass(object_style ? std::make_unique<SketchyEnlargedPass>(enlarged_scene(sketchy)) : nullptr),
+        noise_coordinates(make_texture(scene.width, scene.height, GL_RGBA32F)),
+        edge_map(make_texture(scene.width, scene.height, GL_RG32F)),
+        shade_map(make_texture(scene.width, scene.height, GL_RGBA8)),
+        sprite_depth(make_texture(scene.width, scene.height, GL_R32F)),
+        noise(upload_sketchy_noise(n)) {
+    set_sampling(edge_map, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);  // darkness is read filtered
+  }
+
+  // The sketchy G-buffer feeds only the edge map: normals of the edge mode, depth, ids.
+  static GBufferChannels channels(const Scene& scene) {
+    bool face = scene.params.get<EdgeDetectParams>().normals == EdgeNormals::Face;
+    return {!face, face, false, false, false, false};
+  }
+};
+
 }  // namespace
 
 struct Renderer::State {
   const Scene& scene;
-  std::vector<std::string> passes = passes_for(scene.effects);
+  Scene ordinary = ordinary_objects(scene);
+  std::vector<std::string> passes = passes_for(scene.effects, scene.params);
   std::vector<std::string> stages = frame_stages(passes);
   std::vector<std::string> gpu_passes = fused(stages);
-  Preprocessed pre = preprocess(scene, passes);
+  Preprocessed pre = preprocess(ordinary, passes);
   ContourInputs contour_inputs = pre.offset_grids.empty() ? ContourInputs{}
                                  : upload_contour_inputs(pre.offset_grids, pre.contour_texture, pre.texture_shifts);
   Texture pencil_stack = pre.pencil_stack.empty() ? make_texture(1, 1, GL_R32F) : upload_texture_3d(pre.pencil_stack, GL_R32F);
   Texture paper_normal = pre.paper.normal.empty() ? make_texture(1, 1, GL_RGBA32F) : upload_texture(pre.paper.normal, GL_RGBA32F);
   Texture paper_color = pre.paper.color.empty() ? make_texture(1, 1, GL_RGBA32F) : upload_texture(pre.paper.color, GL_RGBA32F);
-  GBufferPass gbuffer_pass{scene, pre.curvature};
+  GBufferPass gbuffer_pass{ordinary, pre.curvature};
   EdgeDetectPass edge_pass;
   MultiContourPass multi_contour_pass;
   PencilInteriorPass pencil_interior_pass;
@@ -71,6 +105,9 @@ struct Renderer::State {
   Texture color = make_texture(scene.width, scene.height, GL_RGBA8);
   PassTimer timer;
   GBufferChannels gbuffer_channels = channels_read_by(stages, scene);  // all of them for a dump
+  std::unique_ptr<SketchyState> sketchy = !ran("sketchy_composite") ? nullptr
+      : std::make_unique<SketchyState>(scene, pre.sketchy_noise, ran("sketchy_enlarged"));
+  GBufferChannels sketchy_channels = SketchyState::channels(scene);
 
   explicit State(const Scene& s) : scene(s) {}
 
@@ -92,6 +129,17 @@ struct Renderer::State {
     } else if (pass == "compose") {
       compose_pass.run(multi_contour_darkness, ran("multi_contour"), interior_darkness, ran("pencil_interior"),
                        paper_color, !pre.paper.color.empty(), scene.params.get<ComposeParams>(), color);
+    } else if (pass == "sketchy_gbuffer") {
+      sketchy->gbuffer_pass.render(scene, sketchy->gbuffer, sketchy_channels);
+    } else if (pass == "sketchy_enlarged") {
+      sketchy->enlarged_pass->render(scene.camera, sketchy->noise_coordinates);
+    } else if (pass == "sketchy_maps") {
+      sketchy->maps_pass.run(sketchy->gbuffer, scene.params.get<EdgeDetectParams>(), sketchy->edge_map, sketchy->shade_map);
+    } else if (pass == "sketchy_composite") {
+      SketchyState& s = *sketchy;
+      s.composite_pass.run({s.edge_map, s.shade_map, s.gbuffer, s.noise, s.noise_coordinates},
+                           scene.params.get<SketchyParams>(), color, ran("gbuffer") ? &gbuffer_pass.depth_buffer() : nullptr,
+                           s.sprite_depth);
     } else {
       throw std::runtime_error("pass '" + pass + "' is not implemented on the GPU backend");
     }
@@ -107,6 +155,18 @@ struct Renderer::State {
     glFinish();
   }
 };
+
+namespace {
+
+void add_sketchy_buffers(const SketchyState& s, bool enlarged, std::map<std::string, Image>& out) {
+  add_gbuffer_buffers(download_gbuffer(s.gbuffer), out, "sketchy_gbuffer");
+  if (enlarged) out["sketchy_enlarged.noise_coordinates"] = download_texture(s.noise_coordinates, 4);
+  out["sketchy_maps.edge"] = download_texture(s.edge_map, 2);
+  out["sketchy_maps.shade"] = download_texture(s.shade_map, 4);
+  out["sketchy_composite.depth"] = download_texture(s.sprite_depth, 1);
+}
+
+}  // namespace
 
 Renderer::Renderer(const Scene& scene) {
   Context& context = Context::get();  // before any GL call
@@ -127,6 +187,7 @@ double Renderer::render_frame(Frame& timing) {
 Frame Renderer::render(const FrameOptions& options) {
   Frame frame;
   state_->gbuffer_channels = options.keep_buffers ? GBufferChannels{} : channels_read_by(state_->stages, state_->scene);
+  state_->sketchy_channels = options.keep_buffers ? GBufferChannels{} : SketchyState::channels(state_->scene);
   state_->run_frame();
   frame.ran = state_->pre.ran;  // once per Renderer, listed with every frame it renders
   for (const PassTime& t : state_->timer.results()) frame.ran.push_back(t);
@@ -135,7 +196,7 @@ Frame Renderer::render(const FrameOptions& options) {
   frame.ran.push_back({"readback", readback.ms()});
   if (options.keep_buffers) {
     const State& s = *state_;
-    add_gbuffer_buffers(download_gbuffer(s.gbuffer), frame.buffers);
+    if (s.ran("gbuffer")) add_gbuffer_buffers(download_gbuffer(s.gbuffer), frame.buffers);
     auto keep = [&](const char* stage, const char* name, const Texture& t) {
       if (s.ran(stage)) frame.buffers[name] = download_texture(t, 1);
     };
@@ -144,7 +205,8 @@ Frame Renderer::render(const FrameOptions& options) {
     keep("multi_contour", "multi_contour.contour_darkness", s.multi_contour_darkness);
     keep("interior_intensity", "interior_intensity.intensity", s.interior_intensity);
     keep("pencil_interior", "pencil_interior.interior_darkness", s.interior_darkness);
-    frame.buffers["compose.color"] = frame.color;
+    if (s.sketchy) add_sketchy_buffers(*s.sketchy, s.ran("sketchy_enlarged"), frame.buffers);
+    frame.buffers[s.sketchy ? "sketchy_composite.color" : "compose.color"] = frame.color;
   }
   Context::get().check_errors("reading back the frame");
   return frame;

@@ -15,6 +15,9 @@
 #include "reference/gbuffer.hpp"
 #include "reference/interior_intensity.hpp"
 #include "reference/pencil_interior.hpp"
+#include "reference/sketchy_composite.hpp"
+#include "reference/sketchy_enlarged.hpp"
+#include "reference/sketchy_maps.hpp"
 
 namespace plumbago::reference {
 
@@ -22,6 +25,7 @@ namespace {
 
 // The buffers passes hand to each other within one frame.
 struct FrameState {
+  Scene ordinary, sketchy;  // the objects each pipeline draws (common/sketchy.hpp)
   Preprocessed pre;
   GBuffer gbuffer;
   Image contour_darkness;
@@ -30,6 +34,10 @@ struct FrameState {
   Image interior_intensity;
   Image interior_darkness;
   Image color;
+  GBuffer sketchy_gbuffer;
+  Image noise_coordinates;
+  SketchyMaps sketchy_maps;
+  SketchyFrame sketch;
 };
 
 using PassFn = std::function<void(const Scene&, FrameState&)>;
@@ -37,7 +45,7 @@ using PassFn = std::function<void(const Scene&, FrameState&)>;
 const std::map<std::string, PassFn>& passes() {
   static const std::map<std::string, PassFn> table = {
       {"gbuffer",
-       [](const Scene& s, FrameState& f) { f.gbuffer = trace_gbuffer(s, s.width, s.height, f.pre.curvature); }},
+       [](const Scene& s, FrameState& f) { f.gbuffer = trace_gbuffer(f.ordinary, s.width, s.height, f.pre.curvature); }},
       {"edge_detect",
        [](const Scene& s, FrameState& f) {
          f.contour_darkness = contour_darkness(f.gbuffer, s.params.get<EdgeDetectParams>());
@@ -69,6 +77,22 @@ const std::map<std::string, PassFn>& passes() {
          f.color = compose(f.multi_contour_darkness.empty() ? no_contours : f.multi_contour_darkness,
                            f.interior_darkness, f.pre.paper.color, s.params.get<ComposeParams>());
        }},
+      {"sketchy_gbuffer",
+       [](const Scene& s, FrameState& f) { f.sketchy_gbuffer = trace_gbuffer(f.sketchy, s.width, s.height); }},
+      {"sketchy_enlarged",
+       [](const Scene& s, FrameState& f) {
+         f.noise_coordinates = enlarged_noise_coordinates(enlarged_scene(f.sketchy), s.width, s.height);
+       }},
+      {"sketchy_maps",
+       [](const Scene& s, FrameState& f) {
+         f.sketchy_maps = sketchy_maps(f.sketchy_gbuffer, object_colors(f.sketchy), s.params.get<EdgeDetectParams>());
+       }},
+      {"sketchy_composite",
+       [](const Scene& s, FrameState& f) {
+         SketchyInputs in{f.sketchy_maps, f.sketchy_gbuffer, f.pre.sketchy_noise, f.noise_coordinates};
+         f.sketch = sketchy_composite(in, s.params.get<SketchyParams>(), f.color, f.gbuffer.depth);
+         f.color = f.sketch.color;
+       }},
   };
   return table;
 }
@@ -77,9 +101,11 @@ const std::map<std::string, PassFn>& passes() {
 
 Frame render(const Scene& scene, const FrameOptions& options) {
   FrameState state;
+  state.ordinary = ordinary_objects(scene);
+  state.sketchy = sketchy_objects(scene);
   Frame frame;
-  std::vector<std::string> all = passes_for(scene.effects);
-  state.pre = preprocess(scene, all);
+  std::vector<std::string> all = passes_for(scene.effects, scene.params);
+  state.pre = preprocess(state.ordinary, all);
   frame.ran = state.pre.ran;
   for (const std::string& name : frame_stages(all)) {
     auto it = passes().find(name);
@@ -90,7 +116,8 @@ Frame render(const Scene& scene, const FrameOptions& options) {
   }
   frame.color = state.color;
   if (options.keep_buffers) {
-    add_gbuffer_buffers(state.gbuffer, frame.buffers);
+    if (!state.gbuffer.depth.empty()) add_gbuffer_buffers(state.gbuffer, frame.buffers);
+    if (!state.sketchy_gbuffer.depth.empty()) add_gbuffer_buffers(state.sketchy_gbuffer, frame.buffers, "sketchy_gbuffer");
     auto keep = [&](const char* name, const Image& img) {
       if (!img.empty()) frame.buffers[name] = img;
     };
@@ -99,7 +126,11 @@ Frame render(const Scene& scene, const FrameOptions& options) {
     keep("multi_contour.contour_darkness", state.multi_contour_darkness);
     keep("interior_intensity.intensity", state.interior_intensity);
     keep("pencil_interior.interior_darkness", state.interior_darkness);
-    keep("compose.color", state.color);
+    keep(state.sketch.color.empty() ? "compose.color" : "sketchy_composite.color", state.color);
+    keep("sketchy_enlarged.noise_coordinates", state.noise_coordinates);
+    keep("sketchy_maps.edge", state.sketchy_maps.edge);
+    keep("sketchy_maps.shade", state.sketchy_maps.shade);
+    keep("sketchy_composite.depth", state.sketch.depth);
   }
   return frame;
 }

@@ -1,0 +1,80 @@
+#include "gpu/sketchy_composite.hpp"
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace plumbago::gpu {
+
+namespace {
+
+constexpr int kMaxCopies = 8;  // copy_matrices[8] in sketchy_composite.frag; sketchy.edge_copies <= 8
+
+Texture repeating(Texture t, GLenum filter) {
+  set_sampling(t, filter, GL_REPEAT, GL_REPEAT, GL_REPEAT);
+  return t;
+}
+
+}  // namespace
+
+SketchyNoiseTextures upload_sketchy_noise(const SketchyNoise& n) {
+  Image none(1, 1, 1);
+  return {repeating(upload_texture(n.perlin.empty() ? none : n.perlin, GL_R32F), GL_LINEAR),
+          repeating(upload_texture(n.white.empty() ? none : n.white, GL_RG32F), GL_NEAREST),
+          repeating(upload_texture_3d(n.perlin_3d.empty() ? std::vector<Image>{none} : n.perlin_3d, GL_R32F), GL_LINEAR)};
+}
+
+SketchyCompositePass::SketchyCompositePass()
+    : program_("fullscreen.vert", "sketchy_composite.frag", glsl_params<SketchyParams>()),
+      fbo_(make_framebuffer()),
+      empty_(make_vertex_array()) {
+  const char* units[] = {"edge_map", "shade_map", "depth", "noise", "white_noise", "noise_3d", "noise_coordinates"};
+  for (int k = 0; k < 7; ++k) glProgramUniform1i(program_.id(), program_.uniform(units[k]), k);
+}
+
+void SketchyCompositePass::set_uniforms(const SketchyCompositeInputs& in, const SketchyParams& p) {
+  GLuint id = program_.id();
+  program_.set_params(p);
+  glProgramUniform1f(id, program_.uniform("near_plane"), in.gbuffer.near);
+  glProgramUniform1f(id, program_.uniform("far_plane"), in.gbuffer.far);
+  glm::mat2 shade = shade_matrix(p);
+  glProgramUniformMatrix2fv(id, program_.uniform("shade_matrix"), 1, GL_FALSE, glm::value_ptr(shade));
+  glm::mat2 matrices[kMaxCopies];
+  glm::vec3 inks[kMaxCopies];
+  glm::vec2 shifts[kMaxCopies];
+  for (int k = 0; k < kMaxCopies; ++k) matrices[k] = copy_matrix(p, k), inks[k] = copy_ink(p, k), shifts[k] = copy_noise_shift(k);
+  glProgramUniformMatrix2fv(id, program_.uniform("copy_matrices[0]"), kMaxCopies, GL_FALSE, glm::value_ptr(matrices[0]));
+  glProgramUniform3fv(id, program_.uniform("copy_inks[0]"), kMaxCopies, glm::value_ptr(inks[0]));
+  glProgramUniform2fv(id, program_.uniform("copy_shifts[0]"), kMaxCopies, glm::value_ptr(shifts[0]));
+}
+
+void SketchyCompositePass::run(const SketchyCompositeInputs& in, const SketchyParams& p, Texture& color,
+                               const Renderbuffer* under_depth, Texture& sprite_depth) {
+  set_uniforms(in, p);
+  if (!under_depth && !own_depth_.id()) own_depth_ = make_renderbuffer(color.width, color.height, GL_DEPTH_COMPONENT32F);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, sprite_depth.id(), 0);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                            under_depth ? under_depth->id() : own_depth_.id());
+  const GLenum draw[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, draw);
+  const float white[4] = {1, 1, 1, 1}, one = 1;
+  glClearBufferfv(GL_COLOR, 1, white);
+  if (!under_depth) {
+    glClearBufferfv(GL_COLOR, 0, white);
+    glClearBufferfv(GL_DEPTH, 0, &one);
+  }
+  glViewport(0, 0, color.width, color.height);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  bind_textures({&in.edge_map, &in.shade_map, &in.gbuffer.depth, &in.noise.perlin, &in.noise.white, &in.noise.perlin_3d,
+                 &in.noise_coordinates});
+  glUseProgram(program_.id());
+  glBindVertexArray(empty_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glDisable(GL_DEPTH_TEST);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+}  // namespace plumbago::gpu

@@ -1,0 +1,30 @@
+#include "gpu/sketchy_maps.hpp"
+
+namespace plumbago::gpu {
+
+namespace {
+
+Texture color_table(const std::vector<glm::vec3>& colors) {
+  Image table(std::max<int>(1, int(colors.size())), 1, 3);
+  for (size_t k = 0; k < colors.size(); ++k)
+    for (int c = 0; c < 3; ++c) table.at(int(k), 0, c) = colors[k][c];
+  return upload_texture(table, GL_RGBA32F);
+}
+
+}  // namespace
+
+SketchyMapsPass::SketchyMapsPass(const std::vector<glm::vec3>& colors)
+    : program_("fullscreen.vert", "sketchy_maps.frag", glsl_params<EdgeDetectParams>()), colors_(color_table(colors)) {
+  const char* units[] = {"normals", "depth", "ids", "colors"};
+  for (int k = 0; k < 4; ++k) glProgramUniform1i(program_.id(), program_.uniform(units[k]), k);
+}
+
+void SketchyMapsPass::run(const GBufferTargets& g, const EdgeDetectParams& p, Texture& edge, Texture& shade) {
+  program_.set_params(p);
+  glProgramUniform1f(program_.id(), program_.uniform("near_plane"), g.near);
+  glProgramUniform1f(program_.id(), program_.uniform("far_plane"), g.far);
+  const Texture& normals = p.normals == EdgeNormals::Face ? g.face_normal : g.normal;
+  pass_.draw(program_, {&normals, &g.depth, &g.ids, &colors_}, {&edge, &shade});
+}
+
+}  // namespace plumbago::gpu

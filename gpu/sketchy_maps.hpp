@@ -1,0 +1,25 @@
+// Sketchy drawing's maps on the GPU (SPEC 3.1), the twin of reference/sketchy_maps.cpp.
+#pragma once
+
+#include <vector>
+
+#include "common/edge_detect.hpp"
+#include "gpu/framebuffer.hpp"
+#include "gpu/gbuffer.hpp"
+
+namespace plumbago::gpu {
+
+class SketchyMapsPass {
+ public:
+  // `colors`: one unlit color per object of the G-buffer's scene.
+  explicit SketchyMapsPass(const std::vector<glm::vec3>& colors);
+  // `edge` (RG32F): contour darkness and the depth it belongs to; `shade` (RGBA8).
+  void run(const GBufferTargets& g, const EdgeDetectParams& p, Texture& edge, Texture& shade);
+
+ private:
+  Program program_;
+  FullscreenPass pass_;
+  Texture colors_;
+};
+
+}  // namespace plumbago::gpu

@@ -1,0 +1,183 @@
+// Sketchy drawing (SPEC 3): stage parity per style, occlusion against ordinary objects
+// both ways on both backends, the effect's passes, and the scene rules.
+#include <gtest/gtest.h>
+
+#include "apps/parity.hpp"
+#include "common/passes.hpp"
+#include "common/sketchy.hpp"
+#include "gpu/pipeline.hpp"
+#include "reference/gbuffer.hpp"
+#include "reference/pipeline.hpp"
+#include "tests/test_scenes.hpp"
+
+namespace plumbago {
+namespace {
+
+// A sketchy torus alone (`style`), or crossed by an ordinary plane tilted through it, so
+// that each is in front of the other on one side.
+Scene sketchy_scene(const std::string& style, bool mixed, int width = 240, int height = 180) {
+  std::string objects = R"({"mesh": {"procedural": "torus"}, "style": "sketchy", "color": [0.9, 0.35, 0.2]})";
+  if (mixed)
+    objects += R"(, {"mesh": {"procedural": "plane"}, "style": "pencil",
+                     "transform": [1.2, 0, 0, 0,  0, 0.85, 0.85, 0,  0, -0.85, 0.85, 0,  0, 0, 0, 1]})";
+  std::string json = R"({"objects": [)" + objects + R"(], "resolution": [)" + std::to_string(width) + ", " +
+                     std::to_string(height) + R"(], "params": {"sketchy.style": ")" + style + R"("}})";
+  return parse_scene(json, "test:sketchy", ".");
+}
+
+class SketchyParity : public testing::GlTest, public ::testing::WithParamInterface<std::string> {};
+
+TEST_P(SketchyParity, EveryStageMatchesTheReference) {
+  Scene scene = sketchy_scene(GetParam(), false);
+  auto results = run_parity(scene, {"sketchy_enlarged", "sketchy_maps", "sketchy_composite"});
+  ASSERT_EQ(results.size(), 6u);
+  for (const auto& r : results) {
+    std::printf("[sketchy %s] %s\n", GetParam().c_str(), format_diff(r.name, r.diff).c_str());
+    EXPECT_TRUE(r.pass) << r.name << ": " << r.note;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Styles, SketchyParity, ::testing::Values("default", "repeat", "rough", "object"));
+
+// Pixels where both G-buffers cover a square of side 2r + 1 around the pixel, and one
+// of them is nearer than the other over all of it: there the sketch's offsets (under r
+// pixels) cannot reach past either object's silhouette.
+std::vector<glm::ivec2> pixels_where(const GBuffer& sketchy, const GBuffer& ordinary, bool sketchy_in_front, int r) {
+  std::vector<glm::ivec2> out;
+  int w = sketchy.depth.width, h = sketchy.depth.height;
+  for (int y = r; y < h - r; y += 3)
+    for (int x = r; x < w - r; x += 3) {
+      bool all = true;
+      for (int dy = -r; dy <= r && all; ++dy)
+        for (int dx = -r; dx <= r && all; ++dx) {
+          int nx = x + dx, ny = y + dy;
+          all = !sketchy.background(nx, ny) && !ordinary.background(nx, ny) &&
+                (sketchy.depth.at(nx, ny) < ordinary.depth.at(nx, ny)) == sketchy_in_front;
+        }
+      if (all) out.push_back({x, y});
+    }
+  return out;
+}
+
+float max_difference(const Image& a, const Image& b, glm::ivec2 p) {
+  float d = 0;
+  for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(a.at(p.x, p.y, c) - b.at(p.x, p.y, c)));
+  return d;
+}
+
+// Where the sketchy torus is in front, its color shows; where the plane is, the frame is
+// what the plane's own pipeline draws without the torus.
+void expect_occlusion_both_ways(const std::function<Image(const Scene&)>& render, const char* backend) {
+  Scene scene = sketchy_scene("default", true, 320, 240);
+  scene.effects = {"contours", "interior", "sketchy"};
+  Scene ordinary = ordinary_objects(scene);
+  ordinary.effects = {"contours", "interior"};
+  GBuffer gs = reference::trace_gbuffer(sketchy_objects(scene), scene.width, scene.height);
+  GBuffer go = reference::trace_gbuffer(ordinary, scene.width, scene.height);
+  const int reach = 16;  // > the largest offset of the default matrices, |M (u, v)| <= 10.4 * 1.5
+  auto front = pixels_where(gs, go, true, reach), behind = pixels_where(gs, go, false, reach);
+  std::printf("[occlusion %s] %zu probe pixels with the sketch in front, %zu behind\n", backend, front.size(), behind.size());
+  ASSERT_GE(front.size(), 10u);
+  ASSERT_GE(behind.size(), 10u);
+  Image frame = render(scene), alone = render(ordinary);
+  glm::vec3 color = scene.objects[0].color;
+  for (glm::ivec2 p : front)
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(frame.at(p.x, p.y, c), color[c], 0.03) << backend << " at " << p.x << "," << p.y;
+  for (glm::ivec2 p : behind) EXPECT_LE(max_difference(frame, alone, p), 2.0f / 255.0f) << backend << " at " << p.x << "," << p.y;
+}
+
+class SketchyOcclusion : public testing::GlTest {};
+
+TEST_F(SketchyOcclusion, ReferenceShowsWhicheverIsNearer) {
+  expect_occlusion_both_ways([](const Scene& s) { return reference::render(s).color; }, "reference");
+}
+
+TEST_F(SketchyOcclusion, GpuShowsWhicheverIsNearer) {
+  expect_occlusion_both_ways([](const Scene& s) { return gpu::Renderer(s).render().color; }, "gpu");
+}
+
+TEST_F(SketchyOcclusion, MixedSceneEndToEnd) {
+  Scene scene = sketchy_scene("default", true, 320, 240);
+  scene.effects = {"contours", "interior", "sketchy"};
+  auto r = run_parity(scene, {"end_to_end"}).at(0);
+  std::printf("[end_to_end sketchy+pencil] within 2/255: %.2f%% of pixels; %s\n", 100 * (1 - r.diff.over_tolerance),
+              format_diff(r.name, r.diff).c_str());
+  EXPECT_TRUE(r.pass);
+}
+
+TEST(SketchyPasses, OnlyTheObjectStyleTracesTheEnlargedGeometry) {
+  ParamSet params;
+  auto passes = passes_for({"sketchy"}, params);
+  EXPECT_EQ(passes, (std::vector<std::string>{"sketchy_noise", "sketchy_gbuffer", "sketchy_maps", "sketchy_composite"}));
+  params.set("sketchy.style", "object");
+  passes = passes_for({"sketchy"}, params);
+  EXPECT_NE(std::find(passes.begin(), passes.end(), "sketchy_enlarged"), passes.end());
+}
+
+TEST(SketchyScene, SketchyObjectsTurnTheEffectOnAndAreDrawnOnlyByIt) {
+  Scene alone = sketchy_scene("default", false);
+  EXPECT_EQ(alone.effects, std::vector<std::string>{"sketchy"});  // nothing else is drawn
+  Scene mixed = sketchy_scene("default", true);
+  EXPECT_EQ(mixed.effects, (std::vector<std::string>{"contours", "sketchy"}));
+  EXPECT_EQ(sketchy_objects(mixed).objects.size(), 1u);
+  EXPECT_EQ(ordinary_objects(mixed).objects.size(), 1u);
+}
+
+TEST(SketchyScene, TheEffectWithoutSketchyObjectsIsRefusedNamingTheKey) {
+  std::string json = R"({"mesh": {"procedural": "torus"}, "effects": ["contours", "sketchy"]})";
+  try {
+    parse_scene(json, "plain.json", ".");
+    FAIL() << "accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("plain.json: /effects"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SketchyGeometry, EnlargedMeshMovesEveryVertexAlongItsNormal) {
+  Scene s = sketchy_scene("object", false);
+  const Mesh& m = *s.objects[0].mesh;
+  Mesh e = enlarged_mesh(m, 0.1f);
+  ASSERT_EQ(e.positions.size(), m.positions.size());
+  for (size_t v = 0; v < m.positions.size(); v += 97)
+    EXPECT_NEAR(glm::length(e.positions[v] - m.positions[v] - 0.1f * m.normals[v]), 0.0f, 1e-6f);
+  for (const glm::vec3& q : noise_coordinates(e)) EXPECT_LE(glm::length(q), 1.0f);
+}
+
+TEST(SketchyMatrices, CopiesTurnTheEdgeMatrixAndGoFromBlackToTheCopyInk) {
+  ParamSet params;
+  params.set("sketchy.edge_copies", 3.0);
+  auto p = params.get<SketchyParams>();
+  glm::vec2 u(1, 0);
+  EXPECT_NEAR(glm::length(copy_matrix(p, 0) * u - edge_matrix(p) * u), 0.0f, 1e-6f);
+  glm::vec2 turned = copy_matrix(p, 1) * u;  // M_e = 6 I turned by 90 degrees
+  EXPECT_NEAR(turned.x, 0.0f, 1e-5f);
+  EXPECT_NEAR(turned.y, 6.0f, 1e-5f);
+  EXPECT_EQ(copy_ink(p, 0), glm::vec3(0.0f));
+  EXPECT_EQ(copy_ink(p, 2), glm::vec3(p.copy_red, p.copy_green, p.copy_blue));
+  glm::vec2 s = shade_matrix(p) * glm::vec2(0, 1);  // second column of [[10, 3], [-3, 10]]
+  EXPECT_FLOAT_EQ(s.x, 3.0f);
+  EXPECT_FLOAT_EQ(s.y, 10.0f);
+}
+
+class SketchyFrames : public testing::GlTest, public ::testing::WithParamInterface<std::string> {};
+
+// Each style draws something, stays finite on both backends, and looks unlike the others.
+TEST_P(SketchyFrames, StyleDrawsFiniteDistinctImages) {
+  Scene scene = sketchy_scene(GetParam(), false);
+  FrameOptions keep{true};
+  for (const Frame& f : {reference::render(scene, keep), gpu::Renderer(scene).render(keep)}) {
+    for (const auto& [name, img] : f.buffers) EXPECT_FALSE(has_non_finite(img)) << name;
+    double ink = 0;
+    for (float v : f.color.data) ink += 1.0 - v;
+    EXPECT_GT(ink / double(f.color.data.size()), 0.01) << "nearly blank";
+  }
+  if (GetParam() == "default") return;
+  Scene base = sketchy_scene("default", false);
+  auto d = compare_images(reference::render(base).color, reference::render(scene).color, 2.0 / 255.0, nullptr);
+  EXPECT_GT(d.over_tolerance, 0.02) << "looks like the default style";
+}
+
+INSTANTIATE_TEST_SUITE_P(Styles, SketchyFrames, ::testing::Values("default", "repeat", "rough", "object"));
+
+}  // namespace
+}  // namespace plumbago
