@@ -27,30 +27,6 @@ float turbulence(const std::vector<Image>& noise, glm::vec3 q, int octaves) {
   return t;
 }
 
-// (u, v) of SPEC 3.2 at pixel center p for edge copy `copy`, centered on 0.
-glm::vec2 uncertainty(const SketchyInputs& in, const SketchyParams& p, glm::vec2 center, int copy) {
-  glm::ivec2 x(center);
-  switch (p.style) {
-    case SketchyStyle::Rough: {  // uncorrelated: one white-noise texel per pixel
-      const Image& w = in.noise.white;
-      glm::vec4 r = fetch(w, {x.x % w.width, x.y % w.height});
-      return glm::vec2(r.x, r.y) - 0.5f;
-    }
-    case SketchyStyle::Object: {  // 3D noise at the enlarged surface's noise coordinate
-      glm::vec4 g = fetch(in.noise_coordinates, x);
-      if (g.w == 0.0f) return glm::vec2(0.0f);
-      glm::vec3 q = glm::vec3(g) / p.object_noise_scale;
-      return glm::vec2(turbulence(in.noise.perlin_3d, q, p.octaves), turbulence(in.noise.perlin_3d, 1.0f - q, p.octaves)) -
-             0.5f;
-    }
-    default: {  // (T(s, t), T(1 - s, 1 - t)), (s, t) = p / noise_scale, shifted per copy
-      glm::vec2 st = center / p.noise_scale + copy_noise_shift(copy);
-      return glm::vec2(turbulence(in.noise.perlin, st, p.octaves), turbulence(in.noise.perlin, 1.0f - st, p.octaves)) -
-             0.5f;
-    }
-  }
-}
-
 glm::ivec2 nearest_texel(const Image& img, glm::vec2 q) {
   return glm::clamp(glm::ivec2(glm::floor(q)), glm::ivec2(0), glm::ivec2(img.width - 1, img.height - 1));
 }
@@ -105,6 +81,30 @@ Sketch repeated_edges(const SketchyInputs& in, const SketchyParams& p, glm::vec2
 }
 
 }  // namespace
+
+glm::vec2 uncertainty(const SketchyInputs& in, const SketchyParams& p, glm::vec2 center, int copy) {
+  glm::ivec2 x(center);
+  switch (p.style) {
+    case SketchyStyle::Rough: {  // uncorrelated: one white-noise texel per pixel
+      const Image& w = in.noise.white;
+      glm::vec4 r = fetch(w, {x.x % w.width, x.y % w.height});
+      return glm::vec2(r.x, r.y) - 0.5f;
+    }
+    case SketchyStyle::Object: {  // 3D noise at the enlarged surface's noise coordinate
+      glm::vec4 g = fetch(in.noise_coordinates, x);
+      if (g.w == 0.0f) return glm::vec2(0.0f);
+      glm::vec3 q = glm::vec3(g) / p.object_noise_scale;
+      return glm::vec2(turbulence(in.noise.perlin_3d, q, p.octaves), turbulence(in.noise.perlin_3d, 1.0f - q, p.octaves)) -
+             0.5f;
+    }
+    default: {  // (T(s, t), T(1 - s, 1 - t)), (s, t) = p / noise_scale, shifted per copy
+      glm::vec2 st = center / p.noise_scale + copy_noise_shift(copy);
+      return glm::vec2(turbulence(in.noise.perlin, st, p.octaves), turbulence(in.noise.perlin, 1.0f - st, p.octaves)) -
+             0.5f;
+    }
+  }
+}
+
 
 SketchyFrame sketchy_composite(const SketchyInputs& in, const SketchyParams& p, const Image& under_color,
                                const Image& under_depth) {

@@ -23,6 +23,10 @@ struct SketchyInputs {
   const Image& noise_coordinates;
 };
 
+// (u, v) of SPEC 3.2 at pixel center `center` for edge copy `copy`, centered on 0: the
+// sketch's perturbation before M_e and M_s turn it into pixel offsets.
+glm::vec2 uncertainty(const SketchyInputs& in, const SketchyParams& p, glm::vec2 center, int copy);
+
 // `under_color` (3 ch; empty = white paper) and `under_depth` (linear; empty = nothing)
 // are what the ordinary objects drew; the sketch composes with them by depth (SPEC 3.4).
 SketchyFrame sketchy_composite(const SketchyInputs& in, const SketchyParams& p, const Image& under_color,
