@@ -1,15 +1,31 @@
 // plumbago bench [SCENE ...] [--frames N] [--backend gpu|reference|both] [--json]
+//                [--save DIR] [--against DIR] [--buffers a,b] [--tolerance T] [--paper]
 // Per backend: per-pass ms (GL timestamp queries on the GPU) and whole-frame fps, next to
 // the papers' claims. A GPU frame is every pass up to the final image in GPU memory,
 // ended by glFinish; readback is timed on its own. Reports; never asserts a speed.
+//
+// Accuracy next to time (experiments/): after the timed frames, one more frame is
+// rendered with its intermediate buffers kept (not timed). --save DIR writes them as
+// DIR/<backend>/<buffer>.exr (the final image is "compose.color"); --against DIR compares
+// them with DIR/<buffer>.exr saved by an earlier run (another backend, or the most
+// accurate setting of a stage) and reports the difference per buffer.
+//
+// --paper: the papers' claimed frame rates (bench/paper_claims.hpp) next to ours for the
+// closest scene each claim names, with the machine and the GL renderer.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <map>
+#include <optional>
 #include <nlohmann/json.hpp>
+#include <thread>
 
 #include "apps/command.hpp"
 #include "apps/scene_options.hpp"
 #include "bench/paper_claims.hpp"
+#include "common/image_compare.hpp"
 #include "common/passes.hpp"
 #include "gpu/context.hpp"
 #include "gpu/pipeline.hpp"
@@ -18,19 +34,33 @@
 namespace plumbago {
 namespace {
 
+namespace fs = std::filesystem;
+
 struct BenchOptions {
   std::vector<std::string> scenes;
   std::vector<std::string> assignments;
   std::string size, backend = "both";
   int frames = 20;
   bool json = false;
+  bool paper = false;
+  std::string save_dir, against_dir;
+  std::vector<std::string> buffers;  // empty: all
+  double tolerance = 0.05;
+};
+
+// Difference of one buffer from the same buffer of an earlier run.
+struct BufferError {
+  double max_abs = 0, mean_abs = 0, rmse = 0, over_tolerance = 0;
 };
 
 struct BenchResult {
   std::string scene, backend;
+  int faces = 0, width = 0, height = 0;
   double frame_ms = 0;  // median
   std::map<std::string, double> stages;         // mean ms per pass of a frame
   std::map<std::string, double> preprocessing;  // once per scene, not part of a frame
+  std::map<std::string, BufferError> errors;    // --against
+  std::vector<std::string> missing;             // --against: buffers with no saved counterpart
 };
 
 double median(std::vector<double> v) {
@@ -45,8 +75,72 @@ void add_pass_times(const Frame& f, int frames, BenchResult& r) {
   }
 }
 
-BenchResult bench_reference(const Scene& scene, int frames) {
-  BenchResult r{scene.source, "reference", 0, {}, {}};
+BenchResult new_result(const Scene& scene, const std::string& backend) {
+  BenchResult r;
+  r.scene = scene.source;
+  r.backend = backend;
+  for (const auto& o : scene.objects) r.faces += int(o.mesh->triangles.size());
+  r.width = scene.width;
+  r.height = scene.height;
+  return r;
+}
+
+bool wanted(const BenchOptions& o, const std::string& name) {
+  return o.buffers.empty() || std::find(o.buffers.begin(), o.buffers.end(), name) != o.buffers.end();
+}
+
+// The buffers of the untimed extra frame, the final image included as "compose.color".
+std::map<std::string, Image> kept_buffers(Frame f) {
+  std::map<std::string, Image> out = std::move(f.buffers);
+  out["compose.color"] = std::move(f.color);
+  return out;
+}
+
+BufferError buffer_error(const Image& a, const Image& b, double tolerance) {
+  ImageDiff d = compare_images(a, b, tolerance);
+  BufferError e{d.max_abs, 0, d.rmse, d.over_tolerance};
+  double sum = 0;
+  for (size_t i = 0; i < a.data.size(); ++i) sum += std::abs(double(a.data[i]) - double(b.data[i]));
+  e.mean_abs = a.data.empty() ? 0 : sum / double(a.data.size());
+  return e;
+}
+
+void save_and_compare(const BenchOptions& o, std::map<std::string, Image> buffers, BenchResult& r) {
+  for (auto it = buffers.begin(); it != buffers.end();)
+    it = wanted(o, it->first) ? std::next(it) : buffers.erase(it);
+  if (!o.save_dir.empty()) {
+    fs::path dir = fs::path(o.save_dir) / r.backend;
+    fs::create_directories(dir);
+    for (const auto& [name, img] : buffers) write_image(img, (dir / (name + ".exr")).string());
+  }
+  if (!o.against_dir.empty()) {
+    for (const auto& [name, img] : buffers) {
+      fs::path p = fs::path(o.against_dir) / (name + ".exr");
+      if (!fs::exists(p)) {
+        r.missing.push_back(name);
+        continue;
+      }
+      Image ref = read_image(p.string());
+      if (ref.width != img.width || ref.height != img.height)
+        throw std::invalid_argument("--against: " + p.string() + " is " + std::to_string(ref.width) + "x" +
+                                    std::to_string(ref.height) + ", this run's " + name + " is " +
+                                    std::to_string(img.width) + "x" + std::to_string(img.height));
+      // EXR files hold 1, 3 or 4 channels; a 1-channel buffer may come back as 3 equal ones.
+      if (ref.channels != img.channels) {
+        Image same(ref.width, ref.height, img.channels);
+        for (size_t i = 0; i < same.pixels(); ++i)
+          for (int c = 0; c < img.channels; ++c) same.data[i * img.channels + c] = ref.data[i * ref.channels + std::min(c, ref.channels - 1)];
+        ref = std::move(same);
+      }
+      r.errors[name] = buffer_error(img, ref, o.tolerance);
+    }
+  }
+}
+
+bool keeps_buffers(const BenchOptions& o) { return !o.save_dir.empty() || !o.against_dir.empty(); }
+
+BenchResult bench_reference(const BenchOptions& o, const Scene& scene, int frames) {
+  BenchResult r = new_result(scene, "reference");
   std::vector<double> ms;
   for (int i = 0; i < frames; ++i) {
     Stopwatch w;
@@ -57,11 +151,16 @@ BenchResult bench_reference(const Scene& scene, int frames) {
     add_pass_times(f, frames, r);
   }
   r.frame_ms = median(ms);
+  if (keeps_buffers(o)) {
+    FrameOptions fo;
+    fo.keep_buffers = true;
+    save_and_compare(o, kept_buffers(reference::render(scene, fo)), r);
+  }
   return r;
 }
 
-BenchResult bench_gpu(const Scene& scene, int frames) {
-  BenchResult r{scene.source, "gpu", 0, {}, {}};
+BenchResult bench_gpu(const BenchOptions& o, const Scene& scene, int frames) {
+  BenchResult r = new_result(scene, "gpu");
   gpu::Renderer renderer(scene);
   for (const auto& p : renderer.render().ran)  // warm-up: shader compilation, first-use allocations
     if (is_preprocessing(p.name)) r.preprocessing[p.name] = p.ms;
@@ -72,7 +171,32 @@ BenchResult bench_gpu(const Scene& scene, int frames) {
     add_pass_times(f, frames, r);
   }
   r.frame_ms = median(ms);
+  if (keeps_buffers(o)) {
+    FrameOptions fo;
+    fo.keep_buffers = true;
+    save_and_compare(o, kept_buffers(renderer.render(fo)), r);
+  }
   return r;
+}
+
+// "AMD EPYC 7B13 (2 threads)": the first model name in /proc/cpuinfo and the hardware threads.
+std::string machine_name() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line, model = "unknown CPU";
+  while (std::getline(in, line))
+    if (line.rfind("model name", 0) == 0) {
+      size_t colon = line.find(':');
+      if (colon != std::string::npos) model = line.substr(line.find_first_not_of(" \t", colon + 1));
+      break;
+    }
+  return model + " (" + std::to_string(std::thread::hardware_concurrency()) + " threads)";
+}
+
+std::string fps_range(const PaperClaim& c) {
+  char buf[64];
+  if (c.fps_low == c.fps_high) std::snprintf(buf, sizeof buf, "%g", c.fps_low);
+  else std::snprintf(buf, sizeof buf, "%g-%g", c.fps_low, c.fps_high);
+  return buf;
 }
 
 void print_text(const std::vector<BenchResult>& results) {
@@ -81,31 +205,135 @@ void print_text(const std::vector<BenchResult>& results) {
     std::printf("%s [%s]: %.2f ms/frame = %.1f fps\n", r.scene.c_str(), r.backend.c_str(), r.frame_ms, 1000 / r.frame_ms);
     for (const auto& [name, ms] : r.stages) std::printf("  %-24s %9.3f ms\n", name.c_str(), ms);
     for (const auto& [name, ms] : r.preprocessing) std::printf("  preprocessing %-10s %9.3f ms (once, not in the frame)\n", name.c_str(), ms);
+    for (const auto& [name, e] : r.errors)
+      std::printf("  error %-36s max %.4g  mean %.4g  rmse %.4g  over tolerance %.3g%%\n", name.c_str(), e.max_abs,
+                  e.mean_abs, e.rmse, 100 * e.over_tolerance);
+    for (const auto& name : r.missing) std::printf("  error %-36s (nothing saved to compare with)\n", name.c_str());
   }
-  std::printf("\npapers' claims (their hardware):\n");
-  for (const auto& c : paper_claims())
-    std::printf("  %-26s %-26s %7d faces  %-10s %g-%g fps  (%s)\n", c.paper.c_str(), c.scene.c_str(), c.faces,
-                c.resolution.c_str(), c.fps_low, c.fps_high, c.hardware.c_str());
+  std::printf("\npapers' claims (their hardware; `plumbago bench --paper` runs ours next to them):\n");
+  const PaperClaim* last = nullptr;
+  for (const auto& c : paper_claims()) {
+    if (last && last->paper == c.paper && last->scene == c.scene) continue;  // one claim, two of our scenes
+    last = &c;
+    std::printf("  %-26s %-26s %7d faces  %-10s %s fps  (%s)\n", c.paper.c_str(), c.scene.c_str(), c.faces,
+                c.resolution.c_str(), fps_range(c).c_str(), c.hardware.c_str());
+  }
 }
 
-void print_json(const std::vector<BenchResult>& results) {
-  nlohmann::json j{{"renderer", gpu::Context::get().renderer()}, {"results", nlohmann::json::array()}};
-  for (const auto& r : results)
-    j["results"].push_back({{"scene", r.scene}, {"backend", r.backend}, {"fps", 1000 / r.frame_ms},
-                            {"frame_ms", r.frame_ms}, {"stages", r.stages}, {"preprocessing", r.preprocessing}});
+nlohmann::json result_json(const BenchResult& r) {
+  nlohmann::json j{{"scene", r.scene}, {"backend", r.backend}, {"faces", r.faces}, {"size", {r.width, r.height}},
+                   {"fps", 1000 / r.frame_ms}, {"frame_ms", r.frame_ms}, {"stages", r.stages},
+                   {"preprocessing", r.preprocessing}};
+  if (!r.errors.empty() || !r.missing.empty()) {
+    nlohmann::json e = nlohmann::json::object();
+    for (const auto& [name, x] : r.errors)
+      e[name] = {{"max_abs", x.max_abs}, {"mean_abs", x.mean_abs}, {"rmse", x.rmse}, {"over_tolerance", x.over_tolerance}};
+    j["errors"] = e;
+    j["missing"] = r.missing;
+  }
+  return j;
+}
+
+void print_json(const BenchOptions& o, const std::vector<BenchResult>& results) {
+  nlohmann::json j{{"renderer", gpu::Context::get().renderer()}, {"machine", machine_name()},
+                   {"results", nlohmann::json::array()}};
+  if (!o.against_dir.empty()) j["against"] = o.against_dir, j["tolerance"] = o.tolerance;
+  for (const auto& r : results) j["results"].push_back(result_json(r));
   std::printf("%s\n", j.dump(2).c_str());
 }
 
+// --- the papers' claims next to ours ---------------------------------------------------
+
+struct ClaimRun {
+  const PaperClaim* claim;
+  std::string ours;                     // scene file, "" when Plumbago has no such configuration
+  std::optional<BenchResult> gpu, ref;  // absent when not run
+  std::string note;                     // why not run
+};
+
+
+std::vector<ClaimRun> run_paper(const BenchOptions& o) {
+  std::vector<ClaimRun> runs;
+  std::map<std::string, std::pair<std::optional<BenchResult>, std::optional<BenchResult>>> done;  // a scene is run once
+  for (const auto& c : paper_claims()) {
+    ClaimRun run{&c, c.plumbago_scene, {}, {}, c.plumbago_note};
+    if (!c.plumbago_scene.empty()) {
+      if (!done.count(c.plumbago_scene)) {
+        std::optional<BenchResult> g, r;
+        try {
+          SceneOptions so{(fs::path(PLUMBAGO_SOURCE_DIR) / c.plumbago_scene).string(), o.size, o.assignments};
+          Scene scene = so.load();
+          scene.source = c.plumbago_scene;
+          if (o.backend != "reference") g = bench_gpu(o, scene, o.frames);
+          if (o.backend != "gpu") r = bench_reference(o, scene, std::max(1, o.frames / 10));
+        } catch (const std::exception& e) {
+          run.note = std::string("not run: ") + e.what();
+        }
+        done[c.plumbago_scene] = {g, r};
+      }
+      std::tie(run.gpu, run.ref) = done[c.plumbago_scene];
+    }
+    runs.push_back(run);
+  }
+  return runs;
+}
+
+void print_paper(const BenchOptions& o, const std::vector<ClaimRun>& runs) {
+  std::string renderer = gpu::Context::get().renderer(), machine = machine_name();
+  if (o.json) {
+    nlohmann::json j{{"machine", machine}, {"renderer", renderer}, {"claims", nlohmann::json::array()}};
+    for (const auto& r : runs) {
+      const PaperClaim& c = *r.claim;
+      nlohmann::json x{{"paper", c.paper}, {"scene", c.scene}, {"faces", c.faces}, {"resolution", c.resolution},
+                       {"fps_low", c.fps_low}, {"fps_high", c.fps_high}, {"hardware", c.hardware},
+                       {"style", c.style}, {"ours_scene", r.ours}, {"note", r.note}};
+      x["ours_gpu"] = r.gpu ? result_json(*r.gpu) : nlohmann::json();
+      x["ours_reference"] = r.ref ? result_json(*r.ref) : nlohmann::json();
+      j["claims"].push_back(x);
+    }
+    std::printf("%s\n", j.dump(2).c_str());
+    return;
+  }
+  std::printf("machine:     %s\nGL renderer: %s\n\n", machine.c_str(), renderer.c_str());
+  std::printf("%-25s %-29s %7s %-11s %-9s | %-28s %7s %-9s %8s %8s\n", "paper", "their scene", "faces", "resolution",
+              "their fps", "our closest configuration", "faces", "size", "GPU fps", "CPU fps");
+  for (const auto& r : runs) {
+    const PaperClaim& c = *r.claim;
+    std::string faces = c.faces ? std::to_string(c.faces) : "?";
+    std::printf("%-25s %-29s %7s %-11s %-9s | ", c.paper.c_str(), c.scene.c_str(), faces.c_str(), c.resolution.c_str(),
+                fps_range(c).c_str());
+    const std::optional<BenchResult>& any = r.gpu ? r.gpu : r.ref;
+    if (!any) {
+      std::printf("%-28s   (%s)\n", r.ours.empty() ? "none" : r.ours.c_str(), r.note.c_str());
+      continue;
+    }
+    std::string size = std::to_string(any->width) + "x" + std::to_string(any->height);
+    auto fps = [](const std::optional<BenchResult>& b) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.1f", b ? 1000 / b->frame_ms : 0.0);
+      return b ? std::string(buf) : std::string("-");
+    };
+    std::printf("%-28s %7d %-9s %8s %8s", r.ours.c_str(), any->faces, size.c_str(), fps(r.gpu).c_str(), fps(r.ref).c_str());
+    std::printf("%s\n", r.note.empty() ? "" : ("  (" + r.note + ")").c_str());
+  }
+  std::printf("\nTheir fps were measured on their hardware; ours on the machine and renderer above.\n");
+}
+
 void run(const BenchOptions& o) {
+  if (o.paper) {
+    if (!o.scenes.empty()) throw std::invalid_argument("--paper runs the scenes bench/paper_claims.hpp names; give no SCENE");
+    print_paper(o, run_paper(o));
+    return;
+  }
   std::vector<BenchResult> results;
   std::vector<std::string> scenes = o.scenes.empty() ? std::vector<std::string>{""} : o.scenes;
   for (const auto& name : scenes) {
     SceneOptions so{name, o.size, o.assignments};
     Scene scene = so.load();
-    if (o.backend != "reference") results.push_back(bench_gpu(scene, o.frames));
-    if (o.backend != "gpu") results.push_back(bench_reference(scene, std::max(1, o.frames / 10)));
+    if (o.backend != "reference") results.push_back(bench_gpu(o, scene, o.frames));
+    if (o.backend != "gpu") results.push_back(bench_reference(o, scene, std::max(1, o.frames / 10)));
   }
-  o.json ? print_json(results) : print_text(results);
+  o.json ? print_json(o, results) : print_text(results);
 }
 
 void setup(CLI::App& app) {
@@ -120,7 +348,14 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--size", o->size, "Image size WxH");
   cmd->add_option("--set", o->assignments, "Override a parameter: stage.name=value");
-  cmd->add_flag("--json", o->json, "One JSON object {results: [{scene, backend, fps, stages}]}");
+  cmd->add_flag("--json", o->json, "One JSON object {machine, renderer, results: [{scene, backend, fps, stages, errors}]}");
+  cmd->add_flag("--paper", o->paper, "The papers' claimed fps next to ours for the closest scenes (bench/paper_claims.hpp)");
+  cmd->add_option("--save", o->save_dir, "After timing, write one frame's buffers as DIR/<backend>/<buffer>.exr");
+  cmd->add_option("--against", o->against_dir, "After timing, compare one frame's buffers with DIR/<buffer>.exr");
+  cmd->add_option("--buffers", o->buffers, "Only these buffers for --save/--against (e.g. compose.color)")->delimiter(',');
+  cmd->add_option("--tolerance", o->tolerance, "--against: a pixel differs where any channel differs by more")
+      ->check(CLI::Range(0.0, 1e9))
+      ->capture_default_str();
   cmd->callback([o] { run(*o); });
 }
 

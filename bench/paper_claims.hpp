@@ -1,5 +1,7 @@
 // The frame rates the papers claim, in one table (../shared/papers/README.md).
-// `plumbago bench --paper` prints ours for the closest configuration next to them.
+// `plumbago bench --paper` prints ours for the closest configuration next to them: the
+// scene file named in `plumbago_scene` (relative to the repository root), or, where
+// Plumbago has no such configuration yet, the reason in `plumbago_note`.
 #pragma once
 
 #include <string>
@@ -14,19 +16,30 @@ struct PaperClaim {
   std::string resolution;
   double fps_low, fps_high;  // a single figure has low == high
   std::string hardware;
-  std::string style;     // the closest Plumbago effects/style
+  std::string style;           // the closest Plumbago effects/style
+  std::string plumbago_scene;  // our closest configuration ("" when there is none)
+  std::string plumbago_note;   // how it differs from theirs, or why there is none
 };
 
 inline const std::vector<PaperClaim>& paper_claims() {
   static const std::vector<PaperClaim> claims = {
       {"Lee et al. 2006", "reasonably complicated meshes", 0, "not stated", 15, 60,
-       "GeForce 7800GTX, Pentium IV 630", "pencil"},
-      {"Nienhaus & Doellner 2004", "Ogre", 124008, "800x800", 20, 20, "GeForce FX 5600", "sketchy"},
-      {"Kalnins et al. 2002", "cup, 25 strokes", 5000, "not stated", 20, 20, "GeForce3, Pentium IV 1.5 GHz", "strokes"},
-      {"Kalnins et al. 2002", "statue, 100 strokes", 120000, "not stated", 10, 10, "GeForce3, Pentium IV 1.5 GHz", "strokes"},
-      {"Kalnins et al. 2002", "building, 7000 strokes", 16000, "not stated", 3, 3, "GeForce3, Pentium IV 1.5 GHz", "strokes"},
-      {"Kalnins et al. 2002", "breakfast, 400 strokes", 25000, "not stated", 9, 9, "GeForce3, Pentium IV 1.5 GHz", "strokes"},
-      {"Kalnins et al. 2002", "snowman, 250 strokes", 10000, "not stated", 11, 11, "GeForce3, Pentium IV 1.5 GHz", "strokes"},
+       "GeForce 7800GTX, Pentium IV 630", "pencil", "scenes/fandisk_pencil.json",
+       "every effect: contours, interior, cross hatching, paper"},
+      {"Lee et al. 2006", "reasonably complicated meshes", 0, "not stated", 15, 60,
+       "GeForce 7800GTX, Pentium IV 630", "pencil", "scenes/fandisk_contours.json", "contours only (Fig. 9a)"},
+      {"Nienhaus & Doellner 2004", "Ogre", 124008, "800x800", 20, 20, "GeForce FX 5600", "sketchy",
+       "scenes/ogre_sketchy.json", "style default: edge and shade maps"},
+      {"Kalnins et al. 2002", "cup, 25 strokes", 5000, "not stated", 20, 20, "GeForce3, Pentium IV 1.5 GHz", "strokes",
+       "", "stroke-based rendering not implemented yet"},
+      {"Kalnins et al. 2002", "statue, 100 strokes", 120000, "not stated", 10, 10, "GeForce3, Pentium IV 1.5 GHz",
+       "strokes", "", "stroke-based rendering not implemented yet"},
+      {"Kalnins et al. 2002", "building, 7000 strokes", 16000, "not stated", 3, 3, "GeForce3, Pentium IV 1.5 GHz",
+       "strokes", "", "stroke-based rendering not implemented yet"},
+      {"Kalnins et al. 2002", "breakfast, 400 strokes", 25000, "not stated", 9, 9, "GeForce3, Pentium IV 1.5 GHz",
+       "strokes", "", "stroke-based rendering not implemented yet"},
+      {"Kalnins et al. 2002", "snowman, 250 strokes", 10000, "not stated", 11, 11, "GeForce3, Pentium IV 1.5 GHz",
+       "strokes", "", "stroke-based rendering not implemented yet"},
   };
   return claims;
 }
