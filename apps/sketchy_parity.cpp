@@ -65,7 +65,7 @@ std::vector<StageParity> sketchy_maps_parity(const Scene& scene) {
   gpu::GBufferTargets inputs = gpu::upload_gbuffer(g);
   gpu::Texture edge = gpu::make_texture(scene.width, scene.height, GL_RG32F);
   gpu::Texture shade = gpu::make_texture(scene.width, scene.height, GL_RGBA8);
-  gpu::SketchyMapsPass(object_colors(sketchy)).run(inputs, p, edge, shade);
+  gpu::SketchyMapsPass(object_colors(sketchy)).run(inputs, p, edge, shade, maps_rect(sketchy, scene.width, scene.height));
   Image gpu_edge = gpu::download_texture(edge, 2), gpu_shade = gpu::download_texture(shade, 4);
   gpu::Context::get().check_errors("sketchy_maps parity");
   return {compared("sketchy_maps.edge_darkness", channel(ref.edge, 0), channel(gpu_edge, 0), parity_tolerance::kFloat,
@@ -95,7 +95,8 @@ std::vector<StageParity> sketchy_composite_parity(const Scene& scene) {
   gpu::Texture coord_texture = gpu::upload_texture(coords, GL_RGBA32F);
   gpu::Texture color = gpu::make_texture(scene.width, scene.height, GL_RGBA8);
   gpu::Texture depth = gpu::make_texture(scene.width, scene.height, GL_R32F);
-  gpu::SketchyCompositePass().run({edge, shade, inputs, textures, coord_texture}, sp, color, nullptr, depth);
+  gpu::SketchyCompositePass().run({edge, shade, inputs, textures, coord_texture}, sp, color, nullptr, depth,
+                                  composite_rect(sketchy, scene.width, scene.height));
   Image gpu_color = gpu::download_texture(color, 3), gpu_depth = gpu::download_texture(depth, 1);
   gpu::Context::get().check_errors("sketchy_composite parity");
   const char* note = "both fed the reference maps, sketchy G-buffer, noise and noise coordinates; over white paper";

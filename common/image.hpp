@@ -8,6 +8,11 @@
 
 namespace plumbago {
 
+// A window rectangle of pixels [x0, x1) x [y0, y1), rows from the bottom.
+struct PixelRect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
 template <class T>
 struct ImageT {
   int width = 0, height = 0, channels = 0;

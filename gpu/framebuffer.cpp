@@ -1,5 +1,7 @@
 #include "gpu/framebuffer.hpp"
 
+#include <algorithm>
+
 namespace plumbago::gpu {
 
 FullscreenPass::FullscreenPass() : fbo_(make_framebuffer()), empty_(make_vertex_array()) {}
@@ -10,6 +12,23 @@ void FullscreenPass::draw(const Program& program, std::initializer_list<const Te
 
 void FullscreenPass::draw(const Program& program, std::initializer_list<const Texture*> textures,
                           std::initializer_list<Texture*> targets) {
+  bind_targets(targets);
+  draw_triangle(program, textures);
+}
+
+void FullscreenPass::draw_inside(const Program& program, std::initializer_list<const Texture*> textures,
+                                 std::initializer_list<Texture*> targets, const PixelRect& rect,
+                                 std::initializer_list<glm::vec4> outside) {
+  bind_targets(targets);
+  GLint k = 0;
+  for (const glm::vec4& v : outside) glClearBufferfv(GL_COLOR, k++, &v.x);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(rect.x0, rect.y0, std::max(0, rect.x1 - rect.x0), std::max(0, rect.y1 - rect.y0));
+  draw_triangle(program, textures);
+  glDisable(GL_SCISSOR_TEST);
+}
+
+void FullscreenPass::bind_targets(std::initializer_list<Texture*> targets) {
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   GLenum buffers[8];
   GLsizei n = 0;
@@ -23,6 +42,10 @@ void FullscreenPass::draw(const Program& program, std::initializer_list<const Te
   glDrawBuffers(n, buffers);
   const Texture& first = **targets.begin();
   glViewport(0, 0, first.width, first.height);
+}
+
+// Binds `textures` to units 0.. and draws the full-window triangle into the bound targets.
+void FullscreenPass::draw_triangle(const Program& program, std::initializer_list<const Texture*> textures) {
   bind_textures(textures);
   glUseProgram(program.id());
   glBindVertexArray(empty_.id());

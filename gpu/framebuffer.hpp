@@ -1,6 +1,9 @@
 // Full-window passes: draw one triangle into a texture, every fragment at a pixel center.
 #pragma once
 
+#include <glm/glm.hpp>
+
+#include "common/image.hpp"
 #include "gpu/gl_objects.hpp"
 #include "gpu/program.hpp"
 
@@ -14,8 +17,15 @@ class FullscreenPass {
   // The same into several targets of one size: fragment output k goes to targets[k].
   void draw(const Program& program, std::initializer_list<const Texture*> textures,
             std::initializer_list<Texture*> targets);
+  // The same, but only the pixels inside `rect` run the program: target k is first
+  // cleared to outside[k], the value the program would write there.
+  void draw_inside(const Program& program, std::initializer_list<const Texture*> textures,
+                   std::initializer_list<Texture*> targets, const PixelRect& rect,
+                   std::initializer_list<glm::vec4> outside);
 
  private:
+  void bind_targets(std::initializer_list<Texture*> targets);
+  void draw_triangle(const Program& program, std::initializer_list<const Texture*> textures);
   Framebuffer fbo_;
   VertexArray empty_;
 };

@@ -134,12 +134,13 @@ struct Renderer::State {
     } else if (pass == "sketchy_enlarged") {
       sketchy->enlarged_pass->render(scene.camera, sketchy->noise_coordinates);
     } else if (pass == "sketchy_maps") {
-      sketchy->maps_pass.run(sketchy->gbuffer, scene.params.get<EdgeDetectParams>(), sketchy->edge_map, sketchy->shade_map);
+      sketchy->maps_pass.run(sketchy->gbuffer, scene.params.get<EdgeDetectParams>(), sketchy->edge_map, sketchy->shade_map,
+                             maps_rect(sketchy->sketchy, scene.width, scene.height));
     } else if (pass == "sketchy_composite") {
       SketchyState& s = *sketchy;
       s.composite_pass.run({s.edge_map, s.shade_map, s.gbuffer, s.noise, s.noise_coordinates},
                            scene.params.get<SketchyParams>(), color, ran("gbuffer") ? &gbuffer_pass.depth_buffer() : nullptr,
-                           s.sprite_depth);
+                           s.sprite_depth, composite_rect(s.sketchy, scene.width, scene.height));
     } else {
       throw std::runtime_error("pass '" + pass + "' is not implemented on the GPU backend");
     }

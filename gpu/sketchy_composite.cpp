@@ -1,5 +1,7 @@
 #include "gpu/sketchy_composite.hpp"
 
+#include <algorithm>
+
 #include <glm/gtc/type_ptr.hpp>
 
 namespace plumbago::gpu {
@@ -47,7 +49,7 @@ void SketchyCompositePass::set_uniforms(const SketchyCompositeInputs& in, const 
 }
 
 void SketchyCompositePass::run(const SketchyCompositeInputs& in, const SketchyParams& p, Texture& color,
-                               const Renderbuffer* under_depth, Texture& sprite_depth) {
+                               const Renderbuffer* under_depth, Texture& sprite_depth, const PixelRect& reach) {
   set_uniforms(in, p);
   if (!under_depth && !own_depth_.id()) own_depth_ = make_renderbuffer(color.width, color.height, GL_DEPTH_COMPONENT32F);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
@@ -70,7 +72,10 @@ void SketchyCompositePass::run(const SketchyCompositeInputs& in, const SketchyPa
                  &in.noise_coordinates});
   glUseProgram(program_.id());
   glBindVertexArray(empty_.id());
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(reach.x0, reach.y0, std::max(0, reach.x1 - reach.x0), std::max(0, reach.y1 - reach.y0));
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_SCISSOR_TEST);
   glBindVertexArray(0);
   glDisable(GL_DEPTH_TEST);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, 0);

@@ -19,12 +19,17 @@ SketchyMapsPass::SketchyMapsPass(const std::vector<glm::vec3>& colors)
   for (int k = 0; k < 4; ++k) glProgramUniform1i(program_.id(), program_.uniform(units[k]), k);
 }
 
-void SketchyMapsPass::run(const GBufferTargets& g, const EdgeDetectParams& p, Texture& edge, Texture& shade) {
+void SketchyMapsPass::run(const GBufferTargets& g, const EdgeDetectParams& p, Texture& edge, Texture& shade,
+                          const PixelRect& covered) {
   program_.set_params(p);
   glProgramUniform1f(program_.id(), program_.uniform("near_plane"), g.near);
   glProgramUniform1f(program_.id(), program_.uniform("far_plane"), g.far);
   const Texture& normals = p.normals == EdgeNormals::Face ? g.face_normal : g.normal;
-  pass_.draw(program_, {&normals, &g.depth, &g.ids, &colors_}, {&edge, &shade});
+  // Background pixels with background neighbors: d = 0, or 1 under the literal formula
+  // (zero normals disagree); edge depth = far; no shade.
+  float background_darkness = p.background_pairs == BackgroundPairs::Continuous ? 0.0f : 1.0f;
+  pass_.draw_inside(program_, {&normals, &g.depth, &g.ids, &colors_}, {&edge, &shade}, covered,
+                    {glm::vec4(background_darkness, g.far, 0, 0), glm::vec4(0)});
 }
 
 }  // namespace plumbago::gpu

@@ -39,6 +39,75 @@ TEST_P(SketchyParity, EveryStageMatchesTheReference) {
 
 INSTANTIATE_TEST_SUITE_P(Styles, SketchyParity, ::testing::Values("default", "repeat", "rough", "object"));
 
+// A small sketchy square facing the camera, off to one side of a larger ordinary torus:
+// the GPU draws the sketch's maps and composite only inside the rectangles of
+// common/sketchy.hpp, and for a square seen face-on the projected box is its exact
+// outline, so a margin too small shows in the parity.
+Scene small_sketchy_scene(const std::string& style) {
+  std::string json = R"({"objects": [
+      {"mesh": {"procedural": "plane"}, "style": "sketchy",
+       "transform": [0.3, 0, 0, 0,  0, 0.3, 0, 0,  0, 0, 0.3, 0,  0.9, 0.5, 0.2, 1]},
+      {"mesh": {"procedural": "torus"}}],
+    "camera": {"view_direction": [0, 0, 1]},
+    "resolution": [240, 180], "params": {"sketchy.style": ")" + style + R"("}})";
+  return parse_scene(json, "test:small", ".");
+}
+
+TEST(SketchyBounds, CoveredRectHoldsEveryCoveredPixelAndClipsTheRest) {
+  Scene scene = sketchy_objects(small_sketchy_scene("default"));
+  PixelRect r = covered_rect(scene, scene.width, scene.height, 0);
+  GBuffer g = reference::trace_gbuffer(scene, scene.width, scene.height);
+  int covered = 0;
+  for (int y = 0; y < scene.height; ++y)
+    for (int x = 0; x < scene.width; ++x)
+      if (!g.background(x, y)) {
+        ++covered;
+        EXPECT_TRUE(x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1) << x << "," << y;
+      }
+  EXPECT_GT(covered, 100);
+  EXPECT_LT((r.x1 - r.x0) * (r.y1 - r.y0), scene.width * scene.height / 4);  // it does clip
+  PixelRect grown = covered_rect(scene, scene.width, scene.height, 5);
+  EXPECT_EQ(grown.x0, std::max(0, r.x0 - 5));
+  EXPECT_EQ(grown.y1, std::min(scene.height, r.y1 + 5));
+}
+
+TEST(SketchyBounds, ABoxReachingBehindTheEyeGivesTheWholeWindow) {
+  Scene scene = sketchy_objects(small_sketchy_scene("default"));
+  scene.camera.eye = glm::vec3(0.9f, 0.5f, 0.5f);  // in front of the square, looking past it
+  scene.camera.target = glm::vec3(0.9f, 0.5f, 1.5f);
+  PixelRect r = covered_rect(scene, scene.width, scene.height, 0);
+  EXPECT_EQ(r.x0, 0);
+  EXPECT_EQ(r.y0, 0);
+  EXPECT_EQ(r.x1, scene.width);
+  EXPECT_EQ(r.y1, scene.height);
+}
+
+TEST(SketchyBounds, ReachBoundsTheOffsetsOfEveryStyle) {
+  ParamSet params;
+  auto p = params.get<SketchyParams>();
+  float reach = sketch_reach(p);  // M_s = [[10, 3], [-3, 10]]: ||M_s||_F = 14.6, |(u, v)| <= 1.5 sqrt 2
+  EXPECT_NEAR(reach, 1.5f * std::sqrt(2.0f) * std::sqrt(218.0f), 1e-4f);
+  for (glm::vec2 uv : {glm::vec2(1.5f, 1.5f), glm::vec2(-0.5f, 1.5f), glm::vec2(1.5f, -0.5f)}) {
+    EXPECT_LE(glm::length(shade_matrix(p) * uv), reach);
+    for (int k = 0; k < 8; ++k) EXPECT_LE(glm::length(copy_matrix(p, k) * uv), reach + 1e-4f);
+  }
+  p.style = SketchyStyle::Rough;
+  EXPECT_NEAR(sketch_reach(p), reach / 3, 1e-4f);
+}
+
+class SketchyBoundsParity : public testing::GlTest, public ::testing::WithParamInterface<std::string> {};
+
+TEST_P(SketchyBoundsParity, ClippedPassesMatchTheReferenceEverywhere) {
+  auto results = run_parity(small_sketchy_scene(GetParam()), {"sketchy_maps", "sketchy_composite"});
+  ASSERT_EQ(results.size(), 5u);
+  for (const auto& r : results) {
+    std::printf("[sketchy small %s] %s\n", GetParam().c_str(), format_diff(r.name, r.diff).c_str());
+    EXPECT_TRUE(r.pass) << r.name << ": " << r.note;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Styles, SketchyBoundsParity, ::testing::Values("default", "rough"));
+
 // True when every pixel of the square of side 2r + 1 around p satisfies `ok`.
 bool whole_square(glm::ivec2 p, int r, const std::function<bool(int, int)>& ok) {
   for (int dy = -r; dy <= r; ++dy)
