@@ -16,7 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
+struct CliRun {
   int code;
   std::string out, err;
 };
@@ -36,7 +36,7 @@ class BenchCmd : public ::testing::Test {
     ss << in.rdbuf();
     return ss.str();
   }
-  Run run(const std::string& args) const {
+  CliRun run(const std::string& args) const {
     std::string cmd = std::string(PLUMBAGO_CLI) + " " + args + " >" + path("stdout") + " 2>" + path("stderr");
     int status = std::system(cmd.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(path("stdout")), slurp(path("stderr"))};
@@ -45,7 +45,7 @@ class BenchCmd : public ::testing::Test {
 };
 
 TEST_F(BenchCmd, PaperTableHasEveryClaimWithOursNextToIt) {
-  Run r = run("bench --paper --json --size 48x48 --frames 1");
+  CliRun r = run("bench --paper --json --size 48x48 --frames 1");
   ASSERT_EQ(r.code, 0) << r.err;
   auto j = nlohmann::json::parse(r.out);
   EXPECT_FALSE(j.at("machine").get<std::string>().empty());
@@ -81,7 +81,7 @@ TEST_F(BenchCmd, PaperTableHasEveryClaimWithOursNextToIt) {
 }
 
 TEST_F(BenchCmd, PaperTextNamesTheMachineTheRendererAndEveryPaper) {
-  Run r = run("bench --paper --size 48x48 --frames 1 --backend gpu");
+  CliRun r = run("bench --paper --size 48x48 --frames 1 --backend gpu");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("machine:"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("GL renderer:"), std::string::npos) << r.out;
@@ -92,7 +92,7 @@ TEST_F(BenchCmd, PaperTextNamesTheMachineTheRendererAndEveryPaper) {
 }
 
 TEST_F(BenchCmd, PaperRefusesAScene) {
-  Run r = run("bench --paper builtin:torus");
+  CliRun r = run("bench --paper builtin:torus");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("--paper"), std::string::npos) << r.err;
 }
@@ -101,11 +101,11 @@ TEST_F(BenchCmd, AgainstItsOwnSavedFrameIsZeroAndAgainstAnotherSettingIsNot) {
   std::string base = "bench builtin:torus --size 64x48 --frames 1 --backend gpu --json --buffers compose.color ";
   ASSERT_EQ(run(base + "--save " + path("saved")).code, 0);
   ASSERT_TRUE(fs::exists(path("saved/gpu/compose.color.exr")));
-  Run same = run(base + "--against " + path("saved/gpu"));
+  CliRun same = run(base + "--against " + path("saved/gpu"));
   ASSERT_EQ(same.code, 0) << same.err;
   auto e = nlohmann::json::parse(same.out)["results"][0]["errors"]["compose.color"];
   EXPECT_EQ(e.at("max_abs").get<double>(), 0.0) << "the same scene rendered twice differs";
-  Run other = run(base + "--set contour.copies=1 --against " + path("saved/gpu"));
+  CliRun other = run(base + "--set contour.copies=1 --against " + path("saved/gpu"));
   ASSERT_EQ(other.code, 0) << other.err;
   auto o = nlohmann::json::parse(other.out)["results"][0]["errors"]["compose.color"];
   EXPECT_GT(o.at("rmse").get<double>(), 0.0);
@@ -115,7 +115,7 @@ TEST_F(BenchCmd, AgainstItsOwnSavedFrameIsZeroAndAgainstAnotherSettingIsNot) {
 
 TEST_F(BenchCmd, AgainstAnImageOfAnotherSizeIsRefused) {
   ASSERT_EQ(run("bench builtin:torus --size 64x48 --frames 1 --backend gpu --buffers compose.color --save " + path("s")).code, 0);
-  Run r = run("bench builtin:torus --size 32x32 --frames 1 --backend gpu --buffers compose.color --against " + path("s/gpu"));
+  CliRun r = run("bench builtin:torus --size 32x32 --frames 1 --backend gpu --buffers compose.color --against " + path("s/gpu"));
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("--against"), std::string::npos) << r.err;
 }
