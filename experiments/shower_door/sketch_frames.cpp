@@ -1,0 +1,69 @@
+#include "experiments/shower_door/sketch_frames.hpp"
+
+#include <stdexcept>
+
+#include "reference/rows.hpp"
+#include "reference/sketchy_composite.hpp"
+#include "reference/sketchy_enlarged.hpp"
+
+namespace plumbago::shower_door {
+
+std::vector<std::string> all_mode_names() {
+  return {"default", "repeat", "rough", "object", "object_enlarge0", "unperturbed"};
+}
+
+Mode make_mode(const Scene& sketchy, const std::string& name) {
+  Mode m{name, sketchy, {}, {}, true};
+  ParamSet& p = m.scene.params;
+  if (name == "default" || name == "repeat" || name == "rough" || name == "object") {
+    p.set("sketchy.style", name);
+  } else if (name == "object_enlarge0") {
+    p.set("sketchy.style", std::string("object"));
+    p.set("sketchy.enlarge", 0.0);
+  } else if (name == "unperturbed") {
+    p.set("sketchy.style", std::string("default"));
+    for (const char* k : {"edge_a", "edge_b", "edge_c", "edge_d", "shade_a", "shade_b", "shade_c", "shade_d"})
+      p.set(std::string("sketchy.") + k, 0.0);
+    m.perturbed = false;
+  } else {
+    throw std::invalid_argument("unknown shower-door mode '" + name + "'");
+  }
+  m.noise = make_sketchy_noise(p, m.scene.seed);
+  if (p.get<SketchyParams>().style == SketchyStyle::Object) m.enlarged = enlarged_scene(m.scene);
+  return m;
+}
+
+View trace_view(const Scene& sketchy, const Camera& camera) {
+  View v{sketchy, {}, {}};
+  v.scene.camera = camera;
+  v.gbuffer = reference::trace_gbuffer(v.scene, v.scene.width, v.scene.height);
+  v.maps = reference::sketchy_maps(v.gbuffer, object_colors(v.scene), v.scene.params.get<EdgeDetectParams>());
+  return v;
+}
+
+ModeFrame render_mode(const Mode& mode, const View& view) {
+  SketchyParams p = mode.scene.params.get<SketchyParams>();
+  int w = view.scene.width, h = view.scene.height;
+  Image coordinates;
+  if (!mode.enlarged.objects.empty()) {
+    Scene enlarged = mode.enlarged;
+    enlarged.camera = view.scene.camera;
+    coordinates = reference::enlarged_noise_coordinates(enlarged, w, h);
+  }
+  reference::SketchyInputs in{view.maps, view.gbuffer, mode.noise, coordinates};
+  ModeFrame out;
+  out.sketch = reference::sketchy_composite(in, p, {}, {}).color;
+  if (!mode.perturbed) return out;
+  int copies = p.style == SketchyStyle::Repeat ? p.edge_copies : 1;
+  out.field = Image(w, h, 2 * copies);
+  reference::for_each_row(h, [&](int y) {
+    for (int x = 0; x < w; ++x)
+      for (int k = 0; k < copies; ++k) {
+        glm::vec2 uv = reference::uncertainty(in, p, {float(x) + 0.5f, float(y) + 0.5f}, k);
+        out.field.at(x, y, 2 * k) = uv.x, out.field.at(x, y, 2 * k + 1) = uv.y;
+      }
+  });
+  return out;
+}
+
+}  // namespace plumbago::shower_door
