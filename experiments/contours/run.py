@@ -1,0 +1,118 @@
+#!/usr/bin/python3
+"""Study 3: contour drawing (Lee et al. 2006 §4, SPEC 2.4): how many copies, how fine a
+distortion grid and how much shake, against frame time.
+
+Reference: the most accurate setting of the stage, 5 copies on the finest grid of the
+sweep (other parameters at their defaults), rendered in the same run. Each setting's
+final image is compared with it by `plumbago bench --against`; its frame time is
+reported in ms and as a ratio to the default setting measured in the same run.
+
+  /usr/bin/python3 experiments/contours/run.py [--quick] [--out DIR] [--replot]
+"""
+import pathlib
+import sys
+import tempfile
+
+HERE = pathlib.Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent / "lib"))
+import plumbago_cli as pc  # noqa: E402
+
+SCENE = "scenes/fandisk_contours.json"
+TOLERANCE = 0.05
+
+
+def settings(quick):
+    cells = [4, 16, 64] if quick else [2, 4, 8, 16, 32, 64]
+    copies = [1, 3, 5] if quick else [1, 2, 3, 4, 5]
+    shakes = [0, 2, 8] if quick else [0, 1, 2, 4, 8]
+    finest, most = min(cells), max(copies)
+    lo, hi = pc.param_range("contour.grid_cell")
+    assert lo <= finest and max(cells) <= hi, "grid cells outside the parameter's range"
+    default = dict(copies=pc.param_default("contour.copies"), grid_cell=pc.param_default("contour.grid_cell"),
+                   shake=pc.param_default("contour.shake_amplitude"))
+    runs = [("default", default)]
+    runs += [("copies", dict(default, copies=c, grid_cell=finest)) for c in copies]
+    runs += [("grid_cell", dict(default, copies=most, grid_cell=g)) for g in cells]
+    runs += [("shake", dict(default, copies=most, grid_cell=finest, shake=s)) for s in shakes]
+    reference = dict(default, copies=most, grid_cell=finest)
+    return runs, reference
+
+
+def sets(s):
+    return ["contour.copies=%d" % s["copies"], "contour.grid_cell=%d" % s["grid_cell"],
+            "contour.shake_amplitude=%g" % s["shake"]]
+
+
+def sweep(a):
+    size, frames = ("400x400", 3) if a.quick else (None, 10)
+    runs, reference = settings(a.quick)
+    rows = []
+    with tempfile.TemporaryDirectory(prefix="plumbago-contours-") as work:
+        ref = pc.bench(SCENE, sets(reference), size=size, frames=frames, save=work, buffers=["compose.color"])
+        info = pc.machine(ref["renderer"])
+        default_ms = None
+        for sweep_name, s in runs:
+            j = pc.bench(SCENE, sets(s), size=size, frames=frames, against=pathlib.Path(work) / "gpu",
+                         buffers=["compose.color"], tolerance=TOLERANCE)
+            g = pc.result(j, "gpu")
+            if sweep_name == "default":
+                default_ms = g["frame_ms"]
+            e = g["errors"]["compose.color"]
+            row = dict(sweep=sweep_name, copies=s["copies"], grid_cell=s["grid_cell"], shake_amplitude=s["shake"],
+                       width=g["size"][0], height=g["size"][1], frame_ms=g["frame_ms"],
+                       ratio_to_default=g["frame_ms"] / default_ms,
+                       multi_contour_gpu_ms=g["stages"].get("multi_contour", float("nan")),
+                       distortion_ms=g["preprocessing"].get("distortion", float("nan")),
+                       mean_abs=e["mean_abs"], rmse=e["rmse"], share_over_tolerance=e["over_tolerance"], tolerance=TOLERANCE,
+                       reference="copies=%d grid_cell=%d shake=%g" % (reference["copies"], reference["grid_cell"],
+                                                                       reference["shake"]))
+            rows.append(row)
+            pc.log("%-9s copies %d cell %3d shake %4g: %7.1f ms (%.2fx default)  mean |diff| %.4f  over %.2f: %.2f%%" %
+                   (sweep_name, s["copies"], s["grid_cell"], s["shake"], row["frame_ms"], row["ratio_to_default"],
+                    row["mean_abs"], TOLERANCE, 100 * row["share_over_tolerance"]))
+    return rows, info
+
+
+def plot(rows, out):
+    plt = pc.pyplot()
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.6), sharey=True)
+    default = next(r for r in rows if r["sweep"] == "default")
+    for ax, (name, key, label) in zip(axes, [("copies", "copies", "copies (grid cell %d px)"),
+                                             ("grid_cell", "grid_cell", "grid cell px (%d copies)"),
+                                             ("shake", "shake_amplitude", "shake amplitude px (%d copies)")]):
+        sel = sorted((r for r in rows if r["sweep"] == name), key=lambda r: r[key])
+        x = [r["frame_ms"] for r in sel]
+        y = [100 * r["mean_abs"] for r in sel]
+        ax.plot(x, y, "o-")
+        for r, xi, yi in zip(sel, x, y):
+            ax.annotate("%g (%.2fx)" % (r[key], r["ratio_to_default"]), (xi, yi), fontsize=8, xytext=(4, 3),
+                        textcoords="offset points")
+        ax.axvline(default["frame_ms"], color="gray", ls=":", lw=1)
+        ax.annotate("default setting", (default["frame_ms"], 0), rotation=90, fontsize=7, color="gray",
+                    xytext=(2, 2), textcoords="offset points")
+        fixed = sel[0]["grid_cell"] if name == "copies" else sel[0]["copies"]
+        ax.set_title(label % fixed, fontsize=10)
+        ax.set_xlabel("frame ms (median; label: value, time / default setting)")
+        ax.grid(alpha=0.3)
+    axes[0].set_ylabel("mean |image - reference| (% of full scale)")
+    fig.suptitle("contours, %s at %dx%d: difference from %s, against frame time" %
+                 (pathlib.Path(SCENE).stem, rows[0]["width"], rows[0]["height"], rows[0]["reference"]), fontsize=11)
+    fig.tight_layout()
+    fig.savefig(pathlib.Path(out) / "difference_vs_time.png", dpi=110)
+    plt.close(fig)
+
+
+def main():
+    a = pc.arguments(__doc__, HERE)
+    if a.replot:
+        plot(pc.read_csv(pathlib.Path(a.out) / "results.csv"), a.out)
+        return
+    rows, info = sweep(a)
+    pc.write_csv(pathlib.Path(a.out) / "results.csv", rows)
+    pc.write_run_info(a.out, info)
+    plot(rows, a.out)
+    pc.log("wrote", a.out)
+
+
+if __name__ == "__main__":
+    main()
