@@ -1,0 +1,101 @@
+#!/usr/bin/python3
+"""Study 5: the pencil interior (Lee et al. 2006 §5, SPEC 2.5-2.9): 3-way blending, 3-way
+blending + cross hatching, with Gouraud (per-vertex, Lee) or Phong (per-pixel) intensity,
+against frame time. The contours-only frame is the time baseline (what the interior adds).
+
+Reference: the most accurate and complete setting, 3-way + cross hatching with per-pixel
+(Phong) intensity, rendered in the same run. Reported per setting: the difference of the
+final image and of the interior's buffers (intensity, darkness) from it, by
+`plumbago bench --against`. The scenes' paper effect is left out so the interior is all
+that changes. (1-way blending has no parameter yet: see README.md.)
+
+  /usr/bin/python3 experiments/interior/run.py [--quick] [--out DIR] [--replot]
+"""
+import pathlib
+import sys
+import tempfile
+
+HERE = pathlib.Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent / "lib"))
+import plumbago_cli as pc  # noqa: E402
+
+TOLERANCE = 0.05
+BUFFERS = ["compose.color", "interior_intensity.intensity", "pencil_interior.interior_darkness"]
+VARIANTS = [("contours only", ["contours"]), ("3-way", ["contours", "interior"]),
+            ("3-way + hatching", ["contours", "interior", "crosshatch"])]
+
+
+def sweep(a):
+    size, frames = ("400x400", 3) if a.quick else (None, 10)
+    scenes = ["scenes/fandisk_pencil.json"] + ([] if a.quick else ["scenes/sphere_interior.json"])
+    shadings = pc.params()["interior.shading"]["range"].split("|")  # gouraud|phong
+    rows, info = [], None
+    with tempfile.TemporaryDirectory(prefix="plumbago-interior-") as work:
+        for base in scenes:
+            stem = pathlib.Path(base).stem
+            files = {name: pc.derive_scene(base, work, "%s-%d" % (stem, i), effects=effects)
+                     for i, (name, effects) in enumerate(VARIANTS)}
+            saved = pathlib.Path(work) / (stem + "-reference")
+            ref = pc.bench(files["3-way + hatching"], ["interior.shading=phong"], size=size, frames=frames, save=saved,
+                           buffers=BUFFERS)
+            info = info or pc.machine(ref["renderer"])
+            baseline = None
+            for name, _ in VARIANTS:
+                for shading in shadings:
+                    j = pc.bench(files[name], ["interior.shading=" + shading], size=size, frames=frames,
+                                 against=saved / "gpu", buffers=BUFFERS, tolerance=TOLERANCE)
+                    g = pc.result(j, "gpu")
+                    baseline = baseline or g["frame_ms"]  # contours only, first shading
+                    row = dict(scene=stem, variant=name, shading=shading, width=g["size"][0], height=g["size"][1],
+                               frame_ms=g["frame_ms"], ratio_to_contours_only=g["frame_ms"] / baseline,
+                               interior_gpu_ms=sum(v for k, v in g["stages"].items() if "interior" in k),
+                               reference="3-way + hatching, phong")
+                    for b in BUFFERS:
+                        e = g["errors"].get(b)
+                        short = b.split(".")[1]
+                        row[short + "_mean_abs"] = e["mean_abs"] if e else float("nan")
+                        row[short + "_over_tolerance"] = e["over_tolerance"] if e else float("nan")
+                    rows.append(row)
+                    pc.log("%-16s %-17s %-8s %7.1f ms (%.2fx contours only)  image mean |diff| %.4f  intensity %.4f" %
+                           (stem, name, shading, row["frame_ms"], row["ratio_to_contours_only"], row["color_mean_abs"],
+                            row["intensity_mean_abs"]))
+    return rows, info
+
+
+def plot(rows, out):
+    plt = pc.pyplot()
+    scenes = list(dict.fromkeys(r["scene"] for r in rows))
+    fig, axes = plt.subplots(1, len(scenes), figsize=(6.5 * len(scenes), 4.8), squeeze=False)
+    markers = {"gouraud": "o", "phong": "s"}
+    colors = {name: "C%d" % i for i, (name, _) in enumerate(VARIANTS)}
+    for ax, scene in zip(axes[0], scenes):
+        for r in (r for r in rows if r["scene"] == scene):
+            ax.plot(r["frame_ms"], 100 * r["color_mean_abs"], markers[r["shading"]], color=colors[r["variant"]], ms=8,
+                    label="%s, %s" % (r["variant"], r["shading"]))
+            ax.annotate("%.2fx" % r["ratio_to_contours_only"], (r["frame_ms"], 100 * r["color_mean_abs"]), fontsize=8,
+                        xytext=(5, 3), textcoords="offset points")
+        ax.set_title("%s at %dx%d" % (scene, rows[0]["width"], rows[0]["height"]), fontsize=10)
+        ax.set_xlabel("frame ms (median; label: time / contours only)")
+        ax.set_ylabel("mean |image - reference| (% of full scale)")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.suptitle("interior: difference from 3-way + cross hatching with Phong intensity, against frame time", fontsize=11)
+    fig.tight_layout()
+    fig.savefig(pathlib.Path(out) / "difference_vs_time.png", dpi=110)
+    plt.close(fig)
+
+
+def main():
+    a = pc.arguments(__doc__, HERE)
+    if a.replot:
+        plot(pc.read_csv(pathlib.Path(a.out) / "results.csv"), a.out)
+        return
+    rows, info = sweep(a)
+    pc.write_csv(pathlib.Path(a.out) / "results.csv", rows)
+    pc.write_run_info(a.out, info)
+    plot(rows, a.out)
+    pc.log("wrote", a.out)
+
+
+if __name__ == "__main__":
+    main()
