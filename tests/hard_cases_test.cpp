@@ -1,5 +1,6 @@
 // Hard cases (SPEC 5 "numerical stability"): every buffer of every stage stays free of
-// NaN and Inf, on both backends, with every effect of the pencil pipeline on.
+// NaN and Inf, on both backends, with every effect of the pencil pipeline on, and drawn
+// sketchy.
 #include <gtest/gtest.h>
 
 #include "gpu/pipeline.hpp"
@@ -16,13 +17,26 @@ Scene hard_scene(const std::string& body, const std::string& base = ".") {
   return parse_scene("{" + body + ", " + kAllEffects + "}", "hard-case", base);
 }
 
-void expect_finite_everywhere(const Scene& scene, const std::string& label) {
+void expect_finite_frames(const Scene& scene, const std::string& label) {
   FrameOptions keep{true};
   Frame ref = reference::render(scene, keep);
   Frame gpu_frame = gpu::Renderer(scene).render(keep);
   for (const Frame* f : {&ref, &gpu_frame}) {
     EXPECT_GT(f->buffers.size(), 10u) << label;
     for (const auto& [name, img] : f->buffers) EXPECT_FALSE(has_non_finite(img)) << label << ": " << name;
+  }
+}
+
+// The scene with every effect of the pencil pipeline, then with every object drawn
+// sketchy (SPEC 3) in the styles with their own geometry and noise: object, repeat, rough.
+void expect_finite_everywhere(const Scene& scene, const std::string& label) {
+  expect_finite_frames(scene, label);
+  for (const char* style : {"object", "repeat", "rough"}) {
+    Scene sketchy = scene;
+    for (SceneObject& o : sketchy.objects) o.style = Style::Sketchy;
+    sketchy.effects = {"sketchy"};
+    sketchy.params.set("sketchy.style", std::string(style));
+    expect_finite_frames(sketchy, label + ", sketchy " + style);
   }
 }
 
