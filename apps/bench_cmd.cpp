@@ -1,4 +1,4 @@
-// plumbago bench [SCENE ...] [--frames N] [--backend gpu|reference|both] [--json]
+// plumbago bench [SCENE ...] [--frames N] [--reference-frames N] [--backend gpu|reference|both] [--json]
 //                [--save DIR] [--against DIR] [--buffers a,b] [--tolerance T] [--paper]
 // Per backend: per-pass ms (GL timestamp queries on the GPU) and whole-frame fps, next to
 // the papers' claims. A GPU frame is every pass up to the final image in GPU memory,
@@ -41,6 +41,7 @@ struct BenchOptions {
   std::vector<std::string> assignments;
   std::string size, backend = "both";
   int frames = 20;
+  int reference_frames = 0;  // 0: a tenth of --frames, at least 1
   bool json = false;
   bool paper = false;
   std::string save_dir, against_dir;
@@ -136,6 +137,8 @@ void save_and_compare(const BenchOptions& o, std::map<std::string, Image> buffer
     }
   }
 }
+
+int reference_frames(const BenchOptions& o) { return o.reference_frames ? o.reference_frames : std::max(1, o.frames / 10); }
 
 bool keeps_buffers(const BenchOptions& o) { return !o.save_dir.empty() || !o.against_dir.empty(); }
 
@@ -265,7 +268,7 @@ std::vector<ClaimRun> run_paper(const BenchOptions& o) {
           Scene scene = so.load();
           scene.source = c.plumbago_scene;
           if (o.backend != "reference") g = bench_gpu(o, scene, o.frames);
-          if (o.backend != "gpu") r = bench_reference(o, scene, std::max(1, o.frames / 10));
+          if (o.backend != "gpu") r = bench_reference(o, scene, reference_frames(o));
         } catch (const std::exception& e) {
           run.note = std::string("not run: ") + e.what();
         }
@@ -331,7 +334,7 @@ void run(const BenchOptions& o) {
     SceneOptions so{name, o.size, o.assignments};
     Scene scene = so.load();
     if (o.backend != "reference") results.push_back(bench_gpu(o, scene, o.frames));
-    if (o.backend != "gpu") results.push_back(bench_reference(o, scene, std::max(1, o.frames / 10)));
+    if (o.backend != "gpu") results.push_back(bench_reference(o, scene, reference_frames(o)));
   }
   o.json ? print_json(o, results) : print_text(results);
 }
@@ -343,6 +346,8 @@ void setup(CLI::App& app) {
   cmd->add_option("--frames", o->frames, "Frames to time on the GPU (the reference times a tenth)")
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
+  cmd->add_option("--reference-frames", o->reference_frames, "Frames to time on the reference (default: a tenth of --frames)")
+      ->check(CLI::Range(1, 100000));
   cmd->add_option("--backend", o->backend, "gpu, reference or both")
       ->check(CLI::IsMember({"gpu", "reference", "both"}))
       ->capture_default_str();

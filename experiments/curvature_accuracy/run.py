@@ -11,6 +11,7 @@ Run with the Debian interpreter, which has numpy and matplotlib:
 """
 import argparse
 import csv
+import os
 import pathlib
 import re
 import subprocess
@@ -75,9 +76,16 @@ def errors(table, truth, keep):
     return (np.median(direction) if direction.size else np.nan), np.median(e_min), np.median(e_max)
 
 
-def sweep(plumbago, work):
+QUICK_SURFACES = ["torus", "ellipsoid"]   # --quick: fewer surfaces and settings, for run_all --quick
+QUICK_RADII = [0.0, 0.01, 0.02]
+QUICK_DEGREES = [2]
+
+
+def sweep(plumbago, work, quick=False):
     rows = []
     for name, make in surfaces.SURFACES.items():
+        if quick and name not in QUICK_SURFACES:
+            continue
         for meshing in ("regular", "irregular"):
             rng = np.random.default_rng(1)
             coarse, _, _ = make(0.2, False, rng)
@@ -87,8 +95,9 @@ def sweep(plumbago, work):
             mesh = work / f"{name}-{meshing}.obj"
             write_obj(mesh, positions, triangles)
             keep = boundary_distance(positions, triangles) >= 0.1 * diagonal
-            runs = [("tensor", r, ["--method", "tensor", "--radius", str(r)]) for r in TENSOR_RADII]
-            runs += [("jet", d, ["--method", "jet", "--set", f"curvature.jet_degree={d}"]) for d in JET_DEGREES]
+            radii, degrees = (QUICK_RADII, QUICK_DEGREES) if quick else (TENSOR_RADII, JET_DEGREES)
+            runs = [("tensor", r, ["--method", "tensor", "--radius", str(r)]) for r in radii]
+            runs += [("jet", d, ["--method", "jet", "--set", f"curvature.jet_degree={d}"]) for d in degrees]
             for method, setting, args in runs:
                 ms, table = run_plumbago(plumbago, mesh, work / "out.csv", args)
                 direction, e_min, e_max = errors(table, truth, keep)
@@ -108,7 +117,7 @@ def plot(rows, out):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    names = list(surfaces.SURFACES)
+    names = [n for n in surfaces.SURFACES if any(r["surface"] == n for r in rows)]
     for metric, label, filename in [("k_rel", "median relative error of k (mean of k_min, k_max)",
                                      "k_error_vs_time.png"),
                                     ("direction_deg", "median direction error (degrees)",
@@ -153,17 +162,23 @@ def read_results(path):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--plumbago", default=str(ROOT / "build" / "plumbago"), help="the plumbago program")
-    parser.add_argument("--out", default=str(HERE), help="folder for results.csv and the plots")
+    parser.add_argument("--plumbago", default=os.environ.get("PLUMBAGO", str(ROOT / "build" / "plumbago")),
+                        help="the plumbago program (default: $PLUMBAGO, or build/plumbago)")
+    parser.add_argument("--out", help="folder for results.csv and the plots (default: this folder; --quick: a "
+                        "temporary folder, so the recorded results are kept)")
+    parser.add_argument("--quick", action="store_true", help="torus and ellipsoid only, 3 radii and jet degree 2")
     parser.add_argument("--replot", action="store_true", help="only redraw the plots from --out/results.csv")
     args = parser.parse_args()
+    if args.out is None:
+        args.out = str(pathlib.Path(tempfile.gettempdir()) / "plumbago-experiments-quick" / HERE.name) if args.quick \
+            else str(HERE)
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     if args.replot:
         plot(read_results(out / "results.csv"), out)
         return
     with tempfile.TemporaryDirectory(prefix="plumbago-curvature-") as work:
-        rows = sweep(args.plumbago, pathlib.Path(work))
+        rows = sweep(args.plumbago, pathlib.Path(work), args.quick)
     with open(out / "results.csv", "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=list(rows[0]))
         writer.writeheader()

@@ -30,13 +30,15 @@ def run(args, **kw):
     return result.stdout
 
 
-def bench(scene, sets=(), size=None, frames=5, backend="gpu", save=None, against=None, buffers=None, tolerance=None):
+def bench(scene, sets=(), size=None, frames=5, backend="gpu", reference_frames=None, save=None, against=None, buffers=None, tolerance=None):
     """One `plumbago bench --json` call; returns the parsed JSON."""
     args = ["bench", scene, "--json", "--frames", frames, "--backend", backend]
     for s in sets:
         args += ["--set", s]
     if size:
         args += ["--size", size]
+    if reference_frames:
+        args += ["--reference-frames", reference_frames]
     if save:
         args += ["--save", save]
     if against:
