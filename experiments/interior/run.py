@@ -68,18 +68,21 @@ def plot(rows, out):
     fig, axes = plt.subplots(1, len(scenes), figsize=(6.5 * len(scenes), 4.8), squeeze=False)
     markers = {"gouraud": "o", "phong": "s"}
     colors = {name: "C%d" % i for i, (name, _) in enumerate(VARIANTS)}
+    floor = 1e-3  # %: log axis, exact agreement (the reference itself) is drawn here
     for ax, scene in zip(axes[0], scenes):
         for r in (r for r in rows if r["scene"] == scene):
-            ax.plot(r["frame_ms"], 100 * r["color_mean_abs"], markers[r["shading"]], color=colors[r["variant"]], ms=8,
+            y = max(100 * r["color_mean_abs"], floor)
+            ax.plot(r["frame_ms"], y, markers[r["shading"]], color=colors[r["variant"]], ms=8,
                     label="%s, %s" % (r["variant"], r["shading"]))
-            ax.annotate("%.2fx" % r["ratio_to_contours_only"], (r["frame_ms"], 100 * r["color_mean_abs"]), fontsize=8,
+            ax.annotate("%.2fx" % r["ratio_to_contours_only"], (r["frame_ms"], y), fontsize=8,
                         xytext=(5, 3), textcoords="offset points")
         ax.set_title("%s at %dx%d" % (scene, rows[0]["width"], rows[0]["height"]), fontsize=10)
         ax.set_xlabel("frame ms (median; label: time / contours only)")
-        ax.set_ylabel("mean |image - reference| (% of full scale)")
+        ax.set_ylabel("mean |image - reference| (%% of full scale; 0 drawn at %g)" % floor)
+        ax.set_yscale("log")
         ax.grid(alpha=0.3)
         ax.legend(fontsize=7)
-    fig.suptitle("interior: difference from 3-way + cross hatching with Phong intensity, against frame time", fontsize=11)
+    fig.suptitle("interior: difference from 3-way + cross hatching with Phong intensity,\nagainst frame time", fontsize=11)
     fig.tight_layout()
     fig.savefig(pathlib.Path(out) / "difference_vs_time.png", dpi=110)
     plt.close(fig)
