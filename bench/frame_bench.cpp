@@ -5,9 +5,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bench/bench_scenes.hpp"
-#include "gpu/context.hpp"
-#include "gpu/pipeline.hpp"
-#include "reference/pipeline.hpp"
+#include "bench/frame_timing.hpp"
 
 namespace plumbago::bench {
 namespace {
@@ -18,23 +16,12 @@ void frame_gpu(benchmark::State& state, const std::string& model, const std::vec
   Scene scene;
   if (!load_bench_scene(state, model, scene)) return;
   scene.effects = effects;
-  gpu::Renderer renderer(scene);
-  renderer.render();  // warm-up
-  for (auto _ : state) {
-    Frame timing;
-    state.SetIterationTime(renderer.render_frame(timing) * 1e-3);
-  }
-  state.SetLabel(gpu::Context::get().renderer());
+  time_gpu_frames(state, scene);
 }
 
 void frame_reference(benchmark::State& state, const std::string& model) {
   Scene scene;
-  if (!load_bench_scene(state, model, scene)) return;
-  for (auto _ : state) {
-    Stopwatch w;
-    benchmark::DoNotOptimize(reference::render(scene));
-    state.SetIterationTime(w.ms() * 1e-3);
-  }
+  if (load_bench_scene(state, model, scene)) time_reference_frames(state, scene);
 }
 
 const bool registered = [] {

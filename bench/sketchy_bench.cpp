@@ -5,9 +5,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bench/bench_scenes.hpp"
-#include "gpu/context.hpp"
-#include "gpu/pipeline.hpp"
-#include "reference/pipeline.hpp"
+#include "bench/frame_timing.hpp"
 
 namespace plumbago::bench {
 namespace {
@@ -24,24 +22,12 @@ bool load_sketchy_scene(benchmark::State& state, const std::string& model, const
 
 void sketchy_frame_gpu(benchmark::State& state, const std::string& model, const std::string& style) {
   Scene scene;
-  if (!load_sketchy_scene(state, model, style, scene)) return;
-  gpu::Renderer renderer(scene);
-  renderer.render();  // warm-up
-  for (auto _ : state) {
-    Frame timing;
-    state.SetIterationTime(renderer.render_frame(timing) * 1e-3);
-  }
-  state.SetLabel(gpu::Context::get().renderer());
+  if (load_sketchy_scene(state, model, style, scene)) time_gpu_frames(state, scene);
 }
 
 void sketchy_frame_reference(benchmark::State& state, const std::string& model, const std::string& style) {
   Scene scene;
-  if (!load_sketchy_scene(state, model, style, scene)) return;
-  for (auto _ : state) {
-    Stopwatch w;
-    benchmark::DoNotOptimize(reference::render(scene));
-    state.SetIterationTime(w.ms() * 1e-3);
-  }
+  if (load_sketchy_scene(state, model, style, scene)) time_reference_frames(state, scene);
 }
 
 const bool registered = [] {
