@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
 
@@ -51,6 +52,23 @@ void write_maps(const std::string& dir, const std::string& mode, const Image& ma
   write_image(sketch_next, dir + "/" + mode + "_sketch1.png");
 }
 
+// Object styles: the field's residuals apart over the pixels whose enlarged surface is
+// their own (own_shell) and the others, and the share of the first among the moving pixels.
+struct ShellSplit {
+  Residuals own, other;
+  double own_share = 0;
+};
+ShellSplit split_by_shell(const Mode& m, const View& view, const Image& points, const Image& coordinates,
+                          const Image& prev_field, const Image& field, const Image& motion) {
+  Image own = own_shell(m, view, points, coordinates);
+  Image own_motion = motion, other_motion = motion;
+  for (size_t i = 0; i < own.pixels(); ++i) (own.data[i] != 0.0f ? other_motion : own_motion).data[3 * i + 2] = 0.0f;
+  ShellSplit s{residuals(prev_field, field, own_motion, Sampling::Bilinear),
+               residuals(prev_field, field, other_motion, Sampling::Bilinear), 0};
+  s.own_share = double(s.own.pixels) / double(std::max<size_t>(1, s.own.pixels + s.other.pixels));
+  return s;
+}
+
 struct Previous {
   Camera camera;
   Image points;
@@ -62,7 +80,7 @@ void run(const Options& o) {
   if (scene.objects.empty()) throw std::runtime_error(o.scene_path + ": no object has style sketchy");
   scene.width = scene.height = o.size;
   std::string meshes;
-  for (const SceneObject& obj : scene.objects) meshes += (meshes.empty() ? "" : " ") + obj.mesh->name;
+  for (const SceneObject& obj : scene.objects) meshes += (meshes.empty() ? "" : " ") + std::filesystem::path(obj.mesh->name).filename().string();
   std::printf("scene %s, meshes: %s\n%d frames, %g deg apart, %dx%d\n", o.scene_path.c_str(), meshes.c_str(),
               o.frames, o.step_deg, o.size, o.size);
 
@@ -72,8 +90,8 @@ void run(const Options& o) {
 
   std::ofstream csv(o.out);
   if (!csv) throw std::runtime_error("cannot write " + o.out);
-  csv << "mesh,size,step_deg,mode,pair,covered,pixels,field_A,field_B,field_coherence,field_A_nearest,"
-         "field_coherence_nearest,image_A,image_B,image_coherence\n";
+  csv << "mesh,size,step_deg,min_motion_px,mode,pair,covered,pixels,field_A,field_B,field_coherence,field_A_nearest,"
+         "field_coherence_nearest,image_A,image_B,image_coherence,own_shell_share,field_A_own_shell,field_A_other_shell\n";
   std::map<std::string, std::vector<double>> field_scores, image_scores;
   Previous prev;
   for (int t = 0; t < o.frames; ++t) {
@@ -101,11 +119,18 @@ void run(const Options& o) {
         Residuals image = residuals(before.sketch, f.sketch, motion, Sampling::Bilinear);
         image_scores[m.name].push_back(image.coherence());
         double none = std::nan("");
-        csv << meshes << ',' << o.size << ',' << o.step_deg << ',' << m.name << ',' << t - 1 << ',' << covered << ',' << image.pixels
+        csv << meshes << ',' << o.size << ',' << o.step_deg << ',' << o.motion.min_motion_px << ',' << m.name << ',' << t - 1 << ',' << covered << ',' << image.pixels
             << ',' << number(m.perturbed ? field.attached : none) << ',' << number(m.perturbed ? field.fixed : none)
             << ',' << number(m.perturbed ? field.coherence() : none) << ','
             << number(m.perturbed ? nearest.attached : none) << ',' << number(m.perturbed ? nearest.coherence() : none)
-            << ',' << number(image.attached) << ',' << number(image.fixed) << ',' << number(image.coherence()) << '\n';
+            << ',' << number(image.attached) << ',' << number(image.fixed) << ',' << number(image.coherence());
+        if (!f.coordinates.empty()) {
+          ShellSplit split = split_by_shell(m, view, points, f.coordinates, before.field, f.field, motion);
+          csv << ',' << number(split.own_share) << ',' << number(split.own.attached) << ',' << number(split.other.attached);
+        } else {
+          csv << ",,,";
+        }
+        csv << '\n';
       }
       frames[m.name] = std::move(f);
     }
@@ -142,10 +167,11 @@ int main(int argc, char** argv) {
   app.add_option("--step-deg", o.step_deg, "orbit step between frames, degrees about the camera's up axis");
   app.add_option("--size", o.size, "image width and height, pixels")->check(CLI::Range(16, 8192));
   app.add_option("--out", o.out, "CSV, one row per mode and frame pair");
-  app.add_option("--modes", o.modes, "modes to compare")->check(CLI::IsMember(all_mode_names()));
+  app.add_option("--modes", o.modes, "modes to compare: default repeat rough object object_enlarge<E> unperturbed");
   app.add_option("--maps", o.maps, "folder for PNGs of the first pair's per-pixel field residuals (1 = 0.1)")
       ->check(CLI::ExistingDirectory);
   app.add_option("--footprints", o.motion.footprints, "visibility tolerance, pixel sizes at the point's depth");
+  app.add_option("--min-motion", o.motion.min_motion_px, "pixels whose surface moved less are left out");
   CLI11_PARSE(app, argc, argv);
   try {
     run(o);

@@ -1,5 +1,6 @@
 #include "experiments/shower_door/sketch_frames.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "reference/rows.hpp"
@@ -17,9 +18,9 @@ Mode make_mode(const Scene& sketchy, const std::string& name) {
   ParamSet& p = m.scene.params;
   if (name == "default" || name == "repeat" || name == "rough" || name == "object") {
     p.set("sketchy.style", name);
-  } else if (name == "object_enlarge0") {
+  } else if (name.rfind("object_enlarge", 0) == 0 && name.size() > 14) {
     p.set("sketchy.style", std::string("object"));
-    p.set("sketchy.enlarge", 0.0);
+    p.set("sketchy.enlarge", name.substr(14));
   } else if (name == "unperturbed") {
     p.set("sketchy.style", std::string("default"));
     for (const char* k : {"edge_a", "edge_b", "edge_c", "edge_d", "shade_a", "shade_b", "shade_c", "shade_d"})
@@ -52,6 +53,7 @@ ModeFrame render_mode(const Mode& mode, const View& view) {
   }
   reference::SketchyInputs in{view.maps, view.gbuffer, mode.noise, coordinates};
   ModeFrame out;
+  out.coordinates = coordinates;
   out.sketch = reference::sketchy_composite(in, p, {}, {}).color;
   if (!mode.perturbed) return out;
   int copies = p.style == SketchyStyle::Repeat ? p.edge_copies : 1;
@@ -63,6 +65,29 @@ ModeFrame render_mode(const Mode& mode, const View& view) {
         out.field.at(x, y, 2 * k) = uv.x, out.field.at(x, y, 2 * k + 1) = uv.y;
       }
   });
+  return out;
+}
+
+Image own_shell(const Mode& mode, const View& view, const Image& points, const Image& coordinates, float reach) {
+  float enlarge = mode.scene.params.get<SketchyParams>().enlarge;
+  // Per object: world -> object space, the enlarged bbox diagonal (noise coordinate =
+  // enlarged object-space position / that, common/sketchy.hpp) and the enlarge distance.
+  std::vector<glm::mat4> to_object;
+  std::vector<float> diagonal, distance;
+  for (size_t i = 0; i < mode.scene.objects.size(); ++i) {
+    to_object.push_back(glm::inverse(mode.scene.objects[i].transform));
+    diagonal.push_back(mode.enlarged.objects[i].mesh->bbox_diagonal());
+    distance.push_back(std::max(enlarge * mode.scene.objects[i].mesh->bbox_diagonal(), 1e-6f * diagonal.back()));
+  }
+  Image out(points.width, points.height, 1);
+  for (int y = 0; y < points.height; ++y)
+    for (int x = 0; x < points.width; ++x) {
+      if (points.at(x, y, 3) == 0.0f || coordinates.at(x, y, 3) == 0.0f) continue;
+      unsigned i = view.gbuffer.ids.at(x, y, 0) - 1;
+      glm::vec3 shell = glm::vec3(coordinates.at(x, y, 0), coordinates.at(x, y, 1), coordinates.at(x, y, 2)) * diagonal[i];
+      glm::vec3 surface(to_object[i] * glm::vec4(points.at(x, y, 0), points.at(x, y, 1), points.at(x, y, 2), 1.0f));
+      out.at(x, y) = glm::length(shell - surface) <= reach * distance[i] ? 1.0f : 0.0f;
+    }
   return out;
 }
 

@@ -23,7 +23,8 @@ struct Mode {
 };
 
 // The modes a name stands for: "default", "repeat", "rough", "object" (SPEC 3.5);
-// "object_enlarge0" (object with sketchy.enlarge = 0: noise read on the true surface);
+// "object_enlarge<E>" (object with sketchy.enlarge = E; E = 0: noise read on the true
+// surface);
 // "unperturbed" (default with M_e = M_s = 0: the sketch without any perturbation, a
 // baseline for the rendered images). Throws on an unknown name.
 Mode make_mode(const Scene& sketchy, const std::string& name);
@@ -40,7 +41,15 @@ View trace_view(const Scene& sketchy, const Camera& camera);
 struct ModeFrame {
   Image field;   // (u, v) at each pixel center, 2 ch per edge copy (repeat: edge_copies); empty if unperturbed
   Image sketch;  // 3 ch: the sketch over white paper (reference::sketchy_composite)
+  Image coordinates;  // object styles: the enlarged surface's noise coordinates (4 ch); empty otherwise
 };
 ModeFrame render_mode(const Mode& mode, const View& view);
+
+// Object styles, diagnostic: 1 ch, 1 where the enlarged surface seen at a covered pixel is
+// the pixel's own surface point pushed out (within `reach` x the enlarge distance of the
+// true surface point in `points`, surface_points' map), 0 where it belongs to another
+// part of the object whose enlarged shell hides the true surface there (paper §4.2: the
+// enlarged geometry is not the surface).
+Image own_shell(const Mode& mode, const View& view, const Image& points, const Image& coordinates, float reach = 3.0f);
 
 }  // namespace plumbago::shower_door
