@@ -83,7 +83,7 @@ def plot(rows, out):
         sel = sorted((r for r in rows if r["sweep"] == name), key=lambda r: r[key])
         x = [r["frame_ms"] for r in sel]
         y = [100 * r["mean_abs"] for r in sel]
-        ax.plot(x, y, "o-")
+        ax.plot(x, y, "o:", lw=0.8)  # dotted: the sweep's order, not a curve (times are noisy)
         for r, xi, yi in zip(sel, x, y):
             ax.annotate("%g (%.2fx)" % (r[key], r["ratio_to_default"]), (xi, yi), fontsize=8, xytext=(4, 3),
                         textcoords="offset points")

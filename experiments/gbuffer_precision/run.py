@@ -70,7 +70,8 @@ def sweep(a):
 def plot(rows, out):
     plt = pc.pyplot()
     scenes = list(dict.fromkeys(r["scene"] for r in rows))
-    fig, axes = plt.subplots(1, 2 * len(scenes), figsize=(5.2 * 2 * len(scenes), 4.6), squeeze=False)
+    fig, grid = plt.subplots(len(scenes), 2, figsize=(11, 4.4 * len(scenes)), squeeze=False)
+    axes = [[ax for row in grid for ax in row]]
     markers = {"rgba32f": "o", "rgba16f": "s", "rgba8": "^"}
     colors = {"interpolated": "C0", "face": "C1"}
     floor = 1e-7  # log axis: exact agreement (0) is drawn here
