@@ -71,20 +71,27 @@ def plot(rows, out):
     layers = sorted({int(r["layers"]) for r in rows})
     for i, n in enumerate(layers):
         sel = sorted((r for r in rows if r["layers"] == n), key=lambda r: r["tile"])
-        for ax, x in zip(axes, ("frame_ms", "generation_ms", "stack_mib")):
-            ax.plot([r[x] for r in sel], [100 * r["darkness_mean_abs"] for r in sel], "o-", color="C%d" % i,
-                    label="%d layers" % n)
+        style = dict(color="C%d" % i, label="%d layers" % n)
+        axes[0].plot([r["stack_mib"] for r in sel], [r["frame_ms"] for r in sel], "o:", lw=0.8, **style)
+        for ax, x in ((axes[1], "generation_ms"), (axes[2], "stack_mib")):
+            ax.plot([r[x] for r in sel], [100 * r["darkness_mean_abs"] for r in sel], "o-", **style)
             for r in sel:
-                ax.annotate("%d" % r["tile"], (r[x], 100 * r["darkness_mean_abs"]), fontsize=7, xytext=(3, 3),
-                            textcoords="offset points")
-    titles = ("frame ms (median)", "stack generation ms (CPU, once per scene)", "stack memory MiB (R32F, computed)")
-    for ax, t in zip(axes, titles):
+                if n == layers[-1] or r["tile"] == max(r2["tile"] for r2 in rows):  # label once per tile size
+                    ax.annotate("%d" % r["tile"], (r[x], 100 * r["darkness_mean_abs"]), fontsize=7, xytext=(3, 3),
+                                textcoords="offset points")
+    axes[0].set_ylim(0, 1.15 * max(r["frame_ms"] for r in rows))
+    axes[0].set_ylabel("frame ms (median)")
+    axes[0].set_title("frame time against stack memory", fontsize=10)
+    axes[1].set_title("difference against generation time", fontsize=10)
+    axes[2].set_title("difference against stack memory (labels: tile size)", fontsize=10)
+    for ax, t in zip(axes, ("stack memory MiB (R32F, computed)", "stack generation ms (CPU, once per scene)",
+                            "stack memory MiB (R32F, computed)")):
         ax.set_xlabel(t)
         ax.set_xscale("log")
         ax.grid(alpha=0.3, which="both")
-    axes[0].set_ylabel("mean |interior darkness - reference| (%)")
+    axes[1].set_ylabel("mean |interior darkness - reference| (%)")
     axes[0].legend(fontsize=8)
-    fig.suptitle("pencil textures (labels: tile size): difference from %s, against time and memory (%s at %dx%d)" %
+    fig.suptitle("pencil textures: difference from %s, against time and memory (%s at %dx%d)" %
                  (rows[0]["reference"], pathlib.Path(SCENE).stem, rows[0]["width"], rows[0]["height"]), fontsize=11)
     fig.tight_layout()
     fig.savefig(pathlib.Path(out) / "difference_vs_time_and_memory.png", dpi=110)
