@@ -34,6 +34,7 @@ def scene(folder, resolution):
 def sweep(a):
     if a.quick:
         faces, sizes, fixed_faces, fixed_size, frames = [1e4, 3e4, 1e5], [(256, 256), (512, 512), (1024, 1024)], 3e4, (400, 400), 3
+        reference_frames = 2
     else:
         faces = [1e4, 3e4, 1e5, 3e5, 1e6]
         sizes = [(512, 512), (1024, 1024), (2048, 2048), (3840, 2160)]
