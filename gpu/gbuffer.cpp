@@ -114,8 +114,7 @@ GBufferTargets upload_gbuffer(const GBuffer& g) {
 }
 
 GBufferPass::GBufferPass(const Scene& scene, const std::vector<Curvature>& curvature)
-    : program_("gbuffer.vert", "gbuffer.frag", glsl_params<InteriorParams>()),
-      has_curvature_(!curvature.empty()),
+    : has_curvature_(!curvature.empty()),
       fbo_(make_framebuffer()) {
   for (const WorldObject& obj : world_geometry(scene, curvature)) {
     std::vector<Corner> soup = triangle_soup(obj);
@@ -140,6 +139,21 @@ GBufferPass::GBufferPass(const Scene& scene, const std::vector<Curvature>& curva
     glBindVertexArray(0);
     batches_.push_back(std::move(b));
   }
+}
+
+const Program& GBufferPass::program_for(const GBufferChannels& c) {
+  const bool flags[] = {c.normal, c.face_normal, c.bary, c.gouraud, c.theta_min, c.theta_max};
+  const char* names[] = {"NORMAL", "FACE_NORMAL", "BARY", "GOURAUD", "THETA_MIN", "THETA_MAX"};
+  int key = 0;
+  std::string defines;
+  for (int k = 0; k < 6; ++k) {
+    key |= int(flags[k]) << k;
+    defines += "#define WRITE_" + std::string(names[k]) + (flags[k] ? " 1\n" : " 0\n");
+  }
+  auto it = programs_.find(key);
+  if (it == programs_.end())
+    it = programs_.emplace(key, Program("gbuffer.vert", "gbuffer.frag", glsl_params<InteriorParams>() + defines)).first;
+  return it->second;
 }
 
 GBufferChannels channels_read_by(const std::vector<std::string>& stages, const Scene& scene) {
@@ -190,18 +204,19 @@ void GBufferPass::render(const Scene& scene, GBufferTargets& t, const GBufferCha
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
-  glUseProgram(program_.id());
+  const Program& program = program_for(channels);
+  glUseProgram(program.id());
   glm::mat4 view = cam.view(), projection = cam.projection(float(w) / float(h));
-  glUniformMatrix4fv(program_.uniform("view"), 1, GL_FALSE, glm::value_ptr(view));
-  glUniformMatrix4fv(program_.uniform("projection"), 1, GL_FALSE, glm::value_ptr(projection));
+  glUniformMatrix4fv(program.uniform("view"), 1, GL_FALSE, glm::value_ptr(view));
+  glUniformMatrix4fv(program.uniform("projection"), 1, GL_FALSE, glm::value_ptr(projection));
   glm::mat4 view_projection = projection * view;
-  glUniformMatrix4fv(program_.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
-  glUniform2f(program_.uniform("window_size"), float(w), float(h));
-  glUniform1f(program_.uniform("tan_half_fov"), std::tan(glm::radians(cam.fov_deg) * 0.5f));
-  glUniform1i(program_.uniform("has_curvature"), has_curvature_);
-  program_.set_params(scene.params.get<InteriorParams>());
+  glUniformMatrix4fv(program.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
+  glUniform2f(program.uniform("window_size"), float(w), float(h));
+  glUniform1f(program.uniform("tan_half_fov"), std::tan(glm::radians(cam.fov_deg) * 0.5f));
+  glUniform1i(program.uniform("has_curvature"), has_curvature_);
+  program.set_params(scene.params.get<InteriorParams>());
   for (size_t i = 0; i < batches_.size(); ++i) {
-    glUniform1ui(program_.uniform("object_id"), GLuint(i + 1));
+    glUniform1ui(program.uniform("object_id"), GLuint(i + 1));
     glBindVertexArray(batches_[i].layout.id());
     glDrawArrays(GL_TRIANGLES, 0, batches_[i].corners);
   }

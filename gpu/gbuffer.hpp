@@ -1,6 +1,7 @@
 // Rasterized G-buffer (SPEC 2.1), the twin of reference/gbuffer.cpp.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -46,7 +47,9 @@ class GBufferPass {
     VertexArray layout;
     GLsizei corners = 0;
   };
-  Program program_;
+  // The program variant that writes exactly `channels` (compiled on first use).
+  const Program& program_for(const GBufferChannels& channels);
+  std::map<int, Program> programs_;
   std::vector<Batch> batches_;  // one per object
   bool has_curvature_;
   Framebuffer fbo_;

@@ -25,13 +25,28 @@ vec3 unit_or_zero(vec3 v) {
   return len > 0.0 ? v / len : vec3(0.0);
 }
 
+// Depth and ids are always written; the other targets only by the program variant whose
+// WRITE_* flag is 1 (gpu/gbuffer.cpp GBufferChannels): on llvmpipe an output computed but
+// sent to GL_NONE still costs its interpolation and shading.
 void main() {
-  out_normal = vec4(unit_or_zero(v_normal), 0.0);
-  out_face_normal = vec4(unit_or_zero(v_face_normal), 0.0);
   out_depth = v_depth;
   out_ids = uvec2(object_id, uint(gl_PrimitiveID));
+#if WRITE_NORMAL
+  out_normal = vec4(unit_or_zero(v_normal), 0.0);
+#endif
+#if WRITE_FACE_NORMAL
+  out_face_normal = vec4(unit_or_zero(v_face_normal), 0.0);
+#endif
+#if WRITE_BARY
   out_bary = vec4(v_bary, 0.0);
+#endif
+#if WRITE_GOURAUD
   out_gouraud = v_gouraud;
+#endif
+#if WRITE_THETA_MIN
   out_theta_min = vec4(v_theta_min, 0.0);
+#endif
+#if WRITE_THETA_MAX
   out_theta_max = vec4(v_theta_max, 0.0);
+#endif
 }

@@ -32,9 +32,11 @@ void main() {
   v_depth = -view_position.z;  // linear view depth d = -z_view (SPEC 0)
   v_gouraud = gouraud;
   v_theta_min = v_theta_max = vec3(0.0);
+#if WRITE_THETA_MIN || WRITE_THETA_MAX
   if (has_curvature)
     for (int k = 0; k < 3; ++k) {
       v_theta_min[k] = stroke_angle(corner_position[k], corner_d_min[k], corner_d_max[k]);
       v_theta_max[k] = stroke_angle(corner_position[k], corner_d_max[k], corner_d_min[k]);
     }
+#endif
 }
