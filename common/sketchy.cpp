@@ -58,9 +58,9 @@ PixelRect covered_rect(const Scene& scene, int width, int height, float margin) 
   glm::mat4 to_clip = scene.camera.projection(float(width) / float(height)) * scene.camera.view();
   glm::vec2 lo(INFINITY), hi(-INFINITY);
   for (const SceneObject& o : scene.objects) {
-    glm::vec3 box[2] = {o.mesh->bbox_min(), o.mesh->bbox_max()};
-    for (int corner = 0; corner < 8; ++corner) {
-      glm::vec4 clip = to_clip * o.transform * glm::vec4(box[corner & 1].x, box[(corner >> 1) & 1].y, box[corner >> 2].z, 1);
+    glm::mat4 object_to_clip = to_clip * o.transform;
+    for (const glm::vec3& v : o.mesh->positions) {  // a triangle's projection lies within its corners'
+      glm::vec4 clip = object_to_clip * glm::vec4(v, 1.0f);
       if (!(clip.w > 0.0f)) return window;  // behind the eye: the projection does not bound it
       glm::vec2 pixel = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(width, height);
       lo = glm::min(lo, pixel);

@@ -75,9 +75,9 @@ Scene enlarged_scene(const Scene& sketchy);
 // enlarged mesh's bbox diagonal, one per vertex.
 std::vector<glm::vec3> noise_coordinates(const Mesh& enlarged);
 
-// The pixels that `scene`'s objects can cover (their bounding boxes projected), grown by
-// `margin` pixels and clipped to the window; the whole window when a box reaches behind
-// the camera. Outside it the sketch's maps hold their background values and the
+// The pixels that `scene`'s objects can cover (the bounding rectangle of their projected
+// vertices), grown by `margin` pixels and clipped to the window; the whole window when a
+// vertex lies behind the eye. Outside it the sketch's maps hold their background values and the
 // composite draws nothing, so the GPU skips it (a bound, not a stage: no formula changes).
 PixelRect covered_rect(const Scene& scene, int width, int height, float margin);
 // The farthest the composite reads from its pixel (SPEC 3.2): |M (u, v)| <= ||M||_F |(u, v)|

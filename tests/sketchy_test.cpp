@@ -41,7 +41,7 @@ INSTANTIATE_TEST_SUITE_P(Styles, SketchyParity, ::testing::Values("default", "re
 
 // A small sketchy square facing the camera, off to one side of a larger ordinary torus:
 // the GPU draws the sketch's maps and composite only inside the rectangles of
-// common/sketchy.hpp, and for a square seen face-on the projected box is its exact
+// common/sketchy.hpp, and for a square seen face-on its projected corners give its exact
 // outline, so a margin too small shows in the parity.
 Scene small_sketchy_scene(const std::string& style) {
   std::string json = R"({"objects": [
