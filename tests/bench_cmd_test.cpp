@@ -10,38 +10,19 @@
 #include <sstream>
 
 #include "bench/paper_claims.hpp"
+#include "tests/cli_run.hpp"
 
 namespace plumbago {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct CliRun {
-  int code;
-  std::string out, err;
-};
+using testing::CliRun;
 
 class BenchCmd : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("plumbago-bench-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  static std::string slurp(const std::string& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  }
-  CliRun run(const std::string& args) const {
-    std::string cmd = std::string(PLUMBAGO_CLI) + " " + args + " >" + path("stdout") + " 2>" + path("stderr");
-    int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(path("stdout")), slurp(path("stderr"))};
-  }
-  fs::path dir_;
+  std::string path(const std::string& name) const { return tmp_.path(name); }
+  CliRun run(const std::string& args) const { return testing::run_cli(args, tmp_); }
+  testing::TempDir tmp_;
 };
 
 TEST_F(BenchCmd, PaperTableHasEveryClaimWithOursNextToIt) {

@@ -8,53 +8,33 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "tests/cli_run.hpp"
+
 namespace plumbago {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct CliRun {
-  int code;
-  std::string out, err;
-};
+using testing::CliRun;
 
 class Cli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("plumbago-cli-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  void write(const std::string& name, const std::string& text) const { std::ofstream(path(name)) << text; }
-  static std::string slurp(const std::string& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  }
-
-  CliRun run(const std::string& args) const {
-    std::string cmd = std::string(PLUMBAGO_CLI) + " " + args + " >" + path("stdout") + " 2>" + path("stderr");
-    int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(path("stdout")), slurp(path("stderr"))};
-  }
+  std::string path(const std::string& name) const { return tmp_.path(name); }
+  void write(const std::string& name, const std::string& text) const { tmp_.write(name, text); }
+  CliRun run(const std::string& args) const { return testing::run_cli(args, tmp_); }
 
   // Exit code 2, the message contains each of `needles`, no output image, no partial file.
   void expect_refused(const std::string& args, std::initializer_list<std::string> needles) const {
     CliRun r = run(args + " -o " + path("out.png"));
     EXPECT_EQ(r.code, 2) << r.err;
     for (const auto& n : needles) EXPECT_NE(r.err.find(n), std::string::npos) << "'" << n << "' not in: " << r.err;
-    for (const auto& e : fs::directory_iterator(dir_))
+    for (const auto& e : fs::directory_iterator(tmp_.dir()))
       EXPECT_TRUE(e.path().filename() == "stdout" || e.path().filename() == "stderr" ||
                   e.path().extension() == ".json" || e.path().extension() == ".obj")
           << "left behind: " << e.path();
     EXPECT_FALSE(fs::exists(path("stages"))) << "a refused run dumped stages";
   }
 
-  fs::path dir_;
+  testing::TempDir tmp_;
 };
 
 TEST_F(Cli, RendersTheBuiltinSceneAndReportsWhatRan) {

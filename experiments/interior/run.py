@@ -83,22 +83,8 @@ def plot(rows, out):
         ax.grid(alpha=0.3)
         ax.legend(fontsize=7)
     fig.suptitle("interior: difference from 3-way + cross hatching with Phong intensity,\nagainst frame time", fontsize=11)
-    fig.tight_layout()
-    fig.savefig(pathlib.Path(out) / "difference_vs_time.png", dpi=110)
-    plt.close(fig)
-
-
-def main():
-    a = pc.arguments(__doc__, HERE)
-    if a.replot:
-        plot(pc.read_csv(pathlib.Path(a.out) / "results.csv"), a.out)
-        return
-    rows, info = sweep(a)
-    pc.write_csv(pathlib.Path(a.out) / "results.csv", rows)
-    pc.write_run_info(a.out, info)
-    plot(rows, a.out)
-    pc.log("wrote", a.out)
+    pc.save_figure(fig, out, "difference_vs_time.png")
 
 
 if __name__ == "__main__":
-    main()
+    pc.study_main(__doc__, HERE, sweep, plot)

@@ -161,3 +161,24 @@ def pyplot():
 
 def log(*a):
     print(*a, flush=True)
+
+
+def study_main(doc, here, sweep, plot):
+    """The command line every study shares: sweep (or --replot the recorded CSV), write
+    results.csv and run_info.json into --out, draw the plots."""
+    a = arguments(doc, here)
+    if a.replot:
+        plot(read_csv(pathlib.Path(a.out) / "results.csv"), a.out)
+        return
+    rows, info = sweep(a)
+    write_csv(pathlib.Path(a.out) / "results.csv", rows)
+    write_run_info(a.out, info)
+    plot(rows, a.out)
+    log("wrote", a.out)
+
+
+def save_figure(fig, out, name):
+    """Lays out `fig`, writes it as out/name at the studies' resolution and closes it."""
+    fig.tight_layout()
+    fig.savefig(pathlib.Path(out) / name, dpi=110)
+    pyplot().close(fig)

@@ -93,22 +93,8 @@ def plot(rows, out):
     axes[0].legend(fontsize=8)
     fig.suptitle("pencil textures: difference from %s, against time and memory (%s at %dx%d)" %
                  (rows[0]["reference"], pathlib.Path(SCENE).stem, rows[0]["width"], rows[0]["height"]), fontsize=11)
-    fig.tight_layout()
-    fig.savefig(pathlib.Path(out) / "difference_vs_time_and_memory.png", dpi=110)
-    plt.close(fig)
-
-
-def main():
-    a = pc.arguments(__doc__, HERE)
-    if a.replot:
-        plot(pc.read_csv(pathlib.Path(a.out) / "results.csv"), a.out)
-        return
-    rows, info = sweep(a)
-    pc.write_csv(pathlib.Path(a.out) / "results.csv", rows)
-    pc.write_run_info(a.out, info)
-    plot(rows, a.out)
-    pc.log("wrote", a.out)
+    pc.save_figure(fig, out, "difference_vs_time_and_memory.png")
 
 
 if __name__ == "__main__":
-    main()
+    pc.study_main(__doc__, HERE, sweep, plot)

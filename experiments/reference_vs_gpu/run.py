@@ -76,22 +76,8 @@ def plot(rows, out):
     ax2.set_ylabel("%")
     ax2.set_title("end-to-end error of the GPU image against the reference")
     ax2.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(pathlib.Path(out) / "time_and_error_per_scene.png", dpi=110)
-    plt.close(fig)
-
-
-def main():
-    a = pc.arguments(__doc__, HERE)
-    if a.replot:
-        plot(pc.read_csv(pathlib.Path(a.out) / "results.csv"), a.out)
-        return
-    rows, info = sweep(a)
-    pc.write_csv(pathlib.Path(a.out) / "results.csv", rows)
-    pc.write_run_info(a.out, info)
-    plot(rows, a.out)
-    pc.log("wrote", a.out)
+    pc.save_figure(fig, out, "time_and_error_per_scene.png")
 
 
 if __name__ == "__main__":
-    main()
+    pc.study_main(__doc__, HERE, sweep, plot)

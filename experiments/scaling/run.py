@@ -105,9 +105,7 @@ def plot(rows, out):
             ax.set_xlabel(label)
             ax.set_ylabel("ms")
             ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(pathlib.Path(out) / "stage_ms_vs_faces_and_pixels.png", dpi=110)
-    plt.close(fig)
+    pc.save_figure(fig, out, "stage_ms_vs_faces_and_pixels.png")
 
 
 def main():
