@@ -9,11 +9,13 @@
 namespace plumbago {
 
 enum class InteriorShading { Gouraud, Phong };
+enum class InteriorBlend { ThreeWay, NearestCorner };
 
 struct InteriorParams {
   static constexpr const char* stage = "interior";
   float ambient, diffuse;
   InteriorShading shading;
+  InteriorBlend blend;
   bool brightness_sqrt;
   float texture_scale, min_projected, crosshatch_below, crosshatch_band;
   template <class V>
@@ -22,6 +24,9 @@ struct InteriorParams {
     v.real(diffuse, "diffuse", 0.9, 0.0, 4.0, "diffuse weight k_d of the interior intensity (SPEC 2.5)");
     v.choice(shading, "shading", InteriorShading::Gouraud, {"gouraud", "phong"},
              "interior intensity per vertex (Lee) or per pixel");
+    v.choice(blend, "blend", InteriorBlend::ThreeWay, {"three_way", "nearest_corner"},
+             "three_way: the corners' rotated textures weighted by the barycentrics (SPEC 2.8); nearest_corner: "
+             "only the texture of the corner with the largest weight (the ablation of Lee Fig. 6)");
     v.boolean(brightness_sqrt, "brightness_sqrt", true,
               "brightness adjustment I' = sqrt(I) (Lee §5.2; Pacheco turns it off)");
     v.real(texture_scale, "texture_scale", 1.0, 0.05, 64.0, "window pixels per pencil-texture texel (SPEC 2.7)");
@@ -35,6 +40,10 @@ struct InteriorParams {
 // I = clamp(k_a + k_d sum_lights intensity * max(0, n.L)) (SPEC 2.5); unit light
 // directions in the space of n (common/lights.hpp).
 float lambert_intensity(glm::vec3 n, const std::vector<Light>& unit_lights, const InteriorParams& p);
+
+// The weights of the corners' textures (SPEC 2.8): the barycentrics `w` for three-way
+// blending; for nearest_corner, 1 for the largest of them (the first on a tie), 0 else.
+glm::vec3 blend_weights(glm::vec3 w, const InteriorParams& p);
 
 // Brightness adjustment I' = sqrt(I) when p.brightness_sqrt (Lee §5.2).
 float adjusted_brightness(float intensity, const InteriorParams& p);

@@ -31,11 +31,13 @@ float corner_sample(const std::vector<Image>& stack, glm::vec2 p, float theta, f
   return std::clamp(tone + mu_p * glm::dot(glm::vec3(c, s, 0.0f), *paper_normal), 0.0f, 1.0f);
 }
 
-// c = w0 c_0' + w1 c_1' + w2 c_2' (2.8)
+// c = w0 c_0' + w1 c_1' + w2 c_2' (2.8), corners of weight 0 not sampled.
 float blended(const std::vector<Image>& stack, glm::vec2 p, const Corners& k, float r, const glm::vec3* n,
               const InteriorParams& ip, float mu_p) {
+  glm::vec3 w = blend_weights(k.w, ip);
   float c = 0;
-  for (int i = 0; i < 3; ++i) c += k.w[i] * corner_sample(stack, p, k.theta[i], r, n, ip, mu_p);
+  for (int i = 0; i < 3; ++i)
+    if (w[i] != 0.0f) c += w[i] * corner_sample(stack, p, k.theta[i], r, n, ip, mu_p);
   return c;
 }
 

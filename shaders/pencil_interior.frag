@@ -35,10 +35,20 @@ float corner_sample(vec2 p, float theta, float r, vec3 n) {
   return paper_effect ? clamp(tone + mu_p * dot(vec3(c, s, 0.0), n), 0.0, 1.0) : tone;
 }
 
-// c = w0 c_0' + w1 c_1' + w2 c_2' (2.8)
-float blended(vec2 p, vec3 w, vec3 theta, float r, vec3 n) {
-  return w.x * corner_sample(p, theta.x, r, n) + w.y * corner_sample(p, theta.y, r, n) +
-         w.z * corner_sample(p, theta.z, r, n);
+// The corners' weights: the barycentrics, or a one-hot of the largest (common/interior.hpp).
+vec3 blend_weights(vec3 w) {
+  if (interior.blend == INTERIOR_BLEND_THREE_WAY) return w;
+  if (w.x >= w.y && w.x >= w.z) return vec3(1.0, 0.0, 0.0);
+  return w.y >= w.z ? vec3(0.0, 1.0, 0.0) : vec3(0.0, 0.0, 1.0);
+}
+
+// c = w0 c_0' + w1 c_1' + w2 c_2' (2.8), corners of weight 0 not sampled.
+float blended(vec2 p, vec3 barycentrics, vec3 theta, float r, vec3 n) {
+  vec3 w = blend_weights(barycentrics);
+  float c = 0.0;
+  for (int k = 0; k < 3; ++k)
+    if (w[k] != 0.0) c += w[k] * corner_sample(p, theta[k], r, n);
+  return c;
 }
 
 void main() {

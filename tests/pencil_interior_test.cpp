@@ -37,6 +37,62 @@ TEST_F(PencilInteriorParity, Fandisk) {
   }
 }
 
+// The ablation of Lee Fig. 6 on both backends: one texture per pixel, from the corner of
+// largest weight.
+TEST_F(PencilInteriorParity, NearestCornerBlendMatchesReference) {
+  Scene scene = testing::builtin_at("cad", 320, 240);
+  scene.params.set("interior.blend", std::string("nearest_corner"));
+  for (const StageParity& r : run_parity(scene, {"pencil_interior"})) {
+    std::printf("[%s cad nearest_corner] %s\n", r.name.c_str(), format_diff(r.name, r.diff).c_str());
+    EXPECT_TRUE(r.pass) << r.name;
+  }
+}
+
+TEST(PencilInteriorBlend, NearestCornerKeepsOnlyTheLargestWeight) {
+  ParamSet params;
+  auto ip = params.get<InteriorParams>();
+  glm::vec3 w(0.2f, 0.5f, 0.3f);
+  EXPECT_EQ(blend_weights(w, ip), w);
+  ip.blend = InteriorBlend::NearestCorner;
+  EXPECT_EQ(blend_weights(w, ip), glm::vec3(0, 1, 0));
+  EXPECT_EQ(blend_weights(glm::vec3(0.1f, 0.2f, 0.7f), ip), glm::vec3(0, 0, 1));
+  EXPECT_EQ(blend_weights(glm::vec3(0.4f, 0.4f, 0.2f), ip), glm::vec3(1, 0, 0));  // a tie: the first
+}
+
+// Three-way blending removes the seams of one texture per corner (Lee §5.4): where the
+// corner of largest weight changes between two neighbors inside one triangle, the
+// nearest-corner image jumps from one rotated texture to another; the blend does not.
+TEST(PencilInteriorBlend, ThreeWayBlendingIsSmootherThanNearestCorner) {
+  Scene scene = testing::builtin_at("torus", 240, 180);
+  Preprocessed pre = preprocess(scene, {"curvature", "pencil_textures"});
+  GBuffer g = reference::trace_gbuffer(scene, scene.width, scene.height, pre.curvature);
+  auto ip = scene.params.get<InteriorParams>();
+  Image intensity = reference::interior_intensity(g, view_space_lights(scene), ip);
+  InteriorParams one_corner = ip;
+  one_corner.blend = InteriorBlend::NearestCorner;
+  auto largest = [&](int x, int y) {
+    return blend_weights(glm::vec3(g.bary.at(x, y, 0), g.bary.at(x, y, 1), g.bary.at(x, y, 2)), one_corner);
+  };
+  auto seam_jump = [&](InteriorBlend blend) {  // mean |d(x+1) - d(x)| across those seams
+    ip.blend = blend;
+    Image d = reference::interior_darkness(g, intensity, pre.pencil_stack, {}, {false, false}, ip, 0);
+    double sum = 0;
+    int n = 0;
+    for (int y = 0; y < d.height; ++y)
+      for (int x = 0; x + 1 < d.width; ++x)
+        if (!g.background(x, y) && !g.background(x + 1, y) && g.ids.at(x, y, 1) == g.ids.at(x + 1, y, 1) &&
+            largest(x, y) != largest(x + 1, y)) {
+          sum += std::abs(d.at(x + 1, y) - d.at(x, y));
+          ++n;
+        }
+    EXPECT_GT(n, 100);
+    return sum / n;
+  };
+  double three_way = seam_jump(InteriorBlend::ThreeWay), nearest = seam_jump(InteriorBlend::NearestCorner);
+  std::printf("[blend] mean darkness jump across nearest-corner seams: three_way %.4f, nearest_corner %.4f\n", three_way, nearest);
+  EXPECT_LT(three_way, nearest);
+}
+
 // "interior" without "crosshatch" never reads the max-curvature angles: poisoning them
 // with NaN changes nothing.
 TEST(PencilInteriorReference, WithoutCrosshatchTheMaxDirectionsAreNeverRead) {

@@ -1,13 +1,14 @@
 #!/usr/bin/python3
-"""Study 5: the pencil interior (Lee et al. 2006 §5, SPEC 2.5-2.9): 3-way blending, 3-way
-blending + cross hatching, with Gouraud (per-vertex, Lee) or Phong (per-pixel) intensity,
-against frame time. The contours-only frame is the time baseline (what the interior adds).
+"""Study 5: the pencil interior (Lee et al. 2006 §5, SPEC 2.5-2.9): 1-way (one texture per
+pixel, from the corner of largest weight: interior.blend=nearest_corner, Lee Fig. 6a),
+3-way blending, 3-way blending + cross hatching, with Gouraud (per-vertex, Lee) or Phong
+(per-pixel) intensity, against frame time. The contours-only frame is the time baseline (what the interior adds).
 
 Reference: the most accurate and complete setting, 3-way + cross hatching with per-pixel
 (Phong) intensity, rendered in the same run. Reported per setting: the difference of the
 final image and of the interior's buffers (intensity, darkness) from it, by
 `plumbago bench --against`. The scenes' paper effect is left out so the interior is all
-that changes. (1-way blending has no parameter yet: see README.md.)
+that changes.
 
   /usr/bin/python3 experiments/interior/run.py [--quick] [--out DIR] [--replot]
 """
@@ -21,8 +22,10 @@ import plumbago_cli as pc  # noqa: E402
 
 TOLERANCE = 0.05
 BUFFERS = ["compose.color", "interior_intensity.intensity", "pencil_interior.interior_darkness"]
-VARIANTS = [("contours only", ["contours"]), ("3-way", ["contours", "interior"]),
-            ("3-way + hatching", ["contours", "interior", "crosshatch"])]
+VARIANTS = [("contours only", ["contours"], []),
+            ("1-way", ["contours", "interior"], ["interior.blend=nearest_corner"]),
+            ("3-way", ["contours", "interior"], []),
+            ("3-way + hatching", ["contours", "interior", "crosshatch"], [])]
 
 
 def sweep(a):
@@ -34,15 +37,15 @@ def sweep(a):
         for base in scenes:
             stem = pathlib.Path(base).stem
             files = {name: pc.derive_scene(base, work, "%s-%d" % (stem, i), effects=effects)
-                     for i, (name, effects) in enumerate(VARIANTS)}
+                     for i, (name, effects, _) in enumerate(VARIANTS)}
             saved = pathlib.Path(work) / (stem + "-reference")
             ref = pc.bench(files["3-way + hatching"], ["interior.shading=phong"], size=size, frames=frames, save=saved,
                            buffers=BUFFERS)
             info = info or pc.machine(ref["renderer"])
             baseline = None
-            for name, _ in VARIANTS:
+            for name, _, sets in VARIANTS:
                 for shading in shadings:
-                    j = pc.bench(files[name], ["interior.shading=" + shading], size=size, frames=frames,
+                    j = pc.bench(files[name], sets + ["interior.shading=" + shading], size=size, frames=frames,
                                  against=saved / "gpu", buffers=BUFFERS, tolerance=TOLERANCE)
                     g = pc.result(j, "gpu")
                     baseline = baseline or g["frame_ms"]  # contours only, first shading
@@ -67,7 +70,7 @@ def plot(rows, out):
     scenes = list(dict.fromkeys(r["scene"] for r in rows))
     fig, axes = plt.subplots(1, len(scenes), figsize=(6.5 * len(scenes), 4.8), squeeze=False)
     markers = {"gouraud": "o", "phong": "s"}
-    colors = {name: "C%d" % i for i, (name, _) in enumerate(VARIANTS)}
+    colors = {name: "C%d" % i for i, (name, _, _) in enumerate(VARIANTS)}
     floor = 1e-3  # %: log axis, exact agreement (the reference itself) is drawn here
     for ax, scene in zip(axes[0], scenes):
         for r in (r for r in rows if r["scene"] == scene):
