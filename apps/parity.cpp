@@ -105,7 +105,8 @@ StageParity edge_parity(const Scene& scene, const GBuffer& ref) {
   gpu::GBufferTargets inputs = gpu::upload_gbuffer(ref);
   gpu::Texture out = gpu::make_texture(scene.width, scene.height, GL_R32F);
   gpu::Texture lit = gpu::make_texture(scene.width, scene.height, GL_R32F);
-  gpu::EdgeDetectPass().run(inputs, p, view_space_lights(scene), scene.params.get<ContourLightParams>(), out, lit);
+  gpu::EdgeDetectPass().run(inputs, p, view_space_lights(scene), scene.params.get<ContourLightParams>(), out, lit,
+                            filter_rect(scene, 1));
   Image gpu_out = gpu::download_texture(out, 1);
   gpu::Context::get().check_errors("edge_detect parity");
   return compared("edge_detect", reference::contour_darkness(ref, p), gpu_out, parity_tolerance::kFloat, nullptr,
@@ -146,7 +147,7 @@ std::vector<StageParity> pencil_interior_parity(const Scene& scene, const GBuffe
   std::vector<StageParity> results;
   for (auto [name, options] : {std::pair{"pencil_interior.blend", InteriorOptions{false, false}},
                                std::pair{"pencil_interior.hatch_paper", InteriorOptions{true, true}}}) {
-    pass.run(g, view_space_lights(scene), stack, normal, options, ip, mu_p, out, gpu_intensity);
+    pass.run(g, view_space_lights(scene), stack, normal, options, ip, mu_p, out, gpu_intensity, filter_rect(scene, 0));
     Image gpu_out = gpu::download_texture(out, 1);
     gpu::Context::get().check_errors("pencil_interior parity");
     Image ref_out = reference::interior_darkness(ref, intensity, pre.pencil_stack, pre.paper.normal, options, ip, mu_p);
@@ -164,7 +165,7 @@ StageParity interior_intensity_parity(const Scene& scene, const GBuffer& ref) {
   gpu::Texture white = gpu::upload_texture_3d({Image(1, 1, 1, 1.0f), Image(1, 1, 1, 1.0f)}, GL_R32F);
   gpu::Texture darkness = gpu::make_texture(scene.width, scene.height, GL_R32F);
   gpu::Texture out = gpu::make_texture(scene.width, scene.height, GL_R32F);
-  gpu::PencilInteriorPass().run(inputs, lights, white, white, {}, p, 0.0f, darkness, out);
+  gpu::PencilInteriorPass().run(inputs, lights, white, white, {}, p, 0.0f, darkness, out, filter_rect(scene, 0));
   Image gpu_out = gpu::download_texture(out, 1);
   gpu::Context::get().check_errors("interior_intensity parity");
   return compared("interior_intensity", reference::interior_intensity(ref, lights, p), gpu_out, parity_tolerance::kFloat,
@@ -178,7 +179,7 @@ StageParity contour_light_parity(const Scene& scene, const GBuffer& ref) {
   gpu::GBufferTargets inputs = gpu::upload_gbuffer(ref);
   gpu::Texture d = gpu::make_texture(scene.width, scene.height, GL_R32F);
   gpu::Texture out = gpu::make_texture(scene.width, scene.height, GL_R32F);
-  gpu::EdgeDetectPass().run(inputs, scene.params.get<EdgeDetectParams>(), lights, p, d, out);
+  gpu::EdgeDetectPass().run(inputs, scene.params.get<EdgeDetectParams>(), lights, p, d, out, filter_rect(scene, 1));
   Image gpu_out = gpu::download_texture(out, 1);
   gpu::Context::get().check_errors("contour_light parity");
   return compared("contour_light", reference::lit_contour_darkness(darkness, ref, lights, p), gpu_out,
@@ -194,7 +195,7 @@ StageParity multi_contour_parity(const Scene& scene, const GBuffer& ref) {
   gpu::ContourInputs inputs = gpu::upload_contour_inputs(pre.offset_grids, pre.contour_texture, pre.texture_shifts);
   gpu::Texture in = gpu::upload_texture(lit, GL_R32F);
   gpu::Texture out = gpu::make_texture(scene.width, scene.height, GL_R32F);
-  gpu::MultiContourPass().run(in, inputs, p, out);
+  gpu::MultiContourPass().run(in, inputs, p, out, contour_rect(scene, pre.offset_grids));
   Image gpu_out = gpu::download_texture(out, 1);
   gpu::Context::get().check_errors("multi_contour parity");
   Image ref_out = reference::multi_contour_darkness(lit, pre.offset_grids, pre.contour_texture, pre.texture_shifts, p);

@@ -65,7 +65,7 @@ std::vector<StageParity> sketchy_maps_parity(const Scene& scene) {
   gpu::GBufferTargets inputs = gpu::upload_gbuffer(g);
   gpu::Texture edge = gpu::make_texture(scene.width, scene.height, GL_RG32F);
   gpu::Texture shade = gpu::make_texture(scene.width, scene.height, GL_RGBA8);
-  gpu::SketchyMapsPass(object_colors(sketchy)).run(inputs, p, edge, shade, maps_rect(sketchy, scene.width, scene.height));
+  gpu::SketchyMapsPass(object_colors(sketchy)).run(inputs, p, edge, shade, filter_rect(sketchy, 1));
   Image gpu_edge = gpu::download_texture(edge, 2), gpu_shade = gpu::download_texture(shade, 4);
   gpu::Context::get().check_errors("sketchy_maps parity");
   return {compared("sketchy_maps.edge_darkness", channel(ref.edge, 0), channel(gpu_edge, 0), parity_tolerance::kFloat,

@@ -1,7 +1,9 @@
 #include "common/distortion.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+#include "common/edge_detect.hpp"
 #include "common/random.hpp"
 
 namespace plumbago {
@@ -43,6 +45,18 @@ std::vector<glm::vec2> contour_texture_shifts(const ContourParams& p, uint32_t s
     shifts.push_back({sx, sy});
   }
   return shifts;
+}
+
+float largest_offset(const std::vector<Image>& grids) {
+  float largest = 0;
+  for (const Image& g : grids)
+    for (float v : g.data) largest = std::max(largest, std::abs(v));
+  return largest;
+}
+
+PixelRect contour_rect(const Scene& scene, const std::vector<Image>& grids) {
+  if (background_darkness(scene.params.get<EdgeDetectParams>()) != 0.0f) return {0, 0, scene.width, scene.height};
+  return covered_rect(scene, scene.width, scene.height, largest_offset(grids) + 3);
 }
 
 }  // namespace plumbago

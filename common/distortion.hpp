@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "common/image.hpp"
+#include "common/scene.hpp"
 
 namespace plumbago {
 
@@ -39,5 +40,14 @@ std::vector<Image> distortion_grids(const ContourParams& p, int width, int heigh
 
 // o_k: a seeded shift of copy k's contour texture, in texels (SPEC 2.4).
 std::vector<glm::vec2> contour_texture_shifts(const ContourParams& p, uint32_t seed);
+
+// The largest |dx| or |dy| of any grid (bilinear interpolation stays within it).
+float largest_offset(const std::vector<Image>& grids);
+
+// Where multiple contour drawing can differ from 0 (SPEC 2.4): a copy reads d' within the
+// largest offset, d' differs from the background's within the edge filter's pixel of the
+// objects (common/scene.hpp covered_rect), and the bilinear read adds one. The whole
+// window when the background's d is not 0 (edge.background_pairs = formula).
+PixelRect contour_rect(const Scene& scene, const std::vector<Image>& grids);
 
 }  // namespace plumbago

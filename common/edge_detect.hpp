@@ -32,4 +32,10 @@ struct EdgeDetectParams {
   }
 };
 
+// d of a background pixel whose neighbors are background too (SPEC 2.2): 0, or 1 under the
+// literal formula (zero normals disagree).
+inline float background_darkness(const EdgeDetectParams& p) {
+  return p.background_pairs == BackgroundPairs::Continuous ? 0.0f : 1.0f;
+}
+
 }  // namespace plumbago

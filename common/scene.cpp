@@ -268,6 +268,30 @@ Scene read_scene(const json& j, SceneReader& r, const std::string& source) {
 
 }  // namespace
 
+PixelRect covered_rect(const Scene& scene, int width, int height, float margin) {
+  const PixelRect window{0, 0, width, height};
+  glm::mat4 to_clip = scene.camera.projection(float(width) / float(height)) * scene.camera.view();
+  glm::vec2 lo(INFINITY), hi(-INFINITY);
+  for (const SceneObject& o : scene.objects) {
+    glm::mat4 object_to_clip = to_clip * o.transform;
+    for (const glm::vec3& v : o.mesh->positions) {  // a triangle's projection lies within its corners'
+      glm::vec4 clip = object_to_clip * glm::vec4(v, 1.0f);
+      if (!(clip.w > 0.0f)) return window;  // behind the eye: the projection does not bound it
+      glm::vec2 pixel = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(width, height);
+      lo = glm::min(lo, pixel);
+      hi = glm::max(hi, pixel);
+    }
+  }
+  if (!(lo.x <= hi.x && lo.y <= hi.y)) return {};  // no object
+  glm::ivec2 a = glm::ivec2(glm::floor(glm::clamp(lo - margin, glm::vec2(0), glm::vec2(width, height))));
+  glm::ivec2 b = glm::ivec2(glm::ceil(glm::clamp(hi + margin, glm::vec2(0), glm::vec2(width, height))));
+  return {a.x, a.y, b.x, b.y};
+}
+
+PixelRect filter_rect(const Scene& scene, int radius) {
+  return covered_rect(scene, scene.width, scene.height, float(radius + 1));
+}
+
 void scene_bounds(const Scene& scene, glm::vec3& center, float& radius) {
   glm::vec3 lo(INFINITY), hi(-INFINITY);
   for (const auto& o : scene.objects)

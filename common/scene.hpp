@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/camera.hpp"
+#include "common/image.hpp"
 #include "common/mesh.hpp"
 #include "common/params.hpp"
 
@@ -54,6 +55,17 @@ Scene parse_scene(const std::string& json_text, const std::string& source, const
 // Built-in procedural scenes (no files needed): "torus", "sphere", "cad".
 Scene builtin_scene(const std::string& name);
 std::vector<std::string> builtin_scene_names();
+
+// The pixels that `scene`'s objects can cover (the bounding rectangle of their projected
+// vertices), grown by `margin` pixels and clipped to the window; the whole window when a
+// vertex lies behind the eye. Outside it the sketch's maps hold their background values and the
+// composite draws nothing, so the GPU skips it (a bound, not a stage: no formula changes).
+PixelRect covered_rect(const Scene& scene, int width, int height, float margin);
+// Where a window-space filter of the given pixel radius over the G-buffer can differ from
+// its value on the background: covered_rect at the scene's size grown by the radius and a
+// pixel to spare. The GPU runs such passes only there (edge detection and the sketchy
+// maps: radius 1; the pencil interior: 0) and clears the rest to the background value.
+PixelRect filter_rect(const Scene& scene, int radius);
 
 // World-space bounding sphere of all objects.
 void scene_bounds(const Scene& scene, glm::vec3& center, float& radius);

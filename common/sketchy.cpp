@@ -53,33 +53,11 @@ std::vector<glm::vec3> noise_coordinates(const Mesh& enlarged) {
   return out;
 }
 
-PixelRect covered_rect(const Scene& scene, int width, int height, float margin) {
-  const PixelRect window{0, 0, width, height};
-  glm::mat4 to_clip = scene.camera.projection(float(width) / float(height)) * scene.camera.view();
-  glm::vec2 lo(INFINITY), hi(-INFINITY);
-  for (const SceneObject& o : scene.objects) {
-    glm::mat4 object_to_clip = to_clip * o.transform;
-    for (const glm::vec3& v : o.mesh->positions) {  // a triangle's projection lies within its corners'
-      glm::vec4 clip = object_to_clip * glm::vec4(v, 1.0f);
-      if (!(clip.w > 0.0f)) return window;  // behind the eye: the projection does not bound it
-      glm::vec2 pixel = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(width, height);
-      lo = glm::min(lo, pixel);
-      hi = glm::max(hi, pixel);
-    }
-  }
-  if (!(lo.x <= hi.x && lo.y <= hi.y)) return {};  // no object
-  glm::ivec2 a = glm::ivec2(glm::floor(glm::clamp(lo - margin, glm::vec2(0), glm::vec2(width, height))));
-  glm::ivec2 b = glm::ivec2(glm::ceil(glm::clamp(hi + margin, glm::vec2(0), glm::vec2(width, height))));
-  return {a.x, a.y, b.x, b.y};
-}
-
 float sketch_reach(const SketchyParams& p) {
   auto frobenius = [](const glm::mat2& m) { return std::sqrt(glm::dot(m[0], m[0]) + glm::dot(m[1], m[1])); };
   float uv = (p.style == SketchyStyle::Rough ? 0.5f : 1.5f) * std::sqrt(2.0f);
   return uv * std::max(frobenius(edge_matrix(p)), frobenius(shade_matrix(p)));
 }
-
-PixelRect maps_rect(const Scene& sketchy, int width, int height) { return covered_rect(sketchy, width, height, 2); }
 
 PixelRect composite_rect(const Scene& sketchy, int width, int height) {
   return covered_rect(sketchy, width, height, sketch_reach(sketchy.params.get<SketchyParams>()) + 3);

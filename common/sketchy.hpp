@@ -75,19 +75,14 @@ Scene enlarged_scene(const Scene& sketchy);
 // enlarged mesh's bbox diagonal, one per vertex.
 std::vector<glm::vec3> noise_coordinates(const Mesh& enlarged);
 
-// The pixels that `scene`'s objects can cover (the bounding rectangle of their projected
-// vertices), grown by `margin` pixels and clipped to the window; the whole window when a
-// vertex lies behind the eye. Outside it the sketch's maps hold their background values and the
-// composite draws nothing, so the GPU skips it (a bound, not a stage: no formula changes).
-PixelRect covered_rect(const Scene& scene, int width, int height, float margin);
 // The farthest the composite reads from its pixel (SPEC 3.2): |M (u, v)| <= ||M||_F |(u, v)|
 // with |u|, |v| <= 1.5 (T < 2), 0.5 for the rough style's white noise; the largest of M_s
 // and M_e, whose turned copies keep the norm.
 float sketch_reach(const SketchyParams& p);
 
-// Where the GPU runs the maps (covered + the edge filter's neighbor + 1) and the
-// composite (covered + sketch_reach + the edge filter and its bilinear read + 1).
-PixelRect maps_rect(const Scene& sketchy, int width, int height);
+// Where the GPU runs the composite: covered_rect (common/scene.hpp) grown by sketch_reach,
+// the edge filter and its bilinear read, and a pixel to spare. Outside it both samples
+// are exterior and the fragment would be discarded.
 PixelRect composite_rect(const Scene& sketchy, int width, int height);
 
 // M_e and M_s of SPEC 3.2, acting on the column vector (u, v): [[a, b], [c, d]].

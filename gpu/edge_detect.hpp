@@ -14,9 +14,10 @@ class EdgeDetectPass {
  public:
   EdgeDetectPass();
   // Writes contour darkness d into `darkness` and the lit d' into `lit` (R32F, the
-  // G-buffer's size).
+  // G-buffer's size). Only `covered` (common/scene.hpp filter_rect, radius 1) runs the
+  // shader; outside it both get the background's d.
   void run(const GBufferTargets& g, const EdgeDetectParams& p, const std::vector<Light>& view_lights,
-           const ContourLightParams& light, Texture& darkness, Texture& lit);
+           const ContourLightParams& light, Texture& darkness, Texture& lit, const PixelRect& covered);
 
  private:
   Program program_;

@@ -19,13 +19,14 @@ MultiContourPass::MultiContourPass() : program_("fullscreen.vert", "multi_contou
   glProgramUniform1i(program_.id(), program_.uniform("contour_texture"), 2);
 }
 
-void MultiContourPass::run(const Texture& lit, const ContourInputs& in, const ContourParams& p, Texture& out) {
+void MultiContourPass::run(const Texture& lit, const ContourInputs& in, const ContourParams& p, Texture& out,
+                           const PixelRect& covered) {
   if (p.copies > 8 || size_t(p.copies) > in.shifts.size())
     throw std::invalid_argument("multi_contour: the inputs hold fewer copies than contour.copies");
   program_.set_params(p);
   glProgramUniform2fv(program_.id(), program_.uniform("texture_shift"), GLsizei(p.copies), &in.shifts[0].x);
   set_sampling(lit, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
-  pass_.draw(program_, {&lit, &in.offset_grids, &in.contour_texture}, out);
+  pass_.draw_inside(program_, {&lit, &in.offset_grids, &in.contour_texture}, {&out}, covered, {glm::vec4(0.0f)});
 }
 
 }  // namespace plumbago::gpu

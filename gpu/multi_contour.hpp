@@ -19,7 +19,8 @@ class MultiContourPass {
  public:
   MultiContourPass();
   // `lit` must be sampled LINEAR/CLAMP_TO_EDGE (set here); writes D_c into `out` (R32F).
-  void run(const Texture& lit, const ContourInputs& in, const ContourParams& p, Texture& out);
+  // Only `covered` (common/distortion.hpp contour_rect) runs the shader; outside it D_c = 0.
+  void run(const Texture& lit, const ContourInputs& in, const ContourParams& p, Texture& out, const PixelRect& covered);
 
  private:
   Program program_;

@@ -118,14 +118,15 @@ struct Renderer::State {
       gbuffer_pass.render(scene, gbuffer, gbuffer_channels);
     } else if (pass == "edge_detect+contour_light") {
       edge_pass.run(gbuffer, scene.params.get<EdgeDetectParams>(), view_space_lights(scene),
-                    scene.params.get<ContourLightParams>(), contour_darkness, lit_contour_darkness);
+                    scene.params.get<ContourLightParams>(), contour_darkness, lit_contour_darkness, filter_rect(ordinary, 1));
     } else if (pass == "multi_contour") {
       multi_contour_pass.run(lit_contour_darkness, contour_inputs, scene.params.get<ContourParams>(),
-                             multi_contour_darkness);
+                             multi_contour_darkness, contour_rect(ordinary, pre.offset_grids));
     } else if (pass == "interior_intensity+pencil_interior") {
       pencil_interior_pass.run(gbuffer, view_space_lights(scene), pencil_stack, paper_normal,
                                interior_options(scene.effects), scene.params.get<InteriorParams>(),
-                               scene.params.get<PaperParams>().mu_p, interior_darkness, interior_intensity);
+                               scene.params.get<PaperParams>().mu_p, interior_darkness, interior_intensity,
+                               filter_rect(ordinary, 0));
     } else if (pass == "compose") {
       compose_pass.run(multi_contour_darkness, ran("multi_contour"), interior_darkness, ran("pencil_interior"),
                        paper_color, !pre.paper.color.empty(), scene.params.get<ComposeParams>(), color);
@@ -135,7 +136,7 @@ struct Renderer::State {
       sketchy->enlarged_pass->render(scene.camera, sketchy->noise_coordinates);
     } else if (pass == "sketchy_maps") {
       sketchy->maps_pass.run(sketchy->gbuffer, scene.params.get<EdgeDetectParams>(), sketchy->edge_map, sketchy->shade_map,
-                             maps_rect(sketchy->sketchy, scene.width, scene.height));
+                             filter_rect(sketchy->sketchy, 1));
     } else if (pass == "sketchy_composite") {
       SketchyState& s = *sketchy;
       s.composite_pass.run({s.edge_map, s.shade_map, s.gbuffer, s.noise, s.noise_coordinates},

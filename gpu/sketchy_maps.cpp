@@ -25,11 +25,9 @@ void SketchyMapsPass::run(const GBufferTargets& g, const EdgeDetectParams& p, Te
   glProgramUniform1f(program_.id(), program_.uniform("near_plane"), g.near);
   glProgramUniform1f(program_.id(), program_.uniform("far_plane"), g.far);
   const Texture& normals = p.normals == EdgeNormals::Face ? g.face_normal : g.normal;
-  // Background pixels with background neighbors: d = 0, or 1 under the literal formula
-  // (zero normals disagree); edge depth = far; no shade.
-  float background_darkness = p.background_pairs == BackgroundPairs::Continuous ? 0.0f : 1.0f;
+  // Background pixels: their d, edge depth = far, no shade.
   pass_.draw_inside(program_, {&normals, &g.depth, &g.ids, &colors_}, {&edge, &shade}, covered,
-                    {glm::vec4(background_darkness, g.far, 0, 0), glm::vec4(0)});
+                    {glm::vec4(background_darkness(p), g.far, 0, 0), glm::vec4(0)});
 }
 
 }  // namespace plumbago::gpu

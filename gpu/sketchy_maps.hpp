@@ -14,8 +14,8 @@ class SketchyMapsPass {
   // `colors`: one unlit color per object of the G-buffer's scene.
   explicit SketchyMapsPass(const std::vector<glm::vec3>& colors);
   // `edge` (RG32F): contour darkness and the depth it belongs to; `shade` (RGBA8). Only
-  // `covered` (common/sketchy.hpp covered_rect, grown by the edge filter's pixel) runs
-  // the shader; outside it the maps get the background's values.
+  // `covered` (common/scene.hpp filter_rect, radius 1) runs the shader; outside it the
+  // maps get the background's values.
   void run(const GBufferTargets& g, const EdgeDetectParams& p, Texture& edge, Texture& shade, const PixelRect& covered);
 
  private:
