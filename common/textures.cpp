@@ -4,6 +4,7 @@
 
 #include "common/distortion.hpp"
 #include "common/noise.hpp"
+#include "common/sketchy.hpp"
 #include "common/paper.hpp"
 #include "common/pencil_texture.hpp"
 
@@ -22,13 +23,16 @@ Image contact_sheet(const std::vector<Image>& layers, int columns) {
 
 namespace {
 
-// Offsets (dx, dy) mapped from [-(a + r), a + r] to [0, 1] in red and green.
-Image offset_view(const Image& grid, float bound) {
-  Image v(grid.width, grid.height, 3);
-  for (size_t i = 0; i < grid.pixels(); ++i)
-    for (int c = 0; c < 2; ++c) v.data[i * 3 + c] = grid.data[i * 2 + c] / (2 * bound) + 0.5f;
+// Two channels shown as red and green, x scale + bias (a PNG's second channel would be alpha).
+Image rg_view(const Image& two, float scale, float bias) {
+  Image v(two.width, two.height, 3);
+  for (size_t i = 0; i < two.pixels(); ++i)
+    for (int c = 0; c < 2; ++c) v.data[i * 3 + c] = two.data[i * 2 + c] * scale + bias;
   return v;
 }
+
+// Offsets (dx, dy) mapped from [-(a + r), a + r] to [0, 1] in red and green.
+Image offset_view(const Image& grid, float bound) { return rg_view(grid, 1 / (2 * bound), 0.5f); }
 
 // Signed values in [-1, 1] (normals, noise) mapped to [0, 1].
 Image signed_view(const Image& n) {
@@ -58,7 +62,14 @@ std::map<std::string, Image> texture_gallery(const ParamSet& params, uint32_t se
   auto grids = distortion_grids(contour, width, height, seed);
   for (size_t k = 0; k < grids.size(); ++k)
     out["contour_offsets_" + std::to_string(k)] = offset_view(grids[k], contour.shake_amplitude + contour.shake_noise);
-  out["sketchy_noise"] = signed_view(perlin_noise_texture(params.get<NoiseTextureParams>(), seed));
+  auto noise = params.get<NoiseTextureParams>();
+  auto sketchy = params.get<SketchyParams>();
+  // What each sketchy style reads (SPEC 3.2, 3.5): Perlin (default, repeat), white noise
+  // (rough; (u, v) + 0.5 in red and green), the 3D Perlin's first slice (object).
+  out["sketchy_noise"] = signed_view(perlin_noise_texture(noise, seed));
+  out["sketchy_white_noise"] = rg_view(white_noise_texture(noise.size, seed), 1, 0);
+  out["sketchy_noise_3d_slice0"] =
+      signed_view(perlin_noise_texture_3d(sketchy.noise3d_size, sketchy.noise3d_period, seed).front());
   return out;
 }
 

@@ -37,6 +37,15 @@ class Cli : public ::testing::Test {
   testing::TempDir tmp_;
 };
 
+TEST_F(Cli, TexturesWritesEveryGeneratedTextureIncludingEachSketchyStylesNoise) {
+  CliRun r = run("textures --size 64x64 --set pencil.layers=8 --set pencil.size=64 --out " + path("textures"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* name : {"pencil_layer_00", "pencil_layer_07", "paper_normal", "contour_offsets_0", "sketchy_noise",
+                           "sketchy_white_noise", "sketchy_noise_3d_slice0"})
+    EXPECT_TRUE(fs::exists(path("textures/" + std::string(name) + ".png"))) << name;
+  EXPECT_FALSE(fs::exists(path("textures/pencil_layer_08.png")));
+}
+
 TEST_F(Cli, RendersTheBuiltinSceneAndReportsWhatRan) {
   CliRun r = run("render --size 160x120 --stats --json -o " + path("out.png"));
   ASSERT_EQ(r.code, 0) << r.err;
