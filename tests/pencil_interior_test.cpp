@@ -59,23 +59,35 @@ TEST(PencilInteriorBlend, NearestCornerKeepsOnlyTheLargestWeight) {
   EXPECT_EQ(blend_weights(glm::vec3(0.4f, 0.4f, 0.2f), ip), glm::vec3(1, 0, 0));  // a tie: the first
 }
 
+// A builtin scene's reference inputs to the pencil interior: curvature, pencil stack,
+// G-buffer with corner angles, and its interior intensity.
+struct ReferenceInterior {
+  Scene scene;
+  Preprocessed pre = preprocess(scene, {"curvature", "pencil_textures"});
+  GBuffer g = reference::trace_gbuffer(scene, scene.width, scene.height, pre.curvature);
+  InteriorParams ip = scene.params.get<InteriorParams>();
+  Image intensity = reference::interior_intensity(g, view_space_lights(scene), ip);
+
+  // D_i without cross hatching or paper, for `p` (default: the scene's parameters).
+  Image darkness(const InteriorParams& p) const {
+    return reference::interior_darkness(g, intensity, pre.pencil_stack, {}, {false, false}, p, 0);
+  }
+};
+
 // Three-way blending removes the seams of one texture per corner (Lee §5.4): where the
 // corner of largest weight changes between two neighbors inside one triangle, the
 // nearest-corner image jumps from one rotated texture to another; the blend does not.
 TEST(PencilInteriorBlend, ThreeWayBlendingIsSmootherThanNearestCorner) {
-  Scene scene = testing::builtin_at("torus", 240, 180);
-  Preprocessed pre = preprocess(scene, {"curvature", "pencil_textures"});
-  GBuffer g = reference::trace_gbuffer(scene, scene.width, scene.height, pre.curvature);
-  auto ip = scene.params.get<InteriorParams>();
-  Image intensity = reference::interior_intensity(g, view_space_lights(scene), ip);
-  InteriorParams one_corner = ip;
+  const ReferenceInterior in{testing::builtin_at("torus", 240, 180)};
+  const GBuffer& g = in.g;
+  InteriorParams ip = in.ip, one_corner = in.ip;
   one_corner.blend = InteriorBlend::NearestCorner;
   auto largest = [&](int x, int y) {
     return blend_weights(glm::vec3(g.bary.at(x, y, 0), g.bary.at(x, y, 1), g.bary.at(x, y, 2)), one_corner);
   };
   auto seam_jump = [&](InteriorBlend blend) {  // mean |d(x+1) - d(x)| across those seams
     ip.blend = blend;
-    Image d = reference::interior_darkness(g, intensity, pre.pencil_stack, {}, {false, false}, ip, 0);
+    Image d = in.darkness(ip);
     double sum = 0;
     int n = 0;
     for (int y = 0; y < d.height; ++y)
@@ -96,14 +108,10 @@ TEST(PencilInteriorBlend, ThreeWayBlendingIsSmootherThanNearestCorner) {
 // "interior" without "crosshatch" never reads the max-curvature angles: poisoning them
 // with NaN changes nothing.
 TEST(PencilInteriorReference, WithoutCrosshatchTheMaxDirectionsAreNeverRead) {
-  Scene scene = testing::builtin_at("torus", 120, 90);
-  Preprocessed pre = preprocess(scene, {"curvature", "pencil_textures"});
-  GBuffer g = reference::trace_gbuffer(scene, scene.width, scene.height, pre.curvature);
-  auto ip = scene.params.get<InteriorParams>();
-  Image intensity = reference::interior_intensity(g, view_space_lights(scene), ip);
-  Image before = reference::interior_darkness(g, intensity, pre.pencil_stack, {}, {false, false}, ip, 0);
-  for (float& v : g.theta_max.data) v = NAN;
-  Image after = reference::interior_darkness(g, intensity, pre.pencil_stack, {}, {false, false}, ip, 0);
+  ReferenceInterior in{testing::builtin_at("torus", 120, 90)};
+  Image before = in.darkness(in.ip);
+  for (float& v : in.g.theta_max.data) v = NAN;
+  Image after = in.darkness(in.ip);
   EXPECT_EQ(before.data, after.data);
   EXPECT_FALSE(has_non_finite(after));
 }

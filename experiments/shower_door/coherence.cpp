@@ -6,22 +6,18 @@
 #include <stdexcept>
 #include <vector>
 
+#include "reference/sampler.hpp"
+
 namespace plumbago::shower_door {
 
 namespace {
 
-// img at window point q (pixel centers at i + 0.5), channel c; edges clamped.
+// img at window point q (pixel centers at i + 0.5), channel c (< 4): the GL-exact sampler
+// of the reference (reference/sampler.hpp), edges clamped.
 float read(const Image& img, float qx, float qy, int c, Sampling sampling) {
-  auto at = [&](int x, int y) {
-    return img.at(std::clamp(x, 0, img.width - 1), std::clamp(y, 0, img.height - 1), c);
-  };
-  if (sampling == Sampling::Nearest) return at(int(std::floor(qx)), int(std::floor(qy)));
-  float fx = qx - 0.5f, fy = qy - 0.5f;
-  int x0 = int(std::floor(fx)), y0 = int(std::floor(fy));
-  float tx = fx - float(x0), ty = fy - float(y0);
-  float bottom = (1 - tx) * at(x0, y0) + tx * at(x0 + 1, y0);
-  float top = (1 - tx) * at(x0, y0 + 1) + tx * at(x0 + 1, y0 + 1);
-  return (1 - ty) * bottom + ty * top;
+  const reference::SamplerState state{sampling == Sampling::Nearest ? reference::Filter::Nearest
+                                                                    : reference::Filter::Linear};
+  return reference::sample(img, glm::vec2(qx / float(img.width), qy / float(img.height)), state)[c];
 }
 
 }  // namespace
@@ -33,8 +29,8 @@ double Residuals::coherence() const {
 
 Image residual_map(const Image& prev, const Image& next, const Image& motion, Sampling sampling) {
   if (prev.width != next.width || prev.height != next.height || prev.channels != next.channels ||
-      motion.width != next.width || motion.height != next.height || motion.channels != 3)
-    throw std::invalid_argument("shower_door: patterns and motion map differ in size or channels");
+      motion.width != next.width || motion.height != next.height || motion.channels != 3 || next.channels > 4)
+    throw std::invalid_argument("shower_door: patterns and motion map differ in size or channels, or a pattern has over 4");
   Image out(next.width, next.height, 2);
   for (int y = 0; y < next.height; ++y)
     for (int x = 0; x < next.width; ++x) {
