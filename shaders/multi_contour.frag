@@ -7,11 +7,29 @@ uniform sampler2D lit_contour_darkness;  // LINEAR, CLAMP_TO_EDGE
 uniform sampler2DArray offset_grids;     // one RG layer per copy, LINEAR, CLAMP_TO_EDGE
 uniform sampler2D contour_texture;       // LINEAR, REPEAT
 uniform vec2 texture_shift[MAX_COPIES];  // o_k, texels
+uniform sampler2D block_max;             // contour_blocks.frag
+uniform float reach;                     // >= the largest |dx|, |dy| of any copy's offset
 
 layout(location = 0) out float contour_darkness;
 
+// Whether any texel a copy's bilinear read of d' can touch, (p - reach, p + reach) and
+// the next texel, is in a block whose d' is not all 0. Clamp-to-edge keeps the texels
+// read inside the clamped range.
+bool contour_within_reach(vec2 p) {
+  ivec2 last = textureSize(lit_contour_darkness, 0) - 1;
+  ivec2 lo = clamp(ivec2(floor(p - reach - 0.5)), ivec2(0), last) / CONTOUR_BLOCK;
+  ivec2 hi = clamp(ivec2(floor(p + reach - 0.5)) + 1, ivec2(0), last) / CONTOUR_BLOCK;
+  for (int y = lo.y; y <= hi.y; ++y)
+    for (int x = lo.x; x <= hi.x; ++x)
+      if (texelFetch(block_max, ivec2(x, y), 0).r != 0.0) return true;
+  return false;
+}
+
 void main() {
   vec2 p = gl_FragCoord.xy;  // pixel center
+  // Every d_k = 0 here, so D_c = 0, what the target was cleared to (gpu/multi_contour.cpp).
+  // A discard, unlike a return, lets llvmpipe skip a block of pixels that all take it.
+  if (!contour_within_reach(p)) discard;
   vec2 window = vec2(textureSize(lit_contour_darkness, 0));
   vec2 grid = vec2(textureSize(offset_grids, 0).xy);
   vec2 tex = vec2(textureSize(contour_texture, 0));

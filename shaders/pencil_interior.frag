@@ -53,11 +53,9 @@ float blended(vec2 p, vec3 barycentrics, vec3 theta, float r, vec3 n) {
 
 void main() {
   ivec2 x = ivec2(gl_FragCoord.xy);
-  if (texelFetch(ids, x, 0).r == 0u) {
-    interior_darkness = 0.0;
-    interior_intensity = 1.0;
-    return;
-  }
+  // Background: the targets already hold D_i = 0, I' = 1 (FullscreenPass::draw_inside). A
+  // discard, unlike a return, lets llvmpipe skip a block of pixels that are all background.
+  if (texelFetch(ids, x, 0).r == 0u) discard;
   float i = adjusted_intensity(x);
   interior_intensity = i;
   float layers = float(textureSize(pencil_stack, 0).z);

@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 
 #include "apps/parity.hpp"
+#include "common/image_compare.hpp"
+#include "gpu/multi_contour.hpp"
+#include "reference/multi_contour.hpp"
 #include "tests/test_scenes.hpp"
 
 namespace plumbago {
@@ -29,6 +32,35 @@ TEST_P(SkippedPixels, PassesMatchTheReferenceInsideAndOutside) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BackgroundPairs, SkippedPixels, ::testing::Values("continuous", "formula"));
+
+// Multiple contour drawing also skips the pixels whose copies can only read d' = 0, found
+// by blocks of 8 x 8 pixels (gpu/multi_contour.cpp). Single dots of d' on the first and
+// last texel of a block, read by two copies shifted by the whole reach each way, put
+// the farthest pixel a copy can darken right past a block's edge: a reach cut by a pixel
+// misses it.
+TEST_F(SkippedPixels, MultiContourFindsDotsAtTheFullReachOfTheOffsets) {
+  ParamSet set;
+  set.set("contour.copies", 2.0);
+  set.set("contour.texture_strength", 0.0);
+  set.set("contour.grid_cell", 8.0);
+  auto p = set.get<ContourParams>();
+  Image lit(72, 56, 1, 0.0f);
+  for (auto [x, y] : {std::pair{16, 16}, {31, 31}, {40, 47}, {55, 8}}) lit.at(x, y) = 1.0f;
+  const float reach = 5.3f;  // a fraction of a texel: the farthest read has weight 0.3
+  std::vector<Image> grids;
+  for (float sign : {1.0f, -1.0f}) grids.push_back(Image(10, 8, 2, sign * reach));
+  std::vector<glm::vec2> shifts(2, glm::vec2(0));
+  Image texture(4, 4, 1, 1.0f);
+
+  Image expected = reference::multi_contour_darkness(lit, grids, texture, shifts, p);
+  gpu::ContourInputs inputs = gpu::upload_contour_inputs(grids, texture, shifts);
+  gpu::Texture in = gpu::upload_texture(lit, GL_R32F), out = gpu::make_texture(lit.width, lit.height, GL_R32F);
+  gpu::MultiContourPass().run(in, inputs, p, out, {0, 0, lit.width, lit.height});
+  ImageDiff d = compare_images(expected, gpu::download_texture(out, 1), 1e-5);
+  std::printf("[skipped pixels, dots at the reach] %s\n", format_diff("multi_contour", d).c_str());
+  EXPECT_EQ(d.over_tolerance, 0.0);
+  EXPECT_NEAR(expected.at(10, 10), 0.3f * 0.3f * p.stroke_opacity, 1e-5f);  // the dot at (16, 16), read from 5.3 px
+}
 
 }  // namespace
 }  // namespace plumbago
