@@ -1,11 +1,184 @@
 #include "common/mesh_topology.hpp"
 
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/System/omstream.hh>
 #include <algorithm>
+#include <atomic>
+#include <numeric>
 
 namespace plumbago {
 namespace {
+
+// --- CSR lists, built in parallel ----------------------------------------------------
+
+using Scratch = tbb::enumerable_thread_specific<std::vector<uint32_t>>;
+
+// start[k + 1] = start[k] + count[k + 1], in place (count[0] = 0).
+void counts_to_starts(std::vector<uint32_t>& count) { std::inclusive_scan(count.begin(), count.end(), count.begin()); }
+
+// CSR of the lists list(key, out) writes (two passes: count, then copy).
+template <class List>
+void gather_csr(size_t keys, const List& list, std::vector<uint32_t>& start, std::vector<uint32_t>& values) {
+  Scratch scratch;
+  start.assign(keys + 1, 0);
+  tbb::parallel_for(size_t(0), keys, [&](size_t k) {
+    list(uint32_t(k), scratch.local());
+    start[k + 1] = uint32_t(scratch.local().size());
+  });
+  counts_to_starts(start);
+  values.resize(start[keys]);
+  tbb::parallel_for(size_t(0), keys, [&](size_t k) {
+    list(uint32_t(k), scratch.local());
+    std::copy(scratch.local().begin(), scratch.local().end(), values.begin() + start[k]);
+  });
+}
+
+// Calls f(corner, face) once for each distinct corner of each face, in parallel.
+template <class F>
+void for_each_distinct_corner(const Mesh& mesh, const F& f) {
+  tbb::parallel_for(size_t(0), mesh.triangles.size(), [&](size_t face) {
+    const auto& t = mesh.triangles[face];
+    for (int k = 0; k < 3; ++k)
+      if ((k < 1 || t[k] != t[0]) && (k < 2 || t[k] != t[1])) f(t[k], uint32_t(face));
+  });
+}
+
+// CSR of the faces around each vertex, each list sorted: counted and scattered with
+// atomic counters, then sorted list by list.
+void fill_vertex_faces(const Mesh& mesh, std::vector<uint32_t>& start, std::vector<uint32_t>& faces) {
+  const size_t n = mesh.positions.size();
+  start.assign(n + 1, 0);
+  for_each_distinct_corner(mesh, [&](uint32_t v, uint32_t) {
+    std::atomic_ref<uint32_t>(start[v + 1]).fetch_add(1, std::memory_order_relaxed);
+  });
+  counts_to_starts(start);
+  faces.resize(start[n]);
+  std::vector<uint32_t> cursor(start.begin(), start.end() - 1);
+  for_each_distinct_corner(mesh, [&](uint32_t v, uint32_t f) {
+    faces[std::atomic_ref<uint32_t>(cursor[v]).fetch_add(1, std::memory_order_relaxed)] = f;
+  });
+  tbb::parallel_for(size_t(0), n, [&](size_t v) { std::sort(faces.begin() + start[v], faces.begin() + start[v + 1]); });
+}
+
+// --- Manifold meshes: edges vertex by vertex -----------------------------------------
+
+// v's corner in one of its faces: v = t[slot], next = t[slot + 1], prev = t[slot + 2].
+struct Corner {
+  uint32_t face, slot, next, prev;
+};
+
+// (value, corner index) pairs sorted by value, to find the corner whose next (or prev)
+// is a given vertex.
+struct CornerIndex {
+  std::vector<std::pair<uint32_t, uint32_t>> pairs;
+  void build(const std::vector<Corner>& corners, uint32_t Corner::*field) {
+    pairs.resize(corners.size());
+    for (uint32_t i = 0; i < corners.size(); ++i) pairs[i] = {corners[i].*field, i};
+    std::sort(pairs.begin(), pairs.end());
+  }
+  bool has_repeats() const {
+    return std::adjacent_find(pairs.begin(), pairs.end(), [](auto a, auto b) { return a.first == b.first; }) !=
+           pairs.end();
+  }
+  int find(uint32_t value) const {
+    auto it = std::lower_bound(pairs.begin(), pairs.end(), std::make_pair(value, 0u));
+    return it != pairs.end() && it->first == value ? int(it->second) : -1;
+  }
+};
+
+struct VertexCorners {
+  std::vector<Corner> corners;
+  CornerIndex by_next, by_prev;
+};
+
+// The corners of v in its faces; false where v is a corner of one face twice.
+bool collect_corners(uint32_t v, const Mesh& mesh, std::span<const uint32_t> faces, VertexCorners& c) {
+  c.corners.clear();
+  for (uint32_t f : faces) {
+    const auto& t = mesh.triangles[f];
+    int slot = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+    if ((t[0] == v) + (t[1] == v) + (t[2] == v) != 1) return false;
+    c.corners.push_back({f, uint32_t(slot), t[(slot + 1) % 3], t[(slot + 2) % 3]});
+  }
+  c.by_next.build(c.corners, &Corner::next);
+  c.by_prev.build(c.corners, &Corner::prev);
+  return true;
+}
+
+// Every edge at v has at most one face running out of v along it (next) and one running
+// into v (prev), and the faces, each linked to the one across its edge (v, next), form
+// one path (an open fan, starting at the only face whose prev edge has no other face) or
+// one cycle (a closed fan).
+bool is_one_fan(const VertexCorners& c) {
+  if (c.corners.empty()) return true;
+  if (c.by_next.has_repeats() || c.by_prev.has_repeats()) return false;
+  size_t starts = 0, start = 0;
+  for (size_t i = 0; i < c.corners.size(); ++i)
+    if (c.by_next.find(c.corners[i].prev) < 0) ++starts, start = i;
+  if (starts > 1) return false;
+  size_t visited = 1;
+  for (int i = int(start);;) {
+    int j = c.by_prev.find(c.corners[size_t(i)].next);
+    if (j < 0 || size_t(j) == start) break;
+    if (++visited > c.corners.size()) return false;
+    i = j;
+  }
+  return visited == c.corners.size();
+}
+
+// Edge `e` = (v, u): face[0] is the lower of its faces, from -> to the way it runs.
+void write_edge(uint32_t e, uint32_t v, uint32_t u, const VertexCorners& c, MeshTopology& topo) {
+  int out = c.by_next.find(u), in = c.by_prev.find(u);  // faces running v -> u and u -> v
+  MeshTopology::Edge edge{v, u, {-1, -1}};
+  if (out >= 0) {
+    const Corner& k = c.corners[size_t(out)];
+    topo.face_edges[k.face][k.slot] = e;
+    edge.face[0] = int32_t(k.face);
+  }
+  if (in >= 0) {
+    const Corner& k = c.corners[size_t(in)];
+    topo.face_edges[k.face][(k.slot + 2) % 3] = e;
+    edge.face[1] = int32_t(k.face);
+    if (out < 0 || k.face < uint32_t(edge.face[0])) edge = {u, v, {int32_t(k.face), edge.face[0]}};
+  }
+  topo.edges[e] = edge;
+}
+
+// Number of v's neighbors above v: the edges v owns.
+uint32_t higher_neighbors(const MeshTopology& topo, uint32_t v) {
+  auto n = topo.neighbors_of(v);
+  return uint32_t(n.end() - std::upper_bound(n.begin(), n.end(), v));
+}
+
+// Edges numbered vertex by vertex, each owned by its lower vertex; false (and the edges
+// left unfinished) if some vertex is not one fan or some face has a repeated corner.
+bool manifold_edges(const Mesh& mesh, MeshTopology& topo) {
+  const size_t n = topo.vertex_count();
+  std::vector<uint32_t> first(n + 1, 0);
+  tbb::parallel_for(size_t(0), n, [&](size_t v) { first[v + 1] = higher_neighbors(topo, uint32_t(v)); });
+  counts_to_starts(first);
+  topo.edges.resize(first[n]);
+  topo.face_edges.resize(mesh.triangles.size());
+  tbb::enumerable_thread_specific<VertexCorners> scratch;
+  std::atomic<bool> manifold = true;
+  tbb::parallel_for(size_t(0), n, [&](size_t vertex) {
+    uint32_t v = uint32_t(vertex);
+    VertexCorners& c = scratch.local();
+    if (!collect_corners(v, mesh, topo.faces_of(v), c) || !is_one_fan(c)) {
+      manifold.store(false, std::memory_order_relaxed);
+      return;
+    }
+    auto neighbors = topo.neighbors_of(v);
+    auto higher = std::upper_bound(neighbors.begin(), neighbors.end(), v);
+    for (uint32_t e = first[v]; higher != neighbors.end(); ++higher, ++e) write_edge(e, v, *higher, c, topo);
+  });
+  return manifold;
+}
+
+// --- Any triangle soup: OpenMesh -----------------------------------------------------
 
 using OmMesh = OpenMesh::TriMesh_ArrayKernelT<>;
 
@@ -38,6 +211,8 @@ OmMesh build_halfedge_mesh(const Mesh& mesh, std::vector<uint32_t>& mesh_vertex,
     add_vertex(om, mesh.positions[v]);
     mesh_vertex.push_back(v);
   }
+  topo.face_edges.clear();
+  topo.face_edges.reserve(mesh.triangles.size());
   for (const auto& t : mesh.triangles) {
     std::array<OmMesh::VertexHandle, 3> corners{OmMesh::VertexHandle(int(t[0])), OmMesh::VertexHandle(int(t[1])),
                                                 OmMesh::VertexHandle(int(t[2]))};
@@ -58,56 +233,51 @@ OmMesh build_halfedge_mesh(const Mesh& mesh, std::vector<uint32_t>& mesh_vertex,
   return om;
 }
 
-// CSR lists from (key, value) pairs, each list sorted and without repeats.
-void fill_csr(size_t keys, const std::vector<std::pair<uint32_t, uint32_t>>& pairs, std::vector<uint32_t>& start,
-              std::vector<uint32_t>& values) {
-  std::vector<uint32_t> count(keys + 1, 0);
-  for (const auto& [k, v] : pairs) ++count[k + 1];
-  for (size_t k = 0; k < keys; ++k) count[k + 1] += count[k];
-  std::vector<uint32_t> raw(pairs.size()), fill(count.begin(), count.end() - 1);
-  for (const auto& [k, v] : pairs) raw[fill[k]++] = v;
-  start.assign(keys + 1, 0);
-  values.clear();
-  values.reserve(raw.size());
-  for (size_t k = 0; k < keys; ++k) {
-    auto begin = raw.begin() + count[k], end = raw.begin() + count[k + 1];
-    std::sort(begin, end);
-    values.insert(values.end(), begin, std::unique(begin, end));
-    start[k + 1] = uint32_t(values.size());
+void openmesh_edges(const Mesh& mesh, MeshTopology& topo) {
+  std::vector<uint32_t> mesh_vertex;
+  OmMesh om = build_halfedge_mesh(mesh, mesh_vertex, topo);
+  topo.edges.resize(om.n_edges());
+  for (auto e : om.edges()) {
+    auto h0 = om.halfedge_handle(e, 0), h1 = om.halfedge_handle(e, 1);
+    if (!om.face_handle(h0).is_valid()) std::swap(h0, h1);
+    auto& edge = topo.edges[size_t(e.idx())];
+    edge.from = mesh_vertex[size_t(om.from_vertex_handle(h0).idx())];
+    edge.to = mesh_vertex[size_t(om.to_vertex_handle(h0).idx())];
+    edge.face[0] = om.face_handle(h0).idx();
+    edge.face[1] = om.face_handle(h1).is_valid() ? om.face_handle(h1).idx() : -1;
   }
 }
 
 }  // namespace
 
+// The faces around each vertex and its neighbors: the other corners of those faces
+// (every edge of the topology is a side of some face, split or not).
+MeshTopology vertex_topology(const Mesh& mesh) {
+  MeshTopology topo;
+  fill_vertex_faces(mesh, topo.face_start_, topo.vertex_faces_);
+  auto other_corners = [&](uint32_t v, std::vector<uint32_t>& out) {
+    out.clear();
+    for (uint32_t f : topo.faces_of(v))
+      for (int k = 0; k < 3; ++k)
+        if (mesh.triangles[f][k] != v) out.push_back(mesh.triangles[f][k]);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+  };
+  gather_csr(mesh.positions.size(), other_corners, topo.neighbor_start_, topo.neighbors_);
+  return topo;
+}
+
 MeshTopology build_topology(const Mesh& mesh) {
   validate_mesh(mesh);
-  MeshTopology topo;
-  std::vector<uint32_t> mesh_vertex;
-  topo.face_edges.reserve(mesh.triangles.size());
-  OmMesh om = build_halfedge_mesh(mesh, mesh_vertex, topo);
+  MeshTopology topo = vertex_topology(mesh);
+  if (!manifold_edges(mesh, topo)) openmesh_edges(mesh, topo);
+  return topo;
+}
 
-  topo.edges.resize(om.n_edges());
-  std::vector<std::pair<uint32_t, uint32_t>> neighbor_pairs;
-  neighbor_pairs.reserve(2 * om.n_edges());
-  for (auto e : om.edges()) {
-    auto h0 = om.halfedge_handle(e, 0), h1 = om.halfedge_handle(e, 1);
-    if (!om.face_handle(h0).is_valid()) std::swap(h0, h1);
-    auto& edge = topo.edges[e.idx()];
-    edge.from = mesh_vertex[om.from_vertex_handle(h0).idx()];
-    edge.to = mesh_vertex[om.to_vertex_handle(h0).idx()];
-    edge.face[0] = om.face_handle(h0).idx();
-    edge.face[1] = om.face_handle(h1).is_valid() ? om.face_handle(h1).idx() : -1;
-    if (edge.from == edge.to) continue;  // a split face with a repeated corner
-    neighbor_pairs.emplace_back(edge.from, edge.to);
-    neighbor_pairs.emplace_back(edge.to, edge.from);
-  }
-
-  std::vector<std::pair<uint32_t, uint32_t>> face_pairs;
-  face_pairs.reserve(3 * mesh.triangles.size());
-  for (uint32_t f = 0; f < mesh.triangles.size(); ++f)
-    for (int k = 0; k < 3; ++k) face_pairs.emplace_back(mesh.triangles[f][k], f);
-  fill_csr(mesh.positions.size(), face_pairs, topo.face_start_, topo.vertex_faces_);
-  fill_csr(mesh.positions.size(), neighbor_pairs, topo.neighbor_start_, topo.neighbors_);
+MeshTopology build_topology_with_openmesh(const Mesh& mesh) {
+  validate_mesh(mesh);
+  MeshTopology topo = vertex_topology(mesh);
+  openmesh_edges(mesh, topo);
   return topo;
 }
 
