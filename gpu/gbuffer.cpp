@@ -167,6 +167,7 @@ GBufferChannels channels_read_by(const std::vector<std::string>& stages, const S
   c.gouraud = ran("interior_intensity") && !phong;
   c.bary = c.theta_min = interior;
   c.theta_max = interior && interior_options(scene.effects).crosshatch;
+  c.object_only_background = false;
   return c;
 }
 
@@ -195,8 +196,9 @@ void GBufferPass::render(const Scene& scene, GBufferTargets& t, const GBufferCha
   const float zero[4] = {0, 0, 0, 0}, far[4] = {cam.far, 0, 0, 0}, white[4] = {1, 0, 0, 0}, one = 1;
   const GLuint no_ids[4] = {0, 0, 0, 0};
   const float* clear[] = {zero, zero, far, nullptr, zero, white, zero, zero};
+  const bool object_only[] = {false, false, false, false, true, true, true, true};
   for (int i = 0; i < 8; ++i)
-    if (wanted[i] && clear[i]) glClearBufferfv(GL_COLOR, i, clear[i]);
+    if (wanted[i] && clear[i] && (channels.object_only_background || !object_only[i])) glClearBufferfv(GL_COLOR, i, clear[i]);
   glClearBufferuiv(GL_COLOR, 3, no_ids);
   glClearBufferfv(GL_DEPTH, 0, &one);
 

@@ -6,6 +6,7 @@ uniform sampler2D paper_color;  // read texel for pixel, wrapping
 uniform bool has_contours;
 uniform bool has_interior;
 uniform bool has_paper;
+#include "common_wrap.glsl"
 
 layout(location = 0) out vec4 color;
 
@@ -22,6 +23,6 @@ void main() {
   ivec2 x = ivec2(gl_FragCoord.xy);
   float d_c = has_contours ? texelFetch(contour_darkness, x, 0).r : 0.0;
   float d_i = has_interior ? texelFetch(interior_darkness, x, 0).r : 0.0;
-  vec3 c_p = has_paper ? texelFetch(paper_color, x % textureSize(paper_color, 0), 0).rgb : vec3(1.0);
+  vec3 c_p = has_paper ? texelFetch(paper_color, wrapped_texel(x, textureSize(paper_color, 0)), 0).rgb : vec3(1.0);
   color = vec4(enhanced(composed_intensity(d_c, d_i)) * c_p, 1.0);
 }

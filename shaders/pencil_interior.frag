@@ -3,6 +3,7 @@
 // in one pass: I' is the second output, D_i the first. Formulas in common/interior.hpp
 // and common/pencil_interior.hpp.
 #include "common_lights.glsl"
+#include "common_wrap.glsl"
 
 uniform sampler2D gouraud;
 uniform sampler2D normals;
@@ -62,7 +63,7 @@ void main() {
   float r = ((1.0 - i) * (layers - 1.0) + 0.5) / layers;  // tone to layer (2.6)
   vec2 p = gl_FragCoord.xy;
   vec3 w = texelFetch(bary, x, 0).xyz;
-  vec3 n = paper_effect ? texelFetch(paper_normal, x % textureSize(paper_normal, 0), 0).xyz : vec3(0.0);
+  vec3 n = paper_effect ? texelFetch(paper_normal, wrapped_texel(x, textureSize(paper_normal, 0)), 0).xyz : vec3(0.0);
   float c = blended(p, w, texelFetch(theta_min, x, 0).xyz, r, n);
   float h = crosshatch ? 1.0 - smoothstep(interior.crosshatch_below - interior.crosshatch_band, interior.crosshatch_below, i) : 0.0;
   if (h > 0.0) c *= 1.0 + (blended(p, w, texelFetch(theta_max, x, 0).xyz, r, n) - 1.0) * h;  // (2.9)

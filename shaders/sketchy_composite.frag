@@ -9,6 +9,7 @@ uniform sampler2D noise;              // Perlin in [-1, 1], LINEAR, REPEAT
 uniform sampler2D white_noise;        // rough style: RG uniform in [0, 1)
 uniform sampler3D noise_3d;           // object style: Perlin in [-1, 1], LINEAR, REPEAT
 uniform sampler2D noise_coordinates;  // object style: enlarged surface's noise coordinate, alpha = coverage
+#include "common_wrap.glsl"
 uniform float near_plane;
 uniform float far_plane;
 uniform mat2 shade_matrix;            // M_s
@@ -36,7 +37,7 @@ float turbulence(vec3 q) {
 vec2 uncertainty(vec2 center, int k) {
   ivec2 x = ivec2(center);
   if (sketchy.style == SKETCHY_STYLE_ROUGH)
-    return texelFetch(white_noise, x % textureSize(white_noise, 0), 0).rg - 0.5;
+    return texelFetch(white_noise, wrapped_texel(x, textureSize(white_noise, 0)), 0).rg - 0.5;
   if (sketchy.style == SKETCHY_STYLE_OBJECT) {
     vec4 g = texelFetch(noise_coordinates, x, 0);
     if (g.a == 0.0) return vec2(0.0);

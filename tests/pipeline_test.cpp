@@ -62,6 +62,20 @@ TEST_F(Frames, TwoRunsAreBitIdenticalOnEachBackend) {
   EXPECT_EQ(gpu::Renderer(scene).render().color.data, gpu::Renderer(scene).render().color.data);
 }
 
+// A frame writes only the G-buffer channels its stages read and leaves those read only
+// on the objects uncleared on the background (gpu/gbuffer.hpp); a dump writes and clears
+// them all. The images may not differ, in either order.
+TEST_F(Frames, AFrameDrawsTheSameImageAsADump) {
+  for (const std::string& name : builtin_scene_names()) {
+    Scene scene = testing::builtin_at(name, 160, 120);
+    scene.effects = {"contours", "interior", "crosshatch", "paper"};
+    gpu::Renderer renderer(scene);
+    Image frame = renderer.render().color;
+    EXPECT_EQ(frame.data, renderer.render(FrameOptions{true}).color.data) << name;
+    EXPECT_EQ(frame.data, renderer.render().color.data) << name;
+  }
+}
+
 TEST_F(Frames, EveryBufferIsFiniteOnBothBackends) {
   FrameOptions keep{true};
   for (const std::string& name : builtin_scene_names()) {
