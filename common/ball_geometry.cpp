@@ -42,11 +42,14 @@ double disk_sector_triangle_area(const glm::dvec2& u, const glm::dvec2& v, doubl
 
 }  // namespace
 
-double segment_length_in_ball(const glm::dvec3& p, const glm::dvec3& q, const glm::dvec3& c, double r) {
+double segment_fraction_in_ball(const glm::dvec3& p, const glm::dvec3& q, const glm::dvec3& c, double r) {
   double t0, t1;
   if (!ball_interval(p, q, c, r, t0, t1)) return 0;
-  double inside = std::min(t1, 1.0) - std::max(t0, 0.0);
-  return inside > 0 ? inside * glm::length(q - p) : 0;
+  return std::max(std::min(t1, 1.0) - std::max(t0, 0.0), 0.0);
+}
+
+double segment_length_in_ball(const glm::dvec3& p, const glm::dvec3& q, const glm::dvec3& c, double r) {
+  return segment_fraction_in_ball(p, q, c, r) * glm::length(q - p);
 }
 
 double triangle_area_in_ball(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& d, const glm::dvec3& c,

@@ -9,6 +9,7 @@
 
 #include "common/ball_geometry.hpp"
 #include "common/curvature_internal.hpp"
+#include "common/curvature_memory.hpp"
 
 namespace plumbago {
 namespace curvature {
@@ -38,57 +39,42 @@ struct SymmetricTensor {
   }
 };
 
-// Everything the ball reads about a face or an edge in one record, so that growing the
-// ball touches few cache lines.
-struct FaceGeometry {
-  glm::vec3 corner[3];  // as the mesh stores them
-  glm::dvec3 normal;    // unit, or 0 for a zero-area face
-  double area;
-  std::array<uint32_t, 3> edges;  // edge (corner k, corner k+1)
-};
-
-struct EdgeGeometry {
-  glm::dvec3 unit;  // along the edge, or 0 for a zero-length edge
-  double length;
-  double beta;      // signed dihedral angle, 0 on boundary edges
-  int32_t face[2];  // face[1] = -1 on a boundary
-};
-
-struct Geometry {
-  std::vector<glm::dvec3> position;
-  std::vector<FaceGeometry> faces;
-  std::vector<EdgeGeometry> edges;
-};
-
 glm::dvec3 unit_or_zero(const glm::dvec3& v) {
   double len = glm::length(v);
   return len > 0 && std::isfinite(len) ? v / len : glm::dvec3(0);
 }
 
-Geometry precompute_geometry(const Mesh& mesh, const MeshTopology& topo) {
-  Geometry g;
-  g.position.assign(mesh.positions.begin(), mesh.positions.end());
-  g.faces.resize(mesh.triangles.size());
-  tbb::parallel_for(size_t(0), g.faces.size(), [&](size_t f) {
-    const auto& t = mesh.triangles[f];
-    FaceGeometry& face = g.faces[f];
-    for (int k = 0; k < 3; ++k) face.corner[k] = mesh.positions[t[k]];
-    glm::dvec3 n = glm::cross(g.position[t[1]] - g.position[t[0]], g.position[t[2]] - g.position[t[0]]);
-    face.normal = unit_or_zero(n);
-    face.area = 0.5 * glm::length(n);
-    face.edges = topo.face_edges[f];
-  });
-  g.edges.resize(topo.edges.size());
-  tbb::parallel_for(size_t(0), g.edges.size(), [&](size_t e) {
+struct Triangle {
+  glm::dvec3 p[3];
+  glm::dvec3 side(int k) const { return p[(k + 1) % 3] - p[k]; }  // corner k to corner k + 1
+  glm::dvec3 twice_area_normal() const { return glm::cross(p[1] - p[0], p[2] - p[0]); }
+};
+
+Triangle triangle(const Mesh& mesh, uint32_t f) {
+  const auto& t = mesh.triangles[f];
+  return {{mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]}};
+}
+
+// Per edge, beta(e) / |e| (0 for a zero-length edge): the edge's term of T is then
+// beta |e ∩ B| ê êᵀ = beta / |e| x (|e ∩ B| / |e|) d dᵀ, with d = to - from. Faces and
+// edges are otherwise read straight from the mesh, which keeps the memory this needs
+// (and its first touch, which costs about as much as the 1-ring) to 8 bytes an edge.
+std::vector<double> edge_beta_per_length(const Mesh& mesh, const MeshTopology& topo) {
+  std::vector<double> coefficient;
+  assign_populated(coefficient, topo.edges.size());
+  tbb::parallel_for(size_t(0), topo.edges.size(), [&](size_t e) {
     const auto& edge = topo.edges[e];
-    glm::dvec3 d = g.position[edge.to] - g.position[edge.from];
-    glm::dvec3 unit = unit_or_zero(d);
-    double beta = edge.face[1] < 0 ? 0.0
-                                   : signed_dihedral_angle(g.faces[edge.face[0]].normal,
-                                                           g.faces[edge.face[1]].normal, unit);
-    g.edges[e] = {unit, glm::length(d), beta, {edge.face[0], edge.face[1]}};
+    glm::dvec3 d = glm::dvec3(mesh.positions[edge.to]) - glm::dvec3(mesh.positions[edge.from]);
+    double length = glm::length(d);
+    if (edge.face[1] < 0 || !(length > 0)) {
+      coefficient[e] = 0;
+      return;
+    }
+    glm::dvec3 n0 = unit_or_zero(triangle(mesh, uint32_t(edge.face[0])).twice_area_normal());
+    glm::dvec3 n1 = unit_or_zero(triangle(mesh, uint32_t(edge.face[1])).twice_area_normal());
+    coefficient[e] = signed_dihedral_angle(n0, n1, d / length) / length;
   });
-  return g;
+  return coefficient;
 }
 
 // The sums over B for one vertex: T (not yet divided by |B|), |B|, and the area-weighted
@@ -97,9 +83,16 @@ struct BallSums {
   SymmetricTensor tensor;
   double area = 0;
   glm::dvec3 normal{0};
+  // The part of a face inside B, of area a, with the face's unit normal n = N / |N|
+  // (N = twice the face's area-weighted normal, so a whole face adds N / 2).
+  void add_face(double a, const glm::dvec3& N, double N_length) {
+    area += a;
+    if (N_length > 0) normal += (a / N_length) * N;
+  }
 };
 
-// Per-thread marks of the faces and edges already visited for the current vertex.
+// Per-thread marks of the faces and edges already visited for the current vertex (only
+// the ball uses them: the 1-ring's few edges are kept in the short `queue`).
 struct Scratch {
   std::vector<uint32_t> face_mark, edge_mark, queue;
   uint32_t stamp = 0;
@@ -119,19 +112,27 @@ struct Scratch {
   }
 };
 
-// 1-ring (radius 0): the faces around v; edges at v whole, edges opposite v half. The
-// few edges seen are kept in a short list rather than marked in the mesh-sized array.
-BallSums one_ring_sums(uint32_t v, const MeshTopology& topo, const Geometry& g, Scratch& s) {
+struct Surface {
+  const Mesh& mesh;
+  const MeshTopology& topo;
+  std::vector<double> beta_per_length;
+};
+
+// 1-ring (radius 0): the faces around v; edges at v whole, edges opposite v half.
+BallSums one_ring_sums(uint32_t v, const Surface& g, Scratch& s) {
   BallSums sums;
-  for (uint32_t f : topo.faces_of(v)) {
-    sums.area += g.faces[f].area;
-    sums.normal += g.faces[f].area * g.faces[f].normal;
-    for (uint32_t e : g.faces[f].edges) {
+  for (uint32_t f : g.topo.faces_of(v)) {
+    const Triangle tri = triangle(g.mesh, f);
+    glm::dvec3 n = tri.twice_area_normal();
+    double n_length = glm::length(n);
+    sums.add_face(0.5 * n_length, n, n_length);
+    const auto& t = g.mesh.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      uint32_t e = g.topo.face_edges[f][k];
       if (std::find(s.queue.begin(), s.queue.end(), e) != s.queue.end()) continue;
       s.queue.push_back(e);
-      const auto& edge = topo.edges[e];
-      double weight = edge.from == v || edge.to == v ? 1.0 : 0.5;
-      sums.tensor.add(weight * g.edges[e].beta * g.edges[e].length, g.edges[e].unit);
+      double weight = t[k] == v || t[(k + 1) % 3] == v ? 1.0 : 0.5;
+      sums.tensor.add(weight * g.beta_per_length[e], tri.side(k));
     }
   }
   return sums;
@@ -139,27 +140,28 @@ BallSums one_ring_sums(uint32_t v, const MeshTopology& topo, const Geometry& g, 
 
 // The connected part of the surface within distance r of v, grown face by face across
 // edges that reach into the ball; each edge and face clipped exactly.
-BallSums ball_sums(uint32_t v, double r, const MeshTopology& topo, const Geometry& g, Scratch& s) {
+BallSums ball_sums(uint32_t v, double r, const Surface& g, Scratch& s) {
   BallSums sums;
-  const glm::dvec3 c = g.position[v];
-  for (uint32_t f : topo.faces_of(v))
+  const glm::dvec3 c = g.mesh.positions[v];
+  for (uint32_t f : g.topo.faces_of(v))
     if (s.first_visit(s.face_mark, f)) s.queue.push_back(f);
   for (size_t next = 0; next < s.queue.size(); ++next) {
-    const FaceGeometry& face = g.faces[s.queue[next]];
-    const glm::dvec3 p[3] = {face.corner[0], face.corner[1], face.corner[2]};
+    const uint32_t f = s.queue[next];
+    const Triangle tri = triangle(g.mesh, f);
+    const glm::dvec3* p = tri.p;
     bool inside[3];
     for (int k = 0; k < 3; ++k) inside[k] = glm::dot(p[k] - c, p[k] - c) <= r * r;
-    double area = inside[0] && inside[1] && inside[2] ? face.area : triangle_area_in_ball(p[0], p[1], p[2], c, r);
-    sums.area += area;
-    sums.normal += area * face.normal;
+    glm::dvec3 n = tri.twice_area_normal();
+    double n_length = glm::length(n);
+    sums.add_face(inside[0] && inside[1] && inside[2] ? 0.5 * n_length : triangle_area_in_ball(p[0], p[1], p[2], c, r),
+                  n, n_length);
     for (int k = 0; k < 3; ++k) {
-      uint32_t e = face.edges[k];
+      uint32_t e = g.topo.face_edges[f][k];
       if (!s.first_visit(s.edge_mark, e)) continue;
-      const EdgeGeometry& edge = g.edges[e];
-      double length = inside[k] && inside[(k + 1) % 3] ? edge.length : segment_length_in_ball(p[k], p[(k + 1) % 3], c, r);
-      if (!(length > 0)) continue;
-      sums.tensor.add(edge.beta * length, edge.unit);
-      for (int32_t other : edge.face)
+      double fraction = inside[k] && inside[(k + 1) % 3] ? 1.0 : segment_fraction_in_ball(p[k], p[(k + 1) % 3], c, r);
+      if (!(fraction > 0)) continue;
+      sums.tensor.add(fraction * g.beta_per_length[e], tri.side(k));
+      for (int32_t other : g.topo.edges[e].face)
         if (other >= 0 && s.first_visit(s.face_mark, uint32_t(other))) s.queue.push_back(uint32_t(other));
     }
   }
@@ -214,28 +216,31 @@ Frame vertex_frame(const BallSums& sums, const glm::dvec3& mesh_normal, const Cu
   return tangent_plane_frame(t, n);
 }
 
-double ring_radius(uint32_t v, const MeshTopology& topo, const Geometry& g) {
+double ring_radius(uint32_t v, const Mesh& mesh, const MeshTopology& topo) {
   double r = 0;
-  for (uint32_t u : topo.neighbors_of(v)) r = std::max(r, glm::length(g.position[u] - g.position[v]));
+  for (uint32_t u : topo.neighbors_of(v))
+    r = std::max(r, glm::length(glm::dvec3(mesh.positions[u]) - glm::dvec3(mesh.positions[v])));
   return r;
 }
 
 }  // namespace
 
 Curvature tensor_curvature(const Mesh& mesh, const MeshTopology& topo, const CurvatureParams& p, Progress& progress) {
-  Geometry g = precompute_geometry(mesh, topo);
+  const Surface g{mesh, topo, edge_beta_per_length(mesh, topo)};
   const double radius = double(p.radius) * double(mesh.bbox_diagonal());
   const double flat = double(p.flat_curvature) / std::max(double(mesh.bbox_diagonal()), 1e-30);
   const size_t n = mesh.positions.size();
   Curvature c;
-  c.k_min.resize(n), c.k_max.resize(n), c.normal.resize(n), c.d_min.resize(n), c.d_max.resize(n);
-  tbb::enumerable_thread_specific<Scratch> scratch(g.faces.size(), g.edges.size());
+  assign_populated(c.k_min, n), assign_populated(c.k_max, n);
+  for (auto* v : {&c.normal, &c.d_min, &c.d_max}) assign_populated(*v, n);
+  const bool ball = p.radius > 0;
+  tbb::enumerable_thread_specific<Scratch> scratch(ball ? mesh.triangles.size() : 0, ball ? topo.edges.size() : 0);
   tbb::parallel_for(tbb::blocked_range<uint32_t>(0, uint32_t(n), 1024), [&](const tbb::blocked_range<uint32_t>& range) {
     Scratch& s = scratch.local();
     for (uint32_t v = range.begin(); v != range.end(); ++v) {
       s.next_vertex();
-      bool ring = p.radius == 0 || (p.ring_fallback && radius < ring_radius(v, topo, g));
-      BallSums sums = ring ? one_ring_sums(v, topo, g, s) : ball_sums(v, radius, topo, g, s);
+      bool ring = !ball || (p.ring_fallback && radius < ring_radius(v, mesh, topo));
+      BallSums sums = ring ? one_ring_sums(v, g, s) : ball_sums(v, radius, g, s);
       Frame f = vertex_frame(sums, glm::dvec3(mesh.normals[v]), p, flat);
       c.normal[v] = f.normal, c.d_min[v] = f.d_min, c.d_max[v] = f.d_max;
       c.k_min[v] = float(f.k_min), c.k_max[v] = float(f.k_max);

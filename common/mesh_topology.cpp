@@ -9,8 +9,12 @@
 #include <atomic>
 #include <numeric>
 
+#include "common/curvature_memory.hpp"
+
 namespace plumbago {
 namespace {
+
+using curvature::assign_populated;
 
 // --- CSR lists, built in parallel ----------------------------------------------------
 
@@ -23,13 +27,13 @@ void counts_to_starts(std::vector<uint32_t>& count) { std::inclusive_scan(count.
 template <class List>
 void gather_csr(size_t keys, const List& list, std::vector<uint32_t>& start, std::vector<uint32_t>& values) {
   Scratch scratch;
-  start.assign(keys + 1, 0);
+  assign_populated(start, keys + 1);
   tbb::parallel_for(size_t(0), keys, [&](size_t k) {
     list(uint32_t(k), scratch.local());
     start[k + 1] = uint32_t(scratch.local().size());
   });
   counts_to_starts(start);
-  values.resize(start[keys]);
+  assign_populated(values, start[keys]);
   tbb::parallel_for(size_t(0), keys, [&](size_t k) {
     list(uint32_t(k), scratch.local());
     std::copy(scratch.local().begin(), scratch.local().end(), values.begin() + start[k]);
@@ -50,13 +54,15 @@ void for_each_distinct_corner(const Mesh& mesh, const F& f) {
 // atomic counters, then sorted list by list.
 void fill_vertex_faces(const Mesh& mesh, std::vector<uint32_t>& start, std::vector<uint32_t>& faces) {
   const size_t n = mesh.positions.size();
-  start.assign(n + 1, 0);
+  assign_populated(start, n + 1);
   for_each_distinct_corner(mesh, [&](uint32_t v, uint32_t) {
     std::atomic_ref<uint32_t>(start[v + 1]).fetch_add(1, std::memory_order_relaxed);
   });
   counts_to_starts(start);
-  faces.resize(start[n]);
-  std::vector<uint32_t> cursor(start.begin(), start.end() - 1);
+  assign_populated(faces, start[n]);
+  std::vector<uint32_t> cursor;
+  assign_populated(cursor, n);
+  std::copy(start.begin(), start.end() - 1, cursor.begin());
   for_each_distinct_corner(mesh, [&](uint32_t v, uint32_t f) {
     faces[std::atomic_ref<uint32_t>(cursor[v]).fetch_add(1, std::memory_order_relaxed)] = f;
   });
@@ -157,11 +163,12 @@ uint32_t higher_neighbors(const MeshTopology& topo, uint32_t v) {
 // left unfinished) if some vertex is not one fan or some face has a repeated corner.
 bool manifold_edges(const Mesh& mesh, MeshTopology& topo) {
   const size_t n = topo.vertex_count();
-  std::vector<uint32_t> first(n + 1, 0);
+  std::vector<uint32_t> first;
+  assign_populated(first, n + 1);
   tbb::parallel_for(size_t(0), n, [&](size_t v) { first[v + 1] = higher_neighbors(topo, uint32_t(v)); });
   counts_to_starts(first);
-  topo.edges.resize(first[n]);
-  topo.face_edges.resize(mesh.triangles.size());
+  assign_populated(topo.edges, first[n]);
+  assign_populated(topo.face_edges, mesh.triangles.size());
   tbb::enumerable_thread_specific<VertexCorners> scratch;
   std::atomic<bool> manifold = true;
   tbb::parallel_for(size_t(0), n, [&](size_t vertex) {
