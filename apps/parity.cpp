@@ -192,7 +192,8 @@ StageParity multi_contour_parity(const Scene& scene, const GBuffer& ref) {
   Preprocessed pre = preprocess(scene, {"distortion", "contour_texture"});
   Image lit = reference::lit_contour_darkness(reference::contour_darkness(ref, scene.params.get<EdgeDetectParams>()),
                                               ref, view_space_lights(scene), scene.params.get<ContourLightParams>());
-  gpu::ContourInputs inputs = gpu::upload_contour_inputs(pre.offset_grids, pre.contour_texture, pre.texture_shifts);
+  gpu::ContourInputs inputs = gpu::make_contour_inputs(p, pre.offset_grids, pre.contour_texture, pre.texture_shifts,
+                                                       scene.width, scene.height);
   gpu::Texture in = gpu::upload_texture(lit, GL_R32F);
   gpu::Texture out = gpu::make_texture(scene.width, scene.height, GL_R32F);
   gpu::MultiContourPass().run(in, inputs, p, out, contour_rect(scene, pre.offset_grids));

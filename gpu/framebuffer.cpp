@@ -30,17 +30,27 @@ void FullscreenPass::draw_inside(const Program& program, std::initializer_list<c
 
 void FullscreenPass::bind_targets(std::initializer_list<Texture*> targets) {
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-  GLenum buffers[8];
   GLsizei n = 0;
-  for (Texture* t : targets) {
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + GLenum(n), GL_TEXTURE_2D, t->id(), 0);
-    buffers[n] = GL_COLOR_ATTACHMENT0 + GLenum(n);
-    ++n;
+  for (Texture* t : targets) glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + GLenum(n++), GL_TEXTURE_2D, t->id(), 0);
+  use_attachments(n, **targets.begin());
+}
+
+void FullscreenPass::draw_layer(const Program& program, std::initializer_list<const Texture*> textures, Texture& array,
+                                int layer) {
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+  glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, array.id(), 0, layer);
+  use_attachments(1, array);
+  draw_triangle(program, textures);
+}
+
+// Draws into the first n color attachments (the others detached), all of `first`'s size.
+void FullscreenPass::use_attachments(GLsizei n, const Texture& first) {
+  GLenum buffers[8];
+  for (GLsizei k = 0; k < 8; ++k) {
+    buffers[k] = GL_COLOR_ATTACHMENT0 + GLenum(k);
+    if (k >= n) glFramebufferTexture2D(GL_FRAMEBUFFER, buffers[k], GL_TEXTURE_2D, 0, 0);
   }
-  for (GLsizei k = n; k < 8; ++k)
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + GLenum(k), GL_TEXTURE_2D, 0, 0);
   glDrawBuffers(n, buffers);
-  const Texture& first = **targets.begin();
   glViewport(0, 0, first.width, first.height);
 }
 

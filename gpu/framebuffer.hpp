@@ -22,9 +22,12 @@ class FullscreenPass {
   void draw_inside(const Program& program, std::initializer_list<const Texture*> textures,
                    std::initializer_list<Texture*> targets, const PixelRect& rect,
                    std::initializer_list<glm::vec4> outside);
+  // The same into one layer of a GL_TEXTURE_2D_ARRAY.
+  void draw_layer(const Program& program, std::initializer_list<const Texture*> textures, Texture& array, int layer);
 
  private:
   void bind_targets(std::initializer_list<Texture*> targets);
+  void use_attachments(GLsizei n, const Texture& first);
   void draw_triangle(const Program& program, std::initializer_list<const Texture*> textures);
   Framebuffer fbo_;
   VertexArray empty_;

@@ -53,6 +53,17 @@ Texture make_texture(int width, int height, GLenum internal_format) {
   return t;
 }
 
+Texture make_texture_array(int width, int height, int layers, GLenum internal_format) {
+  GLuint id = 0;
+  glGenTextures(1, &id);
+  Texture t{GlName<detail::delete_texture>(id), width, height, internal_format, GL_TEXTURE_2D_ARRAY, layers};
+  glBindTexture(GL_TEXTURE_2D_ARRAY, id);
+  glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, internal_format, width, height, layers);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  set_sampling(t, GL_NEAREST, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
 void write_texture(const Texture& tex, int channels, bool integer, const void* data) {
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glBindTexture(GL_TEXTURE_2D, tex.id());

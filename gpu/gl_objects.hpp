@@ -61,6 +61,8 @@ struct Texture {
 
 // Immutable storage of `internal_format`, NEAREST filtering, CLAMP_TO_EDGE.
 Texture make_texture(int width, int height, GLenum internal_format);
+// A GL_TEXTURE_2D_ARRAY of `layers` layers, uninitialized; NEAREST, CLAMP_TO_EDGE.
+Texture make_texture_array(int width, int height, int layers, GLenum internal_format);
 // A GL_TEXTURE_3D (filtered across layers, as the pencil stack is sampled) or a
 // GL_TEXTURE_2D_ARRAY (layers kept apart) made of `layers` (equal sizes); LINEAR,
 // REPEAT in s and t, CLAMP_TO_EDGE in r.

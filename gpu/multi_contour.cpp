@@ -4,12 +4,24 @@
 
 namespace plumbago::gpu {
 
-ContourInputs upload_contour_inputs(const std::vector<Image>& grids, const Image& contour_texture,
-                                    std::vector<glm::vec2> shifts) {
-  ContourInputs in{upload_texture_3d(grids, GL_RG32F, GL_TEXTURE_2D_ARRAY), upload_texture(contour_texture, GL_R32F),
-                   std::move(shifts), largest_offset(grids)};
-  set_sampling(in.offset_grids, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
-  set_sampling(in.contour_texture, GL_LINEAR, GL_REPEAT, GL_REPEAT);
+ContourInputs make_contour_inputs(const ContourParams& p, const std::vector<Image>& grids, const Image& contour_texture,
+                                  const std::vector<glm::vec2>& shifts, int width, int height) {
+  if (size_t(p.copies) > grids.size() || size_t(p.copies) > shifts.size())
+    throw std::invalid_argument("multi_contour: fewer offset grids or texture shifts than contour.copies");
+  Texture offset_grids = upload_texture_3d(grids, GL_RG32F, GL_TEXTURE_2D_ARRAY), texture = upload_texture(contour_texture, GL_R32F);
+  set_sampling(offset_grids, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
+  set_sampling(texture, GL_LINEAR, GL_REPEAT, GL_REPEAT);
+  Program program("fullscreen.vert", "contour_copies.frag", glsl_params<ContourParams>());
+  program.set_params(p);
+  glProgramUniform1i(program.id(), program.uniform("offset_grids"), 0);
+  glProgramUniform1i(program.id(), program.uniform("contour_texture"), 1);
+  ContourInputs in{make_texture_array(width, height, p.copies, GL_RGBA32F), largest_offset(grids)};
+  FullscreenPass pass;
+  for (int k = 0; k < p.copies; ++k) {
+    glProgramUniform1i(program.id(), program.uniform("copy"), k);
+    glProgramUniform2fv(program.id(), program.uniform("texture_shift"), 1, &shifts[size_t(k)].x);
+    pass.draw_layer(program, {&offset_grids, &texture}, in.copy_inputs, k);
+  }
   return in;
 }
 
@@ -22,17 +34,15 @@ MultiContourPass::MultiContourPass()
     : program_("fullscreen.vert", "multi_contour.frag", glsl_params<ContourParams>() + kBlockDefine),
       blocks_program_("fullscreen.vert", "contour_blocks.frag", kBlockDefine) {
   glProgramUniform1i(program_.id(), program_.uniform("lit_contour_darkness"), 0);
-  glProgramUniform1i(program_.id(), program_.uniform("offset_grids"), 1);
-  glProgramUniform1i(program_.id(), program_.uniform("contour_texture"), 2);
-  glProgramUniform1i(program_.id(), program_.uniform("block_max"), 3);
+  glProgramUniform1i(program_.id(), program_.uniform("copy_inputs"), 1);
+  glProgramUniform1i(program_.id(), program_.uniform("block_max"), 2);
 }
 
 void MultiContourPass::run(const Texture& lit, const ContourInputs& in, const ContourParams& p, Texture& out,
                            const PixelRect& covered) {
-  if (p.copies > 8 || size_t(p.copies) > in.shifts.size())
-    throw std::invalid_argument("multi_contour: the inputs hold fewer copies than contour.copies");
+  if (p.copies > in.copy_inputs.depth || in.copy_inputs.width != lit.width || in.copy_inputs.height != lit.height)
+    throw std::invalid_argument("multi_contour: the copies' inputs were made for another size or fewer copies");
   program_.set_params(p);
-  glProgramUniform2fv(program_.id(), program_.uniform("texture_shift"), GLsizei(p.copies), &in.shifts[0].x);
   set_sampling(lit, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
   int blocks_x = (lit.width + kBlock - 1) / kBlock, blocks_y = (lit.height + kBlock - 1) / kBlock;
   if (block_max_.width != blocks_x || block_max_.height != blocks_y) block_max_ = make_texture(blocks_x, blocks_y, GL_R32F);
@@ -40,7 +50,7 @@ void MultiContourPass::run(const Texture& lit, const ContourInputs& in, const Co
   // Half a pixel more than the largest offset: a bilinearly filtered offset can exceed its
   // corners' largest value by a rounding error, never by that much.
   glProgramUniform1f(program_.id(), program_.uniform("reach"), in.largest_offset + 0.5f);
-  pass_.draw_inside(program_, {&lit, &in.offset_grids, &in.contour_texture, &block_max_}, {&out}, covered,
+  pass_.draw_inside(program_, {&lit, &in.copy_inputs, &block_max_}, {&out}, covered,
                     {glm::vec4(0.0f)});
 }
 

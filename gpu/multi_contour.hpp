@@ -6,20 +6,22 @@
 
 namespace plumbago::gpu {
 
-// The per-frame-constant inputs, uploaded once: the copies' offset grids (a 2D array
-// texture), the contour texture and its per-copy shifts, and the grids' largest offset.
+// What the copies read that does not change from frame to frame, made once per window
+// size and parameters from the copies' offset grids, the contour texture and its shifts:
+// per pixel and copy, the offset and the texture factor (contour_copies.frag); and the
+// grids' largest offset.
 struct ContourInputs {
-  Texture offset_grids, contour_texture;
-  std::vector<glm::vec2> shifts;
+  Texture copy_inputs;  // GL_TEXTURE_2D_ARRAY, RGBA32F, one layer per copy
   float largest_offset = 0;
 };
-ContourInputs upload_contour_inputs(const std::vector<Image>& grids, const Image& contour_texture,
-                                    std::vector<glm::vec2> shifts);
+ContourInputs make_contour_inputs(const ContourParams& p, const std::vector<Image>& grids, const Image& contour_texture,
+                                  const std::vector<glm::vec2>& shifts, int width, int height);
 
 class MultiContourPass {
  public:
   MultiContourPass();
   // `lit` must be sampled LINEAR/CLAMP_TO_EDGE (set here); writes D_c into `out` (R32F).
+  // `in` was made with `p` at lit's size.
   // Only `covered` (common/distortion.hpp contour_rect) runs the shader; outside it D_c = 0.
   // Inside it, pixels whose copies can only read d' = 0 (found from the largest d' of each
   // block of pixels, contour_blocks.frag) are not shaded either: their D_c is 0 too.

@@ -86,7 +86,8 @@ struct Renderer::State {
   std::vector<std::string> gpu_passes = fused(stages);
   Preprocessed pre = preprocess(ordinary, passes);
   ContourInputs contour_inputs = pre.offset_grids.empty() ? ContourInputs{}
-                                 : upload_contour_inputs(pre.offset_grids, pre.contour_texture, pre.texture_shifts);
+      : make_contour_inputs(scene.params.get<ContourParams>(), pre.offset_grids, pre.contour_texture, pre.texture_shifts,
+                            scene.width, scene.height);
   Texture pencil_stack = pre.pencil_stack.empty() ? make_texture(1, 1, GL_R32F) : upload_texture_3d(pre.pencil_stack, GL_R32F);
   Texture paper_normal = pre.paper.normal.empty() ? make_texture(1, 1, GL_RGBA32F) : upload_texture(pre.paper.normal, GL_RGBA32F);
   Texture paper_color = pre.paper.color.empty() ? make_texture(1, 1, GL_RGBA32F) : upload_texture(pre.paper.color, GL_RGBA32F);

@@ -2,11 +2,8 @@
 // Multiple contour drawing (SPEC 2.4; Lee §4.2-4.3):
 //   d_k = d'(p + offset_k(p)),  t_k = 1 - T_c(p / texture_scale + o_k)
 //   D_c = 1 - prod_k (1 - alpha d_k mix(1, t_k, texture_strength))
-const int MAX_COPIES = 8;
 uniform sampler2D lit_contour_darkness;  // LINEAR, CLAMP_TO_EDGE
-uniform sampler2DArray offset_grids;     // one RG layer per copy, LINEAR, CLAMP_TO_EDGE
-uniform sampler2D contour_texture;       // LINEAR, REPEAT
-uniform vec2 texture_shift[MAX_COPIES];  // o_k, texels
+uniform sampler2DArray copy_inputs;      // per copy: offset_k(p), mix(1, t_k, texture_strength) (contour_copies.frag)
 uniform sampler2D block_max;             // contour_blocks.frag
 uniform float reach;                     // >= the largest |dx|, |dy| of any copy's offset
 
@@ -31,14 +28,11 @@ void main() {
   // A discard, unlike a return, lets llvmpipe skip a block of pixels that all take it.
   if (!contour_within_reach(p)) discard;
   vec2 window = vec2(textureSize(lit_contour_darkness, 0));
-  vec2 grid = vec2(textureSize(offset_grids, 0).xy);
-  vec2 tex = vec2(textureSize(contour_texture, 0));
   float untouched = 1.0;
   for (int k = 0; k < contour.copies; ++k) {
-    vec2 offset = texture(offset_grids, vec3((p / float(contour.grid_cell) + 0.5) / grid, float(k))).xy;
-    float d_k = texture(lit_contour_darkness, (p + offset) / window).r;
-    float t_k = 1.0 - texture(contour_texture, (p / contour.texture_scale + texture_shift[k]) / tex).r;
-    untouched *= 1.0 - contour.stroke_opacity * d_k * (1.0 + (t_k - 1.0) * contour.texture_strength);
+    vec3 copy = texelFetch(copy_inputs, ivec3(gl_FragCoord.xy, k), 0).xyz;
+    float d_k = texture(lit_contour_darkness, (p + copy.xy) / window).r;
+    untouched *= 1.0 - contour.stroke_opacity * d_k * copy.z;
   }
   contour_darkness = 1.0 - untouched;
 }

@@ -53,7 +53,7 @@ TEST_F(SkippedPixels, MultiContourFindsDotsAtTheFullReachOfTheOffsets) {
   Image texture(4, 4, 1, 1.0f);
 
   Image expected = reference::multi_contour_darkness(lit, grids, texture, shifts, p);
-  gpu::ContourInputs inputs = gpu::upload_contour_inputs(grids, texture, shifts);
+  gpu::ContourInputs inputs = gpu::make_contour_inputs(p, grids, texture, shifts, lit.width, lit.height);
   gpu::Texture in = gpu::upload_texture(lit, GL_R32F), out = gpu::make_texture(lit.width, lit.height, GL_R32F);
   gpu::MultiContourPass().run(in, inputs, p, out, {0, 0, lit.width, lit.height});
   ImageDiff d = compare_images(expected, gpu::download_texture(out, 1), 1e-5);
