@@ -45,37 +45,41 @@ std::vector<uint8_t> defined_directions(const CurvatureParams& p, float bbox_dia
   return known;
 }
 
-// Connected components of the vertex graph, as a component index per vertex.
-std::vector<uint32_t> vertex_components(const MeshTopology& topo) {
-  std::vector<uint32_t> component(topo.vertex_count(), UINT32_MAX), stack;
-  uint32_t next = 0;
-  for (uint32_t seed = 0; seed < component.size(); ++seed) {
-    if (component[seed] != UINT32_MAX) continue;
-    component[seed] = next;
+// The connected pieces of the graph of vertices without a known direction, as a piece
+// index per such vertex, and whether each piece meets a known vertex: one that does not
+// is a whole component of the vertex graph without any direction.
+std::vector<uint32_t> unknown_pieces(const MeshTopology& topo, const std::vector<uint8_t>& known,
+                                     std::vector<uint8_t>& meets_known) {
+  std::vector<uint32_t> piece(topo.vertex_count(), UINT32_MAX), stack;
+  meets_known.clear();
+  for (uint32_t seed = 0; seed < piece.size(); ++seed) {
+    if (known[seed] || piece[seed] != UINT32_MAX) continue;
+    piece[seed] = uint32_t(meets_known.size());
+    meets_known.push_back(0);
     stack.assign(1, seed);
     while (!stack.empty()) {
       uint32_t v = stack.back();
       stack.pop_back();
-      for (uint32_t u : topo.neighbors_of(v))
-        if (component[u] == UINT32_MAX) component[u] = next, stack.push_back(u);
+      for (uint32_t u : topo.neighbors_of(v)) {
+        meets_known.back() |= known[u];
+        if (!known[u] && piece[u] == UINT32_MAX) piece[u] = piece[seed], stack.push_back(u);
+      }
     }
-    ++next;
   }
-  return component;
+  return piece;
 }
 
 void seed_components_without_directions(const MeshTopology& topo, Curvature& c, std::vector<uint8_t>& known) {
-  std::vector<uint32_t> component = vertex_components(topo);
-  size_t count = component.empty() ? 0 : *std::max_element(component.begin(), component.end()) + 1;
-  std::vector<uint8_t> has_direction(count, 0);
-  std::vector<std::array<double, 3>> normal_along_axis(count, {0, 0, 0});
+  std::vector<uint8_t> meets_known;
+  std::vector<uint32_t> piece = unknown_pieces(topo, known, meets_known);
+  auto without_direction = [&](size_t v) { return !known[v] && !meets_known[piece[v]]; };
+  std::vector<std::array<double, 3>> normal_along_axis(meets_known.size(), {0, 0, 0});
+  for (size_t v = 0; v < c.size(); ++v)
+    if (without_direction(v))
+      for (int a = 0; a < 3; ++a) normal_along_axis[piece[v]][a] += std::abs(c.normal[v][a]);
   for (size_t v = 0; v < c.size(); ++v) {
-    has_direction[component[v]] |= known[v];
-    for (int a = 0; a < 3; ++a) normal_along_axis[component[v]][a] += std::abs(c.normal[v][a]);
-  }
-  for (size_t v = 0; v < c.size(); ++v) {
-    if (has_direction[component[v]]) continue;
-    const auto& along = normal_along_axis[component[v]];
+    if (!without_direction(v)) continue;
+    const auto& along = normal_along_axis[piece[v]];
     glm::dvec3 axis(0);
     axis[int(std::min_element(along.begin(), along.end()) - along.begin())] = 1;
     glm::dvec3 n = c.normal[v], d = axis - glm::dot(axis, n) * n;
@@ -115,8 +119,13 @@ void propagate_fronts(const MeshTopology& topo, Curvature& c, std::vector<uint8_
     for (uint32_t u : topo.neighbors_of(v))
       if (!known[u] && !queued[u]) queued[u] = 1, into.push_back(u);
   };
+  std::vector<uint8_t> next_to_known(c.size(), 0);  // the first front, found in parallel
+  tbb::parallel_for(size_t(0), c.size(), [&](size_t v) {
+    if (known[v]) return;
+    for (uint32_t u : topo.neighbors_of(uint32_t(v))) next_to_known[v] |= known[u];
+  });
   for (uint32_t v = 0; v < c.size(); ++v)
-    if (known[v]) enqueue_unknown_neighbors(v, front);
+    if (next_to_known[v]) queued[v] = 1, front.push_back(v);
   while (!front.empty()) {
     std::vector<uint8_t> assigned(front.size(), 0);
     tbb::parallel_for(size_t(0), front.size(), [&](size_t i) {
