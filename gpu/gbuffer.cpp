@@ -168,6 +168,7 @@ GBufferChannels channels_read_by(const std::vector<std::string>& stages, const S
   c.bary = c.theta_min = interior;
   c.theta_max = interior && interior_options(scene.effects).crosshatch;
   c.object_only_background = false;
+  c.read_region = filter_rect(scene, 2);  // edge detection runs within 1 pixel and reads 1 more
   return c;
 }
 
@@ -197,10 +198,15 @@ void GBufferPass::render(const Scene& scene, GBufferTargets& t, const GBufferCha
   const GLuint no_ids[4] = {0, 0, 0, 0};
   const float* clear[] = {zero, zero, far, nullptr, zero, white, zero, zero};
   const bool object_only[] = {false, false, false, false, true, true, true, true};
+  glClearBufferfv(GL_DEPTH, 0, &one);  // whole: a sketchy depth sprite is tested against it
+  const PixelRect& r = channels.read_region;
+  int x0 = std::clamp(r.x0, 0, w), y0 = std::clamp(r.y0, 0, h);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(x0, y0, std::clamp(r.x1, x0, w) - x0, std::clamp(r.y1, y0, h) - y0);
   for (int i = 0; i < 8; ++i)
     if (wanted[i] && clear[i] && (channels.object_only_background || !object_only[i])) glClearBufferfv(GL_COLOR, i, clear[i]);
   glClearBufferuiv(GL_COLOR, 3, no_ids);
-  glClearBufferfv(GL_DEPTH, 0, &one);
+  glDisable(GL_SCISSOR_TEST);
 
   glViewport(0, 0, w, h);
   glEnable(GL_DEPTH_TEST);

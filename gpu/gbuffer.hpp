@@ -1,6 +1,7 @@
 // Rasterized G-buffer (SPEC 2.1), the twin of reference/gbuffer.cpp.
 #pragma once
 
+#include <climits>
 #include <map>
 #include <string>
 #include <vector>
@@ -32,6 +33,9 @@ struct GBufferChannels {
   // the objects. No stage reads them there (the interior reads only where ids != 0), so a
   // frame leaves them uncleared (llvmpipe: 52 bytes a pixel less to write); a dump clears them.
   bool object_only_background = true;
+  // Where stages read the other channels: a frame clears them only there (filter_rect of
+  // the edge filter's reach, common/scene.hpp); a dump clears the whole window.
+  PixelRect read_region{0, 0, INT_MAX, INT_MAX};
 };
 // The channels `stages` (common/passes.hpp names) read, for the scene's parameters.
 GBufferChannels channels_read_by(const std::vector<std::string>& stages, const Scene& scene);
