@@ -5,8 +5,7 @@ namespace plumbago::gpu {
 EdgeDetectPass::EdgeDetectPass()
     : program_("fullscreen.vert", "edge_detect.frag", glsl_params<EdgeDetectParams>() + glsl_params<ContourLightParams>()) {
   glProgramUniform1i(program_.id(), program_.uniform("normals"), 0);
-  glProgramUniform1i(program_.id(), program_.uniform("depth"), 1);
-  glProgramUniform1i(program_.id(), program_.uniform("shading_normals"), 2);
+  glProgramUniform1i(program_.id(), program_.uniform("shading_normals"), 1);
 }
 
 void EdgeDetectPass::run(const GBufferTargets& g, const EdgeDetectParams& p, const std::vector<Light>& view_lights,
@@ -18,7 +17,7 @@ void EdgeDetectPass::run(const GBufferTargets& g, const EdgeDetectParams& p, con
   glProgramUniform1f(program_.id(), program_.uniform("far_plane"), g.far);
   const Texture& normals = p.normals == EdgeNormals::Face ? g.face_normal : g.normal;
   glm::vec4 outside(background_darkness(p));  // unlit: a background normal gets no light
-  pass_.draw_inside(program_, {&normals, &g.depth, &g.normal}, {&darkness, &lit}, covered, {outside, outside});
+  pass_.draw_inside(program_, {&normals, &g.normal}, {&darkness, &lit}, covered, {outside, outside});
 }
 
 }  // namespace plumbago::gpu

@@ -97,10 +97,24 @@ GBuffer download_gbuffer(const GBufferTargets& t) {
   return g;
 }
 
+namespace {
+
+// A normal image (3 channels) with the depth as fourth channel, as gbuffer.frag writes it.
+Image with_depth(const Image& normal, const Image& depth) {
+  Image out(normal.width, normal.height, 4);
+  for (size_t i = 0; i < normal.pixels(); ++i) {
+    std::copy_n(&normal.data[3 * i], 3, &out.data[4 * i]);
+    out.data[4 * i + 3] = depth.data[i];
+  }
+  return out;
+}
+
+}  // namespace
+
 GBufferTargets upload_gbuffer(const GBuffer& g) {
   GBufferTargets t;
-  t.normal = upload_texture(g.normal, GL_RGBA32F);
-  t.face_normal = upload_texture(g.face_normal, GL_RGBA32F);
+  t.normal = upload_texture(with_depth(g.normal, g.depth), GL_RGBA32F);
+  t.face_normal = upload_texture(with_depth(g.face_normal, g.depth), GL_RGBA32F);
   t.depth = upload_texture(g.depth, GL_R32F);
   t.ids = make_texture(g.ids.width, g.ids.height, GL_RG32UI);
   write_texture(t.ids, 2, true, g.ids.data.data());
@@ -142,11 +156,11 @@ GBufferPass::GBufferPass(const Scene& scene, const std::vector<Curvature>& curva
 }
 
 const Program& GBufferPass::program_for(const GBufferChannels& c) {
-  const bool flags[] = {c.normal, c.face_normal, c.bary, c.gouraud, c.theta_min, c.theta_max};
-  const char* names[] = {"NORMAL", "FACE_NORMAL", "BARY", "GOURAUD", "THETA_MIN", "THETA_MAX"};
+  const bool flags[] = {c.normal, c.face_normal, c.bary, c.gouraud, c.theta_min, c.theta_max, c.depth};
+  const char* names[] = {"NORMAL", "FACE_NORMAL", "BARY", "GOURAUD", "THETA_MIN", "THETA_MAX", "DEPTH"};
   int key = 0;
   std::string defines;
-  for (int k = 0; k < 6; ++k) {
+  for (int k = 0; k < 7; ++k) {
     key |= int(flags[k]) << k;
     defines += "#define WRITE_" + std::string(names[k]) + (flags[k] ? " 1\n" : " 0\n");
   }
@@ -167,6 +181,7 @@ GBufferChannels channels_read_by(const std::vector<std::string>& stages, const S
   c.gouraud = ran("interior_intensity") && !phong;
   c.bary = c.theta_min = interior;
   c.theta_max = interior && interior_options(scene.effects).crosshatch;
+  c.depth = false;  // read only by a dump: edge detection reads it next to the normals
   c.object_only_background = false;
   c.read_region = filter_rect(scene, 2);  // edge detection runs within 1 pixel and reads 1 more
   return c;
@@ -181,8 +196,8 @@ void GBufferPass::render(const Scene& scene, GBufferTargets& t, const GBufferCha
   }
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   const Texture* color[] = {&t.normal, &t.face_normal, &t.depth, &t.ids, &t.bary, &t.gouraud, &t.theta_min, &t.theta_max};
-  const bool wanted[] = {channels.normal, channels.face_normal, true, true, channels.bary, channels.gouraud,
-                         channels.theta_min, channels.theta_max};  // depth and ids: always
+  const bool wanted[] = {channels.normal, channels.face_normal, channels.depth, true, channels.bary, channels.gouraud,
+                         channels.theta_min, channels.theta_max};  // ids: always
   GLenum draw[8];
   for (int i = 0; i < 8; ++i) {
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + i, GL_TEXTURE_2D, color[i]->id(), 0);
@@ -195,8 +210,9 @@ void GBufferPass::render(const Scene& scene, GBufferTargets& t, const GBufferCha
   t.near = cam.near;
   t.far = cam.far;
   const float zero[4] = {0, 0, 0, 0}, far[4] = {cam.far, 0, 0, 0}, white[4] = {1, 0, 0, 0}, one = 1;
+  const float no_normal[4] = {0, 0, 0, cam.far};  // w: the depth, next to the normal
   const GLuint no_ids[4] = {0, 0, 0, 0};
-  const float* clear[] = {zero, zero, far, nullptr, zero, white, zero, zero};
+  const float* clear[] = {no_normal, no_normal, far, nullptr, zero, white, zero, zero};
   const bool object_only[] = {false, false, false, false, true, true, true, true};
   glClearBufferfv(GL_DEPTH, 0, &one);  // whole: a sketchy depth sprite is tested against it
   const PixelRect& r = channels.read_region;

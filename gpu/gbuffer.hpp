@@ -29,6 +29,7 @@ GBufferTargets upload_gbuffer(const GBuffer& g);
 // buffers are GL_NONE), which saves the bandwidth of up to six float targets.
 struct GBufferChannels {
   bool normal = true, face_normal = true, bary = true, gouraud = true, theta_min = true, theta_max = true;
+  bool depth = true;  // the depth target; the edge filter reads the depth next to the normals
   // Whether the barycentrics, Gouraud intensity and angles hold their background values off
   // the objects. No stage reads them there (the interior reads only where ids != 0), so a
   // frame leaves them uncleared (llvmpipe: 52 bytes a pixel less to write); a dump clears them.

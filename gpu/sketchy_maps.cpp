@@ -15,8 +15,8 @@ Texture color_table(const std::vector<glm::vec3>& colors) {
 
 SketchyMapsPass::SketchyMapsPass(const std::vector<glm::vec3>& colors)
     : program_("fullscreen.vert", "sketchy_maps.frag", glsl_params<EdgeDetectParams>()), colors_(color_table(colors)) {
-  const char* units[] = {"normals", "depth", "ids", "colors"};
-  for (int k = 0; k < 4; ++k) glProgramUniform1i(program_.id(), program_.uniform(units[k]), k);
+  const char* units[] = {"normals", "ids", "colors"};
+  for (int k = 0; k < 3; ++k) glProgramUniform1i(program_.id(), program_.uniform(units[k]), k);
 }
 
 void SketchyMapsPass::run(const GBufferTargets& g, const EdgeDetectParams& p, Texture& edge, Texture& shade,
@@ -26,7 +26,7 @@ void SketchyMapsPass::run(const GBufferTargets& g, const EdgeDetectParams& p, Te
   glProgramUniform1f(program_.id(), program_.uniform("far_plane"), g.far);
   const Texture& normals = p.normals == EdgeNormals::Face ? g.face_normal : g.normal;
   // Background pixels: their d, edge depth = far, no shade.
-  pass_.draw_inside(program_, {&normals, &g.depth, &g.ids, &colors_}, {&edge, &shade}, covered,
+  pass_.draw_inside(program_, {&normals, &g.ids, &colors_}, {&edge, &shade}, covered,
                     {glm::vec4(background_darkness(p), g.far, 0, 0), glm::vec4(0)});
 }
 

@@ -1,14 +1,15 @@
 // Edge detection (SPEC 2.2) at one pixel: contour darkness d = 1 - I_n I_z from the
 // diagonal neighbors A C / F H, y up (window coordinates), clamp-to-edge. Shared by
 // edge_detect.frag and sketchy_maps.frag.
-uniform sampler2D normals;  // view-space normals (shading or face, chosen on the CPU)
-uniform sampler2D depth;    // linear view depth
+uniform sampler2D normals;  // view-space normals (shading or face, chosen on the CPU), w: linear view depth
 uniform float near_plane;
 uniform float far_plane;
 
-ivec2 clamped(ivec2 p) { return clamp(p, ivec2(0), textureSize(depth, 0) - 1); }
-vec3 normal_at(ivec2 p) { return texelFetch(normals, clamped(p), 0).xyz; }
-float normalized_depth_at(ivec2 p) { return (texelFetch(depth, clamped(p), 0).r - near_plane) / (far_plane - near_plane); }
+ivec2 clamped(ivec2 p) { return clamp(p, ivec2(0), textureSize(normals, 0) - 1); }
+// xyz: the normal, w: the linear view depth (gbuffer.frag writes it next to the normals
+// so that the filter reads one texel per neighbor).
+vec4 normal_and_depth_at(ivec2 p) { return texelFetch(normals, clamped(p), 0); }
+float normalized_depth(float d) { return (d - near_plane) / (far_plane - near_plane); }
 
 // N_1.N_2; two background pixels (zero normals) count as continuous unless the
 // literal formula is asked for (common/edge_detect.hpp).
@@ -23,9 +24,9 @@ float depth_factor(float z1, float z2) {
 }
 
 float contour_darkness_at(ivec2 x) {
-  ivec2 a = x + ivec2(-1, 1), h = x + ivec2(1, -1), c = x + ivec2(1, 1), f = x + ivec2(-1, -1);
-  float i_n = clamp(0.5 * (normal_agreement(normal_at(a), normal_at(h)) + normal_agreement(normal_at(c), normal_at(f))), 0.0, 1.0);
-  float i_z = depth_factor(normalized_depth_at(a), normalized_depth_at(h)) *
-              depth_factor(normalized_depth_at(c), normalized_depth_at(f));
+  vec4 a = normal_and_depth_at(x + ivec2(-1, 1)), h = normal_and_depth_at(x + ivec2(1, -1));
+  vec4 c = normal_and_depth_at(x + ivec2(1, 1)), f = normal_and_depth_at(x + ivec2(-1, -1));
+  float i_n = clamp(0.5 * (normal_agreement(a.xyz, h.xyz) + normal_agreement(c.xyz, f.xyz)), 0.0, 1.0);
+  float i_z = depth_factor(normalized_depth(a.w), normalized_depth(h.w)) * depth_factor(normalized_depth(c.w), normalized_depth(f.w));
   return 1.0 - i_n * i_z;
 }

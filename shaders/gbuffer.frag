@@ -25,17 +25,19 @@ vec3 unit_or_zero(vec3 v) {
   return len > 0.0 ? v / len : vec3(0.0);
 }
 
-// Depth and ids are always written; the other targets only by the program variant whose
+// Ids are always written; the other targets only by the program variant whose
 // WRITE_* flag is 1 (gpu/gbuffer.cpp GBufferChannels): on llvmpipe an output computed but
 // sent to GL_NONE still costs its interpolation and shading.
 void main() {
+#if WRITE_DEPTH
   out_depth = v_depth;
+#endif
   out_ids = uvec2(object_id, uint(gl_PrimitiveID));
 #if WRITE_NORMAL
-  out_normal = vec4(unit_or_zero(v_normal), 0.0);
+  out_normal = vec4(unit_or_zero(v_normal), v_depth);  // w: for the edge filter (common_edge.glsl)
 #endif
 #if WRITE_FACE_NORMAL
-  out_face_normal = vec4(unit_or_zero(v_face_normal), 0.0);
+  out_face_normal = vec4(unit_or_zero(v_face_normal), v_depth);
 #endif
 #if WRITE_BARY
   out_bary = vec4(v_bary, 0.0);

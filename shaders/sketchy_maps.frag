@@ -11,9 +11,9 @@ layout(location = 1) out vec4 shade_map;  // color, alpha = coverage
 
 // The nearest linear depth among X and its diagonals, the pixels d is made of.
 float edge_depth(ivec2 x) {
-  float d = texelFetch(depth, x, 0).r;
+  float d = normal_and_depth_at(x).w;
   for (int dy = -1; dy <= 1; dy += 2)
-    for (int dx = -1; dx <= 1; dx += 2) d = min(d, texelFetch(depth, clamped(x + ivec2(dx, dy)), 0).r);
+    for (int dx = -1; dx <= 1; dx += 2) d = min(d, normal_and_depth_at(x + ivec2(dx, dy)).w);
   return d;
 }
 
