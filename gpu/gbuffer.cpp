@@ -99,12 +99,13 @@ GBuffer download_gbuffer(const GBufferTargets& t) {
 
 namespace {
 
-// A normal image (3 channels) with the depth as fourth channel, as gbuffer.frag writes it.
-Image with_depth(const Image& normal, const Image& depth) {
-  Image out(normal.width, normal.height, 4);
-  for (size_t i = 0; i < normal.pixels(); ++i) {
-    std::copy_n(&normal.data[3 * i], 3, &out.data[4 * i]);
-    out.data[4 * i + 3] = depth.data[i];
+// A 3-channel image with a 1-channel one as fourth channel, as gbuffer.frag packs them
+// (normals and depth, barycentrics and Gouraud intensity).
+Image with_fourth_channel(const Image& xyz, const Image& w) {
+  Image out(xyz.width, xyz.height, 4);
+  for (size_t i = 0; i < xyz.pixels(); ++i) {
+    std::copy_n(&xyz.data[3 * i], 3, &out.data[4 * i]);
+    out.data[4 * i + 3] = w.data[i];
   }
   return out;
 }
@@ -113,12 +114,12 @@ Image with_depth(const Image& normal, const Image& depth) {
 
 GBufferTargets upload_gbuffer(const GBuffer& g) {
   GBufferTargets t;
-  t.normal = upload_texture(with_depth(g.normal, g.depth), GL_RGBA32F);
-  t.face_normal = upload_texture(with_depth(g.face_normal, g.depth), GL_RGBA32F);
+  t.normal = upload_texture(with_fourth_channel(g.normal, g.depth), GL_RGBA32F);
+  t.face_normal = upload_texture(with_fourth_channel(g.face_normal, g.depth), GL_RGBA32F);
   t.depth = upload_texture(g.depth, GL_R32F);
   t.ids = make_texture(g.ids.width, g.ids.height, GL_RG32UI);
   write_texture(t.ids, 2, true, g.ids.data.data());
-  t.bary = upload_texture(g.bary, GL_RGBA32F);
+  t.bary = upload_texture(with_fourth_channel(g.bary, g.gouraud), GL_RGBA32F);
   t.gouraud = upload_texture(g.gouraud, GL_R32F);
   t.theta_min = upload_texture(g.theta_min.empty() ? Image(g.gouraud.width, g.gouraud.height, 3) : g.theta_min, GL_RGBA32F);
   t.theta_max = upload_texture(g.theta_max.empty() ? Image(g.gouraud.width, g.gouraud.height, 3) : g.theta_max, GL_RGBA32F);
@@ -178,8 +179,9 @@ GBufferChannels channels_read_by(const std::vector<std::string>& stages, const S
   GBufferChannels c;
   c.normal = (ran("edge_detect") && !face_edges) || ran("contour_light") || (ran("interior_intensity") && phong);
   c.face_normal = ran("edge_detect") && face_edges;
-  c.gouraud = ran("interior_intensity") && !phong;
-  c.bary = c.theta_min = interior;
+  c.bary = interior || (ran("interior_intensity") && !phong);  // w: the Gouraud intensity
+  c.gouraud = false;                                            // its own target: for a dump
+  c.theta_min = interior;
   c.theta_max = interior && interior_options(scene.effects).crosshatch;
   c.depth = false;  // read only by a dump: edge detection reads it next to the normals
   c.object_only_background = false;

@@ -4,8 +4,8 @@ namespace plumbago::gpu {
 
 PencilInteriorPass::PencilInteriorPass()
     : program_("fullscreen.vert", "pencil_interior.frag", glsl_params<InteriorParams>()) {
-  const char* samplers[] = {"gouraud", "normals", "bary", "theta_min", "theta_max", "ids", "pencil_stack", "paper_normal"};
-  for (int i = 0; i < 8; ++i) glProgramUniform1i(program_.id(), program_.uniform(samplers[i]), i);
+  const char* samplers[] = {"normals", "bary", "theta_min", "theta_max", "ids", "pencil_stack", "paper_normal"};
+  for (int i = 0; i < 7; ++i) glProgramUniform1i(program_.id(), program_.uniform(samplers[i]), i);
 }
 
 void PencilInteriorPass::run(const GBufferTargets& g, const std::vector<Light>& view_lights, const Texture& stack,
@@ -16,7 +16,7 @@ void PencilInteriorPass::run(const GBufferTargets& g, const std::vector<Light>& 
   glProgramUniform1i(program_.id(), program_.uniform("crosshatch"), o.crosshatch);
   glProgramUniform1i(program_.id(), program_.uniform("paper_effect"), o.paper);
   glProgramUniform1f(program_.id(), program_.uniform("mu_p"), mu_p);
-  pass_.draw_inside(program_, {&g.gouraud, &g.normal, &g.bary, &g.theta_min, &g.theta_max, &g.ids, &stack, &paper_normal},
+  pass_.draw_inside(program_, {&g.normal, &g.bary, &g.theta_min, &g.theta_max, &g.ids, &stack, &paper_normal},
                     {&darkness, &intensity}, covered, {glm::vec4(0.0f), glm::vec4(1.0f)});
 }
 

@@ -40,7 +40,7 @@ void main() {
   out_face_normal = vec4(unit_or_zero(v_face_normal), v_depth);
 #endif
 #if WRITE_BARY
-  out_bary = vec4(v_bary, 0.0);
+  out_bary = vec4(v_bary, v_gouraud);  // w: for the interior (pencil_interior.frag)
 #endif
 #if WRITE_GOURAUD
   out_gouraud = v_gouraud;

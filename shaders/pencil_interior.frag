@@ -5,9 +5,8 @@
 #include "common_lights.glsl"
 #include "common_wrap.glsl"
 
-uniform sampler2D gouraud;
 uniform sampler2D normals;
-uniform sampler2D bary;
+uniform sampler2D bary;           // w: the Gouraud intensity
 uniform sampler2D theta_min;
 uniform sampler2D theta_max;
 uniform usampler2D ids;
@@ -21,9 +20,9 @@ layout(location = 0) out float interior_darkness;
 layout(location = 1) out float interior_intensity;
 
 // I' = sqrt(I), I Gouraud or Phong (SPEC 2.5)
-float adjusted_intensity(ivec2 x) {
+float adjusted_intensity(ivec2 x, float gouraud) {
   float i = interior.shading == INTERIOR_SHADING_GOURAUD
-                ? texelFetch(gouraud, x, 0).r
+                ? gouraud
                 : clamp(interior.ambient + interior.diffuse * light_sum(texelFetch(normals, x, 0).xyz), 0.0, 1.0);
   return interior.brightness_sqrt ? sqrt(i) : i;
 }
@@ -57,12 +56,13 @@ void main() {
   // Background: the targets already hold D_i = 0, I' = 1 (FullscreenPass::draw_inside). A
   // discard, unlike a return, lets llvmpipe skip a block of pixels that are all background.
   if (texelFetch(ids, x, 0).r == 0u) discard;
-  float i = adjusted_intensity(x);
+  vec4 bary_gouraud = texelFetch(bary, x, 0);
+  float i = adjusted_intensity(x, bary_gouraud.w);
   interior_intensity = i;
   float layers = float(textureSize(pencil_stack, 0).z);
   float r = ((1.0 - i) * (layers - 1.0) + 0.5) / layers;  // tone to layer (2.6)
   vec2 p = gl_FragCoord.xy;
-  vec3 w = texelFetch(bary, x, 0).xyz;
+  vec3 w = bary_gouraud.xyz;
   vec3 n = paper_effect ? texelFetch(paper_normal, wrapped_texel(x, textureSize(paper_normal, 0)), 0).xyz : vec3(0.0);
   float c = blended(p, w, texelFetch(theta_min, x, 0).xyz, r, n);
   float h = crosshatch ? 1.0 - smoothstep(interior.crosshatch_below - interior.crosshatch_band, interior.crosshatch_below, i) : 0.0;
