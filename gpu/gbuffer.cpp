@@ -18,10 +18,10 @@ struct Corner {
   float gouraud;
 };
 
-// The whole triangle's corners and curvature directions, repeated at each corner (SPEC
-// 2.7); a second vertex buffer, made only when the scene has curvature.
-struct TriangleCurvature {
-  glm::vec3 corner_position[3], corner_d_min[3], corner_d_max[3];
+// Per mesh vertex, what shaders/corner_angles.comp reads (SPEC 2.7); made only when the
+// scene has curvature.
+struct VertexCurvature {
+  glm::vec4 position, d_min, d_max;  // world space; w unused
 };
 
 std::vector<Corner> triangle_soup(const WorldObject& obj) {
@@ -38,17 +38,19 @@ std::vector<Corner> triangle_soup(const WorldObject& obj) {
   return soup;
 }
 
-std::vector<TriangleCurvature> curvature_soup(const WorldObject& obj) {
-  std::vector<TriangleCurvature> soup;
+// The triangle's three mesh vertices at each of its corners: a second vertex buffer.
+std::vector<glm::uvec3> corner_vertices(const WorldObject& obj) {
+  std::vector<glm::uvec3> soup;
   soup.reserve(obj.triangles.size() * 3);
-  for (const glm::uvec3& tri : obj.triangles) {
-    TriangleCurvature c;
-    for (int k = 0; k < 3; ++k)
-      c.corner_position[k] = obj.positions[tri[k]], c.corner_d_min[k] = obj.d_min[tri[k]],
-      c.corner_d_max[k] = obj.d_max[tri[k]];
-    soup.insert(soup.end(), 3, c);
-  }
+  for (const glm::uvec3& tri : obj.triangles) soup.insert(soup.end(), 3, tri);
   return soup;
+}
+
+std::vector<VertexCurvature> vertex_curvature(const WorldObject& obj) {
+  std::vector<VertexCurvature> out(obj.positions.size());
+  for (size_t v = 0; v < out.size(); ++v)
+    out[v] = {glm::vec4(obj.positions[v], 0), glm::vec4(obj.d_min[v], 0), glm::vec4(obj.d_max[v], 0)};
+  return out;
 }
 
 // With the vertex array bound: attribute `index` reads `size` floats at `offset` of the
@@ -130,10 +132,12 @@ GBufferTargets upload_gbuffer(const GBuffer& g) {
 
 GBufferPass::GBufferPass(const Scene& scene, const std::vector<Curvature>& curvature)
     : has_curvature_(!curvature.empty()),
+      angles_program_(has_curvature_ ? std::make_unique<Program>(Program::compute("corner_angles.comp", glsl_params<InteriorParams>()))
+                                     : nullptr),
       fbo_(make_framebuffer()) {
   for (const WorldObject& obj : world_geometry(scene, curvature)) {
     std::vector<Corner> soup = triangle_soup(obj);
-    Batch b{make_buffer(soup.data(), soup.size() * sizeof(Corner)), Buffer(), make_vertex_array(), GLsizei(soup.size())};
+    Batch b{make_buffer(soup.data(), soup.size() * sizeof(Corner)), {}, {}, {}, make_vertex_array(), GLsizei(soup.size())};
     glBindVertexArray(b.layout.id());
     glBindVertexBuffer(0, b.vertices.id(), 0, sizeof(Corner));
     describe_attribute(0, 3, offsetof(Corner, position));
@@ -142,14 +146,16 @@ GBufferPass::GBufferPass(const Scene& scene, const std::vector<Curvature>& curva
     describe_attribute(3, 3, offsetof(Corner, corner));
     describe_attribute(4, 1, offsetof(Corner, gouraud));
     if (!obj.d_min.empty()) {
-      std::vector<TriangleCurvature> c = curvature_soup(obj);
-      b.curvature = make_buffer(c.data(), c.size() * sizeof(TriangleCurvature));
-      glBindVertexBuffer(1, b.curvature.id(), 0, sizeof(TriangleCurvature));
-      for (GLuint k = 0; k < 3; ++k) {
-        describe_attribute(5 + k, 3, offsetof(TriangleCurvature, corner_position) + k * sizeof(glm::vec3), 1);
-        describe_attribute(8 + k, 3, offsetof(TriangleCurvature, corner_d_min) + k * sizeof(glm::vec3), 1);
-        describe_attribute(11 + k, 3, offsetof(TriangleCurvature, corner_d_max) + k * sizeof(glm::vec3), 1);
-      }
+      std::vector<glm::uvec3> corners = corner_vertices(obj);
+      std::vector<VertexCurvature> curvature = vertex_curvature(obj);
+      b.corner_vertices = make_buffer(corners.data(), corners.size() * sizeof(glm::uvec3));
+      b.vertex_curvature = make_buffer(curvature.data(), curvature.size() * sizeof(VertexCurvature));
+      b.vertex_angles = make_buffer(nullptr, curvature.size() * sizeof(glm::vec2));
+      b.mesh_vertices = GLuint(curvature.size());
+      glBindVertexBuffer(1, b.corner_vertices.id(), 0, sizeof(glm::uvec3));
+      glEnableVertexAttribArray(5);
+      glVertexAttribIFormat(5, 3, GL_UNSIGNED_INT, 0);
+      glVertexAttribBinding(5, 1);
     }
     glBindVertexArray(0);
     batches_.push_back(std::move(b));
@@ -169,6 +175,24 @@ const Program& GBufferPass::program_for(const GBufferChannels& c) {
   if (it == programs_.end())
     it = programs_.emplace(key, Program("gbuffer.vert", "gbuffer.frag", glsl_params<InteriorParams>() + defines)).first;
   return it->second;
+}
+
+// Every mesh vertex's stroke angles for this camera (corner_angles.comp), for the draws.
+void GBufferPass::compute_corner_angles(const glm::mat4& view_projection, int w, int h, float fov_deg,
+                                        const InteriorParams& p) {
+  const Program& program = *angles_program_;
+  glUseProgram(program.id());
+  glUniformMatrix4fv(program.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
+  glUniform2f(program.uniform("window_size"), float(w), float(h));
+  glUniform1f(program.uniform("tan_half_fov"), std::tan(glm::radians(fov_deg) * 0.5f));
+  program.set_params(p);
+  for (const Batch& b : batches_) {
+    glUniform1ui(program.uniform("vertex_count"), b.mesh_vertices);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, b.vertex_curvature.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, b.vertex_angles.id());
+    glDispatchCompute((b.mesh_vertices + 63) / 64, 1, 1);
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 GBufferChannels channels_read_by(const std::vector<std::string>& stages, const Scene& scene) {
@@ -209,6 +233,7 @@ void GBufferPass::render(const Scene& scene, GBufferTargets& t, const GBufferCha
   glDrawBuffers(8, draw);
 
   const Camera& cam = scene.camera;
+  glm::mat4 view = cam.view(), projection = cam.projection(float(w) / float(h));
   t.near = cam.near;
   t.far = cam.far;
   const float zero[4] = {0, 0, 0, 0}, far[4] = {cam.far, 0, 0, 0}, white[4] = {1, 0, 0, 0}, one = 1;
@@ -226,23 +251,20 @@ void GBufferPass::render(const Scene& scene, GBufferTargets& t, const GBufferCha
   glClearBufferuiv(GL_COLOR, 3, no_ids);
   glDisable(GL_SCISSOR_TEST);
 
+  if (has_curvature_ && (channels.theta_min || channels.theta_max))
+    compute_corner_angles(projection * view, w, h, cam.fov_deg, scene.params.get<InteriorParams>());
   glViewport(0, 0, w, h);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
   const Program& program = program_for(channels);
   glUseProgram(program.id());
-  glm::mat4 view = cam.view(), projection = cam.projection(float(w) / float(h));
   glUniformMatrix4fv(program.uniform("view"), 1, GL_FALSE, glm::value_ptr(view));
   glUniformMatrix4fv(program.uniform("projection"), 1, GL_FALSE, glm::value_ptr(projection));
-  glm::mat4 view_projection = projection * view;
-  glUniformMatrix4fv(program.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
-  glUniform2f(program.uniform("window_size"), float(w), float(h));
-  glUniform1f(program.uniform("tan_half_fov"), std::tan(glm::radians(cam.fov_deg) * 0.5f));
   glUniform1i(program.uniform("has_curvature"), has_curvature_);
-  program.set_params(scene.params.get<InteriorParams>());
   for (size_t i = 0; i < batches_.size(); ++i) {
     glUniform1ui(program.uniform("object_id"), GLuint(i + 1));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, batches_[i].vertex_angles.id());
     glBindVertexArray(batches_[i].layout.id());
     glDrawArrays(GL_TRIANGLES, 0, batches_[i].corners);
   }

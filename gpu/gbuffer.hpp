@@ -3,10 +3,12 @@
 
 #include <climits>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "common/gbuffer.hpp"
+#include "common/interior.hpp"
 #include "gpu/gl_objects.hpp"
 #include "gpu/program.hpp"
 
@@ -52,15 +54,18 @@ class GBufferPass {
 
  private:
   struct Batch {
-    Buffer vertices, curvature;
+    Buffer vertices, corner_vertices, vertex_curvature, vertex_angles;  // the last three with curvature
     VertexArray layout;
     GLsizei corners = 0;
+    GLuint mesh_vertices = 0;
   };
+  void compute_corner_angles(const glm::mat4& view_projection, int w, int h, float fov_deg, const InteriorParams& p);
   // The program variant that writes exactly `channels` (compiled on first use).
   const Program& program_for(const GBufferChannels& channels);
   std::map<int, Program> programs_;
   std::vector<Batch> batches_;  // one per object
   bool has_curvature_;
+  std::unique_ptr<Program> angles_program_;  // corner_angles.comp, with curvature
   Framebuffer fbo_;
   Renderbuffer depth_test_;
   int depth_test_width_ = 0, depth_test_height_ = 0;

@@ -65,20 +65,34 @@ std::string shader_source(const std::string& file) {
 
 Program::Program(const std::string& vertex, const std::string& fragment, const std::string& prelude) {
   GLuint vs = compile(GL_VERTEX_SHADER, vertex, prelude);
-  GLuint fs = compile(GL_FRAGMENT_SHADER, fragment, prelude);
+  GLuint fs;
+  try {
+    fs = compile(GL_FRAGMENT_SHADER, fragment, prelude);
+  } catch (...) {
+    glDeleteShader(vs);
+    throw;
+  }
+  link({vs, fs}, vertex + " + " + fragment);
+}
+
+Program Program::compute(const std::string& compute, const std::string& prelude) {
+  Program p;
+  p.link({compile(GL_COMPUTE_SHADER, compute, prelude)}, compute);
+  return p;
+}
+
+void Program::link(std::initializer_list<GLuint> shaders, const std::string& what) {
   GLuint p = glCreateProgram();
-  glAttachShader(p, vs);
-  glAttachShader(p, fs);
+  for (GLuint s : shaders) glAttachShader(p, s);
   glLinkProgram(p);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
+  for (GLuint s : shaders) glDeleteShader(s);
   name_ = GlName<detail::delete_program>(p);
   GLint ok = 0;
   glGetProgramiv(p, GL_LINK_STATUS, &ok);
   if (!ok) {
     char log[4096] = {};
     glGetProgramInfoLog(p, sizeof log, nullptr, log);
-    throw std::runtime_error("program " + vertex + " + " + fragment + " does not link:\n" + log);
+    throw std::runtime_error("program " + what + " does not link:\n" + log);
   }
 }
 

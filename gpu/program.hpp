@@ -68,6 +68,8 @@ class Program {
   // #version. `#include "common_x.glsl"` lines are expanded from shaders/. Throws
   // std::runtime_error with the compiler log and the file name.
   Program(const std::string& vertex, const std::string& fragment, const std::string& prelude = "");
+  // A compute program from shaders/<compute>, the same way.
+  static Program compute(const std::string& compute, const std::string& prelude = "");
   GLuint id() const { return name_.id(); }
   GLint uniform(const char* name) const { return glGetUniformLocation(id(), name); }
 
@@ -78,6 +80,9 @@ class Program {
   }
 
  private:
+  Program() = default;
+  // Links the compiled shaders (and deletes them); `what` names them in an error.
+  void link(std::initializer_list<GLuint> shaders, const std::string& what);
   GlName<detail::delete_program> name_;
 };
 

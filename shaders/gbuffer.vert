@@ -5,12 +5,11 @@ layout(location = 1) in vec3 normal;       // world, unit (shading)
 layout(location = 2) in vec3 face_normal;  // world, unit (geometric)
 layout(location = 3) in vec3 corner;       // (1,0,0), (0,1,0) or (0,0,1)
 layout(location = 4) in float gouraud;     // SPEC 2.5, per vertex
-// The triangle's three corners and their curvature directions (world), for SPEC 2.7.
-layout(location = 5) in vec3 corner_position[3];
-layout(location = 8) in vec3 corner_d_min[3];
-layout(location = 11) in vec3 corner_d_max[3];
+// The triangle's three mesh vertices, and every vertex's stroke angles this frame
+// (corner_angles.comp), for SPEC 2.7.
+layout(location = 5) in uvec3 corner_vertices;
+layout(std430, binding = 1) readonly buffer Angles { vec2 vertex_angles[]; };  // theta_min, theta_max
 uniform bool has_curvature;
-#include "common_rotation.glsl"
 
 uniform mat4 view;
 uniform mat4 projection;
@@ -35,8 +34,9 @@ void main() {
 #if WRITE_THETA_MIN || WRITE_THETA_MAX
   if (has_curvature)
     for (int k = 0; k < 3; ++k) {
-      v_theta_min[k] = stroke_angle(corner_position[k], corner_d_min[k], corner_d_max[k]);
-      v_theta_max[k] = stroke_angle(corner_position[k], corner_d_max[k], corner_d_min[k]);
+      vec2 angles = vertex_angles[corner_vertices[k]];
+      v_theta_min[k] = angles.x;
+      v_theta_max[k] = angles.y;
     }
 #endif
 }
