@@ -2,9 +2,10 @@
 // subdivided 1-to-4 until it has at least a million vertices. Reported per run and as
 // seconds per million vertices, next to the targets on 2 cores: 1-ring <= 0.5 s,
 // default ball <= 5 s per million vertices. `topology_ms` is the share spent building
-// the adjacency (OpenMesh); `uniform_faces_per_ball` is how many faces the ball would
-// hold if every face had the mean area (the cost of a ball grows with its faces; a mesh
-// with dense details, like the ogre, holds many more where it is dense).
+// the adjacency (in parallel; OpenMesh only for non-manifold input); `uniform_faces_per_ball`
+// is how many faces the ball would hold if every face had the mean area (the cost of a
+// ball grows with its faces; a mesh with dense details, like the ogre, holds many more
+// where it is dense).
 #include <benchmark/benchmark.h>
 
 #include <cmath>

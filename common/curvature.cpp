@@ -79,7 +79,7 @@ Curvature tensor_curvature(const Mesh& mesh, const MeshTopology& topo, const Cur
   Curvature c;
   assign_populated(c.k_min, n), assign_populated(c.k_max, n);
   for (auto* v : {&c.normal, &c.d_min, &c.d_max}) assign_populated(*v, n);
-  for_each_vertex_sums(mesh, topo, p, true, progress, [&](uint32_t v, const BallSums& sums) {
+  for_each_vertex_sums(mesh, topo, p, progress, [&](uint32_t v, const BallSums& sums) {
     Frame f = vertex_frame(sums, glm::dvec3(mesh.normals[v]), p, flat);
     c.normal[v] = f.normal, c.d_min[v] = f.d_min, c.d_max[v] = f.d_max;
     c.k_min[v] = float(f.k_min), c.k_max[v] = float(f.k_max);

@@ -4,9 +4,10 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 
 #include "common/ball_geometry.hpp"
-#include "common/curvature_clusters.hpp"
+#include "common/curvature_internal.hpp"
 #include "common/curvature_memory.hpp"
 
 namespace plumbago::curvature {
@@ -36,15 +37,16 @@ std::vector<double> edge_beta_per_length(const Mesh& mesh, const MeshTopology& t
 
 namespace {
 
-// Per-thread marks of the faces, edges and clusters already visited for the current
-// vertex (only the ball uses them: the 1-ring's few edges are kept in the short `queue`).
+// Per-thread marks of the faces and edges already visited for the current vertex (only
+// the ball uses them: the 1-ring's few edges are kept in the short `queue`).
 struct Scratch {
-  std::vector<uint32_t> face_mark, edge_mark, node_mark, queue;
+  std::vector<uint32_t> face_mark, edge_mark, queue;
   uint32_t stamp = 0;
-  Scratch(size_t faces, size_t edges, size_t nodes) : face_mark(faces, 0), edge_mark(edges, 0), node_mark(nodes, 0) {}
+  Scratch(size_t faces, size_t edges) : face_mark(faces, 0), edge_mark(edges, 0) {}
   void next_vertex() {
     if (++stamp == 0) {
-      for (auto* marks : {&face_mark, &edge_mark, &node_mark}) std::fill(marks->begin(), marks->end(), 0);
+      std::fill(face_mark.begin(), face_mark.end(), 0);
+      std::fill(edge_mark.begin(), edge_mark.end(), 0);
       stamp = 1;
     }
     queue.clear();
@@ -59,12 +61,44 @@ struct Scratch {
   }
 };
 
+// What the ball reads about a face and an edge, each in one record: the ball visits
+// faces in no useful order, and one record is one or two cache lines where the mesh,
+// the topology and the edge coefficients would be five or six.
+struct BallFace {
+  glm::vec3 corner[3];
+  std::array<uint32_t, 3> edges;
+  glm::dvec3 twice_area_normal;  // N
+  double N_length;
+};
+
+struct BallEdge {
+  double beta_per_length;
+  int32_t face[2];
+};
+
 struct Surface {
   const Mesh& mesh;
   const MeshTopology& topo;
   std::vector<double> beta_per_length;
-  FaceClusters clusters;  // empty: every ball grown face by face
+  std::vector<BallFace> faces;  // for the ball only
+  std::vector<BallEdge> edges;
 };
+
+void fill_ball_records(Surface& g) {
+  assign_populated(g.faces, g.mesh.triangles.size());
+  tbb::parallel_for(size_t(0), g.faces.size(), [&](size_t f) {
+    BallFace& face = g.faces[f];
+    for (int k = 0; k < 3; ++k) face.corner[k] = g.mesh.positions[g.mesh.triangles[f][k]];
+    face.edges = g.topo.face_edges[f];
+    face.twice_area_normal = triangle(g.mesh, uint32_t(f)).twice_area_normal();
+    face.N_length = glm::length(face.twice_area_normal);
+  });
+  assign_populated(g.edges, g.topo.edges.size());
+  tbb::parallel_for(size_t(0), g.edges.size(), [&](size_t e) {
+    const auto& edge = g.topo.edges[e];
+    g.edges[e] = {g.beta_per_length[e], {edge.face[0], edge.face[1]}};
+  });
+}
 
 // 1-ring (radius 0): the faces around v; edges at v whole, edges opposite v half.
 BallSums one_ring_sums(uint32_t v, const Surface& g, Scratch& s) {
@@ -86,57 +120,37 @@ BallSums one_ring_sums(uint32_t v, const Surface& g, Scratch& s) {
 }
 
 // Face f's part of the ball (c, r), clipped exactly: its area, and the edges not yet
-// seen that reach into the ball, except those a cluster inside the ball adds; the faces
-// across those edges are queued.
+// seen that reach into the ball; the faces across those edges are queued.
 void add_face_in_ball(uint32_t f, const glm::dvec3& c, double r, const Surface& g, Scratch& s, BallSums& sums) {
-  const Triangle tri = triangle(g.mesh, f);
-  const glm::dvec3* p = tri.p;
+  const BallFace& face = g.faces[f];
+  const glm::dvec3 p[3] = {face.corner[0], face.corner[1], face.corner[2]};
   bool inside[3];
   for (int k = 0; k < 3; ++k) inside[k] = glm::dot(p[k] - c, p[k] - c) <= r * r;
-  glm::dvec3 n = tri.twice_area_normal();
   if (inside[0] && inside[1] && inside[2])
-    sums.add_whole_face(n, glm::length(n));
+    sums.add_whole_face(face.twice_area_normal, face.N_length);
   else
-    sums.add_face(triangle_area_in_ball(p[0], p[1], p[2], c, r), n, glm::length(n));
+    sums.add_face(triangle_area_in_ball(p[0], p[1], p[2], c, r), face.twice_area_normal, face.N_length);
   for (int k = 0; k < 3; ++k) {
-    uint32_t e = g.topo.face_edges[f][k];
+    uint32_t e = face.edges[k];
     if (!s.first_visit(s.edge_mark, e)) continue;
-    const auto& edge = g.topo.edges[e];
-    bool whole = inside[k] && inside[(k + 1) % 3] && tri.side(k) != glm::dvec3(0);
+    const BallEdge& edge = g.edges[e];
+    const glm::dvec3 side = p[(k + 1) % 3] - p[k];
+    bool whole = inside[k] && inside[(k + 1) % 3] && side != glm::dvec3(0);
     double fraction = whole ? 1.0 : segment_fraction_in_ball(p[k], p[(k + 1) % 3], c, r);
     if (!(fraction > 0)) continue;
-    bool in_cluster = !g.clusters.nodes.empty() && g.clusters.inside(g.clusters.face_node[uint32_t(edge.face[0])], c, r);
-    if (!in_cluster) sums.tensor.add(fraction * g.beta_per_length[e], tri.side(k));
+    sums.tensor.add(fraction * edge.beta_per_length, side);
     for (int32_t other : edge.face)
       if (other >= 0) s.enqueue_face(uint32_t(other));
   }
 }
 
-// The connected part of the surface within distance r of v, grown across edges that
-// reach into the ball: a face whose cluster lies inside the ball adds the highest such
-// cluster around it whole and queues the faces across its boundary; any other face is
-// clipped exactly (curvature_clusters.hpp says why the sums are the same).
+// The connected part of the surface within distance r of v, grown face by face across
+// edges that reach into the ball; each edge and face clipped exactly.
 BallSums ball_sums(uint32_t v, double r, const Surface& g, Scratch& s) {
   BallSums sums;
   const glm::dvec3 c = g.mesh.positions[v];
-  const bool clusters = !g.clusters.nodes.empty();
   for (uint32_t f : g.topo.faces_of(v)) s.enqueue_face(f);
-  for (size_t next = 0; next < s.queue.size(); ++next) {
-    const uint32_t f = s.queue[next];
-    if (clusters && s.node_mark[g.clusters.face_node[f]] == s.stamp) continue;  // added with its cluster
-    int32_t node = clusters ? g.clusters.highest_inside(f, c, r) : -1;
-    if (node < 0) {
-      add_face_in_ball(f, c, r, g, s, sums);
-      continue;
-    }
-    if (s.first_visit(s.node_mark, uint32_t(node))) {
-      const auto& cluster = g.clusters.nodes[size_t(node)];
-      sums.add(cluster.sums);
-      for (uint32_t b = cluster.boundary_begin; b < cluster.boundary_end; ++b)
-        s.enqueue_face(g.clusters.boundary_faces[b]);
-    }
-    s.node_mark[g.clusters.face_node[f]] = s.stamp;  // added with `node`, its ancestor or itself
-  }
+  for (size_t next = 0; next < s.queue.size(); ++next) add_face_in_ball(s.queue[next], c, r, g, s, sums);
   return sums;
 }
 
@@ -149,14 +163,13 @@ double ring_radius(uint32_t v, const Mesh& mesh, const MeshTopology& topo) {
 
 }  // namespace
 
-void for_each_vertex_sums(const Mesh& mesh, const MeshTopology& topo, const CurvatureParams& p, bool clusters,
-                          Progress& progress, const std::function<void(uint32_t, const BallSums&)>& f) {
+void for_each_vertex_sums(const Mesh& mesh, const MeshTopology& topo, const CurvatureParams& p, Progress& progress,
+                           const std::function<void(uint32_t, const BallSums&)>& f) {
   const bool ball = p.radius > 0;
-  Surface g{mesh, topo, edge_beta_per_length(mesh, topo), {}};
-  if (ball && clusters) g.clusters = build_face_clusters(mesh, topo, g.beta_per_length);
+  Surface g{mesh, topo, edge_beta_per_length(mesh, topo), {}, {}};
+  if (ball) fill_ball_records(g);
   const double radius = double(p.radius) * double(mesh.bbox_diagonal());
-  tbb::enumerable_thread_specific<Scratch> scratch(ball ? mesh.triangles.size() : 0, ball ? topo.edges.size() : 0,
-                                                   g.clusters.nodes.size());
+  tbb::enumerable_thread_specific<Scratch> scratch(ball ? mesh.triangles.size() : 0, ball ? topo.edges.size() : 0);
   const uint32_t n = uint32_t(mesh.positions.size());
   tbb::parallel_for(tbb::blocked_range<uint32_t>(0, n, 1024), [&](const tbb::blocked_range<uint32_t>& range) {
     Scratch& s = scratch.local();

@@ -17,7 +17,6 @@ struct SymmetricTensor {
     xx += w * e.x * e.x, xy += w * e.x * e.y, xz += w * e.x * e.z;
     yy += w * e.y * e.y, yz += w * e.y * e.z, zz += w * e.z * e.z;
   }
-  void add(const SymmetricTensor& t) { xx += t.xx, xy += t.xy, xz += t.xz, yy += t.yy, yz += t.yz, zz += t.zz; }
   glm::dvec3 apply(const glm::dvec3& v) const {
     return {xx * v.x + xy * v.y + xz * v.z, xy * v.x + yy * v.y + yz * v.z, xz * v.x + yz * v.y + zz * v.z};
   }
@@ -42,7 +41,6 @@ struct BallSums {
   }
   // A whole face: a = |N| / 2, so its normal term is N / 2.
   void add_whole_face(const glm::dvec3& N, double N_length) { area += 0.5 * N_length, normal += 0.5 * N; }
-  void add(const BallSums& s) { tensor.add(s.tensor), area += s.area, normal += s.normal; }
 };
 
 struct Triangle {
@@ -71,11 +69,9 @@ double signed_dihedral_angle(const glm::dvec3& n0, const glm::dvec3& n1, const g
 void tangent_basis(const glm::dvec3& n, glm::dvec3& t1, glm::dvec3& t2);
 
 // The sums over each vertex's ball (or 1-ring where SPEC or ring_fallback asks for it),
-// handed to f(v, sums) in parallel. With `clusters` the balls add the faces deep inside
-// them a cluster at a time (curvature_clusters.hpp); without, face by face (the reference
-// the tests compare the clusters with).
-void for_each_vertex_sums(const Mesh& mesh, const MeshTopology& topo, const CurvatureParams& p, bool clusters,
-                          Progress& progress, const std::function<void(uint32_t, const BallSums&)>& f);
+// handed to f(v, sums) in parallel.
+void for_each_vertex_sums(const Mesh& mesh, const MeshTopology& topo, const CurvatureParams& p, Progress& progress,
+                          const std::function<void(uint32_t, const BallSums&)>& f);
 
 // Raw per-vertex estimates before propagation. A vertex a method cannot estimate (no
 // faces, too few neighbors for a jet) gets the mesh normal and k_min = k_max = 0.
