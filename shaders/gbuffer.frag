@@ -2,7 +2,7 @@
 // G-buffer (SPEC 2.1). Perspective-correct interpolation gives the same barycentrics as
 // the ray tracer's hit coordinates; normals are normalized after interpolation.
 in vec3 v_normal;
-in vec3 v_face_normal;
+flat in vec3 v_face_normal;
 in vec3 v_bary;
 in float v_depth;
 in float v_gouraud;

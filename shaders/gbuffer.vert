@@ -15,7 +15,7 @@ uniform mat4 view;
 uniform mat4 projection;
 
 out vec3 v_normal;
-out vec3 v_face_normal;
+flat out vec3 v_face_normal;  // the same at the three corners
 out vec3 v_bary;
 out float v_depth;
 out float v_gouraud;
