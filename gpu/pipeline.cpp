@@ -106,6 +106,7 @@ struct Renderer::State {
   Texture color = make_texture(scene.width, scene.height, GL_RGBA8);
   PassTimer timer;
   GBufferChannels gbuffer_channels = channels_read_by(stages, scene);  // all of them for a dump
+  bool dump = false;  // a dump composes the whole window: tests compare it with a frame
   std::unique_ptr<SketchyState> sketchy = !ran("sketchy_composite") ? nullptr
       : std::make_unique<SketchyState>(scene, pre.sketchy_noise, ran("sketchy_enlarged"));
   GBufferChannels sketchy_channels = SketchyState::channels(scene);
@@ -113,6 +114,12 @@ struct Renderer::State {
   explicit State(const Scene& s) : scene(s) {}
 
   bool ran(const char* stage) const { return std::find(stages.begin(), stages.end(), stage) != stages.end(); }
+
+  // Where D_c or D_i can differ from 0: around the contours' reach, or the objects.
+  PixelRect compose_rect() const {
+    if (dump) return {0, 0, scene.width, scene.height};
+    return ran("multi_contour") ? contour_rect(ordinary, pre.offset_grids) : filter_rect(ordinary, 0);
+  }
 
   void run(const std::string& pass) {
     if (pass == "gbuffer") {
@@ -130,7 +137,7 @@ struct Renderer::State {
                                filter_rect(ordinary, 0));
     } else if (pass == "compose") {
       compose_pass.run(multi_contour_darkness, ran("multi_contour"), interior_darkness, ran("pencil_interior"),
-                       paper_color, !pre.paper.color.empty(), scene.params.get<ComposeParams>(), color);
+                       paper_color, !pre.paper.color.empty(), scene.params.get<ComposeParams>(), color, compose_rect());
     } else if (pass == "sketchy_gbuffer") {
       sketchy->gbuffer_pass.render(scene, sketchy->gbuffer, sketchy_channels);
     } else if (pass == "sketchy_enlarged") {
@@ -190,6 +197,7 @@ double Renderer::render_frame(Frame& timing) {
 Frame Renderer::render(const FrameOptions& options) {
   Frame frame;
   state_->gbuffer_channels = options.keep_buffers ? GBufferChannels{} : channels_read_by(state_->stages, state_->scene);
+  state_->dump = options.keep_buffers;
   state_->sketchy_channels = options.keep_buffers ? GBufferChannels{} : SketchyState::channels(state_->scene);
   state_->run_frame();
   frame.ran = state_->pre.ran;  // once per Renderer, listed with every frame it renders

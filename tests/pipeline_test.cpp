@@ -63,9 +63,11 @@ TEST_F(Frames, TwoRunsAreBitIdenticalOnEachBackend) {
 }
 
 // A frame writes only the G-buffer channels its stages read, leaves those read only on
-// the objects uncleared on the background, and clears the others only where the edge
-// filter reads (gpu/gbuffer.hpp); a dump writes and clears them all. The images may not
-// differ, in either order (a clear region one pixel short fails here).
+// the objects uncleared on the background, clears the others only where the edge filter
+// reads (gpu/gbuffer.hpp), and composes only around the contours and objects, copying
+// the blank page elsewhere (gpu/compose.hpp); a dump writes, clears and composes
+// everything. The images may not differ, in either order (a clear region one pixel
+// short, or a composition region without the contours' reach, fails here).
 TEST_F(Frames, AFrameDrawsTheSameImageAsADump) {
   for (const std::string& name : builtin_scene_names()) {
     Scene scene = testing::builtin_at(name, 160, 120);
