@@ -12,9 +12,23 @@
 
 namespace plumbago::curvature {
 
-// Faces and edges are otherwise read straight from the mesh, which keeps the memory the
-// 1-ring needs (and its first touch, which costs about as much as the 1-ring) to 8 bytes
-// an edge.
+namespace {
+
+struct Triangle {
+  glm::dvec3 p[3];
+  glm::dvec3 side(int k) const { return p[(k + 1) % 3] - p[k]; }  // corner k to corner k + 1
+  glm::dvec3 twice_area_normal() const { return glm::cross(p[1] - p[0], p[2] - p[0]); }
+};
+
+Triangle triangle(const Mesh& mesh, uint32_t f) {
+  const auto& t = mesh.triangles[f];
+  return {{mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]}};
+}
+
+// Per edge, beta(e) / |e| (0 for a zero-length edge): the edge's term of T is then
+// beta |e ∩ B| e eᵀ = beta / |e| x (|e ∩ B| / |e|) d dᵀ, with d = to - from. The 1-ring
+// reads everything else straight from the mesh, which keeps the memory it needs (whose
+// first touch costs about as much as the 1-ring itself) to these 8 bytes an edge.
 std::vector<double> edge_beta_per_length(const Mesh& mesh, const MeshTopology& topo) {
   std::vector<double> coefficient;
   assign_populated(coefficient, topo.edges.size());
@@ -27,15 +41,13 @@ std::vector<double> edge_beta_per_length(const Mesh& mesh, const MeshTopology& t
       return;
     }
     // beta from the faces' N = 2 x area x normal: atan2 of both arguments scaled by the
-    // same |N0| |N1| > 0 is the same angle (and 0 where a face has no area, as before).
+    // same |N0| |N1| > 0 is the same angle (and 0 where a face has no area).
     glm::dvec3 n0 = triangle(mesh, uint32_t(edge.face[0])).twice_area_normal();
     glm::dvec3 n1 = triangle(mesh, uint32_t(edge.face[1])).twice_area_normal();
     coefficient[e] = signed_dihedral_angle(n0, n1, d / length) / length;
   });
   return coefficient;
 }
-
-namespace {
 
 // Per-thread marks of the faces and edges already visited for the current vertex (only
 // the ball uses them: the 1-ring's few edges are kept in the short `queue`).

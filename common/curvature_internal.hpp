@@ -43,21 +43,6 @@ struct BallSums {
   void add_whole_face(const glm::dvec3& N, double N_length) { area += 0.5 * N_length, normal += 0.5 * N; }
 };
 
-struct Triangle {
-  glm::dvec3 p[3];
-  glm::dvec3 side(int k) const { return p[(k + 1) % 3] - p[k]; }  // corner k to corner k + 1
-  glm::dvec3 twice_area_normal() const { return glm::cross(p[1] - p[0], p[2] - p[0]); }
-};
-
-inline Triangle triangle(const Mesh& mesh, uint32_t f) {
-  const auto& t = mesh.triangles[f];
-  return {{mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]}};
-}
-
-// Per edge, beta(e) / |e| (0 for a zero-length edge): the edge's term of T is then
-// beta |e ∩ B| e eᵀ = beta / |e| x (|e ∩ B| / |e|) d dᵀ, with d = to - from.
-std::vector<double> edge_beta_per_length(const Mesh& mesh, const MeshTopology& topo);
-
 // beta(e): the signed angle from n0 to n1 (normals of any length) about the edge,
 // `along` running the way face 0 (normal n0) runs along it; > 0 where the edge is convex.
 // atan2 keeps it accurate near 0 and pi, where acos(n0.n1) loses the sign and half the
