@@ -64,8 +64,15 @@ void main() {
   vec2 p = gl_FragCoord.xy;
   vec3 w = bary_gouraud.xyz;
   vec3 n = paper_effect ? texelFetch(paper_normal, wrapped_texel(x, textureSize(paper_normal, 0)), 0).xyz : vec3(0.0);
-  float c = blended(p, w, texelFetch(theta_min, x, 0).xyz, r, n);
   float h = crosshatch ? 1.0 - smoothstep(interior.crosshatch_below - interior.crosshatch_band, interior.crosshatch_below, i) : 0.0;
-  if (h > 0.0) c *= 1.0 + (blended(p, w, texelFetch(theta_max, x, 0).xyz, r, n) - 1.0) * h;  // (2.9)
+  // c with the min-curvature angles, then times 1 + (c_max - 1) h where h > 0 (2.9). A
+  // loop, not an if: llvmpipe leaves a loop once no pixel of a block runs it, but runs
+  // both sides of an if, so unhatched blocks would pay for the hatching.
+  float c = 1.0;
+  for (int k = 0; k < (h > 0.0 ? 2 : 1); ++k) {
+    vec3 theta = k == 0 ? texelFetch(theta_min, x, 0).xyz : texelFetch(theta_max, x, 0).xyz;
+    float b = blended(p, w, theta, r, n);
+    c = k == 0 ? b : c * (1.0 + (b - 1.0) * h);
+  }
   interior_darkness = 1.0 - c;
 }
