@@ -31,10 +31,7 @@ TEST_F(MultiContourParity, FiveCopiesOnFandisk) {
 
 // Without shaking and texture, k copies of a line of darkness d give 1 - (1 - alpha d)^k.
 TEST(MultiContourReference, OverlappingCopiesDarkenAsAProduct) {
-  ParamSet set;
-  set.set("contour.copies", 3.0);
-  set.set("contour.texture_strength", 0.0);
-  auto p = set.get<ContourParams>();
+  auto p = testing::untextured_contours(3, 16);
   Image lit(16, 16, 1, 0.5f);
   std::vector<Image> still(3, Image(3, 3, 2, 0.0f));
   std::vector<glm::vec2> shifts(3, glm::vec2(0));
@@ -45,11 +42,7 @@ TEST(MultiContourReference, OverlappingCopiesDarkenAsAProduct) {
 
 // A shift of the grid moves the contour: a one-pixel line lands `dx` pixels away.
 TEST(MultiContourReference, OffsetsMoveTheContour) {
-  ParamSet set;
-  set.set("contour.copies", 1.0);
-  set.set("contour.texture_strength", 0.0);
-  set.set("contour.grid_cell", 4.0);
-  auto p = set.get<ContourParams>();
+  auto p = testing::untextured_contours(1, 4);
   Image lit(16, 16, 1, 0.0f);
   for (int y = 0; y < 16; ++y) lit.at(8, y) = 1.0f;
   Image shift(5, 5, 2, 0.0f);

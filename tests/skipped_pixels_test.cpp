@@ -40,11 +40,7 @@ INSTANTIATE_TEST_SUITE_P(BackgroundPairs, SkippedPixels, ::testing::Values("cont
 // the farthest pixel a copy can darken right past a block's edge: a reach cut by a pixel
 // misses it.
 TEST_F(SkippedPixels, MultiContourFindsDotsAtTheFullReachOfTheOffsets) {
-  ParamSet set;
-  set.set("contour.copies", 2.0);
-  set.set("contour.texture_strength", 0.0);
-  set.set("contour.grid_cell", 8.0);
-  auto p = set.get<ContourParams>();
+  auto p = testing::untextured_contours(2, 8);
   Image lit(72, 56, 1, 0.0f);
   for (auto [x, y] : {std::pair{16, 16}, {31, 31}, {40, 47}, {55, 8}}) lit.at(x, y) = 1.0f;
   const float reach = 5.3f;  // a fraction of a texel: the farthest read has weight 0.3

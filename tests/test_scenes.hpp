@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <string>
 
+#include "common/distortion.hpp"
+#include "common/params.hpp"
 #include "common/scene.hpp"
 #include "gpu/context.hpp"
 
@@ -26,6 +28,15 @@ inline Scene builtin_at(const std::string& name, int width, int height) {
   s.width = width;
   s.height = height;
   return s;
+}
+
+// Multiple-contour parameters without the contour texture: each copy lays down alpha d'.
+inline ContourParams untextured_contours(int copies, int grid_cell) {
+  ParamSet set;
+  set.set("contour.copies", double(copies));
+  set.set("contour.texture_strength", 0.0);
+  set.set("contour.grid_cell", double(grid_cell));
+  return set.get<ContourParams>();
 }
 
 // Any GL error a test causes fails that test.
