@@ -6,6 +6,7 @@
 
 #include "common/edge_detect.hpp"
 #include "common/interior.hpp"
+#include "common/mesh_topology.hpp"
 #include "common/pencil_interior.hpp"
 
 namespace plumbago::gpu {
@@ -51,6 +52,33 @@ std::vector<VertexCurvature> vertex_curvature(const WorldObject& obj) {
   for (size_t v = 0; v < out.size(); ++v)
     out[v] = {glm::vec4(obj.positions[v], 0), glm::vec4(obj.d_min[v], 0), glm::vec4(obj.d_max[v], 0)};
   return out;
+}
+
+// The faces that can never be the nearest surface when the object is seen from outside:
+// where every edge joins two faces that run along it in opposite directions (no face
+// split off, no boundary edge), the surface is closed and oriented, and a ray from outside
+// enters it before it leaves, so its first hit faces the camera. Its signed volume says
+// whether the triangles turn counter-clockwise seen from outside (GL_BACK faces hidden) or
+// clockwise (GL_FRONT); GL_NONE for an open, non-manifold or flat mesh.
+GLenum hidden_faces(const Mesh& mesh, const WorldObject& obj) {
+  MeshTopology topology = build_topology(mesh);
+  bool closed = topology.split_faces == 0 &&
+                std::none_of(topology.edges.begin(), topology.edges.end(), [](const MeshTopology::Edge& e) { return e.face[1] < 0; });
+  if (!closed) return GL_NONE;
+  double volume = 0;  // 6x the signed volume, in world space (a mirroring transform flips it)
+  for (const glm::uvec3& t : obj.triangles)
+    volume += glm::dot(glm::dvec3(obj.positions[t[0]]), glm::cross(glm::dvec3(obj.positions[t[1]]), glm::dvec3(obj.positions[t[2]])));
+  return volume > 0 ? GL_BACK : volume < 0 ? GL_FRONT : GL_NONE;
+}
+
+// Whether the camera sees the box [lo, hi] whole, from outside: every corner beyond the
+// near plane (a camera inside a closed surface has some of it behind itself).
+bool beyond_near_plane(const glm::mat4& view, float near, const glm::vec3& lo, const glm::vec3& hi) {
+  for (int c = 0; c < 8; ++c) {
+    glm::vec3 corner(c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z);
+    if (-(view * glm::vec4(corner, 1.0f)).z <= near) return false;
+  }
+  return true;
 }
 
 // With the vertex array bound: attribute `index` reads `size` floats at `offset` of the
@@ -135,9 +163,17 @@ GBufferPass::GBufferPass(const Scene& scene, const std::vector<Curvature>& curva
       angles_program_(has_curvature_ ? std::make_unique<Program>(Program::compute("corner_angles.comp", glsl_params<InteriorParams>()))
                                      : nullptr),
       fbo_(make_framebuffer()) {
-  for (const WorldObject& obj : world_geometry(scene, curvature)) {
+  std::vector<WorldObject> objects = world_geometry(scene, curvature);
+  for (size_t i = 0; i < objects.size(); ++i) {
+    const WorldObject& obj = objects[i];
     std::vector<Corner> soup = triangle_soup(obj);
     Batch b{make_buffer(soup.data(), soup.size() * sizeof(Corner)), {}, {}, {}, make_vertex_array(), GLsizei(soup.size())};
+    b.hidden_faces = hidden_faces(*scene.objects[i].mesh, obj);
+    b.box_min = b.box_max = obj.positions.front();
+    for (const glm::vec3& p : obj.positions) {
+      b.box_min = glm::min(b.box_min, p);
+      b.box_max = glm::max(b.box_max, p);
+    }
     glBindVertexArray(b.layout.id());
     glBindVertexBuffer(0, b.vertices.id(), 0, sizeof(Corner));
     describe_attribute(0, 3, offsetof(Corner, position));
@@ -256,19 +292,31 @@ void GBufferPass::render(const Scene& scene, GBufferTargets& t, const GBufferCha
   glViewport(0, 0, w, h);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);
   const Program& program = program_for(channels);
   glUseProgram(program.id());
   glUniformMatrix4fv(program.uniform("view"), 1, GL_FALSE, glm::value_ptr(view));
   glUniformMatrix4fv(program.uniform("projection"), 1, GL_FALSE, glm::value_ptr(projection));
   glUniform1i(program.uniform("has_curvature"), has_curvature_);
+  culled_objects_ = 0;
   for (size_t i = 0; i < batches_.size(); ++i) {
+    const Batch& b = batches_[i];
+    // Culling the faces that cannot be seen leaves the image as it was, and halves the
+    // triangles llvmpipe rasterizes (fandisk, every effect: -4.5 ms of 14 a frame).
+    bool cull = culling_ && b.hidden_faces != GL_NONE && beyond_near_plane(view, cam.near, b.box_min, b.box_max);
+    if (cull) {
+      glEnable(GL_CULL_FACE);
+      glCullFace(b.hidden_faces);
+      ++culled_objects_;
+    } else {
+      glDisable(GL_CULL_FACE);
+    }
     glUniform1ui(program.uniform("object_id"), GLuint(i + 1));
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, batches_[i].vertex_angles.id());
-    glBindVertexArray(batches_[i].layout.id());
-    glDrawArrays(GL_TRIANGLES, 0, batches_[i].corners);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, b.vertex_angles.id());
+    glBindVertexArray(b.layout.id());
+    glDrawArrays(GL_TRIANGLES, 0, b.corners);
   }
   glBindVertexArray(0);
+  glDisable(GL_CULL_FACE);
   glDisable(GL_DEPTH_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }

@@ -51,6 +51,11 @@ class GBufferPass {
   void render(const Scene& scene, GBufferTargets& targets, const GBufferChannels& channels = {});
   // The depth buffer of the last render: what later geometry (a depth sprite) is tested against.
   const Renderbuffer& depth_buffer() const { return depth_test_; }
+  // Faces that cannot be seen are culled: of a closed, oriented object whose bounding box is
+  // wholly beyond the near plane (gpu/gbuffer.cpp hidden_faces). Tests turn it off to
+  // compare; culled_objects() counts the objects the last render() culled.
+  void set_culling(bool on) { culling_ = on; }
+  int culled_objects() const { return culled_objects_; }
 
  private:
   struct Batch {
@@ -58,6 +63,8 @@ class GBufferPass {
     VertexArray layout;
     GLsizei corners = 0;
     GLuint mesh_vertices = 0;
+    GLenum hidden_faces = GL_NONE;  // GL_BACK, GL_FRONT, or GL_NONE: never culled
+    glm::vec3 box_min{0}, box_max{0};  // world space
   };
   void compute_corner_angles(const glm::mat4& view_projection, int w, int h, float fov_deg, const InteriorParams& p);
   // The program variant that writes exactly `channels` (compiled on first use).
@@ -69,6 +76,8 @@ class GBufferPass {
   Framebuffer fbo_;
   Renderbuffer depth_test_;
   int depth_test_width_ = 0, depth_test_height_ = 0;
+  bool culling_ = true;
+  int culled_objects_ = 0;
 };
 
 }  // namespace plumbago::gpu

@@ -3,7 +3,10 @@
 // only in the one-pixel band along depth discontinuities, whose share is printed.
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "apps/parity.hpp"
+#include "gpu/gbuffer.hpp"
 #include "tests/test_scenes.hpp"
 
 namespace plumbago {
@@ -35,6 +38,98 @@ TEST_F(GBufferParity, Fandisk) {
 TEST_F(GBufferParity, StanfordBunny) {
   PLUMBAGO_REQUIRE_MODEL("stanford-bunny.obj");
   expect_gbuffer_parity(testing::model_scene("stanford-bunny.obj", 800, 800), "stanford-bunny");
+}
+
+// The raster G-buffer with and without culling the faces gpu/gbuffer.cpp takes for hidden.
+struct CulledAndNot {
+  GBuffer culled, whole;
+  int culled_objects = 0;
+};
+
+CulledAndNot render_culled_and_not(const Scene& scene) {
+  gpu::GBufferTargets targets = gpu::make_gbuffer_targets(scene.width, scene.height, GBufferFormat::RGBA32F);
+  gpu::GBufferPass pass(scene);
+  CulledAndNot out;
+  pass.render(scene, targets);
+  out.culled = gpu::download_gbuffer(targets);
+  out.culled_objects = pass.culled_objects();
+  pass.set_culling(false);
+  pass.render(scene, targets);
+  out.whole = gpu::download_gbuffer(targets);
+  EXPECT_EQ(pass.culled_objects(), 0);
+  return out;
+}
+
+// Culling may change which of two faces wins a pixel only where their depths tie (along
+// silhouettes, where a back face meets the front face it folds into); it never uncovers
+// or covers a pixel. Returns how many pixels changed face.
+int expect_same_surface(const CulledAndNot& r, const std::string& label) {
+  int changed = 0, uncovered_or_covered = 0, not_tied = 0;
+  const GBuffer &a = r.culled, &b = r.whole;
+  for (int y = 0; y < a.ids.height; ++y)
+    for (int x = 0; x < a.ids.width; ++x) {
+      uncovered_or_covered += a.ids.at(x, y, 0) != b.ids.at(x, y, 0);
+      if (a.ids.at(x, y, 1) == b.ids.at(x, y, 1)) continue;
+      ++changed;
+      not_tied += std::abs(a.depth.at(x, y) - b.depth.at(x, y)) > 1e-4f * b.depth.at(x, y);
+    }
+  std::printf("[gbuffer culling %s] %d culled object(s); %d of %d pixels show another face (depth tie)\n", label.c_str(),
+              r.culled_objects, changed, a.ids.width * a.ids.height);
+  EXPECT_EQ(uncovered_or_covered, 0) << label << ": pixels whose object changed";
+  EXPECT_EQ(not_tied, 0) << label << ": pixels that show another face at another depth";
+  EXPECT_LE(changed, a.ids.width * a.ids.height / 1000) << label;
+  return changed;
+}
+
+Scene builtin_with_mesh(const std::string& name, Mesh mesh) {
+  Scene s = testing::builtin_at(name, 400, 300);
+  s.objects.at(0).mesh = std::make_shared<const Mesh>(std::move(mesh));
+  return s;
+}
+
+using GBufferCulling = testing::GlTest;
+
+TEST_F(GBufferCulling, ClosedObjectsSeenFromOutsideLoseOnlyHiddenFaces) {
+  for (const std::string& name : {"sphere", "torus", "cad"}) {
+    CulledAndNot r = render_culled_and_not(testing::builtin_at(name, 400, 300));
+    EXPECT_EQ(r.culled_objects, 1) << name;
+    expect_same_surface(r, name);
+  }
+  // Triangles turning clockwise seen from outside (negative volume): the other faces hide.
+  Scene inside_out = testing::builtin_at("sphere", 400, 300);
+  Mesh flipped = *inside_out.objects[0].mesh;
+  for (glm::uvec3& t : flipped.triangles) std::swap(t[1], t[2]);
+  CulledAndNot r = render_culled_and_not(builtin_with_mesh("sphere", flipped));
+  EXPECT_EQ(r.culled_objects, 1);
+  expect_same_surface(r, "sphere, clockwise triangles");
+  // A mirroring transform turns counter-clockwise triangles clockwise in the world.
+  Scene mirrored = testing::builtin_at("torus", 400, 300);
+  mirrored.objects[0].transform = glm::scale(glm::mat4(1.0f), glm::vec3(-1, 1, 1)) * mirrored.objects[0].transform;
+  r = render_culled_and_not(mirrored);
+  EXPECT_EQ(r.culled_objects, 1);
+  expect_same_surface(r, "torus, mirrored");
+}
+
+TEST_F(GBufferCulling, Fandisk) {
+  PLUMBAGO_REQUIRE_MODEL("fandisk.obj");
+  CulledAndNot r = render_culled_and_not(testing::model_scene("fandisk.obj", 800, 800));
+  EXPECT_EQ(r.culled_objects, 1);
+  expect_same_surface(r, "fandisk");
+}
+
+TEST_F(GBufferCulling, NothingIsCulledWhereTheInsideCanShow) {
+  // The camera inside a closed sphere: every face it sees is a back face.
+  Scene inside = testing::builtin_at("sphere", 400, 300);
+  inside.camera.eye = inside.camera.target + 0.1f * (inside.camera.eye - inside.camera.target) / glm::length(inside.camera.eye - inside.camera.target);
+  inside.camera.near = 0.01f;
+  CulledAndNot r = render_culled_and_not(inside);
+  EXPECT_EQ(r.culled_objects, 0);
+  EXPECT_EQ(expect_same_surface(r, "camera inside the sphere"), 0);
+  // An open mesh: the sphere without one triangle.
+  Mesh open = *testing::builtin_at("sphere", 400, 300).objects[0].mesh;
+  open.triangles.pop_back();
+  r = render_culled_and_not(builtin_with_mesh("sphere", open));
+  EXPECT_EQ(r.culled_objects, 0);
 }
 
 }  // namespace
