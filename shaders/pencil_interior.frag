@@ -12,18 +12,19 @@ uniform sampler2D theta_max;
 uniform usampler2D ids;
 uniform sampler3D pencil_stack;   // LINEAR; REPEAT in s, t; CLAMP_TO_EDGE in r
 uniform sampler2D paper_normal;   // read texel for pixel, wrapping
-uniform bool crosshatch;
-uniform bool paper_effect;
 uniform float mu_p;
+// The choices are compiled in (gpu/pencil_interior.cpp): llvmpipe runs both sides of an if,
+// even on a uniform, so a Gouraud frame would pay for the Phong normal's fetch and lights.
+const bool phong = PHONG != 0, nearest_corner = NEAREST_CORNER != 0;
+const bool crosshatch = CROSSHATCH != 0, paper_effect = PAPER_EFFECT != 0;
 
 layout(location = 0) out float interior_darkness;
 layout(location = 1) out float interior_intensity;
 
 // I' = sqrt(I), I Gouraud or Phong (SPEC 2.5)
 float adjusted_intensity(ivec2 x, float gouraud) {
-  float i = interior.shading == INTERIOR_SHADING_GOURAUD
-                ? gouraud
-                : clamp(interior.ambient + interior.diffuse * light_sum(texelFetch(normals, x, 0).xyz), 0.0, 1.0);
+  float i = phong ? clamp(interior.ambient + interior.diffuse * light_sum(texelFetch(normals, x, 0).xyz), 0.0, 1.0)
+                  : gouraud;
   return interior.brightness_sqrt ? sqrt(i) : i;
 }
 
@@ -37,7 +38,7 @@ float corner_sample(vec2 p, float theta, float r, vec3 n) {
 
 // The corners' weights: the barycentrics, or a one-hot of the largest (common/interior.hpp).
 vec3 blend_weights(vec3 w) {
-  if (interior.blend == INTERIOR_BLEND_THREE_WAY) return w;
+  if (!nearest_corner) return w;
   if (w.x >= w.y && w.x >= w.z) return vec3(1.0, 0.0, 0.0);
   return w.y >= w.z ? vec3(0.0, 1.0, 0.0) : vec3(0.0, 0.0, 1.0);
 }
