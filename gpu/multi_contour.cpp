@@ -1,5 +1,6 @@
 #include "gpu/multi_contour.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace plumbago::gpu {
@@ -28,14 +29,23 @@ ContourInputs make_contour_inputs(const ContourParams& p, const std::vector<Imag
 namespace {
 constexpr int kBlock = 8;  // pixels per side of a block of contour_blocks.frag
 const std::string kBlockDefine = "#define CONTOUR_BLOCK " + std::to_string(kBlock) + "\n";
+
+// How many blocks away a pixel's copies can read. A copy of pixel p reads d' bilinearly at
+// p + offset, |offset| <= reach = largest_offset + 0.5 (a bilinearly filtered offset can
+// exceed its corners' largest value by a rounding error, never by that much): texels
+// floor(p - reach - 0.5) to floor(p + reach - 0.5) + 1. With p = 8b + 0.5 + i (kBlock = 8), i in 0..7,
+// that is from 8b - ceil(reach) to 8b + 8 + floor(reach): blocks b - D to b + D with
+// D = 1 + floor(reach / 8).
+int block_reach(float largest_offset) { return 1 + int(std::floor((largest_offset + 0.5f) / float(kBlock))); }
 }  // namespace
 
 MultiContourPass::MultiContourPass()
     : program_("fullscreen.vert", "multi_contour.frag", glsl_params<ContourParams>() + kBlockDefine),
-      blocks_program_("fullscreen.vert", "contour_blocks.frag", kBlockDefine) {
+      blocks_program_("fullscreen.vert", "contour_blocks.frag", kBlockDefine),
+      reach_program_("fullscreen.vert", "contour_block_reach.frag") {
   glProgramUniform1i(program_.id(), program_.uniform("lit_contour_darkness"), 0);
   glProgramUniform1i(program_.id(), program_.uniform("copy_inputs"), 1);
-  glProgramUniform1i(program_.id(), program_.uniform("block_max"), 2);
+  glProgramUniform1i(program_.id(), program_.uniform("block_reach_max"), 2);
 }
 
 void MultiContourPass::run(const Texture& lit, const ContourInputs& in, const ContourParams& p, Texture& out,
@@ -45,12 +55,14 @@ void MultiContourPass::run(const Texture& lit, const ContourInputs& in, const Co
   program_.set_params(p);
   set_sampling(lit, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
   int blocks_x = (lit.width + kBlock - 1) / kBlock, blocks_y = (lit.height + kBlock - 1) / kBlock;
-  if (block_max_.width != blocks_x || block_max_.height != blocks_y) block_max_ = make_texture(blocks_x, blocks_y, GL_R32F);
+  if (block_max_.width != blocks_x || block_max_.height != blocks_y) {
+    block_max_ = make_texture(blocks_x, blocks_y, GL_R32F);
+    block_reach_max_ = make_texture(blocks_x, blocks_y, GL_R32F);
+  }
   pass_.draw(blocks_program_, {&lit}, block_max_);
-  // Half a pixel more than the largest offset: a bilinearly filtered offset can exceed its
-  // corners' largest value by a rounding error, never by that much.
-  glProgramUniform1f(program_.id(), program_.uniform("reach"), in.largest_offset + 0.5f);
-  pass_.draw_inside(program_, {&lit, &in.copy_inputs, &block_max_}, {&out}, covered,
+  glProgramUniform1i(reach_program_.id(), reach_program_.uniform("block_reach"), block_reach(in.largest_offset));
+  pass_.draw(reach_program_, {&block_max_}, block_reach_max_);
+  pass_.draw_inside(program_, {&lit, &in.copy_inputs, &block_reach_max_}, {&out}, covered,
                     {glm::vec4(0.0f)});
 }
 

@@ -23,14 +23,15 @@ class MultiContourPass {
   // `lit` must be sampled LINEAR/CLAMP_TO_EDGE (set here); writes D_c into `out` (R32F).
   // `in` was made with `p` at lit's size.
   // Only `covered` (common/distortion.hpp contour_rect) runs the shader; outside it D_c = 0.
-  // Inside it, pixels whose copies can only read d' = 0 (found from the largest d' of each
-  // block of pixels, contour_blocks.frag) are not shaded either: their D_c is 0 too.
+  // Inside it, blocks of pixels whose copies can only read d' = 0 (found from the largest
+  // d' of each block, contour_blocks.frag, and of the blocks within the copies' reach,
+  // contour_block_reach.frag) are not shaded either: their D_c is 0 too.
   void run(const Texture& lit, const ContourInputs& in, const ContourParams& p, Texture& out, const PixelRect& covered);
 
  private:
-  Program program_, blocks_program_;
+  Program program_, blocks_program_, reach_program_;
   FullscreenPass pass_;
-  Texture block_max_;
+  Texture block_max_, block_reach_max_;
 };
 
 }  // namespace plumbago::gpu
