@@ -18,4 +18,8 @@ double segment_fraction_in_ball(const glm::dvec3& p, const glm::dvec3& q, const 
 double triangle_area_in_ball(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& d, const glm::dvec3& c,
                              double r);
 
+// The same with the triangle's N = (b - a) x (d - a) and |N| already known.
+double triangle_area_in_ball(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& d, const glm::dvec3& c,
+                             double r, const glm::dvec3& N, double N_length);
+
 }  // namespace plumbago

@@ -49,43 +49,49 @@ std::vector<double> edge_beta_per_length(const Mesh& mesh, const MeshTopology& t
   return coefficient;
 }
 
-// Per-thread marks of the faces and edges already visited for the current vertex (only
-// the ball uses them: the 1-ring's few edges are kept in the short `queue`).
+// Where a face stands in the current vertex's ball: queued as the `position`-th face
+// (stamp = the current vertex's), or not yet (any other stamp).
+struct FaceMark {
+  uint32_t stamp = 0, position = 0;
+};
+
+// Per-thread marks of the faces queued for the current vertex (only the ball uses them:
+// the 1-ring's few edges are kept in the short `queue`).
 struct Scratch {
-  std::vector<uint32_t> face_mark, edge_mark, queue;
+  std::vector<FaceMark> mark;
+  std::vector<uint32_t> queue;
   uint32_t stamp = 0;
-  Scratch(size_t faces, size_t edges) : face_mark(faces, 0), edge_mark(edges, 0) {}
+  explicit Scratch(size_t faces) : mark(faces) {}
   void next_vertex() {
     if (++stamp == 0) {
-      std::fill(face_mark.begin(), face_mark.end(), 0);
-      std::fill(edge_mark.begin(), edge_mark.end(), 0);
+      std::fill(mark.begin(), mark.end(), FaceMark{});
       stamp = 1;
     }
     queue.clear();
   }
-  bool first_visit(std::vector<uint32_t>& marks, uint32_t i) {
-    if (marks[i] == stamp) return false;
-    marks[i] = stamp;
-    return true;
-  }
+  bool queued(uint32_t f) const { return mark[f].stamp == stamp; }
   void enqueue_face(uint32_t f) {
-    if (first_visit(face_mark, f)) queue.push_back(f);
+    if (queued(f)) return;
+    mark[f] = {stamp, uint32_t(queue.size())};
+    queue.push_back(f);
+  }
+  // An edge is counted by the first of its faces to leave the queue: the face at
+  // `position` counts its side towards `other` unless `other` left the queue before it.
+  bool counts_side(int32_t other, uint32_t position) const {
+    return other < 0 || !queued(uint32_t(other)) || mark[uint32_t(other)].position > position;
   }
 };
 
-// What the ball reads about a face and an edge, each in one record: the ball visits
-// faces in no useful order, and one record is one or two cache lines where the mesh,
-// the topology and the edge coefficients would be five or six.
+// What the ball reads about a face, in one record: the ball visits faces in no useful
+// order, and one record is two cache lines where the mesh, the topology and the edge
+// coefficients would be five or six. Each side's beta / |e| is kept in both faces of
+// its edge, and each side knows the face across it, so the ball never reads an edge.
 struct BallFace {
   glm::vec3 corner[3];
-  std::array<uint32_t, 3> edges;
-  glm::dvec3 twice_area_normal;  // N
+  int32_t neighbor[3];             // the face across side k (corner k to k + 1), -1 if none
+  double beta_per_length[3];       // of side k's edge
+  glm::dvec3 twice_area_normal;    // N
   double N_length;
-};
-
-struct BallEdge {
-  double beta_per_length;
-  int32_t face[2];
 };
 
 struct Surface {
@@ -93,22 +99,21 @@ struct Surface {
   const MeshTopology& topo;
   std::vector<double> beta_per_length;
   std::vector<BallFace> faces;  // for the ball only
-  std::vector<BallEdge> edges;
 };
 
 void fill_ball_records(Surface& g) {
   assign_populated(g.faces, g.mesh.triangles.size());
   tbb::parallel_for(size_t(0), g.faces.size(), [&](size_t f) {
     BallFace& face = g.faces[f];
-    for (int k = 0; k < 3; ++k) face.corner[k] = g.mesh.positions[g.mesh.triangles[f][k]];
-    face.edges = g.topo.face_edges[f];
+    for (int k = 0; k < 3; ++k) {
+      face.corner[k] = g.mesh.positions[g.mesh.triangles[f][k]];
+      uint32_t e = g.topo.face_edges[f][k];
+      const auto& edge = g.topo.edges[e];
+      face.neighbor[k] = edge.face[0] == int32_t(f) ? edge.face[1] : edge.face[0];
+      face.beta_per_length[k] = g.beta_per_length[e];
+    }
     face.twice_area_normal = triangle(g.mesh, uint32_t(f)).twice_area_normal();
     face.N_length = glm::length(face.twice_area_normal);
-  });
-  assign_populated(g.edges, g.topo.edges.size());
-  tbb::parallel_for(size_t(0), g.edges.size(), [&](size_t e) {
-    const auto& edge = g.topo.edges[e];
-    g.edges[e] = {g.beta_per_length[e], {edge.face[0], edge.face[1]}};
   });
 }
 
@@ -131,28 +136,28 @@ BallSums one_ring_sums(uint32_t v, const Surface& g, Scratch& s) {
   return sums;
 }
 
-// Face f's part of the ball (c, r), clipped exactly: its area, and the edges not yet
-// seen that reach into the ball; the faces across those edges are queued.
-void add_face_in_ball(uint32_t f, const glm::dvec3& c, double r, const Surface& g, Scratch& s, BallSums& sums) {
-  const BallFace& face = g.faces[f];
+// The face at queue position i, clipped exactly to the ball (c, r): its area, and the
+// sides it counts (see Scratch::counts_side) that reach into the ball; the faces
+// across those sides are queued.
+void add_face_in_ball(uint32_t i, const glm::dvec3& c, double r, const Surface& g, Scratch& s, BallSums& sums) {
+  const BallFace& face = g.faces[s.queue[i]];
   const glm::dvec3 p[3] = {face.corner[0], face.corner[1], face.corner[2]};
   bool inside[3];
   for (int k = 0; k < 3; ++k) inside[k] = glm::dot(p[k] - c, p[k] - c) <= r * r;
   if (inside[0] && inside[1] && inside[2])
     sums.add_whole_face(face.twice_area_normal, face.N_length);
   else
-    sums.add_face(triangle_area_in_ball(p[0], p[1], p[2], c, r), face.twice_area_normal, face.N_length);
+    sums.add_face(triangle_area_in_ball(p[0], p[1], p[2], c, r, face.twice_area_normal, face.N_length),
+                  face.twice_area_normal, face.N_length);
   for (int k = 0; k < 3; ++k) {
-    uint32_t e = face.edges[k];
-    if (!s.first_visit(s.edge_mark, e)) continue;
-    const BallEdge& edge = g.edges[e];
+    const int32_t other = face.neighbor[k];
+    if (!s.counts_side(other, i)) continue;
     const glm::dvec3 side = p[(k + 1) % 3] - p[k];
     bool whole = inside[k] && inside[(k + 1) % 3] && side != glm::dvec3(0);
     double fraction = whole ? 1.0 : segment_fraction_in_ball(p[k], p[(k + 1) % 3], c, r);
     if (!(fraction > 0)) continue;
-    sums.tensor.add(fraction * edge.beta_per_length, side);
-    for (int32_t other : edge.face)
-      if (other >= 0) s.enqueue_face(uint32_t(other));
+    sums.tensor.add(fraction * face.beta_per_length[k], side);
+    if (other >= 0) s.enqueue_face(uint32_t(other));
   }
 }
 
@@ -162,7 +167,7 @@ BallSums ball_sums(uint32_t v, double r, const Surface& g, Scratch& s) {
   BallSums sums;
   const glm::dvec3 c = g.mesh.positions[v];
   for (uint32_t f : g.topo.faces_of(v)) s.enqueue_face(f);
-  for (size_t next = 0; next < s.queue.size(); ++next) add_face_in_ball(s.queue[next], c, r, g, s, sums);
+  for (uint32_t i = 0; i < s.queue.size(); ++i) add_face_in_ball(i, c, r, g, s, sums);
   return sums;
 }
 
@@ -178,10 +183,10 @@ double ring_radius(uint32_t v, const Mesh& mesh, const MeshTopology& topo) {
 void for_each_vertex_sums(const Mesh& mesh, const MeshTopology& topo, const CurvatureParams& p, Progress& progress,
                            const std::function<void(uint32_t, const BallSums&)>& f) {
   const bool ball = p.radius > 0;
-  Surface g{mesh, topo, edge_beta_per_length(mesh, topo), {}, {}};
+  Surface g{mesh, topo, edge_beta_per_length(mesh, topo), {}};
   if (ball) fill_ball_records(g);
   const double radius = double(p.radius) * double(mesh.bbox_diagonal());
-  tbb::enumerable_thread_specific<Scratch> scratch(ball ? mesh.triangles.size() : 0, ball ? topo.edges.size() : 0);
+  tbb::enumerable_thread_specific<Scratch> scratch(ball ? mesh.triangles.size() : 0);
   const uint32_t n = uint32_t(mesh.positions.size());
   tbb::parallel_for(tbb::blocked_range<uint32_t>(0, n, 1024), [&](const tbb::blocked_range<uint32_t>& range) {
     Scratch& s = scratch.local();
