@@ -66,6 +66,7 @@ class GBufferPass {
     GLenum hidden_faces = GL_NONE;  // GL_BACK, GL_FRONT, or GL_NONE: never culled
     glm::vec3 box_min{0}, box_max{0};  // world space
   };
+  void draw_background(const GBufferChannels& channels, const bool wanted[8], float far);
   void compute_corner_angles(const glm::mat4& view_projection, int w, int h, float fov_deg, const InteriorParams& p);
   // The program variant that writes exactly `channels` (compiled on first use).
   const Program& program_for(const GBufferChannels& channels);
@@ -73,7 +74,9 @@ class GBufferPass {
   std::vector<Batch> batches_;  // one per object
   bool has_curvature_;
   std::unique_ptr<Program> angles_program_;  // corner_angles.comp, with curvature
+  Program background_program_;
   Framebuffer fbo_;
+  VertexArray empty_;  // for the background's full-window triangle
   Renderbuffer depth_test_;
   int depth_test_width_ = 0, depth_test_height_ = 0;
   bool culling_ = true;

@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "apps/parity.hpp"
+#include "common/passes.hpp"
 #include "gpu/gbuffer.hpp"
 #include "tests/test_scenes.hpp"
 
@@ -130,6 +131,51 @@ TEST_F(GBufferCulling, NothingIsCulledWhereTheInsideCanShow) {
   open.triangles.pop_back();
   r = render_culled_and_not(builtin_with_mesh("sphere", open));
   EXPECT_EQ(r.culled_objects, 0);
+}
+
+// Renders the sphere, then the same sphere from a camera moved sideways, into the same
+// targets: the pixels the first render covered and the second does not must hold the
+// background values of SPEC 2.1 again. Returns how many such pixels there were.
+int expect_second_render_leaves_no_trace(const gpu::GBufferChannels& channels, const std::string& label) {
+  Scene scene = testing::builtin_at("sphere", 200, 150);
+  gpu::GBufferTargets targets = gpu::make_gbuffer_targets(scene.width, scene.height, GBufferFormat::RGBA32F);
+  gpu::GBufferPass pass(scene);
+  pass.render(scene, targets, channels);
+  ImageU32 first_ids = gpu::download_texture_u32(targets.ids, 2);
+  glm::vec3 side = glm::normalize(glm::cross(scene.camera.forward(), scene.camera.up));
+  float shift = 0.4f * glm::length(scene.camera.eye - scene.camera.target);
+  scene.camera.eye += shift * side;
+  scene.camera.target += shift * side;
+  pass.render(scene, targets, channels);
+  GBuffer g = gpu::download_gbuffer(targets);
+  Image normal = gpu::download_texture(targets.normal, 4), face_normal = gpu::download_texture(targets.face_normal, 4);
+  const PixelRect& r = channels.read_region;
+  int uncovered = 0, wrong = 0;
+  for (int y = std::max(r.y0, 0); y < std::min(r.y1, scene.height); ++y)
+    for (int x = std::max(r.x0, 0); x < std::min(r.x1, scene.width); ++x) {
+      if (g.ids.at(x, y, 0) != 0) continue;
+      uncovered += first_ids.at(x, y, 0) != 0;
+      for (int c = 0; c < 3; ++c) wrong += (channels.normal && normal.at(x, y, c) != 0) + (channels.face_normal && face_normal.at(x, y, c) != 0);
+      wrong += (channels.normal && normal.at(x, y, 3) != g.far) + (channels.face_normal && face_normal.at(x, y, 3) != g.far);
+      if (!channels.object_only_background) continue;
+      for (int c = 0; c < 3; ++c) wrong += (g.bary.at(x, y, c) != 0) + (g.theta_min.at(x, y, c) != 0) + (g.theta_max.at(x, y, c) != 0);
+      wrong += (g.depth.at(x, y) != g.far) + (g.gouraud.at(x, y) != 1.0f);
+    }
+  std::printf("[gbuffer background %s] %d pixels covered only by the first render\n", label.c_str(), uncovered);
+  EXPECT_GT(uncovered, 100) << label << ": the camera did not move the sphere off enough pixels to test";
+  EXPECT_EQ(wrong, 0) << label << ": channel values of the first render left on the background";
+  return uncovered;
+}
+
+using GBufferBackground = testing::GlTest;
+
+TEST_F(GBufferBackground, ASecondRenderLeavesNoTraceOfTheFirstOnTheBackground) {
+  expect_second_render_leaves_no_trace(gpu::GBufferChannels{}, "every channel, whole window (a dump)");
+  Scene scene = testing::builtin_at("sphere", 200, 150);
+  scene.effects = {"contours", "interior", "crosshatch", "paper"};
+  gpu::GBufferChannels frame = gpu::channels_read_by(frame_stages(passes_for(scene.effects, scene.params)), scene);
+  frame.read_region = {0, 0, scene.width, scene.height};  // the moved sphere's region is elsewhere
+  expect_second_render_leaves_no_trace(frame, "a frame's channels");
 }
 
 }  // namespace
