@@ -35,72 +35,68 @@ double rough_angle2(glm::dvec2 u, glm::dvec2 v) {
   return x >= 0 ? quarter : std::copysign(kPi, y) - quarter;
 }
 
-// The boundary of the triangle in the disk's plane (disk at the origin), cut where it
-// crosses the circle: a piece inside the disk adds its triangle with the origin, a
-// piece outside adds the disk's sector over it (Σ signed areas = area of triangle ∩ disk).
-struct BoundaryPiece {
-  glm::dvec2 from, to;
-  bool outside;
+// Twice the signed area of triangle ∩ disk (disk at the origin, radius r), summed along
+// the triangle's boundary, cut where it crosses the circle: a piece inside the disk adds
+// its triangle with the origin (a cross product), a piece outside the disk's sector over
+// it (r² times its angle). Consecutive outside pieces form a run from `from` to `to`
+// whose angle needs one atan2: the angle from `from` to `to` is the sum of the pieces'
+// angles up to whole turns, and the pieces' rough angles (each within 0.071 rad) pick
+// the turn.
+class BoundaryWalk {
+ public:
+  explicit BoundaryWalk(double r) : r_(r), r2_(r * r) {}
+
+  // Side uv, whose corners are inside the disk or not.
+  void side(const glm::dvec2& u, const glm::dvec2& v, bool u_in, bool v_in) {
+    if (u_in && v_in) return inside(u, v);
+    double t0, t1;
+    if (!ball_interval(u, v, glm::dvec2(0), r_, t0, t1) || t1 <= 0 || t0 >= 1) return outside(u, v);
+    glm::dvec2 a = u_in ? u : u + t0 * (v - u), b = v_in ? v : u + t1 * (v - u);
+    if (!u_in) outside(u, a);
+    inside(a, b);
+    if (!v_in) outside(b, v);
+  }
+
+  double twice_area() {
+    end_run();
+    return twice_area_;
+  }
+
+ private:
+  void inside(const glm::dvec2& a, const glm::dvec2& b) {
+    end_run();
+    twice_area_ += cross2(a, b);
+  }
+  void outside(const glm::dvec2& a, const glm::dvec2& b) {
+    if (pieces_++ == 0) from_ = a;
+    to_ = b;
+    rough_ += rough_angle2(a, b);
+  }
+  void end_run() {
+    if (pieces_ == 0) return;
+    double angle = angle2(from_, to_);
+    if (pieces_ > 1) angle += 2 * kPi * std::nearbyint((rough_ - angle) / (2 * kPi));
+    twice_area_ += r2_ * angle;
+    pieces_ = 0, rough_ = 0;
+  }
+
+  double r_, r2_, twice_area_ = 0, rough_ = 0;
+  glm::dvec2 from_{0}, to_{0};
+  int pieces_ = 0;
 };
 
-// The pieces of side uv: inside the disk, outside, or outside-inside-outside.
-int side_pieces(const glm::dvec2& u, const glm::dvec2& v, double r, BoundaryPiece* out) {
-  double r2 = r * r;
-  bool u_in = glm::dot(u, u) <= r2, v_in = glm::dot(v, v) <= r2;
-  if (u_in && v_in) return out[0] = {u, v, false}, 1;
-  double t0, t1;
-  if (!ball_interval(u, v, glm::dvec2(0), r, t0, t1) || t1 <= 0 || t0 >= 1) return out[0] = {u, v, true}, 1;
-  glm::dvec2 a = u_in ? u : u + t0 * (v - u), b = v_in ? v : u + t1 * (v - u);
-  int n = 0;
-  if (!u_in) out[n++] = {u, a, true};
-  out[n++] = {a, b, false};
-  if (!v_in) out[n++] = {b, v, true};
-  return n;
-}
-
-// Sum of the angles of consecutive outside pieces (a run from `from` to `to` along the
-// triangle's boundary) with one atan2: the angle from `from` to `to` is that sum up to
-// whole turns, and the pieces' rough angles (each within 0.071 rad) pick the turn.
-struct OutsideRun {
-  glm::dvec2 from, to;
-  double rough = 0;
-  int pieces = 0;
-  void add(const BoundaryPiece& p) {
-    if (pieces++ == 0) from = p.from;
-    to = p.to;
-    rough += rough_angle2(p.from, p.to);
-  }
-  double angle() const {
-    double principal = angle2(from, to);
-    return principal + 2 * kPi * std::round((rough - principal) / (2 * kPi));
-  }
-};
-
-// Signed area of triangle (u, v, w) ∩ disk(origin, r), as the sum over its boundary
-// pieces, with one atan2 per run of outside pieces instead of one per piece.
+// Signed area of triangle ∩ disk(origin, r). The walk starts at a corner inside the disk
+// where there is one, so that no run is split in two (two atan2) at the start.
 double disk_triangle_area(const glm::dvec2 (&corner)[3], double r) {
-  BoundaryPiece piece[9];
-  int n = 0;
-  for (int k = 0; k < 3; ++k) n += side_pieces(corner[k], corner[(k + 1) % 3], r, piece + n);
-  int first = 0;  // after an inside piece, so that no run is split in two (two atan2) at the start
-  for (int i = 0; i < n; ++i)
-    if (!piece[i].outside) {
-      first = i + 1;
-      break;
-    }
-  double twice_area = 0, sector_angle = 0;
-  OutsideRun run;
-  for (int j = 0; j < n; ++j) {
-    const BoundaryPiece& p = piece[(first + j) % n];
-    if (p.outside) {
-      run.add(p);
-      continue;
-    }
-    if (run.pieces) sector_angle += run.angle(), run = {};
-    twice_area += cross2(p.from, p.to);
+  bool in[3];
+  for (int k = 0; k < 3; ++k) in[k] = glm::dot(corner[k], corner[k]) <= r * r;
+  const int first = in[0] ? 0 : in[1] ? 1 : in[2] ? 2 : 0;
+  BoundaryWalk walk(r);
+  for (int j = 0; j < 3; ++j) {
+    int k = (first + j) % 3, l = (k + 1) % 3;
+    walk.side(corner[k], corner[l], in[k], in[l]);
   }
-  if (run.pieces) sector_angle += run.angle();
-  return 0.5 * (twice_area + r * r * sector_angle);
+  return 0.5 * walk.twice_area();
 }
 
 }  // namespace

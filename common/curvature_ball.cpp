@@ -70,10 +70,11 @@ struct Scratch {
     queue.clear();
   }
   bool queued(uint32_t f) const { return mark[f].stamp == stamp; }
-  void enqueue_face(uint32_t f) {
-    if (queued(f)) return;
+  bool enqueue_face(uint32_t f) {
+    if (queued(f)) return false;
     mark[f] = {stamp, uint32_t(queue.size())};
     queue.push_back(f);
+    return true;
   }
   // An edge is counted by the first of its faces to leave the queue: the face at
   // `position` counts its side towards `other` unless `other` left the queue before it.
@@ -157,7 +158,7 @@ void add_face_in_ball(uint32_t i, const glm::dvec3& c, double r, const Surface& 
     double fraction = whole ? 1.0 : segment_fraction_in_ball(p[k], p[(k + 1) % 3], c, r);
     if (!(fraction > 0)) continue;
     sums.tensor.add(fraction * face.beta_per_length[k], side);
-    if (other >= 0) s.enqueue_face(uint32_t(other));
+    if (other >= 0 && s.enqueue_face(uint32_t(other))) __builtin_prefetch(&g.faces[uint32_t(other)]);
   }
 }
 
