@@ -163,6 +163,8 @@ GBufferPass::GBufferPass(const Scene& scene, const std::vector<Curvature>& curva
       angles_program_(has_curvature_ ? std::make_unique<Program>(Program::compute("corner_angles.comp", glsl_params<InteriorParams>()))
                                      : nullptr),
       background_program_("fullscreen.vert", "gbuffer_background.frag", "#define FULLSCREEN_Z 1.0\n"),
+      programs_("gbuffer.vert", "gbuffer.frag", glsl_params<InteriorParams>(),
+                {"WRITE_NORMAL", "WRITE_FACE_NORMAL", "WRITE_BARY", "WRITE_GOURAUD", "WRITE_THETA_MIN", "WRITE_THETA_MAX", "WRITE_DEPTH"}),
       fbo_(make_framebuffer()),
       empty_(make_vertex_array()) {
   std::vector<WorldObject> objects = world_geometry(scene, curvature);
@@ -201,18 +203,7 @@ GBufferPass::GBufferPass(const Scene& scene, const std::vector<Curvature>& curva
 }
 
 const Program& GBufferPass::program_for(const GBufferChannels& c) {
-  const bool flags[] = {c.normal, c.face_normal, c.bary, c.gouraud, c.theta_min, c.theta_max, c.depth};
-  const char* names[] = {"NORMAL", "FACE_NORMAL", "BARY", "GOURAUD", "THETA_MIN", "THETA_MAX", "DEPTH"};
-  int key = 0;
-  std::string defines;
-  for (int k = 0; k < 7; ++k) {
-    key |= int(flags[k]) << k;
-    defines += "#define WRITE_" + std::string(names[k]) + (flags[k] ? " 1\n" : " 0\n");
-  }
-  auto it = programs_.find(key);
-  if (it == programs_.end())
-    it = programs_.emplace(key, Program("gbuffer.vert", "gbuffer.frag", glsl_params<InteriorParams>() + defines)).first;
-  return it->second;
+  return programs_.get({c.normal, c.face_normal, c.bary, c.gouraud, c.theta_min, c.theta_max, c.depth});
 }
 
 // Every mesh vertex's stroke angles for this camera (corner_angles.comp), for the draws.

@@ -2,7 +2,6 @@
 #pragma once
 
 #include <climits>
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -70,11 +69,11 @@ class GBufferPass {
   void compute_corner_angles(const glm::mat4& view_projection, int w, int h, float fov_deg, const InteriorParams& p);
   // The program variant that writes exactly `channels` (compiled on first use).
   const Program& program_for(const GBufferChannels& channels);
-  std::map<int, Program> programs_;
   std::vector<Batch> batches_;  // one per object
   bool has_curvature_;
   std::unique_ptr<Program> angles_program_;  // corner_angles.comp, with curvature
   Program background_program_;
+  ProgramVariants programs_;  // gbuffer.frag per set of channels written
   Framebuffer fbo_;
   VertexArray empty_;  // for the background's full-window triangle
   Renderbuffer depth_test_;

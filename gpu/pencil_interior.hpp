@@ -3,8 +3,6 @@
 // reference/pencil_interior.cpp.
 #pragma once
 
-#include <map>
-
 #include "common/interior.hpp"
 #include "common/pencil_interior.hpp"
 #include "gpu/framebuffer.hpp"
@@ -14,6 +12,7 @@ namespace plumbago::gpu {
 
 class PencilInteriorPass {
  public:
+  PencilInteriorPass();
   // `stack`: the pencil layers as a 3D texture; `paper_normal`: any texture when
   // !options.paper. Writes D_i into `darkness` and I' into `intensity` (R32F). Only
   // `covered` (common/scene.hpp filter_rect, radius 0) runs the shader; outside it the
@@ -24,7 +23,7 @@ class PencilInteriorPass {
 
  private:
   const Program& program_for(const InteriorOptions& options, const InteriorParams& p);
-  std::map<int, Program> programs_;
+  ProgramVariants programs_;
   FullscreenPass pass_;
 };
 

@@ -96,6 +96,17 @@ void Program::link(std::initializer_list<GLuint> shaders, const std::string& wha
   }
 }
 
+const Program& ProgramVariants::get(const std::vector<bool>& on, const std::function<void(const Program&)>& setup) {
+  if (on.size() != switches_.size()) throw std::invalid_argument("program " + fragment_ + ": wrong number of switches");
+  auto it = made_.find(on);
+  if (it != made_.end()) return it->second;
+  std::string defines;
+  for (size_t k = 0; k < on.size(); ++k) defines += "#define " + switches_[k] + (on[k] ? " 1\n" : " 0\n");
+  it = made_.emplace(on, Program(vertex_, fragment_, prelude_ + defines)).first;
+  if (setup) setup(it->second);
+  return it->second;
+}
+
 void set_lights(const Program& program, const std::vector<Light>& lights) {
   constexpr size_t kMaxLights = 8;  // MAX_LIGHTS in shaders/common_lights.glsl
   if (lights.size() > kMaxLights)

@@ -7,6 +7,8 @@
 #pragma once
 
 #include <cctype>
+#include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -93,6 +95,22 @@ std::string glsl_params() {
   p.visit(d);
   return d.text();
 }
+
+// One program per combination of boolean switches, each compiled in as `#define NAME 0|1`
+// and made on first use: llvmpipe runs both sides of an if, even on a uniform, so code a
+// switch turns off must not be in the program at all.
+class ProgramVariants {
+ public:
+  ProgramVariants(std::string vertex, std::string fragment, std::string prelude, std::vector<std::string> switches)
+      : vertex_(std::move(vertex)), fragment_(std::move(fragment)), prelude_(std::move(prelude)), switches_(std::move(switches)) {}
+  // The program with switch k set to on[k]; `setup` runs once on a program when it is made.
+  const Program& get(const std::vector<bool>& on, const std::function<void(const Program&)>& setup = {});
+
+ private:
+  std::string vertex_, fragment_, prelude_;
+  std::vector<std::string> switches_;
+  std::map<std::vector<bool>, Program> made_;
+};
 
 // Sets the uniforms of shaders/common_lights.glsl from view-space unit lights; throws
 // past its MAX_LIGHTS (8).
