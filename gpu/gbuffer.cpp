@@ -39,14 +39,6 @@ std::vector<Corner> triangle_soup(const WorldObject& obj) {
   return soup;
 }
 
-// The triangle's three mesh vertices at each of its corners: a second vertex buffer.
-std::vector<glm::uvec3> corner_vertices(const WorldObject& obj) {
-  std::vector<glm::uvec3> soup;
-  soup.reserve(obj.triangles.size() * 3);
-  for (const glm::uvec3& tri : obj.triangles) soup.insert(soup.end(), 3, tri);
-  return soup;
-}
-
 std::vector<VertexCurvature> vertex_curvature(const WorldObject& obj) {
   std::vector<VertexCurvature> out(obj.positions.size());
   for (size_t v = 0; v < out.size(); ++v)
@@ -162,17 +154,22 @@ GBufferPass::GBufferPass(const Scene& scene, const std::vector<Curvature>& curva
     : has_curvature_(!curvature.empty()),
       angles_program_(has_curvature_ ? std::make_unique<Program>(Program::compute("corner_angles.comp", glsl_params<InteriorParams>()))
                                      : nullptr),
+      triangle_angles_program_(has_curvature_ ? std::make_unique<Program>(Program::compute("triangle_angles.comp")) : nullptr),
       background_program_("fullscreen.vert", "gbuffer_background.frag", "#define FULLSCREEN_Z 1.0\n"),
       programs_("gbuffer.vert", "gbuffer.frag", glsl_params<InteriorParams>(),
                 {"WRITE_NORMAL", "WRITE_FACE_NORMAL", "WRITE_BARY", "WRITE_GOURAUD", "WRITE_THETA_MIN", "WRITE_THETA_MAX", "WRITE_DEPTH"}),
       fbo_(make_framebuffer()),
       empty_(make_vertex_array()) {
   std::vector<WorldObject> objects = world_geometry(scene, curvature);
+  std::vector<GLuint> first_triangle;
+  GLuint triangles = 0;
   for (size_t i = 0; i < objects.size(); ++i) {
     const WorldObject& obj = objects[i];
     std::vector<Corner> soup = triangle_soup(obj);
     Batch b{make_buffer(soup.data(), soup.size() * sizeof(Corner)), {}, {}, {}, make_vertex_array(), GLsizei(soup.size())};
     b.hidden_faces = hidden_faces(*scene.objects[i].mesh, obj);
+    first_triangle.push_back(b.first_triangle = triangles);
+    triangles += GLuint(obj.triangles.size());
     b.box_min = b.box_max = obj.positions.front();
     for (const glm::vec3& p : obj.positions) {
       b.box_min = glm::min(b.box_min, p);
@@ -186,27 +183,28 @@ GBufferPass::GBufferPass(const Scene& scene, const std::vector<Curvature>& curva
     describe_attribute(3, 3, offsetof(Corner, corner));
     describe_attribute(4, 1, offsetof(Corner, gouraud));
     if (!obj.d_min.empty()) {
-      std::vector<glm::uvec3> corners = corner_vertices(obj);
       std::vector<VertexCurvature> curvature = vertex_curvature(obj);
-      b.corner_vertices = make_buffer(corners.data(), corners.size() * sizeof(glm::uvec3));
+      b.triangle_vertices = make_buffer(obj.triangles.data(), obj.triangles.size() * sizeof(glm::uvec3));
       b.vertex_curvature = make_buffer(curvature.data(), curvature.size() * sizeof(VertexCurvature));
       b.vertex_angles = make_buffer(nullptr, curvature.size() * sizeof(glm::vec2));
       b.mesh_vertices = GLuint(curvature.size());
-      glBindVertexBuffer(1, b.corner_vertices.id(), 0, sizeof(glm::uvec3));
-      glEnableVertexAttribArray(5);
-      glVertexAttribIFormat(5, 3, GL_UNSIGNED_INT, 0);
-      glVertexAttribBinding(5, 1);
     }
     glBindVertexArray(0);
     batches_.push_back(std::move(b));
   }
+  // Zero until computed: the angles of objects without curvature.
+  std::vector<glm::vec4> zero_angles(2 * std::max<size_t>(triangles, 1), glm::vec4(0.0f));
+  triangle_angles_.angles = make_buffer(zero_angles.data(), zero_angles.size() * sizeof(glm::vec4));
+  if (first_triangle.empty()) first_triangle.push_back(0);
+  triangle_angles_.first_triangle = make_buffer(first_triangle.data(), first_triangle.size() * sizeof(GLuint));
 }
 
 const Program& GBufferPass::program_for(const GBufferChannels& c) {
   return programs_.get({c.normal, c.face_normal, c.bary, c.gouraud, c.theta_min, c.theta_max, c.depth});
 }
 
-// Every mesh vertex's stroke angles for this camera (corner_angles.comp), for the draws.
+// Every mesh vertex's stroke angles for this camera (corner_angles.comp), then each
+// triangle's record of its corners' (triangle_angles.comp), for the draws and the interior.
 void GBufferPass::compute_corner_angles(const glm::mat4& view_projection, int w, int h, float fov_deg,
                                         const InteriorParams& p) {
   const Program& program = *angles_program_;
@@ -216,12 +214,51 @@ void GBufferPass::compute_corner_angles(const glm::mat4& view_projection, int w,
   glUniform1f(program.uniform("tan_half_fov"), std::tan(glm::radians(fov_deg) * 0.5f));
   program.set_params(p);
   for (const Batch& b : batches_) {
+    if (b.mesh_vertices == 0) continue;
     glUniform1ui(program.uniform("vertex_count"), b.mesh_vertices);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, b.vertex_curvature.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, b.vertex_angles.id());
     glDispatchCompute((b.mesh_vertices + 63) / 64, 1, 1);
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  const Program& gather = *triangle_angles_program_;
+  glUseProgram(gather.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, triangle_angles_.angles.id());
+  for (const Batch& b : batches_) {
+    if (b.mesh_vertices == 0) continue;
+    GLuint triangles = GLuint(b.corners / 3);
+    glUniform1ui(gather.uniform("triangle_count"), triangles);
+    glUniform1ui(gather.uniform("first_triangle"), b.first_triangle);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, b.vertex_angles.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, b.triangle_vertices.id());
+    glDispatchCompute((triangles + 63) / 64, 1, 1);
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+TriangleAngles triangle_angles_from(const GBuffer& g) {
+  std::vector<GLuint> triangles;  // per object: 1 + its largest triangle index seen
+  for (size_t i = 0; i < g.ids.pixels(); ++i) {
+    uint32_t object = g.ids.data[2 * i], triangle = g.ids.data[2 * i + 1];
+    if (object == 0) continue;
+    if (triangles.size() < object) triangles.resize(object, 0);
+    triangles[object - 1] = std::max(triangles[object - 1], triangle + 1);
+  }
+  std::vector<GLuint> first(std::max<size_t>(triangles.size(), 1), 0);
+  for (size_t o = 1; o < triangles.size(); ++o) first[o] = first[o - 1] + triangles[o - 1];
+  size_t records = triangles.empty() ? 1 : first.back() + triangles.back();
+  std::vector<glm::vec4> angles(2 * std::max<size_t>(records, 1), glm::vec4(0.0f));
+  for (int y = 0; y < g.ids.height && !g.theta_min.empty(); ++y)
+    for (int x = 0; x < g.ids.width; ++x) {
+      uint32_t object = g.ids.at(x, y, 0);
+      if (object == 0) continue;
+      size_t t = first[object - 1] + g.ids.at(x, y, 1);
+      for (int k = 0; k < 3; ++k) {
+        angles[2 * t][k] = g.theta_min.at(x, y, k);
+        angles[2 * t + 1][k] = g.theta_max.empty() ? 0.0f : g.theta_max.at(x, y, k);
+      }
+    }
+  return {make_buffer(angles.data(), angles.size() * sizeof(glm::vec4)), make_buffer(first.data(), first.size() * sizeof(GLuint))};
 }
 
 GBufferChannels channels_read_by(const std::vector<std::string>& stages, const Scene& scene) {
@@ -234,8 +271,8 @@ GBufferChannels channels_read_by(const std::vector<std::string>& stages, const S
   c.face_normal = ran("edge_detect") && face_edges;
   c.bary = interior || (ran("interior_intensity") && !phong);  // w: the Gouraud intensity
   c.gouraud = false;                                            // its own target: for a dump
-  c.theta_min = interior;
-  c.theta_max = interior && interior_options(scene.effects).crosshatch;
+  c.theta_min = c.theta_max = false;  // for a dump: the interior reads TriangleAngles
+  c.triangle_angles = interior;
   c.depth = false;  // read only by a dump: edge detection reads it next to the normals
   c.object_only_background = false;
   c.read_region = filter_rect(scene, 2);  // edge detection runs within 1 pixel and reads 1 more
@@ -268,7 +305,7 @@ void GBufferPass::render(const Scene& scene, GBufferTargets& t, const GBufferCha
   const float one = 1;
   glClearBufferfv(GL_DEPTH, 0, &one);  // whole: a sketchy depth sprite is tested against it
 
-  if (has_curvature_ && (channels.theta_min || channels.theta_max))
+  if (has_curvature_ && (channels.theta_min || channels.theta_max || channels.triangle_angles))
     compute_corner_angles(projection * view, w, h, cam.fov_deg, scene.params.get<InteriorParams>());
   glViewport(0, 0, w, h);
   glEnable(GL_DEPTH_TEST);
@@ -277,7 +314,7 @@ void GBufferPass::render(const Scene& scene, GBufferTargets& t, const GBufferCha
   glUseProgram(program.id());
   glUniformMatrix4fv(program.uniform("view"), 1, GL_FALSE, glm::value_ptr(view));
   glUniformMatrix4fv(program.uniform("projection"), 1, GL_FALSE, glm::value_ptr(projection));
-  glUniform1i(program.uniform("has_curvature"), has_curvature_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, triangle_angles_.angles.id());
   culled_objects_ = 0;
   for (size_t i = 0; i < batches_.size(); ++i) {
     const Batch& b = batches_[i];
@@ -292,7 +329,7 @@ void GBufferPass::render(const Scene& scene, GBufferTargets& t, const GBufferCha
       glDisable(GL_CULL_FACE);
     }
     glUniform1ui(program.uniform("object_id"), GLuint(i + 1));
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, b.vertex_angles.id());
+    glUniform1ui(program.uniform("first_triangle"), b.first_triangle);
     glBindVertexArray(b.layout.id());
     glDrawArrays(GL_TRIANGLES, 0, b.corners);
   }

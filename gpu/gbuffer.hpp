@@ -21,6 +21,17 @@ struct GBufferTargets {
   int height() const { return depth.height; }
 };
 
+// Each triangle's corner angles (SPEC 2.7), what the G-buffer's angle channels hold at its
+// pixels, as one record per triangle: the pencil interior reads them through the ids
+// channel, so a frame writes no angle targets (two float targets less for llvmpipe).
+struct TriangleAngles {
+  Buffer angles;          // std430 vec4 pairs: theta_min of corners 0-2, then theta_max (w unused)
+  Buffer first_triangle;  // uint per object (object id - 1): the index of its first record
+};
+// The records of a G-buffer's ids and angle channels (zero where it has no angles), for a
+// stage fed the reference's G-buffer.
+TriangleAngles triangle_angles_from(const GBuffer& g);
+
 GBufferTargets make_gbuffer_targets(int width, int height, GBufferFormat normal_format);
 GBuffer download_gbuffer(const GBufferTargets& targets);
 // The reference's G-buffer on the GPU, so that a later stage gets identical inputs.
@@ -31,6 +42,7 @@ GBufferTargets upload_gbuffer(const GBuffer& g);
 struct GBufferChannels {
   bool normal = true, face_normal = true, bary = true, gouraud = true, theta_min = true, theta_max = true;
   bool depth = true;  // the depth target; the edge filter reads the depth next to the normals
+  bool triangle_angles = true;  // TriangleAngles for this frame's camera (the pencil interior)
   // Whether the barycentrics, Gouraud intensity and angles hold their background values off
   // the objects. No stage reads them there (the interior reads only where ids != 0), so a
   // frame leaves them uncleared (llvmpipe: 52 bytes a pixel less to write); a dump clears them.
@@ -50,6 +62,8 @@ class GBufferPass {
   void render(const Scene& scene, GBufferTargets& targets, const GBufferChannels& channels = {});
   // The depth buffer of the last render: what later geometry (a depth sprite) is tested against.
   const Renderbuffer& depth_buffer() const { return depth_test_; }
+  // The corner angles of the last render that wrote angles or TriangleAngles.
+  const TriangleAngles& triangle_angles() const { return triangle_angles_; }
   // Faces that cannot be seen are culled: of a closed, oriented object whose bounding box is
   // wholly beyond the near plane (gpu/gbuffer.cpp hidden_faces). Tests turn it off to
   // compare; culled_objects() counts the objects the last render() culled.
@@ -58,10 +72,10 @@ class GBufferPass {
 
  private:
   struct Batch {
-    Buffer vertices, corner_vertices, vertex_curvature, vertex_angles;  // the last three with curvature
+    Buffer vertices, triangle_vertices, vertex_curvature, vertex_angles;  // the last three with curvature
     VertexArray layout;
     GLsizei corners = 0;
-    GLuint mesh_vertices = 0;
+    GLuint mesh_vertices = 0, first_triangle = 0;  // its first record in triangle_angles_
     GLenum hidden_faces = GL_NONE;  // GL_BACK, GL_FRONT, or GL_NONE: never culled
     glm::vec3 box_min{0}, box_max{0};  // world space
   };
@@ -71,7 +85,8 @@ class GBufferPass {
   const Program& program_for(const GBufferChannels& channels);
   std::vector<Batch> batches_;  // one per object
   bool has_curvature_;
-  std::unique_ptr<Program> angles_program_;  // corner_angles.comp, with curvature
+  std::unique_ptr<Program> angles_program_, triangle_angles_program_;  // corner_ and triangle_angles.comp, with curvature
+  TriangleAngles triangle_angles_;
   Program background_program_;
   ProgramVariants programs_;  // gbuffer.frag per set of channels written
   Framebuffer fbo_;

@@ -10,19 +10,21 @@ PencilInteriorPass::PencilInteriorPass()
 const Program& PencilInteriorPass::program_for(const InteriorOptions& o, const InteriorParams& p) {
   return programs_.get({p.shading == InteriorShading::Phong, p.blend == InteriorBlend::NearestCorner, o.crosshatch, o.paper},
                        [](const Program& made) {
-                         const char* samplers[] = {"normals", "bary", "theta_min", "theta_max", "ids", "pencil_stack", "paper_normal"};
-                         for (int i = 0; i < 7; ++i) glProgramUniform1i(made.id(), made.uniform(samplers[i]), i);
+                         const char* samplers[] = {"normals", "bary", "ids", "pencil_stack", "paper_normal"};
+                         for (int i = 0; i < 5; ++i) glProgramUniform1i(made.id(), made.uniform(samplers[i]), i);
                        });
 }
 
-void PencilInteriorPass::run(const GBufferTargets& g, const std::vector<Light>& view_lights, const Texture& stack,
+void PencilInteriorPass::run(const GBufferTargets& g, const TriangleAngles& angles, const std::vector<Light>& view_lights, const Texture& stack,
                              const Texture& paper_normal, const InteriorOptions& o, const InteriorParams& p,
                              float mu_p, Texture& darkness, Texture& intensity, const PixelRect& covered) {
   const Program& program = program_for(o, p);
   program.set_params(p);
   set_lights(program, view_lights);
   glProgramUniform1f(program.id(), program.uniform("mu_p"), mu_p);
-  pass_.draw_inside(program, {&g.normal, &g.bary, &g.theta_min, &g.theta_max, &g.ids, &stack, &paper_normal},
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, angles.angles.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, angles.first_triangle.id());
+  pass_.draw_inside(program, {&g.normal, &g.bary, &g.ids, &stack, &paper_normal},
                     {&darkness, &intensity}, covered, {glm::vec4(0.0f), glm::vec4(1.0f)});
 }
 

@@ -17,7 +17,7 @@ class PencilInteriorPass {
   // !options.paper. Writes D_i into `darkness` and I' into `intensity` (R32F). Only
   // `covered` (common/scene.hpp filter_rect, radius 0) runs the shader; outside it the
   // background's D_i = 0 and I' = 1.
-  void run(const GBufferTargets& g, const std::vector<Light>& view_lights, const Texture& stack,
+  void run(const GBufferTargets& g, const TriangleAngles& angles, const std::vector<Light>& view_lights, const Texture& stack,
            const Texture& paper_normal, const InteriorOptions& options, const InteriorParams& p, float mu_p,
            Texture& darkness, Texture& intensity, const PixelRect& covered);
 

@@ -131,7 +131,7 @@ struct Renderer::State {
       multi_contour_pass.run(lit_contour_darkness, contour_inputs, scene.params.get<ContourParams>(),
                              multi_contour_darkness, contour_rect(ordinary, pre.offset_grids));
     } else if (pass == "interior_intensity+pencil_interior") {
-      pencil_interior_pass.run(gbuffer, view_space_lights(scene), pencil_stack, paper_normal,
+      pencil_interior_pass.run(gbuffer, gbuffer_pass.triangle_angles(), view_space_lights(scene), pencil_stack, paper_normal,
                                interior_options(scene.effects), scene.params.get<InteriorParams>(),
                                scene.params.get<PaperParams>().mu_p, interior_darkness, interior_intensity,
                                filter_rect(ordinary, 0));

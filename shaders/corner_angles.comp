@@ -1,7 +1,7 @@
 #version 450 core
 // Texture rotation (SPEC 2.7), once a frame before the G-buffer: per mesh vertex, the
-// window-space angles of its min- and max-curvature strokes (common_rotation.glsl). The
-// G-buffer's vertices read the angles of their triangle's three corners from here.
+// window-space angles of its min- and max-curvature strokes (common_rotation.glsl), which
+// triangle_angles.comp gathers per triangle.
 layout(local_size_x = 64) in;
 #include "common_rotation.glsl"
 

@@ -5,11 +5,10 @@ layout(location = 1) in vec3 normal;       // world, unit (shading)
 layout(location = 2) in vec3 face_normal;  // world, unit (geometric)
 layout(location = 3) in vec3 corner;       // (1,0,0), (0,1,0) or (0,0,1)
 layout(location = 4) in float gouraud;     // SPEC 2.5, per vertex
-// The triangle's three mesh vertices, and every vertex's stroke angles this frame
-// (corner_angles.comp), for SPEC 2.7.
-layout(location = 5) in uvec3 corner_vertices;
-layout(std430, binding = 1) readonly buffer Angles { vec2 vertex_angles[]; };  // theta_min, theta_max
-uniform bool has_curvature;
+// Per triangle, its corners' stroke angles this frame (triangle_angles.comp, SPEC 2.7):
+// theta_min, then theta_max; zero without curvature.
+layout(std430, binding = 1) readonly buffer TriangleAngles { vec4 triangle_angles[]; };
+uniform uint first_triangle;  // this object's first record; soup vertex i is a corner of triangle i / 3
 
 uniform mat4 view;
 uniform mat4 projection;
@@ -32,11 +31,8 @@ void main() {
   v_gouraud = gouraud;
   v_theta_min = v_theta_max = vec3(0.0);
 #if WRITE_THETA_MIN || WRITE_THETA_MAX
-  if (has_curvature)
-    for (int k = 0; k < 3; ++k) {
-      vec2 angles = vertex_angles[corner_vertices[k]];
-      v_theta_min[k] = angles.x;
-      v_theta_max[k] = angles.y;
-    }
+  uint t = first_triangle + uint(gl_VertexID) / 3u;
+  v_theta_min = triangle_angles[2u * t].xyz;
+  v_theta_max = triangle_angles[2u * t + 1u].xyz;
 #endif
 }

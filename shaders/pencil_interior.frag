@@ -7,9 +7,11 @@
 
 uniform sampler2D normals;
 uniform sampler2D bary;           // w: the Gouraud intensity
-uniform sampler2D theta_min;
-uniform sampler2D theta_max;
-uniform usampler2D ids;
+uniform usampler2D ids;            // object id, triangle index
+// Per triangle, its corners' stroke angles (gpu/gbuffer.hpp TriangleAngles): theta_min,
+// then theta_max, what the G-buffer's angle channels hold at its pixels.
+layout(std430, binding = 0) readonly buffer TriangleAngles { vec4 triangle_angles[]; };
+layout(std430, binding = 1) readonly buffer FirstTriangle { uint first_triangle[]; };  // per object
 uniform sampler3D pencil_stack;   // LINEAR; REPEAT in s, t; CLAMP_TO_EDGE in r
 uniform sampler2D paper_normal;   // read texel for pixel, wrapping
 uniform float mu_p;
@@ -56,7 +58,9 @@ void main() {
   ivec2 x = ivec2(gl_FragCoord.xy);
   // Background: the targets already hold D_i = 0, I' = 1 (FullscreenPass::draw_inside). A
   // discard, unlike a return, lets llvmpipe skip a block of pixels that are all background.
-  if (texelFetch(ids, x, 0).r == 0u) discard;
+  uvec2 id = texelFetch(ids, x, 0).rg;
+  if (id.r == 0u) discard;
+  uint triangle = first_triangle[id.r - 1u] + id.g;
   vec4 bary_gouraud = texelFetch(bary, x, 0);
   float i = adjusted_intensity(x, bary_gouraud.w);
   interior_intensity = i;
@@ -71,8 +75,7 @@ void main() {
   // both sides of an if, so unhatched blocks would pay for the hatching.
   float c = 1.0;
   for (int k = 0; k < (h > 0.0 ? 2 : 1); ++k) {
-    vec3 theta = k == 0 ? texelFetch(theta_min, x, 0).xyz : texelFetch(theta_max, x, 0).xyz;
-    float b = blended(p, w, theta, r, n);
+    float b = blended(p, w, triangle_angles[2u * triangle + uint(k)].xyz, r, n);  // k = 0: theta_min, 1: theta_max
     c = k == 0 ? b : c * (1.0 + (b - 1.0) * h);
   }
   interior_darkness = 1.0 - c;

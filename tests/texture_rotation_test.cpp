@@ -24,6 +24,22 @@ TEST_P(TextureRotationParity, CornerAnglesAgree) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, TextureRotationParity, ::testing::Values("torus", "cad", "sphere"));
 
+// Two objects: each reads its own triangles' angle records (gpu/gbuffer.hpp TriangleAngles,
+// the second object's after the first's), in the G-buffer's angle channels and in the
+// pencil interior.
+TEST_F(TextureRotationParity, EachOfTwoObjectsReadsItsOwnTriangles) {
+  Scene scene = parse_scene(R"({"objects": [{"mesh": {"procedural": "cad"}},
+                                           {"mesh": {"procedural": "sphere"},
+                                            "transform": [0.5,0,0,0, 0,0.5,0,0, 0,0,0.5,0, 1.4,0.2,0.6,1]}],
+                               "resolution": [320, 240], "effects": ["contours", "interior", "crosshatch"]})",
+                            "test:two objects", ".");
+  for (const StageParity& r : run_parity(scene, {"texture_rotation", "pencil_interior"})) {
+    std::printf("[%s two objects] %s\n", r.name.c_str(), format_diff(r.name, r.diff).c_str());
+    EXPECT_GT(r.diff.compared, 1000u);
+    EXPECT_TRUE(r.pass) << r.name;
+  }
+}
+
 ProjectionInfo looking_down_z() {
   glm::mat4 view = glm::lookAt(glm::vec3(0, 0, 5), glm::vec3(0), glm::vec3(0, 1, 0));
   return {glm::perspective(glm::radians(40.0f), 1.0f, 0.1f, 100.0f) * view, 400, 400, std::tan(glm::radians(20.0f))};
