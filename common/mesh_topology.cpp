@@ -18,7 +18,15 @@ using curvature::assign_populated;
 
 // --- CSR lists, built in parallel ----------------------------------------------------
 
-using Scratch = tbb::enumerable_thread_specific<std::vector<uint32_t>>;
+// f(key, this thread's scratch) for every key in [0, keys), in parallel: the scratch is
+// looked up once per range, not once per key.
+template <class Scratch, class F>
+void for_each_key(size_t keys, tbb::enumerable_thread_specific<Scratch>& scratch, const F& f) {
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, keys), [&](const tbb::blocked_range<size_t>& range) {
+    Scratch& local = scratch.local();
+    for (size_t k = range.begin(); k != range.end(); ++k) f(uint32_t(k), local);
+  });
+}
 
 // start[k + 1] = start[k] + count[k + 1], in place (count[0] = 0).
 void counts_to_starts(std::vector<uint32_t>& count) { std::inclusive_scan(count.begin(), count.end(), count.begin()); }
@@ -26,17 +34,17 @@ void counts_to_starts(std::vector<uint32_t>& count) { std::inclusive_scan(count.
 // CSR of the lists list(key, out) writes (two passes: count, then copy).
 template <class List>
 void gather_csr(size_t keys, const List& list, std::vector<uint32_t>& start, std::vector<uint32_t>& values) {
-  Scratch scratch;
+  tbb::enumerable_thread_specific<std::vector<uint32_t>> scratch;
   assign_populated(start, keys + 1);
-  tbb::parallel_for(size_t(0), keys, [&](size_t k) {
-    list(uint32_t(k), scratch.local());
-    start[k + 1] = uint32_t(scratch.local().size());
+  for_each_key(keys, scratch, [&](uint32_t k, std::vector<uint32_t>& out) {
+    list(k, out);
+    start[k + 1] = uint32_t(out.size());
   });
   counts_to_starts(start);
   assign_populated(values, start[keys]);
-  tbb::parallel_for(size_t(0), keys, [&](size_t k) {
-    list(uint32_t(k), scratch.local());
-    std::copy(scratch.local().begin(), scratch.local().end(), values.begin() + start[k]);
+  for_each_key(keys, scratch, [&](uint32_t k, std::vector<uint32_t>& out) {
+    list(k, out);
+    std::copy(out.begin(), out.end(), values.begin() + start[k]);
   });
 }
 
@@ -171,9 +179,7 @@ bool manifold_edges(const Mesh& mesh, MeshTopology& topo) {
   assign_populated(topo.face_edges, mesh.triangles.size());
   tbb::enumerable_thread_specific<VertexCorners> scratch;
   std::atomic<bool> manifold = true;
-  tbb::parallel_for(size_t(0), n, [&](size_t vertex) {
-    uint32_t v = uint32_t(vertex);
-    VertexCorners& c = scratch.local();
+  for_each_key(n, scratch, [&](uint32_t v, VertexCorners& c) {
     if (!collect_corners(v, mesh, topo.faces_of(v), c) || !is_one_fan(c)) {
       manifold.store(false, std::memory_order_relaxed);
       return;
