@@ -91,7 +91,7 @@ Scene builtin_with_mesh(const std::string& name, Mesh mesh) {
 using GBufferCulling = testing::GlTest;
 
 TEST_F(GBufferCulling, ClosedObjectsSeenFromOutsideLoseOnlyHiddenFaces) {
-  for (const std::string& name : {"sphere", "torus", "cad"}) {
+  for (const char* name : {"sphere", "torus", "cad"}) {
     CulledAndNot r = render_culled_and_not(testing::builtin_at(name, 400, 300));
     EXPECT_EQ(r.culled_objects, 1) << name;
     expect_same_surface(r, name);
