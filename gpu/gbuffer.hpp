@@ -45,10 +45,10 @@ struct GBufferChannels {
   bool triangle_angles = true;  // TriangleAngles for this frame's camera (the pencil interior)
   // Whether the barycentrics, Gouraud intensity and angles hold their background values off
   // the objects. No stage reads them there (the interior reads only where ids != 0), so a
-  // frame leaves them uncleared (llvmpipe: 52 bytes a pixel less to write); a dump clears them.
+  // frame leaves them as they were (llvmpipe: 52 bytes a pixel less to write); a dump writes them.
   bool object_only_background = true;
-  // Where stages read the other channels: a frame clears them only there (filter_rect of
-  // the edge filter's reach, common/scene.hpp); a dump clears the whole window.
+  // Where stages read the other channels: a frame writes their background values only there (filter_rect of
+  // the edge filter's reach, common/scene.hpp); a dump, in the whole window (GBufferPass::draw_background).
   PixelRect read_region{0, 0, INT_MAX, INT_MAX};
 };
 // The channels `stages` (common/passes.hpp names) read, for the scene's parameters.
