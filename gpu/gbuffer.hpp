@@ -47,8 +47,9 @@ struct GBufferChannels {
   // the objects. No stage reads them there (the interior reads only where ids != 0), so a
   // frame leaves them as they were (llvmpipe: 52 bytes a pixel less to write); a dump writes them.
   bool object_only_background = true;
-  // Where stages read the other channels: a frame writes their background values only there (filter_rect of
-  // the edge filter's reach, common/scene.hpp); a dump, in the whole window (GBufferPass::draw_background).
+  // Where stages read the other channels: a frame writes their background values only
+  // there (filter_rect of the edge filter's reach, common/scene.hpp); a dump, in the whole
+  // window (GBufferPass::draw_background).
   PixelRect read_region{0, 0, INT_MAX, INT_MAX};
 };
 // The channels `stages` (common/passes.hpp names) read, for the scene's parameters.
