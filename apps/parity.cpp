@@ -113,23 +113,90 @@ StageParity edge_parity(const Scene& scene, const GBuffer& ref) {
                   "both fed the reference G-buffer; float target");
 }
 
-// Contours, an interior (1 - Gouraud stands in for it) and the paper color.
-StageParity compose_parity(const Scene& scene, const GBuffer& ref) {
+// The inputs of multiple contour drawing (SPEC 2.4) from the reference: its lit contours
+// d', the offset grids, the contour texture; and the GPU's copy inputs made from them.
+struct ContourStageInputs {
+  ContourParams p;
+  Preprocessed pre;
+  Image lit;
+  gpu::ContourInputs inputs;
+  gpu::Texture lit_texture;
+  PixelRect covered;
+
+  ContourStageInputs(const Scene& scene, const GBuffer& ref)
+      : p(scene.params.get<ContourParams>()),
+        pre(preprocess(scene, {"distortion", "contour_texture"})),
+        lit(reference::lit_contour_darkness(reference::contour_darkness(ref, scene.params.get<EdgeDetectParams>()), ref,
+                                            view_space_lights(scene), scene.params.get<ContourLightParams>())),
+        inputs(gpu::make_contour_inputs(p, pre.offset_grids, pre.contour_texture, pre.texture_shifts, scene.width,
+                                        scene.height)),
+        lit_texture(gpu::upload_texture(lit, GL_R32F)),
+        covered(contour_rect(scene, pre.offset_grids)) {}
+
+  Image reference_darkness() const {
+    return reference::multi_contour_darkness(lit, pre.offset_grids, pre.contour_texture, pre.texture_shifts, p);
+  }
+};
+
+// An interior (1 - Gouraud stands in for it) and the paper color, composed with contours.
+struct ComposeStageInputs {
+  Image interior, paper;
+  gpu::Texture interior_texture, paper_texture;
+
+  ComposeStageInputs(const Scene& scene, const GBuffer& ref)
+      : interior(ref.gouraud), paper(make_paper(scene.params.get<PaperParams>(), scene.seed).color) {
+    for (float& v : interior.data) v = 1.0f - v;
+    interior_texture = gpu::upload_texture(interior, GL_R32F);
+    paper_texture = gpu::upload_texture(paper, GL_RGBA32F);
+  }
+  gpu::ComposeInputs gpu_inputs() const { return {interior_texture, true, paper_texture, true}; }
+};
+
+// Multiple contour drawing as its own pass, and as a frame draws it: inside the
+// composition pass (gpu/compose.hpp), whose second output is then D_c.
+std::vector<StageParity> multi_contour_parity(const Scene& scene, const GBuffer& ref) {
+  ContourStageInputs c(scene, ref);
+  gpu::Texture out = gpu::make_texture(scene.width, scene.height, GL_R32F);
+  gpu::MultiContourPass pass;
+  pass.run(c.lit_texture, c.inputs, c.p, out, c.covered);
+  Image own_pass = gpu::download_texture(out, 1);
+  ComposeStageInputs k(scene, ref);
+  gpu::Texture color = gpu::make_texture(scene.width, scene.height, GL_RGBA8);
+  gpu::Texture in_compose = gpu::make_texture(scene.width, scene.height, GL_R32F);
+  gpu::ComposePass().run(pass.prepare(c.lit_texture, c.inputs, c.p), k.gpu_inputs(), scene.params.get<ComposeParams>(),
+                         color, {0, 0, scene.width, scene.height}, &in_compose);
+  Image drawn_in_compose = gpu::download_texture(in_compose, 1);
+  gpu::Context::get().check_errors("multi_contour parity");
+  Image ref_out = c.reference_darkness();
+  const char* note = "both fed the reference lit contours and the same offset grids and contour texture; bilinear lookups";
+  return {compared("multi_contour", ref_out, own_pass, kSampledTolerance, nullptr, note),
+          compared("multi_contour.in_compose", ref_out, drawn_in_compose, kSampledTolerance, nullptr,
+                   std::string(note) + "; drawn by the composition pass (a frame's way)")};
+}
+
+// Composition of the reference's contour darkness d (standing in for D_c), then of
+// multiple contours drawn in the composition pass itself (a frame's way).
+std::vector<StageParity> compose_parity(const Scene& scene, const GBuffer& ref) {
   Image contours = reference::contour_darkness(ref, scene.params.get<EdgeDetectParams>());
-  Image interior = ref.gouraud;
-  for (float& v : interior.data) v = 1.0f - v;
-  Image paper = make_paper(scene.params.get<PaperParams>(), scene.seed).color;
+  ComposeStageInputs k(scene, ref);
   auto p = scene.params.get<ComposeParams>();
-  gpu::Texture c = gpu::upload_texture(contours, GL_R32F), i = gpu::upload_texture(interior, GL_R32F);
-  gpu::Texture color = gpu::upload_texture(paper, GL_RGBA32F);
+  gpu::Texture c = gpu::upload_texture(contours, GL_R32F);
   gpu::Texture out = gpu::make_texture(scene.width, scene.height, GL_RGBA8);
   // Where the contour stand-in can differ from 0 (the whole window in formula mode).
   PixelRect inside = contour_rect(scene, preprocess(scene, {"distortion"}).offset_grids);
-  gpu::ComposePass().run(c, true, i, true, color, true, p, out, inside);
-  Image gpu_out = gpu::download_texture(out, 3);
+  gpu::ComposePass().run(c, true, k.gpu_inputs(), p, out, inside);
+  Image alone = gpu::download_texture(out, 3);
+  ContourStageInputs m(scene, ref);
+  gpu::MultiContourPass multi;
+  gpu::ComposePass().run(multi.prepare(m.lit_texture, m.inputs, m.p), k.gpu_inputs(), p, out, m.covered, nullptr);
+  Image with_contours = gpu::download_texture(out, 3);
   gpu::Context::get().check_errors("compose parity");
-  return compared("compose", reference::compose(contours, interior, paper, p), gpu_out, parity_tolerance::kByte, nullptr,
-                  "both fed the reference contours, an interior and the paper color; 8-bit target");
+  return {compared("compose", reference::compose(contours, k.interior, k.paper, p), alone, parity_tolerance::kByte, nullptr,
+                   "both fed the reference contours, an interior and the paper color; 8-bit target"),
+          compared("compose.contours_drawn_in", reference::compose(m.reference_darkness(), k.interior, k.paper, p),
+                   with_contours, parity_tolerance::kByte, nullptr,
+                   "multiple contours drawn in the pass from the reference lit contours, an interior, the paper color; "
+                   "8-bit target")};
 }
 
 // SPEC 2.6-2.8 alone (tone to layer, rotated textures, 3-way blending), then with cross
@@ -190,24 +257,6 @@ StageParity contour_light_parity(const Scene& scene, const GBuffer& ref) {
                   "both fed the reference G-buffer; the GPU lights its own d (second output of edge_detect)");
 }
 
-StageParity multi_contour_parity(const Scene& scene, const GBuffer& ref) {
-  auto p = scene.params.get<ContourParams>();
-  Preprocessed pre = preprocess(scene, {"distortion", "contour_texture"});
-  Image lit = reference::lit_contour_darkness(reference::contour_darkness(ref, scene.params.get<EdgeDetectParams>()),
-                                              ref, view_space_lights(scene), scene.params.get<ContourLightParams>());
-  gpu::ContourInputs inputs = gpu::make_contour_inputs(p, pre.offset_grids, pre.contour_texture, pre.texture_shifts,
-                                                       scene.width, scene.height);
-  gpu::Texture in = gpu::upload_texture(lit, GL_R32F);
-  gpu::Texture out = gpu::make_texture(scene.width, scene.height, GL_R32F);
-  gpu::MultiContourPass().run(in, inputs, p, out, contour_rect(scene, pre.offset_grids));
-  Image gpu_out = gpu::download_texture(out, 1);
-  gpu::Context::get().check_errors("multi_contour parity");
-  Image ref_out = reference::multi_contour_darkness(lit, pre.offset_grids, pre.contour_texture, pre.texture_shifts, p);
-  return compared("multi_contour", ref_out, gpu_out, kSampledTolerance, nullptr,
-                  "both fed the reference lit contours and the same offset grids and contour texture; "
-                  "bilinear lookups");
-}
-
 // Angles compared as (cos, sin) pairs, so that -pi and pi agree.
 Image angle_vectors(const Image& theta) {
   Image v(theta.width, theta.height, 6);
@@ -256,12 +305,12 @@ const std::vector<std::pair<std::string, ParityFn>>& parity_table() {
       {"gbuffer", gbuffer_parity},
       {"edge_detect", [](const Scene& s, const GBuffer& g) { return std::vector{edge_parity(s, g)}; }},
       {"contour_light", [](const Scene& s, const GBuffer& g) { return std::vector{contour_light_parity(s, g)}; }},
-      {"multi_contour", [](const Scene& s, const GBuffer& g) { return std::vector{multi_contour_parity(s, g)}; }},
+      {"multi_contour", multi_contour_parity},
       {"texture_rotation", texture_rotation_parity},
       {"interior_intensity",
        [](const Scene& s, const GBuffer& g) { return std::vector{interior_intensity_parity(s, g)}; }},
       {"pencil_interior", pencil_interior_parity},
-      {"compose", [](const Scene& s, const GBuffer& g) { return std::vector{compose_parity(s, g)}; }},
+      {"compose", compose_parity},
       {"sketchy_enlarged", [](const Scene& s, const GBuffer&) { return sketchy_enlarged_parity(s); }},
       {"sketchy_maps", [](const Scene& s, const GBuffer&) { return sketchy_maps_parity(s); }},
       {"sketchy_composite", [](const Scene& s, const GBuffer&) { return sketchy_composite_parity(s); }},

@@ -2,39 +2,56 @@
 
 namespace plumbago::gpu {
 
-ComposePass::ComposePass() : program_("fullscreen.vert", "compose.frag", glsl_params<ComposeParams>()) {
-  glProgramUniform1i(program_.id(), program_.uniform("contour_darkness"), 0);
-  glProgramUniform1i(program_.id(), program_.uniform("interior_darkness"), 1);
-  glProgramUniform1i(program_.id(), program_.uniform("paper_color"), 2);
-}
+ComposePass::ComposePass()
+    : programs_("fullscreen.vert", "compose.frag", glsl_params<ComposeParams>() + multi_contour_prelude(),
+                {"MULTI_CONTOUR", "WRITE_CONTOUR_DARKNESS"}) {}
 
-void ComposePass::set_uniforms(bool has_contours, bool has_interior, bool has_paper, const ComposeParams& p) {
-  program_.set_params(p);
-  glProgramUniform1i(program_.id(), program_.uniform("has_contours"), has_contours);
-  glProgramUniform1i(program_.id(), program_.uniform("has_interior"), has_interior);
-  glProgramUniform1i(program_.id(), program_.uniform("has_paper"), has_paper);
+const Program& ComposePass::program(bool draws_contours, bool writes_contours, bool has_contours,
+                                    const ComposeInputs& in, const ComposeParams& p) {
+  const Program& made = programs_.get({draws_contours, writes_contours}, [](const Program& made) {
+    // Units: D_i, paper color, then D_c, or what drawing the contours reads.
+    const char* samplers[] = {"interior_darkness", "paper_color", "contour_darkness", "copy_inputs", "block_reach_max"};
+    for (int i = 0; i < 5; ++i) glProgramUniform1i(made.id(), made.uniform(samplers[i]), i);
+    glProgramUniform1i(made.id(), made.uniform("lit_contour_darkness"), 2);
+  });
+  made.set_params(p);
+  glProgramUniform1i(made.id(), made.uniform("has_contours"), has_contours);
+  glProgramUniform1i(made.id(), made.uniform("has_interior"), in.has_interior);
+  glProgramUniform1i(made.id(), made.uniform("has_paper"), in.has_paper);
+  return made;
 }
 
 // The composition of D_c = D_i = 0 (enhanced(1) = 1, so the paper color itself), drawn
 // by the same shader.
-const Texture& ComposePass::blank_page(const Texture& paper_color, bool has_paper, const ComposeParams& p,
-                                       const Texture& out) {
-  GLuint paper = has_paper ? paper_color.id() : 0;
-  if (page_.width == out.width && page_.height == out.height && page_paper_ == paper) return page_;
-  page_ = make_texture(out.width, out.height, out.internal_format);
-  page_paper_ = paper;
-  set_uniforms(false, false, has_paper, p);
-  pass_.draw(program_, {&paper_color, &paper_color, &paper_color}, page_);
-  return page_;
+void ComposePass::copy_blank_page(const ComposeInputs& in, const ComposeParams& p, Texture& out) {
+  GLuint paper = in.has_paper ? in.paper_color.id() : 0;
+  if (page_.width != out.width || page_.height != out.height || page_paper_ != paper) {
+    page_ = make_texture(out.width, out.height, out.internal_format);
+    page_paper_ = paper;
+    ComposeInputs blank{in.paper_color, false, in.paper_color, in.has_paper};
+    pass_.draw(program(false, false, false, blank, p), {&in.paper_color, &in.paper_color, &in.paper_color}, page_);
+  }
+  glCopyImageSubData(page_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, out.id(), GL_TEXTURE_2D, 0, 0, 0, 0, out.width, out.height, 1);
 }
 
-void ComposePass::run(const Texture& contour_darkness, bool has_contours, const Texture& interior_darkness,
-                      bool has_interior, const Texture& paper_color, bool has_paper, const ComposeParams& p,
-                      Texture& out, const PixelRect& inside) {
-  const Texture& page = blank_page(paper_color, has_paper, p, out);
-  glCopyImageSubData(page.id(), GL_TEXTURE_2D, 0, 0, 0, 0, out.id(), GL_TEXTURE_2D, 0, 0, 0, 0, out.width, out.height, 1);
-  set_uniforms(has_contours, has_interior, has_paper, p);
-  pass_.draw_inside(program_, {&contour_darkness, &interior_darkness, &paper_color}, {&out}, inside, {});
+void ComposePass::run(const Texture& contour_darkness, bool has_contours, const ComposeInputs& in,
+                      const ComposeParams& p, Texture& out, const PixelRect& inside) {
+  copy_blank_page(in, p, out);
+  pass_.draw_inside(program(false, false, has_contours, in, p), {&in.interior_darkness, &in.paper_color, &contour_darkness},
+                    {&out}, inside, {});
+}
+
+void ComposePass::run(const ContourSources& c, const ComposeInputs& in, const ComposeParams& p, Texture& out,
+                      const PixelRect& inside, Texture* contour_darkness) {
+  copy_blank_page(in, p, out);
+  const Program& made = program(true, contour_darkness != nullptr, true, in, p);
+  made.set_params(c.params);
+  std::initializer_list<const Texture*> textures = {&in.interior_darkness, &in.paper_color, &c.lit, &c.copy_inputs,
+                                                    &c.block_reach_max};
+  if (contour_darkness)
+    pass_.draw_inside(made, textures, {&out, contour_darkness}, inside, {});
+  else
+    pass_.draw_inside(made, textures, {&out}, inside, {});
 }
 
 }  // namespace plumbago::gpu

@@ -39,8 +39,10 @@ const std::string kBlockDefine = "#define CONTOUR_BLOCK " + std::to_string(kBloc
 int block_reach(float largest_offset) { return 1 + int(std::floor((largest_offset + 0.5f) / float(kBlock))); }
 }  // namespace
 
+std::string multi_contour_prelude() { return glsl_params<ContourParams>() + kBlockDefine; }
+
 MultiContourPass::MultiContourPass()
-    : program_("fullscreen.vert", "multi_contour.frag", glsl_params<ContourParams>() + kBlockDefine),
+    : program_("fullscreen.vert", "multi_contour.frag", multi_contour_prelude()),
       blocks_program_("fullscreen.vert", "contour_blocks.frag", kBlockDefine),
       reach_program_("fullscreen.vert", "contour_block_reach.frag") {
   glProgramUniform1i(program_.id(), program_.uniform("lit_contour_darkness"), 0);
@@ -48,11 +50,9 @@ MultiContourPass::MultiContourPass()
   glProgramUniform1i(program_.id(), program_.uniform("block_reach_max"), 2);
 }
 
-void MultiContourPass::run(const Texture& lit, const ContourInputs& in, const ContourParams& p, Texture& out,
-                           const PixelRect& covered) {
+ContourSources MultiContourPass::prepare(const Texture& lit, const ContourInputs& in, const ContourParams& p) {
   if (p.copies > in.copy_inputs.depth || in.copy_inputs.width != lit.width || in.copy_inputs.height != lit.height)
     throw std::invalid_argument("multi_contour: the copies' inputs were made for another size or fewer copies");
-  program_.set_params(p);
   set_sampling(lit, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
   int blocks_x = (lit.width + kBlock - 1) / kBlock, blocks_y = (lit.height + kBlock - 1) / kBlock;
   if (block_max_.width != blocks_x || block_max_.height != blocks_y) {
@@ -62,8 +62,14 @@ void MultiContourPass::run(const Texture& lit, const ContourInputs& in, const Co
   pass_.draw(blocks_program_, {&lit}, block_max_);
   glProgramUniform1i(reach_program_.id(), reach_program_.uniform("block_reach"), block_reach(in.largest_offset));
   pass_.draw(reach_program_, {&block_max_}, block_reach_max_);
-  pass_.draw_inside(program_, {&lit, &in.copy_inputs, &block_reach_max_}, {&out}, covered,
-                    {glm::vec4(0.0f)});
+  return {lit, in.copy_inputs, block_reach_max_, p};
+}
+
+void MultiContourPass::run(const Texture& lit, const ContourInputs& in, const ContourParams& p, Texture& out,
+                           const PixelRect& covered) {
+  ContourSources s = prepare(lit, in, p);
+  program_.set_params(p);
+  pass_.draw_inside(program_, {&s.lit, &s.copy_inputs, &s.block_reach_max}, {&out}, covered, {glm::vec4(0.0f)});
 }
 
 }  // namespace plumbago::gpu

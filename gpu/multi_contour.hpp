@@ -1,6 +1,8 @@
 // Multiple contour drawing on the GPU (SPEC 2.4), the twin of reference/multi_contour.cpp.
 #pragma once
 
+#include <string>
+
 #include "common/distortion.hpp"
 #include "gpu/framebuffer.hpp"
 
@@ -17,6 +19,17 @@ struct ContourInputs {
 ContourInputs make_contour_inputs(const ContourParams& p, const std::vector<Image>& grids, const Image& contour_texture,
                                   const std::vector<glm::vec2>& shifts, int width, int height);
 
+// What drawing the contours reads in a frame, for a pass that draws them itself
+// (compose.frag with MULTI_CONTOUR on, shaders/common_multi_contour.glsl).
+struct ContourSources {
+  const Texture& lit;              // d', LINEAR/CLAMP_TO_EDGE
+  const Texture& copy_inputs;      // ContourInputs::copy_inputs
+  const Texture& block_reach_max;  // contour_block_reach.frag
+  ContourParams params;
+};
+// The prelude of a program that includes shaders/common_multi_contour.glsl.
+std::string multi_contour_prelude();
+
 class MultiContourPass {
  public:
   MultiContourPass();
@@ -27,6 +40,9 @@ class MultiContourPass {
   // d' of each block, contour_blocks.frag, and of the blocks within the copies' reach,
   // contour_block_reach.frag) are not shaded either: their D_c is 0 too.
   void run(const Texture& lit, const ContourInputs& in, const ContourParams& p, Texture& out, const PixelRect& covered);
+  // The same checks and block passes, without the drawing: what another pass needs to draw
+  // the contours (valid until the next call).
+  ContourSources prepare(const Texture& lit, const ContourInputs& in, const ContourParams& p);
 
  private:
   Program program_, blocks_program_, reach_program_;

@@ -30,7 +30,8 @@ namespace {
 // frame reads its inputs once: "a+b" replaces a followed by b.
 std::vector<std::string> fused(const std::vector<std::string>& stages) {
   static const std::vector<std::pair<std::string, std::string>> pairs = {{"edge_detect", "contour_light"},
-                                                                         {"interior_intensity", "pencil_interior"}};
+                                                                         {"interior_intensity", "pencil_interior"},
+                                                                         {"multi_contour", "compose"}};
   std::vector<std::string> out;
   for (size_t i = 0; i < stages.size(); ++i) {
     bool joined = false;
@@ -115,6 +116,10 @@ struct Renderer::State {
 
   bool ran(const char* stage) const { return std::find(stages.begin(), stages.end(), stage) != stages.end(); }
 
+  ComposeInputs compose_inputs() const {
+    return {interior_darkness, ran("pencil_interior"), paper_color, !pre.paper.color.empty()};
+  }
+
   // Where D_c or D_i can differ from 0: around the contours' reach, or the objects.
   PixelRect compose_rect() const {
     if (dump) return {0, 0, scene.width, scene.height};
@@ -127,17 +132,20 @@ struct Renderer::State {
     } else if (pass == "edge_detect+contour_light") {
       edge_pass.run(gbuffer, scene.params.get<EdgeDetectParams>(), view_space_lights(scene),
                     scene.params.get<ContourLightParams>(), contour_darkness, lit_contour_darkness, filter_rect(ordinary, 1));
-    } else if (pass == "multi_contour") {
-      multi_contour_pass.run(lit_contour_darkness, contour_inputs, scene.params.get<ContourParams>(),
-                             multi_contour_darkness, contour_rect(ordinary, pre.offset_grids));
     } else if (pass == "interior_intensity+pencil_interior") {
       pencil_interior_pass.run(gbuffer, gbuffer_pass.triangle_angles(), view_space_lights(scene), pencil_stack, paper_normal,
                                interior_options(scene.effects), scene.params.get<InteriorParams>(),
                                scene.params.get<PaperParams>().mu_p, interior_darkness, interior_intensity,
                                filter_rect(ordinary, 0));
+    } else if (pass == "multi_contour+compose") {
+      // The contours are drawn in the composition pass; a dump also keeps their D_c.
+      ContourSources contours = multi_contour_pass.prepare(lit_contour_darkness, contour_inputs,
+                                                           scene.params.get<ContourParams>());
+      compose_pass.run(contours, compose_inputs(), scene.params.get<ComposeParams>(), color, compose_rect(),
+                       dump ? &multi_contour_darkness : nullptr);
     } else if (pass == "compose") {
-      compose_pass.run(multi_contour_darkness, ran("multi_contour"), interior_darkness, ran("pencil_interior"),
-                       paper_color, !pre.paper.color.empty(), scene.params.get<ComposeParams>(), color, compose_rect());
+      compose_pass.run(multi_contour_darkness, false, compose_inputs(), scene.params.get<ComposeParams>(), color,
+                       compose_rect());
     } else if (pass == "sketchy_gbuffer") {
       sketchy->gbuffer_pass.render(scene, sketchy->gbuffer, sketchy_channels);
     } else if (pass == "sketchy_enlarged") {

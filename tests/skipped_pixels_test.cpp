@@ -7,6 +7,7 @@
 
 #include "apps/parity.hpp"
 #include "common/image_compare.hpp"
+#include "gpu/compose.hpp"
 #include "gpu/multi_contour.hpp"
 #include "reference/multi_contour.hpp"
 #include "tests/test_scenes.hpp"
@@ -25,7 +26,7 @@ TEST_P(SkippedPixels, PassesMatchTheReferenceInsideAndOutside) {
   Scene scene = parse_scene(json, "test:skipped", ".");
   auto results = run_parity(scene, {"edge_detect", "contour_light", "multi_contour", "interior_intensity", "pencil_interior",
                                     "compose"});
-  ASSERT_EQ(results.size(), 7u);
+  ASSERT_EQ(results.size(), 9u);  // multi_contour and compose: also drawn in one pass
   for (const auto& r : results) {
     std::printf("[skipped pixels, background %s] %s\n", GetParam().c_str(), format_diff(r.name, r.diff).c_str());
     EXPECT_TRUE(r.pass) << r.name << ": " << r.note;
@@ -52,10 +53,19 @@ TEST_F(SkippedPixels, MultiContourFindsDotsAtTheFullReachOfTheOffsets) {
   Image expected = reference::multi_contour_darkness(lit, grids, texture, shifts, p);
   gpu::ContourInputs inputs = gpu::make_contour_inputs(p, grids, texture, shifts, lit.width, lit.height);
   gpu::Texture in = gpu::upload_texture(lit, GL_R32F), out = gpu::make_texture(lit.width, lit.height, GL_R32F);
-  gpu::MultiContourPass().run(in, inputs, p, out, {0, 0, lit.width, lit.height});
-  ImageDiff d = compare_images(expected, gpu::download_texture(out, 1), 1e-5);
-  std::printf("[skipped pixels, dots at the reach] %s\n", format_diff("multi_contour", d).c_str());
-  EXPECT_EQ(d.over_tolerance, 0.0);
+  PixelRect window{0, 0, lit.width, lit.height};
+  gpu::MultiContourPass pass;
+  pass.run(in, inputs, p, out, window);
+  // The same drawn in the composition pass, as a frame does (its second output is D_c).
+  gpu::Texture color = gpu::make_texture(lit.width, lit.height, GL_RGBA8), in_compose = gpu::make_texture(lit.width, lit.height, GL_R32F);
+  gpu::Texture none = gpu::make_texture(1, 1, GL_R32F);
+  gpu::ComposePass().run(pass.prepare(in, inputs, p), {none, false, none, false}, ParamSet{}.get<ComposeParams>(), color, window,
+                         &in_compose);
+  for (const gpu::Texture* t : {&out, &in_compose}) {
+    ImageDiff d = compare_images(expected, gpu::download_texture(*t, 1), 1e-5);
+    std::printf("[skipped pixels, dots at the reach] %s\n", format_diff(t == &out ? "multi_contour" : "multi_contour.in_compose", d).c_str());
+    EXPECT_EQ(d.over_tolerance, 0.0);
+  }
   EXPECT_NEAR(expected.at(10, 10), 0.3f * 0.3f * p.stroke_opacity, 1e-5f);  // the dot at (16, 16), read from 5.3 px
 }
 
