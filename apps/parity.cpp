@@ -217,7 +217,7 @@ std::vector<StageParity> pencil_interior_parity(const Scene& scene, const GBuffe
   std::vector<StageParity> results;
   for (auto [name, options] : {std::pair{"pencil_interior.blend", InteriorOptions{false, false}},
                                std::pair{"pencil_interior.hatch_paper", InteriorOptions{true, true}}}) {
-    pass.run(g, angles, view_space_lights(scene), stack, normal, options, ip, mu_p, out, gpu_intensity, filter_rect(scene, 0));
+    pass.run(g, angles, view_space_lights(scene), stack, normal, options, ip, mu_p, out, &gpu_intensity, filter_rect(scene, 0));
     Image gpu_out = gpu::download_texture(out, 1);
     gpu::Context::get().check_errors("pencil_interior parity");
     Image ref_out = reference::interior_darkness(ref, intensity, pre.pencil_stack, pre.paper.normal, options, ip, mu_p);
@@ -235,7 +235,7 @@ StageParity interior_intensity_parity(const Scene& scene, const GBuffer& ref) {
   gpu::Texture white = gpu::upload_texture_3d({Image(1, 1, 1, 1.0f), Image(1, 1, 1, 1.0f)}, GL_R32F);
   gpu::Texture darkness = gpu::make_texture(scene.width, scene.height, GL_R32F);
   gpu::Texture out = gpu::make_texture(scene.width, scene.height, GL_R32F);
-  gpu::PencilInteriorPass().run(inputs, gpu::triangle_angles_from(ref), lights, white, white, {}, p, 0.0f, darkness, out, filter_rect(scene, 0));
+  gpu::PencilInteriorPass().run(inputs, gpu::triangle_angles_from(ref), lights, white, white, {}, p, 0.0f, darkness, &out, filter_rect(scene, 0));
   Image gpu_out = gpu::download_texture(out, 1);
   gpu::Context::get().check_errors("interior_intensity parity");
   return compared("interior_intensity", reference::interior_intensity(ref, lights, p), gpu_out, parity_tolerance::kFloat,

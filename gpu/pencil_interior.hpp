@@ -14,15 +14,15 @@ class PencilInteriorPass {
  public:
   PencilInteriorPass();
   // `stack`: the pencil layers as a 3D texture; `paper_normal`: any texture when
-  // !options.paper. Writes D_i into `darkness` and I' into `intensity` (R32F). Only
-  // `covered` (common/scene.hpp filter_rect, radius 0) runs the shader; outside it the
-  // background's D_i = 0 and I' = 1.
+  // !options.paper. Writes D_i into `darkness` and, if given, I' into `intensity` (R32F;
+  // a frame leaves it out: only a dump reads it). Only `covered` (common/scene.hpp
+  // filter_rect, radius 0) runs the shader; outside it the background's D_i = 0 and I' = 1.
   void run(const GBufferTargets& g, const TriangleAngles& angles, const std::vector<Light>& view_lights, const Texture& stack,
            const Texture& paper_normal, const InteriorOptions& options, const InteriorParams& p, float mu_p,
-           Texture& darkness, Texture& intensity, const PixelRect& covered);
+           Texture& darkness, Texture* intensity, const PixelRect& covered);
 
  private:
-  const Program& program_for(const InteriorOptions& options, const InteriorParams& p);
+  const Program& program_for(const InteriorOptions& options, const InteriorParams& p, bool writes_intensity);
   ProgramVariants programs_;
   FullscreenPass pass_;
 };

@@ -135,7 +135,7 @@ struct Renderer::State {
     } else if (pass == "interior_intensity+pencil_interior") {
       pencil_interior_pass.run(gbuffer, gbuffer_pass.triangle_angles(), view_space_lights(scene), pencil_stack, paper_normal,
                                interior_options(scene.effects), scene.params.get<InteriorParams>(),
-                               scene.params.get<PaperParams>().mu_p, interior_darkness, interior_intensity,
+                               scene.params.get<PaperParams>().mu_p, interior_darkness, dump ? &interior_intensity : nullptr,
                                filter_rect(ordinary, 0));
     } else if (pass == "multi_contour+compose") {
       // The contours are drawn in the composition pass; a dump also keeps their D_c.

@@ -1,6 +1,6 @@
 #version 450 core
 // Interior intensity and brightness (SPEC 2.5) and interior pencil shading (SPEC 2.6-2.10)
-// in one pass: I' is the second output, D_i the first. Formulas in common/interior.hpp
+// in one pass: D_i is the output, and I' a second one for a dump. Formulas in common/interior.hpp
 // and common/pencil_interior.hpp.
 #include "common_lights.glsl"
 #include "common_wrap.glsl"
@@ -21,7 +21,9 @@ const bool phong = PHONG != 0, nearest_corner = NEAREST_CORNER != 0;
 const bool crosshatch = CROSSHATCH != 0, paper_effect = PAPER_EFFECT != 0;
 
 layout(location = 0) out float interior_darkness;
-layout(location = 1) out float interior_intensity;
+#if WRITE_INTENSITY
+layout(location = 1) out float interior_intensity;  // for a dump: a frame does not keep I'
+#endif
 
 // I' = sqrt(I), I Gouraud or Phong (SPEC 2.5)
 float adjusted_intensity(ivec2 x, float gouraud) {
@@ -63,7 +65,9 @@ void main() {
   uint triangle = first_triangle[id.r - 1u] + id.g;
   vec4 bary_gouraud = texelFetch(bary, x, 0);
   float i = adjusted_intensity(x, bary_gouraud.w);
+#if WRITE_INTENSITY
   interior_intensity = i;
+#endif
   float layers = float(textureSize(pencil_stack, 0).z);
   float r = ((1.0 - i) * (layers - 1.0) + 0.5) / layers;  // tone to layer (2.6)
   vec2 p = gl_FragCoord.xy;
