@@ -105,7 +105,7 @@ StageParity edge_parity(const Scene& scene, const GBuffer& ref) {
   gpu::GBufferTargets inputs = gpu::upload_gbuffer(ref);
   gpu::Texture out = gpu::make_texture(scene.width, scene.height, GL_R32F);
   gpu::Texture lit = gpu::make_texture(scene.width, scene.height, GL_R32F);
-  gpu::EdgeDetectPass().run(inputs, p, view_space_lights(scene), scene.params.get<ContourLightParams>(), out, lit,
+  gpu::EdgeDetectPass().run(inputs, p, view_space_lights(scene), scene.params.get<ContourLightParams>(), {lit, &out},
                             filter_rect(scene, 1));
   Image gpu_out = gpu::download_texture(out, 1);
   gpu::Context::get().check_errors("edge_detect parity");
@@ -249,7 +249,7 @@ StageParity contour_light_parity(const Scene& scene, const GBuffer& ref) {
   gpu::GBufferTargets inputs = gpu::upload_gbuffer(ref);
   gpu::Texture d = gpu::make_texture(scene.width, scene.height, GL_R32F);
   gpu::Texture out = gpu::make_texture(scene.width, scene.height, GL_R32F);
-  gpu::EdgeDetectPass().run(inputs, scene.params.get<EdgeDetectParams>(), lights, p, d, out, filter_rect(scene, 1));
+  gpu::EdgeDetectPass().run(inputs, scene.params.get<EdgeDetectParams>(), lights, p, {out, &d}, filter_rect(scene, 1));
   Image gpu_out = gpu::download_texture(out, 1);
   gpu::Context::get().check_errors("contour_light parity");
   return compared("contour_light", reference::lit_contour_darkness(darkness, ref, lights, p), gpu_out,

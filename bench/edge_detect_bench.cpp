@@ -43,7 +43,7 @@ void edge_detect_gpu(benchmark::State& state, const std::string& model) {
   for (auto _ : state) {
     Stopwatch w;
     timer.begin("edge_detect");
-    pass.run(g, p, lights, light, out, lit, filter_rect(scene, 1));
+    pass.run(g, p, lights, light, {lit, &out}, filter_rect(scene, 1));
     timer.end();
     glFinish();
     state.SetIterationTime(w.ms() * 1e-3);

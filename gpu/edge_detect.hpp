@@ -10,17 +10,25 @@
 
 namespace plumbago::gpu {
 
+// What the pass writes: the lit d' (R32F, the G-buffer's size), and if wanted the unlit d
+// (the same; a frame reads only d') and the marks of the blocks of pixels where d' > 0
+// (gpu/multi_contour.hpp make_contour_block_marks: a frame's multiple contours skip the others).
+struct EdgeOutputs {
+  Texture& lit;
+  Texture* darkness = nullptr;
+  Texture* block_marks = nullptr;
+};
+
 class EdgeDetectPass {
  public:
   EdgeDetectPass();
-  // Writes contour darkness d into `darkness` and the lit d' into `lit` (R32F, the
-  // G-buffer's size). Only `covered` (common/scene.hpp filter_rect, radius 1) runs the
-  // shader; outside it both get the background's d.
+  // Only `covered` (common/scene.hpp filter_rect, radius 1) runs the shader; outside it d
+  // and d' are the background's d, and the blocks' marks say so.
   void run(const GBufferTargets& g, const EdgeDetectParams& p, const std::vector<Light>& view_lights,
-           const ContourLightParams& light, Texture& darkness, Texture& lit, const PixelRect& covered);
+           const ContourLightParams& light, const EdgeOutputs& out, const PixelRect& covered);
 
  private:
-  Program program_;
+  ProgramVariants programs_;  // with d written or not, blocks marked or not
   FullscreenPass pass_;
 };
 

@@ -37,9 +37,23 @@ const std::string kBlockDefine = "#define CONTOUR_BLOCK " + std::to_string(kBloc
 // that is from 8b - ceil(reach) to 8b + 8 + floor(reach): blocks b - D to b + D with
 // D = 1 + floor(reach / 8).
 int block_reach(float largest_offset) { return 1 + int(std::floor((largest_offset + 0.5f) / float(kBlock))); }
+
+int blocks(int pixels) { return (pixels + kBlock - 1) / kBlock; }
+
+// Makes `t` a texture of one texel a block for a width x height window, unless it is one.
+void fit_to_blocks(Texture& t, int width, int height) {
+  if (t.width != blocks(width) || t.height != blocks(height)) t = make_texture(blocks(width), blocks(height), GL_R32F);
+}
 }  // namespace
 
 std::string multi_contour_prelude() { return glsl_params<ContourParams>() + kBlockDefine; }
+std::string contour_block_define() { return kBlockDefine; }
+
+Texture make_contour_block_marks(int width, int height) {
+  Texture t;
+  fit_to_blocks(t, width, height);
+  return t;
+}
 
 MultiContourPass::MultiContourPass()
     : program_("fullscreen.vert", "multi_contour.frag", multi_contour_prelude()),
@@ -50,18 +64,23 @@ MultiContourPass::MultiContourPass()
   glProgramUniform1i(program_.id(), program_.uniform("block_reach_max"), 2);
 }
 
-ContourSources MultiContourPass::prepare(const Texture& lit, const ContourInputs& in, const ContourParams& p) {
+void MultiContourPass::mark_blocks(const Texture& lit, Texture& marks) { pass_.draw(blocks_program_, {&lit}, marks); }
+
+ContourSources MultiContourPass::prepare(const Texture& lit, const ContourInputs& in, const ContourParams& p,
+                                         const Texture* marks) {
   if (p.copies > in.copy_inputs.depth || in.copy_inputs.width != lit.width || in.copy_inputs.height != lit.height)
     throw std::invalid_argument("multi_contour: the copies' inputs were made for another size or fewer copies");
   set_sampling(lit, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
-  int blocks_x = (lit.width + kBlock - 1) / kBlock, blocks_y = (lit.height + kBlock - 1) / kBlock;
-  if (block_max_.width != blocks_x || block_max_.height != blocks_y) {
-    block_max_ = make_texture(blocks_x, blocks_y, GL_R32F);
-    block_reach_max_ = make_texture(blocks_x, blocks_y, GL_R32F);
+  fit_to_blocks(block_reach_max_, lit.width, lit.height);
+  if (marks) {
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);  // the marks were stored as an image
+  } else {
+    fit_to_blocks(block_marks_, lit.width, lit.height);
+    mark_blocks(lit, block_marks_);
+    marks = &block_marks_;
   }
-  pass_.draw(blocks_program_, {&lit}, block_max_);
   glProgramUniform1i(reach_program_.id(), reach_program_.uniform("block_reach"), block_reach(in.largest_offset));
-  pass_.draw(reach_program_, {&block_max_}, block_reach_max_);
+  pass_.draw(reach_program_, {marks}, block_reach_max_);
   return {lit, in.copy_inputs, block_reach_max_, p};
 }
 

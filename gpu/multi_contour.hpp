@@ -29,6 +29,11 @@ struct ContourSources {
 };
 // The prelude of a program that includes shaders/common_multi_contour.glsl.
 std::string multi_contour_prelude();
+// `#define CONTOUR_BLOCK n`: the side of the blocks of pixels that multiple contour drawing
+// skips when no copy of theirs can read a d' > 0.
+std::string contour_block_define();
+// The blocks' marks for a window (R32F, one texel a block): 1 where some d' > 0, else 0.
+Texture make_contour_block_marks(int width, int height);
 
 class MultiContourPass {
  public:
@@ -36,18 +41,23 @@ class MultiContourPass {
   // `lit` must be sampled LINEAR/CLAMP_TO_EDGE (set here); writes D_c into `out` (R32F).
   // `in` was made with `p` at lit's size.
   // Only `covered` (common/distortion.hpp contour_rect) runs the shader; outside it D_c = 0.
-  // Inside it, blocks of pixels whose copies can only read d' = 0 (found from the largest
-  // d' of each block, contour_blocks.frag, and of the blocks within the copies' reach,
-  // contour_block_reach.frag) are not shaded either: their D_c is 0 too.
+  // Inside it, blocks of pixels whose copies can only read d' = 0 (found from the blocks'
+  // marks, mark_blocks, and the marks within the copies' reach, contour_block_reach.frag)
+  // are not shaded either: their D_c is 0 too.
   void run(const Texture& lit, const ContourInputs& in, const ContourParams& p, Texture& out, const PixelRect& covered);
   // The same checks and block passes, without the drawing: what another pass needs to draw
-  // the contours (valid until the next call).
-  ContourSources prepare(const Texture& lit, const ContourInputs& in, const ContourParams& p);
+  // the contours (valid until the next call). `marks`: the blocks' marks made while d' was
+  // drawn (gpu/edge_detect.hpp), or null to find them here from d'.
+  ContourSources prepare(const Texture& lit, const ContourInputs& in, const ContourParams& p,
+                         const Texture* marks = nullptr);
+  // Marks the blocks of `lit` that hold some d' > 0 (contour_blocks.frag) into `marks`
+  // (make_contour_block_marks of lit's size).
+  void mark_blocks(const Texture& lit, Texture& marks);
 
  private:
   Program program_, blocks_program_, reach_program_;
   FullscreenPass pass_;
-  Texture block_max_, block_reach_max_;
+  Texture block_marks_, block_reach_max_;
 };
 
 }  // namespace plumbago::gpu

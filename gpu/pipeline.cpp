@@ -101,6 +101,7 @@ struct Renderer::State {
                                                 scene.params.get<GBufferParams>().normal_format);
   Texture contour_darkness = make_texture(scene.width, scene.height, GL_R32F);
   Texture lit_contour_darkness = make_texture(scene.width, scene.height, GL_R32F);
+  Texture contour_block_marks = make_contour_block_marks(scene.width, scene.height);  // by the edge pass
   Texture multi_contour_darkness = make_texture(scene.width, scene.height, GL_R32F);
   Texture interior_intensity = make_texture(scene.width, scene.height, GL_R32F);
   Texture interior_darkness = make_texture(scene.width, scene.height, GL_R32F);
@@ -131,7 +132,9 @@ struct Renderer::State {
       gbuffer_pass.render(scene, gbuffer, gbuffer_channels);
     } else if (pass == "edge_detect+contour_light") {
       edge_pass.run(gbuffer, scene.params.get<EdgeDetectParams>(), view_space_lights(scene),
-                    scene.params.get<ContourLightParams>(), contour_darkness, lit_contour_darkness, filter_rect(ordinary, 1));
+                    scene.params.get<ContourLightParams>(),
+                    {lit_contour_darkness, dump ? &contour_darkness : nullptr, ran("multi_contour") ? &contour_block_marks : nullptr},
+                    filter_rect(ordinary, 1));
     } else if (pass == "interior_intensity+pencil_interior") {
       pencil_interior_pass.run(gbuffer, gbuffer_pass.triangle_angles(), view_space_lights(scene), pencil_stack, paper_normal,
                                interior_options(scene.effects), scene.params.get<InteriorParams>(),
@@ -140,7 +143,7 @@ struct Renderer::State {
     } else if (pass == "multi_contour+compose") {
       // The contours are drawn in the composition pass; a dump also keeps their D_c.
       ContourSources contours = multi_contour_pass.prepare(lit_contour_darkness, contour_inputs,
-                                                           scene.params.get<ContourParams>());
+                                                           scene.params.get<ContourParams>(), &contour_block_marks);
       compose_pass.run(contours, compose_inputs(), scene.params.get<ComposeParams>(), color, compose_rect(),
                        dump ? &multi_contour_darkness : nullptr);
     } else if (pass == "compose") {

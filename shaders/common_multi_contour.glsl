@@ -4,7 +4,7 @@
 //   D_c = 1 - prod_k (1 - alpha d_k mix(1, t_k, texture_strength))
 uniform sampler2D lit_contour_darkness;  // LINEAR, CLAMP_TO_EDGE
 uniform sampler2DArray copy_inputs;      // per copy: offset_k(p), mix(1, t_k, texture_strength) (contour_copies.frag)
-uniform sampler2D block_reach_max;       // contour_block_reach.frag
+uniform sampler2D block_reach_max;       // 1 where a marked block is within reach (contour_block_reach.frag)
 
 // Whether every d_k is 0 at pixel x, so that D_c = 0: its block is beyond the copies'
 // reach of any d' > 0 (gpu/multi_contour.cpp).

@@ -1,10 +1,11 @@
 #version 450 core
-// The largest lit contour darkness d' in each CONTOUR_BLOCK x CONTOUR_BLOCK block of
-// pixels, for multi_contour.frag to find the pixels no copy can darken (a GPU shortcut,
-// not a stage of SPEC: the reference computes every pixel).
+// The mark of each CONTOUR_BLOCK x CONTOUR_BLOCK block of pixels: 1 where some d' > 0, else
+// 0, for multi_contour.frag to find the pixels no copy can darken (a GPU shortcut, not a
+// stage of SPEC: the reference computes every pixel). A frame marks the blocks while it
+// draws d' instead (edge_detect.frag).
 uniform sampler2D lit_contour_darkness;
 
-layout(location = 0) out float block_max;
+layout(location = 0) out float block_mark;
 
 void main() {
   ivec2 last = textureSize(lit_contour_darkness, 0) - 1;
@@ -12,5 +13,5 @@ void main() {
   float m = 0.0;
   for (int y = 0; y < CONTOUR_BLOCK; ++y)
     for (int x = 0; x < CONTOUR_BLOCK; ++x) m = max(m, texelFetch(lit_contour_darkness, min(first + ivec2(x, y), last), 0).r);
-  block_max = m;
+  block_mark = m > 0.0 ? 1.0 : 0.0;
 }
