@@ -77,30 +77,52 @@ void fill_vertex_faces(const Mesh& mesh, std::vector<uint32_t>& start, std::vect
   tbb::parallel_for(size_t(0), n, [&](size_t v) { std::sort(faces.begin() + start[v], faces.begin() + start[v + 1]); });
 }
 
-// --- Manifold meshes: edges vertex by vertex -----------------------------------------
+// --- Manifold meshes: neighbors and edges vertex by vertex ---------------------------
 
 // v's corner in one of its faces: v = t[slot], next = t[slot + 1], prev = t[slot + 2].
 struct Corner {
   uint32_t face, slot, next, prev;
 };
 
-// (value, corner index) pairs sorted by value, to find the corner whose next (or prev)
-// is a given vertex.
-struct CornerIndex {
-  std::vector<std::pair<uint32_t, uint32_t>> pairs;
+// Up to this many corners (a vertex has 6 on average) a corner is found by scanning
+// them, which costs less than sorting them; above it, by binary search.
+constexpr size_t kScannedCorners = 16;
+
+// Finds the corner whose next (or prev) is a given vertex.
+class CornerIndex {
+ public:
   void build(const std::vector<Corner>& corners, uint32_t Corner::*field) {
-    pairs.resize(corners.size());
-    for (uint32_t i = 0; i < corners.size(); ++i) pairs[i] = {corners[i].*field, i};
-    std::sort(pairs.begin(), pairs.end());
+    corners_ = &corners, field_ = field;
+    pairs_.clear();
+    if (corners.size() <= kScannedCorners) return;
+    for (uint32_t i = 0; i < corners.size(); ++i) pairs_.emplace_back(corners[i].*field, i);
+    std::sort(pairs_.begin(), pairs_.end());
   }
   bool has_repeats() const {
-    return std::adjacent_find(pairs.begin(), pairs.end(), [](auto a, auto b) { return a.first == b.first; }) !=
-           pairs.end();
+    const auto& c = *corners_;
+    if (pairs_.empty()) {
+      for (size_t i = 1; i < c.size(); ++i)
+        for (size_t j = 0; j < i; ++j)
+          if (c[i].*field_ == c[j].*field_) return true;
+      return false;
+    }
+    return std::adjacent_find(pairs_.begin(), pairs_.end(), [](auto a, auto b) { return a.first == b.first; }) !=
+           pairs_.end();
   }
   int find(uint32_t value) const {
-    auto it = std::lower_bound(pairs.begin(), pairs.end(), std::make_pair(value, 0u));
-    return it != pairs.end() && it->first == value ? int(it->second) : -1;
+    if (pairs_.empty()) {
+      for (size_t i = 0; i < corners_->size(); ++i)
+        if ((*corners_)[i].*field_ == value) return int(i);
+      return -1;
+    }
+    auto it = std::lower_bound(pairs_.begin(), pairs_.end(), std::make_pair(value, 0u));
+    return it != pairs_.end() && it->first == value ? int(it->second) : -1;
   }
+
+ private:
+  const std::vector<Corner>* corners_ = nullptr;
+  uint32_t Corner::*field_ = nullptr;
+  std::vector<std::pair<uint32_t, uint32_t>> pairs_;  // (value, corner) sorted, for large fans only
 };
 
 struct VertexCorners {
@@ -122,6 +144,15 @@ bool collect_corners(uint32_t v, const Mesh& mesh, std::span<const uint32_t> fac
   return true;
 }
 
+// The corners whose prev edge has no face running the other way (the start of an open
+// fan): how many, and the last of them.
+size_t fan_starts(const VertexCorners& c, size_t& start) {
+  size_t starts = 0;
+  for (size_t i = 0; i < c.corners.size(); ++i)
+    if (c.by_next.find(c.corners[i].prev) < 0) ++starts, start = i;
+  return starts;
+}
+
 // Every edge at v has at most one face running out of v along it (next) and one running
 // into v (prev), and the faces, each linked to the one across its edge (v, next), form
 // one path (an open fan, starting at the only face whose prev edge has no other face) or
@@ -129,10 +160,8 @@ bool collect_corners(uint32_t v, const Mesh& mesh, std::span<const uint32_t> fac
 bool is_one_fan(const VertexCorners& c) {
   if (c.corners.empty()) return true;
   if (c.by_next.has_repeats() || c.by_prev.has_repeats()) return false;
-  size_t starts = 0, start = 0;
-  for (size_t i = 0; i < c.corners.size(); ++i)
-    if (c.by_next.find(c.corners[i].prev) < 0) ++starts, start = i;
-  if (starts > 1) return false;
+  size_t start = 0;
+  if (fan_starts(c, start) > 1) return false;
   size_t visited = 1;
   for (int i = int(start);;) {
     int j = c.by_prev.find(c.corners[size_t(i)].next);
@@ -141,6 +170,16 @@ bool is_one_fan(const VertexCorners& c) {
     i = j;
   }
   return visited == c.corners.size();
+}
+
+// The neighbors of a vertex that is one fan, unsorted: every corner's next (each
+// corner's prev is the next of the corner before it) and, for an open fan, the start's
+// prev. Calls f(u) for each.
+template <class F>
+void for_each_fan_neighbor(const VertexCorners& c, const F& f) {
+  for (const Corner& k : c.corners) f(k.next);
+  size_t start = 0;
+  if (fan_starts(c, start) == 1) f(c.corners[start].prev);
 }
 
 // Edge `e` = (v, u): face[0] is the lower of its faces, from -> to the way it runs.
@@ -161,22 +200,19 @@ void write_edge(uint32_t e, uint32_t v, uint32_t u, const VertexCorners& c, Mesh
   topo.edges[e] = edge;
 }
 
-// Number of v's neighbors above v: the edges v owns.
-uint32_t higher_neighbors(const MeshTopology& topo, uint32_t v) {
-  auto n = topo.neighbors_of(v);
-  return uint32_t(n.end() - std::upper_bound(n.begin(), n.end(), v));
-}
+}  // namespace
 
-// Edges numbered vertex by vertex, each owned by its lower vertex; false (and the edges
-// left unfinished) if some vertex is not one fan or some face has a repeated corner.
-bool manifold_edges(const Mesh& mesh, MeshTopology& topo) {
-  const size_t n = topo.vertex_count();
-  std::vector<uint32_t> first;
+// Neighbors (CSR `neighbor_start`, `neighbors`) and edges of a mesh whose every vertex is
+// one fan, in two passes over each vertex's corners: the counts of neighbors and of the
+// edges each vertex owns (those to higher neighbors), then the sorted lists and the edges,
+// numbered vertex by vertex. False (the topology unfinished) if some vertex is not one
+// fan or some face has a repeated corner.
+bool manifold_adjacency(const Mesh& mesh, MeshTopology& topo, std::vector<uint32_t>& neighbor_start,
+                        std::vector<uint32_t>& neighbors) {
+  const size_t n = mesh.positions.size();
+  std::vector<uint32_t> first;  // first[v]: the first edge v owns
+  assign_populated(neighbor_start, n + 1);
   assign_populated(first, n + 1);
-  tbb::parallel_for(size_t(0), n, [&](size_t v) { first[v + 1] = higher_neighbors(topo, uint32_t(v)); });
-  counts_to_starts(first);
-  assign_populated(topo.edges, first[n]);
-  assign_populated(topo.face_edges, mesh.triangles.size());
   tbb::enumerable_thread_specific<VertexCorners> scratch;
   std::atomic<bool> manifold = true;
   for_each_key(n, scratch, [&](uint32_t v, VertexCorners& c) {
@@ -184,12 +220,27 @@ bool manifold_edges(const Mesh& mesh, MeshTopology& topo) {
       manifold.store(false, std::memory_order_relaxed);
       return;
     }
-    auto neighbors = topo.neighbors_of(v);
-    auto higher = std::upper_bound(neighbors.begin(), neighbors.end(), v);
-    for (uint32_t e = first[v]; higher != neighbors.end(); ++higher, ++e) write_edge(e, v, *higher, c, topo);
+    for_each_fan_neighbor(c, [&](uint32_t u) { ++neighbor_start[v + 1], first[v + 1] += u > v; });
   });
-  return manifold;
+  if (!manifold) return false;
+  counts_to_starts(neighbor_start);
+  counts_to_starts(first);
+  assign_populated(neighbors, neighbor_start[n]);
+  assign_populated(topo.edges, first[n]);
+  assign_populated(topo.face_edges, mesh.triangles.size());
+  for_each_key(n, scratch, [&](uint32_t v, VertexCorners& c) {
+    collect_corners(v, mesh, topo.faces_of(v), c);
+    auto list = neighbors.begin() + neighbor_start[v], end = neighbors.begin() + neighbor_start[v + 1];
+    for_each_fan_neighbor(c, [&](uint32_t u) { *list++ = u; });
+    list = neighbors.begin() + neighbor_start[v];
+    std::sort(list, end);
+    auto higher = std::upper_bound(list, end, v);
+    for (uint32_t e = first[v]; higher != end; ++higher, ++e) write_edge(e, v, *higher, c, topo);
+  });
+  return true;
 }
+
+namespace {
 
 // --- Any triangle soup: OpenMesh -----------------------------------------------------
 
@@ -282,8 +333,11 @@ MeshTopology vertex_topology(const Mesh& mesh) {
 
 MeshTopology build_topology(const Mesh& mesh) {
   validate_mesh(mesh);
-  MeshTopology topo = vertex_topology(mesh);
-  if (!manifold_edges(mesh, topo)) openmesh_edges(mesh, topo);
+  MeshTopology topo;
+  fill_vertex_faces(mesh, topo.face_start_, topo.vertex_faces_);
+  if (manifold_adjacency(mesh, topo, topo.neighbor_start_, topo.neighbors_)) return topo;
+  topo = vertex_topology(mesh);
+  openmesh_edges(mesh, topo);
   return topo;
 }
 
