@@ -55,8 +55,7 @@ struct FaceMark {
   uint32_t stamp = 0, position = 0;
 };
 
-// Per-thread marks of the faces queued for the current vertex (only the ball uses them:
-// the 1-ring's few edges are kept in the short `queue`).
+// Per-thread marks of the faces queued for the current vertex (only the ball uses them).
 struct Scratch {
   std::vector<FaceMark> mark;
   std::vector<uint32_t> queue;
@@ -118,8 +117,14 @@ void fill_ball_records(Surface& g) {
   });
 }
 
-// 1-ring (radius 0): the faces around v; edges at v whole, edges opposite v half.
-BallSums one_ring_sums(uint32_t v, const Surface& g, Scratch& s) {
+bool has_corner(const glm::uvec3& t, uint32_t v) { return t[0] == v || t[1] == v || t[2] == v; }
+
+// 1-ring (radius 0): the faces around v; edges at v whole, edges opposite v half, each
+// edge once, from the first of its faces around v (faces_of is sorted). A side is
+// skipped where the face across it is around v and comes earlier: the face across a
+// side at v always has v as a corner, the face across a side opposite v only where two
+// faces share all three vertices.
+BallSums one_ring_sums(uint32_t v, const Surface& g) {
   BallSums sums;
   for (uint32_t f : g.topo.faces_of(v)) {
     const Triangle tri = triangle(g.mesh, f);
@@ -127,11 +132,13 @@ BallSums one_ring_sums(uint32_t v, const Surface& g, Scratch& s) {
     sums.add_whole_face(n, glm::length(n));
     const auto& t = g.mesh.triangles[f];
     for (int k = 0; k < 3; ++k) {
-      uint32_t e = g.topo.face_edges[f][k];
-      if (std::find(s.queue.begin(), s.queue.end(), e) != s.queue.end()) continue;
-      s.queue.push_back(e);
-      double weight = t[k] == v || t[(k + 1) % 3] == v ? 1.0 : 0.5;
-      sums.tensor.add(weight * g.beta_per_length[e], tri.side(k));
+      const uint32_t e = g.topo.face_edges[f][k];
+      const auto& edge = g.topo.edges[e];
+      const int32_t across = edge.face[0] == int32_t(f) ? edge.face[1] : edge.face[0];
+      const bool at_v = t[k] == v || t[(k + 1) % 3] == v;
+      if (across >= 0 && uint32_t(across) < f && (at_v || has_corner(g.mesh.triangles[uint32_t(across)], v)))
+        continue;
+      sums.tensor.add((at_v ? 1.0 : 0.5) * g.beta_per_length[e], tri.side(k));
     }
   }
   return sums;
@@ -194,7 +201,7 @@ void for_each_vertex_sums(const Mesh& mesh, const MeshTopology& topo, const Curv
     for (uint32_t v = range.begin(); v != range.end(); ++v) {
       s.next_vertex();
       bool ring = !ball || (p.ring_fallback && radius < ring_radius(v, mesh, topo));
-      f(v, ring ? one_ring_sums(v, g, s) : ball_sums(v, radius, g, s));
+      f(v, ring ? one_ring_sums(v, g) : ball_sums(v, radius, g, s));
     }
     progress.advance(range.size());
   });

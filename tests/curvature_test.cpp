@@ -16,6 +16,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <tuple>
 
@@ -314,6 +315,86 @@ TEST(CurvatureBall, SumsAreThoseOfThePlainBall) {
   }
   std::string teapot = std::string(PLUMBAGO_MODELS_DIR) + "/teapot.obj";
   if (std::filesystem::exists(teapot)) expect_plain_ball_sums(load_mesh(teapot), 0.05, "teapot");
+}
+
+// The 1-ring's sums the plain way (SPEC §1.1, docs/curvature.md): the faces around v whole,
+// each distinct edge of those faces once (marked), edges at v whole and the others half.
+curvature::BallSums plain_one_ring_sums(const Mesh& m, const MeshTopology& topo, uint32_t v, double& tensor_scale) {
+  auto corner = [&](uint32_t f, int k) { return glm::dvec3(m.positions[m.triangles[f][k % 3]]); };
+  auto twice_area_normal = [&](uint32_t f) { return glm::cross(corner(f, 1) - corner(f, 0), corner(f, 2) - corner(f, 0)); };
+  curvature::BallSums sums;
+  std::set<uint32_t> edge_seen;
+  tensor_scale = 0;
+  for (uint32_t f : topo.faces_of(v)) {
+    glm::dvec3 N = twice_area_normal(f);
+    sums.add_face(0.5 * glm::length(N), N, glm::length(N));
+    for (int k = 0; k < 3; ++k) {
+      uint32_t e = topo.face_edges[f][k];
+      if (!edge_seen.insert(e).second) continue;
+      const auto& edge = topo.edges[e];
+      glm::dvec3 side = corner(f, k + 1) - corner(f, k);
+      glm::dvec3 d = glm::dvec3(m.positions[edge.to]) - glm::dvec3(m.positions[edge.from]);
+      double length = glm::length(d), beta = 0;
+      if (edge.face[1] >= 0 && length > 0)
+        beta = curvature::signed_dihedral_angle(twice_area_normal(uint32_t(edge.face[0])),
+                                                twice_area_normal(uint32_t(edge.face[1])), d / length);
+      bool at_v = m.triangles[f][k] == v || m.triangles[f][(k + 1) % 3] == v;
+      double w = (at_v ? 1.0 : 0.5) * (length > 0 ? beta / length : 0.0);
+      sums.tensor.add(w, side);
+      tensor_scale += std::abs(w) * glm::dot(side, side);
+    }
+  }
+  return sums;
+}
+
+void expect_plain_one_ring_sums(const Mesh& mesh, const std::string& name) {
+  MeshTopology topo = build_topology(mesh);
+  CurvatureParams p = curvature_params({"curvature.radius=0"});
+  std::vector<curvature::BallSums> fast(mesh.positions.size());
+  Progress quiet("", mesh.positions.size(), false);
+  curvature::for_each_vertex_sums(mesh, topo, p, quiet, [&](uint32_t v, const curvature::BallSums& s) { fast[v] = s; });
+  int failures = 0;
+  for (uint32_t v = 0; v < mesh.positions.size() && failures < 5; ++v) {
+    double scale = 0;
+    curvature::BallSums plain = plain_one_ring_sums(mesh, topo, v, scale);
+    const auto &a = fast[v].tensor, &b = plain.tensor;
+    double t = 1e-12 * scale, s = 1e-12 * plain.area;
+    bool same = std::abs(a.xx - b.xx) <= t && std::abs(a.xy - b.xy) <= t && std::abs(a.xz - b.xz) <= t &&
+                std::abs(a.yy - b.yy) <= t && std::abs(a.yz - b.yz) <= t && std::abs(a.zz - b.zz) <= t &&
+                std::abs(fast[v].area - plain.area) <= s && glm::length(fast[v].normal - plain.normal) <= s;
+    if (!same) ++failures;
+    EXPECT_TRUE(same) << name << " vertex " << v << ": area " << fast[v].area << " vs " << plain.area << ", T_xx "
+                      << a.xx << " vs " << b.xx << ", T_yy " << a.yy << " vs " << b.yy;
+  }
+}
+
+// Each edge once: the pillow's and the tent's opposite edges have both their faces in the
+// same 1-ring (two faces on the same three vertices).
+TEST(CurvatureRing, SumsAreThoseOfThePlainOneRing) {
+  Mesh sphere = analytic_sphere(1.0, 0.15, Meshing::Irregular).mesh;
+  Mesh non_manifold = sphere;
+  const auto t = non_manifold.triangles[0];
+  non_manifold.positions.push_back(1.5f * non_manifold.positions[t[0]]);
+  non_manifold.triangles.push_back({t[0], t[1], uint32_t(non_manifold.positions.size() - 1)});
+  non_manifold.triangles.push_back({t[0], t[2], t[1]});  // the first face again, turned over
+  compute_normals(non_manifold);
+  Mesh pillow;  // two triangles glued along all three edges
+  pillow.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0.2f}};
+  pillow.triangles = {{0, 1, 2}, {0, 2, 1}};
+  compute_normals(pillow);
+  Mesh tent = pillow;  // a pillow with a fan of two more faces on one side: edge 1-2 has three faces
+  tent.positions.push_back({0.6f, 0.6f, 1.0f});
+  tent.triangles.push_back({1, 3, 2});
+  compute_normals(tent);
+  expect_plain_one_ring_sums(analytic_torus(1.0, 0.4, 0.08, Meshing::Irregular).mesh, "irregular torus");
+  expect_plain_one_ring_sums(analytic_saddle(1.0, 0.1, Meshing::Irregular).mesh, "saddle");
+  expect_plain_one_ring_sums(subdivided_cube(6), "cube");
+  expect_plain_one_ring_sums(with_zero_area_faces(sphere), "sphere with zero-area faces");
+  expect_plain_one_ring_sums(non_manifold, "non-manifold sphere");
+  expect_plain_one_ring_sums(pillow, "pillow");
+  expect_plain_one_ring_sums(tent, "tent");
+  std::string teapot = std::string(PLUMBAGO_MODELS_DIR) + "/teapot.obj";
+  if (std::filesystem::exists(teapot)) expect_plain_one_ring_sums(load_mesh(teapot), "teapot");
 }
 
 // ---------------------------------------------------------------------------------
