@@ -128,6 +128,7 @@ class CornerIndex {
 struct VertexCorners {
   std::vector<Corner> corners;
   CornerIndex by_next, by_prev;
+  int open_start = -1;  // of a vertex that is one fan: its open fan's first corner, -1 if closed
 };
 
 // The corners of v in its faces; false where v is a corner of one face twice.
@@ -145,11 +146,12 @@ bool collect_corners(uint32_t v, const Mesh& mesh, std::span<const uint32_t> fac
 }
 
 // The corners whose prev edge has no face running the other way (the start of an open
-// fan): how many, and the last of them.
-size_t fan_starts(const VertexCorners& c, size_t& start) {
+// fan): how many; c.open_start is the last of them, -1 if none.
+size_t fan_starts(VertexCorners& c) {
   size_t starts = 0;
+  c.open_start = -1;
   for (size_t i = 0; i < c.corners.size(); ++i)
-    if (c.by_next.find(c.corners[i].prev) < 0) ++starts, start = i;
+    if (c.by_next.find(c.corners[i].prev) < 0) ++starts, c.open_start = int(i);
   return starts;
 }
 
@@ -157,11 +159,12 @@ size_t fan_starts(const VertexCorners& c, size_t& start) {
 // into v (prev), and the faces, each linked to the one across its edge (v, next), form
 // one path (an open fan, starting at the only face whose prev edge has no other face) or
 // one cycle (a closed fan).
-bool is_one_fan(const VertexCorners& c) {
+bool is_one_fan(VertexCorners& c) {
+  c.open_start = -1;
   if (c.corners.empty()) return true;
   if (c.by_next.has_repeats() || c.by_prev.has_repeats()) return false;
-  size_t start = 0;
-  if (fan_starts(c, start) > 1) return false;
+  if (fan_starts(c) > 1) return false;
+  const size_t start = c.open_start < 0 ? 0 : size_t(c.open_start);
   size_t visited = 1;
   for (int i = int(start);;) {
     int j = c.by_prev.find(c.corners[size_t(i)].next);
@@ -172,14 +175,13 @@ bool is_one_fan(const VertexCorners& c) {
   return visited == c.corners.size();
 }
 
-// The neighbors of a vertex that is one fan, unsorted: every corner's next (each
-// corner's prev is the next of the corner before it) and, for an open fan, the start's
-// prev. Calls f(u) for each.
+// The neighbors of a vertex that is one fan (c.open_start set by is_one_fan or
+// fan_starts), unsorted: every corner's next (each corner's prev is the next of the
+// corner before it) and, for an open fan, the start's prev. Calls f(u) for each.
 template <class F>
 void for_each_fan_neighbor(const VertexCorners& c, const F& f) {
   for (const Corner& k : c.corners) f(k.next);
-  size_t start = 0;
-  if (fan_starts(c, start) == 1) f(c.corners[start].prev);
+  if (c.open_start >= 0) f(c.corners[size_t(c.open_start)].prev);
 }
 
 // Edge `e` = (v, u): face[0] is the lower of its faces, from -> to the way it runs.
@@ -230,6 +232,7 @@ bool manifold_adjacency(const Mesh& mesh, MeshTopology& topo, std::vector<uint32
   assign_populated(topo.face_edges, mesh.triangles.size());
   for_each_key(n, scratch, [&](uint32_t v, VertexCorners& c) {
     collect_corners(v, mesh, topo.faces_of(v), c);
+    fan_starts(c);
     auto list = neighbors.begin() + neighbor_start[v], end = neighbors.begin() + neighbor_start[v + 1];
     for_each_fan_neighbor(c, [&](uint32_t u) { *list++ = u; });
     list = neighbors.begin() + neighbor_start[v];
