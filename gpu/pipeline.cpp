@@ -26,8 +26,9 @@ namespace plumbago::gpu {
 
 namespace {
 
-// Stages that one GPU pass computes together (one shader, one output each), so that a
-// frame reads its inputs once: "a+b" replaces a followed by b.
+// Stages that one GPU pass computes together (one shader), so that a frame reads their
+// inputs once and keeps no target between them: "a+b" replaces a followed by b. A dump
+// has the shader write each stage's output (gpu/edge_detect.hpp, gpu/compose.hpp).
 std::vector<std::string> fused(const std::vector<std::string>& stages) {
   static const std::vector<std::pair<std::string, std::string>> pairs = {{"edge_detect", "contour_light"},
                                                                          {"interior_intensity", "pencil_interior"},
@@ -146,7 +147,7 @@ struct Renderer::State {
                                                            scene.params.get<ContourParams>(), &contour_block_marks);
       compose_pass.run(contours, compose_inputs(), scene.params.get<ComposeParams>(), color, compose_rect(),
                        dump ? &multi_contour_darkness : nullptr);
-    } else if (pass == "compose") {
+    } else if (pass == "compose") {  // no contours: they would have been fused in
       compose_pass.run(multi_contour_darkness, false, compose_inputs(), scene.params.get<ComposeParams>(), color,
                        compose_rect());
     } else if (pass == "sketchy_gbuffer") {
