@@ -8,7 +8,12 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
 #include <cstdint>
+#include <cstring>
+#include <type_traits>
 #include <vector>
 
 namespace plumbago::curvature {
@@ -24,12 +29,28 @@ inline void populate_pages(void* data, size_t bytes) {
 #endif
 }
 
-// v.assign(n, value), with v's new memory mapped in first.
+// Maps in and writes (zeros) the pages of [data, data + bytes), 1 MB per task in
+// parallel. On the development machine a page's first write after MADV_POPULATE_WRITE
+// still costs about 0.46 ms per MB on one core (the second 0.05 ms), 0.32 ms per MB of
+// wall time on two, and the mapping itself 0.16 ms per MB on one core.
+inline void first_touch(void* data, size_t bytes) {
+  constexpr size_t chunk = size_t(1) << 20;
+  tbb::parallel_for(size_t(0), (bytes + chunk - 1) / chunk, [&](size_t i) {
+    char* begin = static_cast<char*>(data) + i * chunk;
+    const size_t length = std::min(chunk, bytes - i * chunk);
+    populate_pages(begin, length);
+    std::memset(begin, 0, length);
+  });
+}
+
+// v.assign(n, value), with v's new memory mapped in and first written in parallel (the
+// storage is written before the elements are made; T is trivially copyable).
 template <class T>
 void assign_populated(std::vector<T>& v, size_t n, const T& value = T()) {
+  static_assert(std::is_trivially_copyable_v<T>);
   std::vector<T> fresh;
   fresh.reserve(n);
-  populate_pages(fresh.data(), n * sizeof(T));
+  first_touch(static_cast<void*>(fresh.data()), n * sizeof(T));
   fresh.assign(n, value);
   v.swap(fresh);
 }
