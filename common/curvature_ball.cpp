@@ -5,11 +5,9 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
-#include <optional>
 
 #include "common/ball_geometry.hpp"
-#include "common/curvature_ball.hpp"
+#include "common/curvature_internal.hpp"
 #include "common/curvature_memory.hpp"
 
 namespace plumbago::curvature {
@@ -50,6 +48,58 @@ std::vector<double> edge_beta_per_length(const Mesh& mesh, const MeshTopology& t
   });
   return coefficient;
 }
+
+// Where a face stands in the current vertex's ball: queued as the `position`-th face
+// (stamp = the current vertex's), or not yet (any other stamp).
+struct FaceMark {
+  uint32_t stamp = 0, position = 0;
+};
+
+// Per-thread marks of the faces queued for the current vertex (only the ball uses them).
+struct Scratch {
+  std::vector<FaceMark> mark;
+  std::vector<uint32_t> queue;
+  uint32_t stamp = 0;
+  explicit Scratch(size_t faces) : mark(faces) {}
+  void next_vertex() {
+    if (++stamp == 0) {
+      std::fill(mark.begin(), mark.end(), FaceMark{});
+      stamp = 1;
+    }
+    queue.clear();
+  }
+  bool queued(uint32_t f) const { return mark[f].stamp == stamp; }
+  bool enqueue_face(uint32_t f) {
+    if (queued(f)) return false;
+    mark[f] = {stamp, uint32_t(queue.size())};
+    queue.push_back(f);
+    return true;
+  }
+  // An edge is counted by the first of its faces to leave the queue: the face at
+  // `position` counts its side towards `other` unless `other` left the queue before it.
+  bool counts_side(int32_t other, uint32_t position) const {
+    return other < 0 || !queued(uint32_t(other)) || mark[uint32_t(other)].position > position;
+  }
+};
+
+// What the ball reads about a face, in one record: the ball visits faces in no useful
+// order, and one record is two cache lines where the mesh, the topology and the edge
+// coefficients would be five or six. Each side's beta / |e| is kept in both faces of
+// its edge, and each side knows the face across it, so the ball never reads an edge.
+struct BallFace {
+  glm::vec3 corner[3];
+  int32_t neighbor[3];             // the face across side k (corner k to k + 1), -1 if none
+  double beta_per_length[3];       // of side k's edge
+  glm::dvec3 twice_area_normal;    // N
+  double N_length;
+};
+
+struct Surface {
+  const Mesh& mesh;
+  const MeshTopology& topo;
+  std::vector<double> beta_per_length;
+  std::vector<BallFace> faces;  // for the ball only
+};
 
 void fill_ball_records(Surface& g) {
   assign_populated(g.faces, g.mesh.triangles.size());
@@ -139,42 +189,22 @@ double ring_radius(uint32_t v, const Mesh& mesh, const MeshTopology& topo) {
 }  // namespace
 
 void for_each_vertex_sums(const Mesh& mesh, const MeshTopology& topo, const CurvatureParams& p, Progress& progress,
-                          const std::function<void(uint32_t, const BallSums&)>& f, BallCounts* counts) {
+                           const std::function<void(uint32_t, const BallSums&)>& f) {
   const bool ball = p.radius > 0;
   Surface g{mesh, topo, edge_beta_per_length(mesh, topo), {}};
   if (ball) fill_ball_records(g);
-  std::optional<BallFlux> flux;
-  if (ball) flux.emplace(g);
   const double radius = double(p.radius) * double(mesh.bbox_diagonal());
   tbb::enumerable_thread_specific<Scratch> scratch(ball ? mesh.triangles.size() : 0);
-  std::atomic<size_t> grown = 0, from_boundary = 0;
   const uint32_t n = uint32_t(mesh.positions.size());
-  std::vector<uint32_t> order;
-  if (ball) order = flux->vertex_order();
   tbb::parallel_for(tbb::blocked_range<uint32_t>(0, n, 1024), [&](const tbb::blocked_range<uint32_t>& range) {
     Scratch& s = scratch.local();
-    size_t range_grown = 0, range_from_boundary = 0;
-    for (uint32_t i = range.begin(); i != range.end(); ++i) {
-      const uint32_t v = ball ? order[i] : i;
+    for (uint32_t v = range.begin(); v != range.end(); ++v) {
       s.next_vertex();
-      if (!ball || (p.ring_fallback && radius < ring_radius(v, mesh, topo))) {
-        f(v, one_ring_sums(v, g));
-        continue;
-      }
-      BallSums sums;
-      if (flux->sums(v, mesh.positions[v], radius, s, sums)) {
-        ++range_from_boundary;
-      } else {
-        s.next_vertex();
-        sums = ball_sums(v, radius, g, s);
-        ++range_grown;
-      }
-      f(v, sums);
+      bool ring = !ball || (p.ring_fallback && radius < ring_radius(v, mesh, topo));
+      f(v, ring ? one_ring_sums(v, g) : ball_sums(v, radius, g, s));
     }
-    grown += range_grown, from_boundary += range_from_boundary;
     progress.advance(range.size());
   });
-  if (counts) *counts = {grown, from_boundary};
 }
 
 }  // namespace plumbago::curvature

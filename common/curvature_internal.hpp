@@ -17,9 +17,6 @@ struct SymmetricTensor {
     xx += w * e.x * e.x, xy += w * e.x * e.y, xz += w * e.x * e.z;
     yy += w * e.y * e.y, yz += w * e.y * e.z, zz += w * e.z * e.z;
   }
-  void add(double w, const SymmetricTensor& t) {
-    xx += w * t.xx, xy += w * t.xy, xz += w * t.xz, yy += w * t.yy, yz += w * t.yz, zz += w * t.zz;
-  }
   glm::dvec3 apply(const glm::dvec3& v) const {
     return {xx * v.x + xy * v.y + xz * v.z, xy * v.x + yy * v.y + yz * v.z, xz * v.x + yz * v.y + zz * v.z};
   }
@@ -44,11 +41,6 @@ struct BallSums {
   }
   // A whole face: a = |N| / 2, so its normal term is N / 2.
   void add_whole_face(const glm::dvec3& N, double N_length) { area += 0.5 * N_length, normal += 0.5 * N; }
-  // w times other sums (w = -1 takes them away).
-  void add(double w, const BallSums& o) {
-    tensor.add(w, o.tensor);
-    area += w * o.area, normal += w * o.normal;
-  }
 };
 
 // beta(e): the signed angle from n0 to n1 (normals of any length) about the edge,
@@ -61,16 +53,10 @@ double signed_dihedral_angle(const glm::dvec3& n0, const glm::dvec3& n1, const g
 // n.z = -1 (Duff et al. 2017, "Building an orthonormal basis, revisited").
 void tangent_basis(const glm::dvec3& n, glm::dvec3& t1, glm::dvec3& t2);
 
-// How many balls were grown face by face and how many were summed from their boundary
-// (BallFlux, curvature_ball.hpp).
-struct BallCounts {
-  size_t grown = 0, from_boundary = 0;
-};
-
 // The sums over each vertex's ball (or 1-ring where SPEC or ring_fallback asks for it),
 // handed to f(v, sums) in parallel.
 void for_each_vertex_sums(const Mesh& mesh, const MeshTopology& topo, const CurvatureParams& p, Progress& progress,
-                          const std::function<void(uint32_t, const BallSums&)>& f, BallCounts* counts = nullptr);
+                          const std::function<void(uint32_t, const BallSums&)>& f);
 
 // Raw per-vertex estimates before propagation. A vertex a method cannot estimate (no
 // faces, too few neighbors for a jet) gets the mesh normal and k_min = k_max = 0.
