@@ -1,7 +1,7 @@
 // The exact clipping of the curvature ball (common/ball_geometry.hpp, SPEC §1.1): what one
 // face or side the sphere cuts costs. The ball's cost is mostly its cut band (docs/curvature.md:
 // 217 cut faces per ball on bunny-1M), so this is the number the 5 s per million target
-// hinges on. Faces of unit sides (some irregular), their centroids within one side of a
+// hinges on. Faces with sides of about 1 (some irregular), their centroids within 1 of a
 // sphere of radius 5, as in a ball five edges wide.
 #include <benchmark/benchmark.h>
 
@@ -33,7 +33,7 @@ std::vector<CutFace> cut_faces(size_t n) {
     const glm::dvec3 y = glm::normalize(across);  // x and y span the face's plane
     CutFace f;
     for (int k = 0; k < 3; ++k) {
-      const double angle = 2.0944 * k + rng.uniform(-0.4, 0.4);
+      const double angle = 2 * M_PI / 3 * k + rng.uniform(-0.4, 0.4);
       f.p[k] = centroid + 0.6 * (std::cos(angle) * x + std::sin(angle) * y);
     }
     int inside = 0;
