@@ -100,16 +100,19 @@ struct Renderer::State {
   ComposePass compose_pass;
   GBufferTargets gbuffer = make_gbuffer_targets(scene.width, scene.height,
                                                 scene.params.get<GBufferParams>().normal_format);
-  Texture contour_darkness = make_texture(scene.width, scene.height, GL_R32F);
   Texture lit_contour_darkness = make_texture(scene.width, scene.height, GL_R32F);
   Texture contour_block_marks = make_contour_block_marks(scene.width, scene.height);  // by the edge pass
-  Texture multi_contour_darkness = make_texture(scene.width, scene.height, GL_R32F);
-  Texture interior_intensity = make_texture(scene.width, scene.height, GL_R32F);
   Texture interior_darkness = make_texture(scene.width, scene.height, GL_R32F);
   Texture color = make_texture(scene.width, scene.height, GL_RGBA8);
   PassTimer timer;
   GBufferChannels gbuffer_channels = channels_read_by(stages, scene);  // all of them for a dump
   bool dump = false;  // a dump composes the whole window: tests compare it with a frame
+  // What only a dump writes (`--dump-stages`, `compare`): the unlit d, the D_c drawn in
+  // the composition, I'. Made by the first dump; a frame writes none of them.
+  struct DumpTargets {
+    Texture contour_darkness, multi_contour_darkness, interior_intensity;
+  };
+  std::unique_ptr<DumpTargets> dumped;
   std::unique_ptr<SketchyState> sketchy = !ran("sketchy_composite") ? nullptr
       : std::make_unique<SketchyState>(scene, pre.sketchy_noise, ran("sketchy_enlarged"));
   GBufferChannels sketchy_channels = SketchyState::channels(scene);
@@ -134,21 +137,22 @@ struct Renderer::State {
     } else if (pass == "edge_detect+contour_light") {
       edge_pass.run(gbuffer, scene.params.get<EdgeDetectParams>(), view_space_lights(scene),
                     scene.params.get<ContourLightParams>(),
-                    {lit_contour_darkness, dump ? &contour_darkness : nullptr, ran("multi_contour") ? &contour_block_marks : nullptr},
+                    {lit_contour_darkness, dump ? &dumped->contour_darkness : nullptr,
+                     ran("multi_contour") ? &contour_block_marks : nullptr},
                     filter_rect(ordinary, 1));
     } else if (pass == "interior_intensity+pencil_interior") {
       pencil_interior_pass.run(gbuffer, gbuffer_pass.triangle_angles(), view_space_lights(scene), pencil_stack, paper_normal,
                                interior_options(scene.effects), scene.params.get<InteriorParams>(),
-                               scene.params.get<PaperParams>().mu_p, interior_darkness, dump ? &interior_intensity : nullptr,
+                               scene.params.get<PaperParams>().mu_p, interior_darkness, dump ? &dumped->interior_intensity : nullptr,
                                filter_rect(ordinary, 0));
     } else if (pass == "multi_contour+compose") {
       // The contours are drawn in the composition pass; a dump also keeps their D_c.
       ContourSources contours = multi_contour_pass.prepare(lit_contour_darkness, contour_inputs,
                                                            scene.params.get<ContourParams>(), &contour_block_marks);
       compose_pass.run(contours, compose_inputs(), scene.params.get<ComposeParams>(), color, compose_rect(),
-                       dump ? &multi_contour_darkness : nullptr);
-    } else if (pass == "compose") {  // no contours: they would have been fused in
-      compose_pass.run(multi_contour_darkness, false, compose_inputs(), scene.params.get<ComposeParams>(), color,
+                       dump ? &dumped->multi_contour_darkness : nullptr);
+    } else if (pass == "compose") {  // no contours (they would have been fused in): D_c is not read
+      compose_pass.run(lit_contour_darkness, false, compose_inputs(), scene.params.get<ComposeParams>(), color,
                        compose_rect());
     } else if (pass == "sketchy_gbuffer") {
       sketchy->gbuffer_pass.render(scene, sketchy->gbuffer, sketchy_channels);
@@ -210,6 +214,11 @@ Frame Renderer::render(const FrameOptions& options) {
   Frame frame;
   state_->gbuffer_channels = options.keep_buffers ? GBufferChannels{} : channels_read_by(state_->stages, state_->scene);
   state_->dump = options.keep_buffers;
+  if (options.keep_buffers && !state_->dumped) {
+    const int w = state_->scene.width, h = state_->scene.height;
+    state_->dumped = std::make_unique<State::DumpTargets>(State::DumpTargets{
+        make_texture(w, h, GL_R32F), make_texture(w, h, GL_R32F), make_texture(w, h, GL_R32F)});
+  }
   state_->sketchy_channels = options.keep_buffers ? GBufferChannels{} : SketchyState::channels(state_->scene);
   state_->run_frame();
   frame.ran = state_->pre.ran;  // once per Renderer, listed with every frame it renders
@@ -223,10 +232,10 @@ Frame Renderer::render(const FrameOptions& options) {
     auto keep = [&](const char* stage, const char* name, const Texture& t) {
       if (s.ran(stage)) frame.buffers[name] = download_texture(t, 1);
     };
-    keep("edge_detect", "edge_detect.contour_darkness", s.contour_darkness);
+    keep("edge_detect", "edge_detect.contour_darkness", s.dumped->contour_darkness);
     keep("contour_light", "contour_light.lit_contour_darkness", s.lit_contour_darkness);
-    keep("multi_contour", "multi_contour.contour_darkness", s.multi_contour_darkness);
-    keep("interior_intensity", "interior_intensity.intensity", s.interior_intensity);
+    keep("multi_contour", "multi_contour.contour_darkness", s.dumped->multi_contour_darkness);
+    keep("interior_intensity", "interior_intensity.intensity", s.dumped->interior_intensity);
     keep("pencil_interior", "pencil_interior.interior_darkness", s.interior_darkness);
     if (s.sketchy) add_sketchy_buffers(*s.sketchy, s.ran("sketchy_enlarged"), frame.buffers);
     frame.buffers[s.sketchy ? "sketchy_composite.color" : "compose.color"] = frame.color;
