@@ -261,7 +261,9 @@ TEST(CurvatureBall, SumsAreThoseOfThePlainBall) {
     expect_plain_ball_sums(non_manifold, radius, "non-manifold sphere");
   }
   std::string teapot = std::string(PLUMBAGO_MODELS_DIR) + "/teapot.obj";
-  if (std::filesystem::exists(teapot)) expect_plain_ball_sums(load_mesh(teapot), 0.05, "teapot");
+  if (!std::filesystem::exists(teapot))
+    GTEST_SKIP() << "teapot part not run, shared model not here: ../shared/models/teapot.obj is absent";
+  expect_plain_ball_sums(load_mesh(teapot), 0.05, "teapot");
 }
 
 // The 1-ring's sums the plain way (SPEC §1.1, docs/curvature.md): the faces around v whole,
@@ -341,7 +343,9 @@ TEST(CurvatureRing, SumsAreThoseOfThePlainOneRing) {
   expect_plain_one_ring_sums(pillow, "pillow");
   expect_plain_one_ring_sums(tent, "tent");
   std::string teapot = std::string(PLUMBAGO_MODELS_DIR) + "/teapot.obj";
-  if (std::filesystem::exists(teapot)) expect_plain_one_ring_sums(load_mesh(teapot), "teapot");
+  if (!std::filesystem::exists(teapot))
+    GTEST_SKIP() << "teapot part not run, shared model not here: ../shared/models/teapot.obj is absent";
+  expect_plain_one_ring_sums(load_mesh(teapot), "teapot");
 }
 
 }  // namespace
