@@ -185,7 +185,7 @@ TEST(CurvatureHardCases, InvalidInputIsRefusedWithAClearError) {
 
 TEST(CurvatureHardCases, TeapotWithOpenBoundariesAndNonManifoldSeams) {
   std::string path = std::string(PLUMBAGO_MODELS_DIR) + "/teapot.obj";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "../shared/models/teapot.obj is not here";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "shared model not here: ../shared/models/teapot.obj is absent";
   expect_valid_everywhere(load_mesh(path), "teapot.obj");
 }
 

@@ -73,12 +73,17 @@ TEST(Topology, ManifoldMeshesMatchOpenMesh) {
 
 // The benchmark's models take the parallel path; the teapot's seams do not.
 TEST(Topology, SharedModelsMatchOpenMesh) {
+  std::string missing;
   for (auto [name, manifold] : {std::pair{"fandisk.obj", true}, {"stanford-bunny.obj", true}, {"ogre.obj", true},
                                 {"teapot.obj", false}, {"igea.ply", true}}) {
     std::string path = std::string(PLUMBAGO_MODELS_DIR) + "/" + name;
-    if (!std::filesystem::exists(path)) continue;
+    if (!std::filesystem::exists(path)) {
+      missing += std::string(missing.empty() ? "" : ", ") + "../shared/models/" + name;
+      continue;
+    }
     EXPECT_EQ(expect_same_as_openmesh(load_mesh(path), name), manifold) << name;
   }
+  if (!missing.empty()) GTEST_SKIP() << "shared models not here, not checked: " << missing << " absent";
 }
 
 // Each of these makes build_topology fall back to OpenMesh, which splits the odd face

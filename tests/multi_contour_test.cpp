@@ -4,17 +4,23 @@
 
 #include "apps/parity.hpp"
 #include "reference/multi_contour.hpp"
+#include "tests/parity_checks.hpp"
 #include "tests/test_scenes.hpp"
 
 namespace plumbago {
 namespace {
+
+// Multiple contour drawing as its own pass, then drawn in the composition pass.
+const std::vector<std::string> kMultiContourResults = {"multi_contour", "multi_contour.in_compose"};
 
 class MultiContourParity : public testing::GlTest, public ::testing::WithParamInterface<std::string> {};
 
 TEST_P(MultiContourParity, GpuMatchesReference) {
   Scene scene = testing::builtin_at(GetParam(), 320, 240);
   // Its own pass, then drawn in the composition pass (a frame's way).
-  for (const StageParity& r : run_parity(scene, {"multi_contour"})) {
+  auto results = run_parity(scene, {"multi_contour"});
+  ASSERT_EQ(testing::names_of(results), kMultiContourResults);
+  for (const StageParity& r : results) {
     std::printf("[multi_contour %s] %s\n", GetParam().c_str(), format_diff(r.name, r.diff).c_str());
     EXPECT_TRUE(r.pass) << r.name;
   }
@@ -26,7 +32,9 @@ TEST_F(MultiContourParity, FiveCopiesOnFandisk) {
   PLUMBAGO_REQUIRE_MODEL("fandisk.obj");
   Scene scene = testing::model_scene("fandisk.obj", 400, 400);
   scene.params.set("contour.copies", 5.0);
-  for (const StageParity& r : run_parity(scene, {"multi_contour"})) {
+  auto results = run_parity(scene, {"multi_contour"});
+  ASSERT_EQ(testing::names_of(results), kMultiContourResults);
+  for (const StageParity& r : results) {
     std::printf("[multi_contour fandisk 5 copies] %s\n", format_diff(r.name, r.diff).c_str());
     EXPECT_TRUE(r.pass) << r.name;
   }

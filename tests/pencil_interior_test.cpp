@@ -1,5 +1,5 @@
-// Interior pencil shading (SPEC 2.6-2.10): GPU vs reference on the same inputs, the
-// effect switches, and the composition with interior and paper.
+// Interior pencil shading (SPEC 2.6-2.10): GPU vs reference on the same inputs, and the
+// effect switches. The composition with interior and paper: compose_test.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,10 +10,14 @@
 #include "reference/gbuffer.hpp"
 #include "reference/interior_intensity.hpp"
 #include "reference/pencil_interior.hpp"
+#include "tests/parity_checks.hpp"
 #include "tests/test_scenes.hpp"
 
 namespace plumbago {
 namespace {
+
+// SPEC 2.6-2.8 alone, then with cross hatching and the paper effect.
+const std::vector<std::string> kPencilInteriorResults = {"pencil_interior.blend", "pencil_interior.hatch_paper"};
 
 class PencilInteriorParity : public testing::GlTest, public ::testing::WithParamInterface<std::string> {};
 
@@ -21,7 +25,9 @@ class PencilInteriorParity : public testing::GlTest, public ::testing::WithParam
 // abs 7e-6 on llvmpipe (float textures are filtered with float weights).
 TEST_P(PencilInteriorParity, GpuMatchesReference) {
   Scene scene = testing::builtin_at(GetParam(), 320, 240);
-  for (const StageParity& r : run_parity(scene, {"pencil_interior", "compose"})) {
+  auto results = run_parity(scene, {"pencil_interior"});
+  ASSERT_EQ(testing::names_of(results), kPencilInteriorResults);
+  for (const StageParity& r : results) {
     std::printf("[%s %s] %s\n", r.name.c_str(), GetParam().c_str(), format_diff(r.name, r.diff).c_str());
     EXPECT_TRUE(r.pass) << r.name;
   }
@@ -31,7 +37,9 @@ INSTANTIATE_TEST_SUITE_P(Scenes, PencilInteriorParity, ::testing::Values("torus"
 
 TEST_F(PencilInteriorParity, Fandisk) {
   PLUMBAGO_REQUIRE_MODEL("fandisk.obj");
-  for (const StageParity& r : run_parity(testing::model_scene("fandisk.obj", 400, 400), {"pencil_interior"})) {
+  auto results = run_parity(testing::model_scene("fandisk.obj", 400, 400), {"pencil_interior"});
+  ASSERT_EQ(testing::names_of(results), kPencilInteriorResults);
+  for (const StageParity& r : results) {
     std::printf("[%s fandisk] %s\n", r.name.c_str(), format_diff(r.name, r.diff).c_str());
     EXPECT_TRUE(r.pass) << r.name;
   }
@@ -42,7 +50,9 @@ TEST_F(PencilInteriorParity, Fandisk) {
 TEST_F(PencilInteriorParity, NearestCornerBlendMatchesReference) {
   Scene scene = testing::builtin_at("cad", 320, 240);
   scene.params.set("interior.blend", std::string("nearest_corner"));
-  for (const StageParity& r : run_parity(scene, {"pencil_interior"})) {
+  auto results = run_parity(scene, {"pencil_interior"});
+  ASSERT_EQ(testing::names_of(results), kPencilInteriorResults);
+  for (const StageParity& r : results) {
     std::printf("[%s cad nearest_corner] %s\n", r.name.c_str(), format_diff(r.name, r.diff).c_str());
     EXPECT_TRUE(r.pass) << r.name;
   }

@@ -2,6 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <set>
+#include <string>
+#include <vector>
 
 #include "common/passes.hpp"
 #include "gpu/pipeline.hpp"
@@ -79,12 +82,64 @@ TEST_F(Frames, AFrameDrawsTheSameImageAsADump) {
   }
 }
 
+std::set<std::string> buffer_names(const Frame& f) {
+  std::set<std::string> out;
+  for (const auto& [name, img] : f.buffers) out.insert(name);
+  return out;
+}
+
+// Both backends keep the same buffers, at least the G-buffer, the passes of the scene's
+// effects and the color, each the window's size and finite. The built-in scenes with
+// their own effects (contours) and with every pencil effect, and a sketchy torus crossed
+// by an ordinary plane.
 TEST_F(Frames, EveryBufferIsFiniteOnBothBackends) {
   FrameOptions keep{true};
+  struct Case {
+    std::string label;
+    Scene scene;
+    std::vector<std::string> expected;  // buffers the frame must have
+  };
+  std::vector<Case> cases;
+  const std::vector<std::string> gbuffer = {"gbuffer.depth", "gbuffer.normal", "gbuffer.face_normal", "gbuffer.bary",
+                                            "gbuffer.gouraud", "gbuffer.ids"};
+  auto with = [](std::vector<std::string> a, const std::vector<std::string>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+  };
+  const std::vector<std::string> contours = with(gbuffer, {"edge_detect.contour_darkness",
+                                                           "contour_light.lit_contour_darkness",
+                                                           "multi_contour.contour_darkness", "compose.color"});
   for (const std::string& name : builtin_scene_names()) {
     Scene scene = testing::builtin_at(name, 160, 120);
-    for (const Frame& f : {reference::render(scene, keep), gpu::Renderer(scene).render(keep)})
-      for (const auto& [buffer, img] : f.buffers) EXPECT_FALSE(has_non_finite(img)) << name << " " << buffer;
+    cases.push_back({name, scene, contours});
+    scene.effects = {"contours", "interior", "crosshatch", "paper"};
+    cases.push_back({name + " with every pencil effect", scene,
+                     with(contours, {"gbuffer.theta_min", "gbuffer.theta_max", "interior_intensity.intensity",
+                                     "pencil_interior.interior_darkness"})});
+  }
+  cases.push_back({"sketchy torus and a plane",
+                   parse_scene(R"({"objects": [{"mesh": {"procedural": "torus"}, "style": "sketchy"},
+                                               {"mesh": {"procedural": "plane"},
+                                                "transform": [1.5,0,0,0, 0,1.3,-0.75,0, 0,0.75,1.3,0, 0,0,0,1]}],
+                                  "resolution": [160, 120]})",
+                               "test:sketchy and plane", "."),
+                   with(gbuffer, {"edge_detect.contour_darkness", "sketchy_gbuffer.depth", "sketchy_maps.edge",
+                                  "sketchy_maps.shade", "sketchy_composite.depth", "sketchy_composite.color"})});
+  ASSERT_EQ(cases.size(), 2 * builtin_scene_names().size() + 1);
+  for (const Case& c : cases) {
+    Frame ref = reference::render(c.scene, keep), gpu = gpu::Renderer(c.scene).render(keep);
+    EXPECT_EQ(buffer_names(ref), buffer_names(gpu)) << c.label << ": the backends keep different buffers";
+    for (const Frame* f : {&ref, &gpu}) {
+      const char* backend = f == &ref ? "reference" : "gpu";
+      for (const std::string& name : c.expected)
+        EXPECT_EQ(f->buffers.count(name), 1u) << c.label << " " << backend << ": no " << name;
+      for (const auto& [buffer, img] : f->buffers) {
+        EXPECT_EQ(img.width, c.scene.width) << c.label << " " << backend << " " << buffer;
+        EXPECT_EQ(img.height, c.scene.height) << c.label << " " << backend << " " << buffer;
+        EXPECT_FALSE(img.empty()) << c.label << " " << backend << " " << buffer;
+        EXPECT_FALSE(has_non_finite(img)) << c.label << " " << backend << " " << buffer;
+      }
+    }
   }
 }
 

@@ -50,5 +50,7 @@ class GlTest : public ::testing::Test {
 
 }  // namespace plumbago::testing
 
-#define PLUMBAGO_REQUIRE_MODEL(name) \
-  if (!::plumbago::testing::have_model(name)) GTEST_SKIP() << "../shared/models/" << (name) << " is not here"
+// Skips the test, saying why, when the shared model is absent.
+#define PLUMBAGO_REQUIRE_MODEL(name)         \
+  if (!::plumbago::testing::have_model(name)) \
+  GTEST_SKIP() << "shared model not here: ../shared/models/" << (name) << " is absent"

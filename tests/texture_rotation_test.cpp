@@ -6,6 +6,7 @@
 
 #include "apps/parity.hpp"
 #include "common/texture_rotation.hpp"
+#include "tests/parity_checks.hpp"
 #include "tests/test_scenes.hpp"
 
 namespace plumbago {
@@ -15,7 +16,10 @@ class TextureRotationParity : public testing::GlTest, public ::testing::WithPara
 
 TEST_P(TextureRotationParity, CornerAnglesAgree) {
   Scene scene = testing::builtin_at(GetParam(), 320, 240);
-  for (const StageParity& r : run_parity(scene, {"texture_rotation"})) {
+  auto results = run_parity(scene, {"texture_rotation"});
+  ASSERT_EQ(testing::names_of(results),
+            (std::vector<std::string>{"texture_rotation.theta_min", "texture_rotation.theta_max"}));
+  for (const StageParity& r : results) {
     std::printf("[%s %s] %s\n", r.name.c_str(), GetParam().c_str(), format_diff(r.name, r.diff).c_str());
     EXPECT_GT(r.diff.compared, 1000u);
     EXPECT_TRUE(r.pass) << r.name;
@@ -33,7 +37,11 @@ TEST_F(TextureRotationParity, EachOfTwoObjectsReadsItsOwnTriangles) {
                                             "transform": [0.5,0,0,0, 0,0.5,0,0, 0,0,0.5,0, 1.4,0.2,0.6,1]}],
                                "resolution": [320, 240], "effects": ["contours", "interior", "crosshatch"]})",
                             "test:two objects", ".");
-  for (const StageParity& r : run_parity(scene, {"texture_rotation", "pencil_interior"})) {
+  auto results = run_parity(scene, {"texture_rotation", "pencil_interior"});
+  ASSERT_EQ(testing::names_of(results),
+            (std::vector<std::string>{"texture_rotation.theta_min", "texture_rotation.theta_max",
+                                      "pencil_interior.blend", "pencil_interior.hatch_paper"}));
+  for (const StageParity& r : results) {
     std::printf("[%s two objects] %s\n", r.name.c_str(), format_diff(r.name, r.diff).c_str());
     EXPECT_GT(r.diff.compared, 1000u);
     EXPECT_TRUE(r.pass) << r.name;
