@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/command.hpp"
-#include "apps/parity.hpp"
+#include "parity/parity.hpp"
 #include "apps/scene_options.hpp"
 #include "common/visualize.hpp"
 #include "gpu/context.hpp"

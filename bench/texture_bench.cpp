@@ -5,13 +5,13 @@
 #include "common/noise.hpp"
 #include "common/paper.hpp"
 #include "common/params.hpp"
-#include "common/pencil_texture.hpp"
+#include "common/pencil_textures.hpp"
 
 namespace plumbago::bench {
 namespace {
 
 void BM_PencilLayers(benchmark::State& state) {
-  auto p = ParamSet{}.get<PencilParams>();
+  auto p = ParamSet{}.get<PencilTexturesParams>();
   for (auto _ : state) benchmark::DoNotOptimize(pencil_layers(p, 1));
   state.counters["layers"] = p.layers;
   state.counters["size"] = p.size;

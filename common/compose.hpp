@@ -5,6 +5,8 @@
 //   out  = I'' c_p                  c_p the paper color (white without paper)
 #pragma once
 
+#include "common/stage.hpp"
+
 namespace plumbago {
 
 struct ComposeParams {
@@ -15,6 +17,24 @@ struct ComposeParams {
     v.real(contour_attenuation, "contour_attenuation", 0.5, 0.0, 1.0,
            "a: how much contours fade the interior strokes under them (SPEC 2.11)");
     v.real(contrast, "contrast", 0.5, 0.0, 1.0, "weight of the smoothstep contrast enhancement (Lee §6)");
+  }
+};
+
+struct ComposeStage {
+  using Params = TypeList<ComposeParams>;
+  static StageDesc describe() {
+    StageDesc d{"compose", StageKind::Frame, "contours, interior and paper into the final image (SPEC 2.11)", {"compose"},
+                {{"multi_contour.contour_darkness", when::effect_contours},
+                 {"pencil_interior.interior_darkness", when::effect_interior},
+                 {"paper.color", when::effect_paper}},
+                {{"color", 3, Texel::Unorm8, "RGB", tolerance::kByte, "fed the same D_c, D_i and paper color; 8-bit target"}},
+                {"contours", "interior", "crosshatch", "paper"}};
+    d.outputs[0].frame_color = true;
+    d.declared_effects = {{"contours", "image-space contours (Lee 2006 §4)"},
+                          {"interior", "pencil textures along curvature directions (Lee 2006 §5)"},
+                          {"crosshatch", "cross hatching in dark regions (Lee 2006 Fig. 7)"},
+                          {"paper", "stroke/paper interaction and paper color (Lee 2006 §5.5)"}};
+    return d;
   }
 };
 

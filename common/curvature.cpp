@@ -6,6 +6,7 @@
 
 #include "common/curvature_internal.hpp"
 #include "common/curvature_memory.hpp"
+#include "common/preprocess.hpp"
 
 namespace plumbago {
 namespace curvature {
@@ -104,6 +105,13 @@ Curvature estimate_curvature(const Mesh& input, const CurvatureParams& p, bool s
                        : curvature::jet_curvature(*mesh, topo, p, progress);
   curvature::propagate_directions(topo, p, mesh->bbox_diagonal(), c);
   return c;
+}
+
+void CurvatureStage::make(const Scene& scene, Preprocessed& out) {
+  auto params = scene.params.get<CurvatureParams>();
+  CurvatureOptions options;
+  options.progress = false;
+  for (const auto& obj : scene.objects) out.curvature.push_back(compute_curvature(*obj.mesh, params, options));
 }
 
 }  // namespace plumbago

@@ -43,6 +43,7 @@
 #include <vector>
 
 #include "common/mesh.hpp"
+#include "common/stage.hpp"
 
 namespace plumbago {
 
@@ -96,5 +97,18 @@ Curvature compute_curvature(const Mesh& mesh, const CurvatureParams& params, con
 
 // The computation itself, no cache.
 Curvature estimate_curvature(const Mesh& mesh, const CurvatureParams& params, bool progress = false);
+
+struct Scene;
+struct Preprocessed;
+struct CurvatureStage {
+  using Params = TypeList<CurvatureParams>;
+  static void make(const Scene& scene, Preprocessed& out);
+  static StageDesc describe() {
+    StageDesc d{"curvature", StageKind::Preprocessing, "principal curvature per vertex (SPEC 1.1)", {"curvature"}, {},
+                {{"principal", 8, Texel::Host, "k_min, k_max and their directions, per vertex of each object"}}};
+    d.preprocess = make;
+    return d;
+  }
+};
 
 }  // namespace plumbago

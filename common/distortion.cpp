@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "common/edge_detect.hpp"
+#include "common/preprocess.hpp"
 #include "common/random.hpp"
 
 namespace plumbago {
@@ -54,9 +54,10 @@ float largest_offset(const std::vector<Image>& grids) {
   return largest;
 }
 
-PixelRect contour_rect(const Scene& scene, const std::vector<Image>& grids) {
-  if (background_darkness(scene.params.get<EdgeDetectParams>()) != 0.0f) return {0, 0, scene.width, scene.height};
-  return covered_rect(scene, scene.width, scene.height, largest_offset(grids) + 3);
+void DistortionStage::make(const Scene& scene, Preprocessed& out) {
+  auto p = scene.params.get<ContourParams>();
+  out.offset_grids = distortion_grids(p, scene.width, scene.height, scene.seed);
+  out.texture_shifts = contour_texture_shifts(p, scene.seed);
 }
 
 }  // namespace plumbago

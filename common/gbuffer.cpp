@@ -1,7 +1,7 @@
 #include "common/gbuffer.hpp"
 
 #include "common/frame.hpp"
-#include "common/interior.hpp"
+#include "common/interior_intensity.hpp"
 #include "common/lights.hpp"
 
 namespace plumbago {
@@ -77,6 +77,37 @@ void add_gbuffer_buffers(const GBuffer& g, std::map<std::string, Image>& out, co
   Image ids(g.ids.width, g.ids.height, 2);
   for (size_t i = 0; i < g.ids.data.size(); ++i) ids.data[i] = float(g.ids.data[i]);
   out[prefix + ".ids"] = ids;
+}
+
+std::vector<Output> gbuffer_outputs(bool compared) {
+  const char* interior = "raster vs ray on interior pixels; the band along depth discontinuities excluded";
+  const char* same = "raster vs ray on interior pixels that both backends give the same triangle";
+  std::vector<Output> out = {
+      {"normal", 3, Texel::Float, "unit view-space shading normal", tolerance::kNormal, interior, ParityMask::Interior},
+      {"face_normal", 3, Texel::Float, "unit view-space geometric normal", tolerance::kNormal, same,
+       ParityMask::SameTriangle},
+      {"depth", 1, Texel::Float, "linear view depth (dumps: normalized)", tolerance::kDepth, interior,
+       ParityMask::Interior},
+      {"ids", 2, Texel::Uint, "object index + 1, triangle index", 0, "coverage: the band's share is reported"},
+      {"bary", 3, Texel::Float, "barycentrics", tolerance::kBary, same, ParityMask::SameTriangle},
+      {"gouraud", 1, Texel::Float, "Gouraud intensity (SPEC 2.5)", tolerance::kNormal, interior, ParityMask::Interior},
+      {"theta_min", 3, Texel::Float, "corner angles of the min-curvature direction (SPEC 2.7)", tolerance::kAngle,
+       "(cos, sin) of each corner's angle; interior pixels on the same triangle", ParityMask::SameTriangle,
+       ParityValue::Angles},
+      {"theta_max", 3, Texel::Float, "corner angles of the max-curvature direction (SPEC 2.7)", tolerance::kAngle,
+       "(cos, sin) of each corner's angle; interior pixels on the same triangle", ParityMask::SameTriangle,
+       ParityValue::Angles},
+  };
+  out[3].compared = false;
+  for (size_t k : {6, 7}) out[k].written = when::effect_interior;
+  if (!compared) {
+    out.erase(out.begin() + 6, out.end());  // no corner angles
+    for (Output& o : out) {
+      o.compared = false;
+      o.tolerance_why = "compared through the stages fed the reference's";
+    }
+  }
+  return out;
 }
 
 }  // namespace plumbago

@@ -7,6 +7,7 @@
 #include "common/curvature.hpp"
 #include "common/image.hpp"
 #include "common/scene.hpp"
+#include "common/stage.hpp"
 
 namespace plumbago {
 
@@ -56,5 +57,17 @@ glm::vec3 face_normal(const WorldObject& obj, size_t t);
 
 // Normalized depth z = (d - near) / (far - near): 1 for background (SPEC §0).
 Image normalized_depth(const GBuffer& g);
+
+// The channels of a G-buffer as outputs of a stage (dumps hold the normalized depth).
+// With `compared`, each states how parity compares raster against ray (SPEC 5).
+std::vector<Output> gbuffer_outputs(bool compared);
+
+struct GBufferStage {
+  using Params = TypeList<GBufferParams>;
+  static StageDesc describe() {
+    return {"gbuffer", StageKind::Frame, "G-buffer: normals, depth, ids, barycentrics, Gouraud (SPEC 2.1)",
+            {"gbuffer", "interior"}, {{"curvature.principal", when::effect_interior}}, gbuffer_outputs(true)};
+  }
+};
 
 }  // namespace plumbago

@@ -4,6 +4,7 @@
 #include <glm/glm.hpp>
 
 #include "common/noise.hpp"
+#include "common/preprocess.hpp"
 
 namespace plumbago {
 
@@ -57,6 +58,10 @@ Paper make_paper(const PaperParams& p, uint32_t seed) {
   paper.normal = paper_normals(paper.height, p.bumpiness);
   paper.color = paper_color(paper.height, p);
   return paper;
+}
+
+void PaperStage::make(const Scene& scene, Preprocessed& out) {
+  out.paper = make_paper(scene.params.get<PaperParams>(), scene.seed);
 }
 
 }  // namespace plumbago

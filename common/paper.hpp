@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "common/image.hpp"
+#include "common/stage.hpp"
 
 namespace plumbago {
 
@@ -40,5 +41,21 @@ struct Paper {
 };
 
 Paper make_paper(const PaperParams& p, uint32_t seed);
+
+struct Scene;
+struct Preprocessed;
+struct PaperStage {
+  using Params = TypeList<PaperParams>;
+  static void make(const Scene& scene, Preprocessed& out);
+  static StageDesc describe() {
+    StageDesc d{"paper", StageKind::Preprocessing, "paper height, normal map and color (SPEC 1.3)", {"paper"}, {},
+                {{"height", 1, Texel::Host, "h in [0, 1]"},
+                 {"normal", 3, Texel::Host, "unit normal map"},
+                 {"color", 3, Texel::Host, "c_p"}},
+                {"paper"}};
+    d.preprocess = make;
+    return d;
+  }
+};
 
 }  // namespace plumbago

@@ -1,7 +1,9 @@
 #include "common/params.hpp"
 
 #include <cmath>
+#include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "common/stage_registry.hpp"
 
@@ -14,16 +16,26 @@ void SpecCollector::add(const char* name, ParamType t, double def, double lo, do
 
 namespace {
 
+// Each struct's specs, refusing a prefix that two structs share: in a fused shader their
+// GLSL declarations (`uniform contour_params contour;`) would clash.
 template <class... Structs>
-std::vector<ParamSpec> collect_specs(TypeList<Structs...>) {
-  std::vector<ParamSpec> specs;
+void collect_specs(TypeList<Structs...>, std::vector<ParamSpec>& specs, std::set<std::string>& prefixes) {
   (
       [&] {
+        if (!prefixes.insert(Structs::stage).second)
+          throw std::logic_error(std::string("two parameter structs have the prefix '") + Structs::stage + "'");
         Structs s{};
         SpecCollector c{Structs::stage, specs};
         s.visit(c);
       }(),
       ...);
+}
+
+template <class... Stages>
+std::vector<ParamSpec> collect_specs(TypeList<Stages...>) {
+  std::vector<ParamSpec> specs;
+  std::set<std::string> prefixes;
+  (collect_specs(typename Stages::Params{}, specs, prefixes), ...);
   return specs;
 }
 
@@ -82,7 +94,7 @@ double parse_value(const ParamSpec& spec, const std::string& text) {
 }  // namespace
 
 const std::vector<ParamSpec>& param_specs() {
-  static const std::vector<ParamSpec> specs = collect_specs(AllParamStructs{});
+  static const std::vector<ParamSpec> specs = collect_specs(AllStages{});
   return specs;
 }
 

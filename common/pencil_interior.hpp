@@ -15,6 +15,9 @@
 #include <string>
 #include <vector>
 
+#include "common/interior_intensity.hpp"
+#include "common/stage.hpp"
+
 namespace plumbago {
 
 // Which optional parts of the interior a scene's effects ask for.
@@ -27,5 +30,22 @@ inline InteriorOptions interior_options(const std::vector<std::string>& effects)
   auto has = [&](const char* e) { return std::find(effects.begin(), effects.end(), e) != effects.end(); };
   return {has("crosshatch"), has("paper")};
 }
+
+// The weights of the corners' textures (SPEC 2.8): the barycentrics `w` for three-way
+// blending; for nearest_corner, 1 for the largest of them (the first on a tie), 0 else.
+glm::vec3 blend_weights(glm::vec3 w, const InteriorParams& p);
+
+struct PencilInteriorStage {
+  using Params = TypeList<>;
+  static StageDesc describe() {
+    return {"pencil_interior", StageKind::Frame,
+            "tone to layer, rotated pencil textures, 3-way blending, cross hatching, paper effect (SPEC 2.6-2.10)",
+            {"interior", "paper"},
+            {{"interior_intensity.intensity"}, {"gbuffer.ids"}, {"gbuffer.bary"}, {"gbuffer.theta_min"},
+             {"gbuffer.theta_max"}, {"pencil_textures.stack"}, {"paper.normal", when::effect_paper}},
+            {{"interior_darkness", 1, Texel::Float, "D_i; 0 on the background", tolerance::kSampled,
+              "fed the same G-buffer (the GPU its corner angles as triangle records), I', pencil stack and paper"}}};
+  }
+};
 
 }  // namespace plumbago

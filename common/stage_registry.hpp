@@ -1,26 +1,36 @@
-// The list of every stage's parameter struct, in pipeline order. Adding a stage's
-// struct here is all it takes for `plumbago params`, --set, scene files and the GLSL
-// declarations to know its parameters.
+// The registry: every stage, once, in the order they run (each after the stages whose
+// outputs it reads). Adding a stage is adding its type here; `plumbago params`, --set,
+// scene files, the GLSL declarations, the pass table, the dumps and the parity runner
+// follow from its descriptor (common/stage.hpp).
 #pragma once
 
 #include "common/compose.hpp"
 #include "common/contour_light.hpp"
+#include "common/contour_texture.hpp"
 #include "common/curvature.hpp"
+#include "common/distortion.hpp"
 #include "common/edge_detect.hpp"
 #include "common/gbuffer.hpp"
-#include "common/distortion.hpp"
-#include "common/interior.hpp"
-#include "common/noise.hpp"
+#include "common/interior_intensity.hpp"
+#include "common/multi_contour.hpp"
 #include "common/paper.hpp"
-#include "common/pencil_texture.hpp"
-#include "common/sketchy.hpp"
+#include "common/pencil_interior.hpp"
+#include "common/pencil_textures.hpp"
+#include "common/sketchy_composite.hpp"
+#include "common/sketchy_enlarged.hpp"
+#include "common/sketchy_gbuffer.hpp"
+#include "common/sketchy_maps.hpp"
+#include "common/sketchy_noise.hpp"
 
 namespace plumbago {
 
-template <class... T>
-struct TypeList {};
-
-using AllParamStructs = TypeList<CurvatureParams, PencilParams, GBufferParams, EdgeDetectParams, ContourLightParams, ContourParams,
-                                 InteriorParams, PaperParams, ComposeParams, NoiseTextureParams, SketchyParams>;
+using AllStages = TypeList<
+    // preprocessing (SPEC 1), made once per scene and parameters
+    DistortionStage, PencilTexturesStage, ContourTextureStage, PaperStage, SketchyNoiseStage, CurvatureStage,
+    // the pencil pipeline (SPEC 2)
+    GBufferStage, EdgeDetectStage, ContourLightStage, InteriorIntensityStage, PencilInteriorStage, MultiContourStage,
+    ComposeStage,
+    // sketchy drawing (SPEC 3)
+    SketchyGBufferStage, SketchyEnlargedStage, SketchyMapsStage, SketchyCompositeStage>;
 
 }  // namespace plumbago

@@ -6,7 +6,7 @@
 #include "common/noise.hpp"
 #include "common/sketchy.hpp"
 #include "common/paper.hpp"
-#include "common/pencil_texture.hpp"
+#include "common/pencil_textures.hpp"
 
 namespace plumbago {
 
@@ -45,7 +45,7 @@ Image signed_view(const Image& n) {
 
 std::map<std::string, Image> texture_gallery(const ParamSet& params, uint32_t seed, int width, int height) {
   std::map<std::string, Image> out;
-  auto pencil = params.get<PencilParams>();
+  auto pencil = params.get<PencilTexturesParams>();
   auto contour = params.get<ContourParams>();
   std::vector<Image> layers = pencil_layers(pencil, seed);
   char name[64];

@@ -1,5 +1,7 @@
 #include "gpu/compose.hpp"
 
+#include "gpu/stage.hpp"
+
 namespace plumbago::gpu {
 
 ComposePass::ComposePass()
@@ -53,5 +55,65 @@ void ComposePass::run(const ContourSources& c, const ComposeInputs& in, const Co
   else
     pass_.draw_inside(made, textures, {&out}, inside, {});
 }
+
+namespace {
+
+// What the composition reads besides D_c, as the frame made it: D_i where the interior
+// runs, the paper color where the paper does (1x1 stand-ins, not read, otherwise).
+class ComposeStagePass : public GpuPass {
+ public:
+  explicit ComposeStagePass(GpuFrame& f)
+      : paper_color_(f.pre.paper.color.empty() ? make_texture(1, 1, GL_RGBA32F)
+                                               : upload_texture(f.pre.paper.color, GL_RGBA32F)),
+        none_(make_texture(1, 1, GL_R32F)) {}
+
+ protected:
+  ComposeInputs inputs(const GpuFrame& f) const {
+    bool interior = f.has("pencil_interior.interior_darkness");
+    return {interior ? f.input("pencil_interior.interior_darkness") : none_, interior, paper_color_,
+            !f.pre.paper.color.empty()};
+  }
+  // Where D_c or D_i can differ from 0: around the contours' reach, or the objects.
+  PixelRect inside(const GpuFrame& f) const {
+    if (f.dump) return {0, 0, f.scene.width, f.scene.height};
+    return f.ran("multi_contour") ? contour_rect(f.ordinary, f.pre.offset_grids) : filter_rect(f.ordinary, 0);
+  }
+  ComposePass pass_;
+  Texture paper_color_, none_;
+};
+
+// The composition alone: of D_c where a pass wrote it (parity), else of no contours.
+class ComposeAlonePass : public ComposeStagePass {
+ public:
+  using ComposeStagePass::ComposeStagePass;
+  void run(GpuFrame& f) override {
+    bool contours = f.has("multi_contour.contour_darkness");
+    pass_.run(contours ? f.input("multi_contour.contour_darkness") : none_, contours, inputs(f),
+              f.params<ComposeParams>(), f.output("compose.color"), inside(f));
+  }
+};
+
+// The composition drawing the multiple contours itself (compose.frag MULTI_CONTOUR): no D_c
+// target written and read in a frame; a dump also keeps D_c.
+class ContoursInComposePass : public ComposeStagePass {
+ public:
+  explicit ContoursInComposePass(GpuFrame& f) : ComposeStagePass(f), contour_inputs_(make_contour_inputs(f)) {}
+  void run(GpuFrame& f) override {
+    ContourSources contours = contours_.prepare(f.input("contour_light.lit_contour_darkness"), contour_inputs_,
+                                                f.params<ContourParams>(), f.find_shared<Texture>("contour_blocks.marks"));
+    pass_.run(contours, inputs(f), f.params<ComposeParams>(), f.output("compose.color"), inside(f),
+              f.dumped_output("multi_contour.contour_darkness"));
+  }
+
+ private:
+  ContourInputs contour_inputs_;
+  MultiContourPass contours_;
+};
+
+}  // namespace
+
+PLUMBAGO_GPU_PASS(compose, {{"compose"}, {}, make_pass<ComposeAlonePass>});
+PLUMBAGO_GPU_PASS(multi_contour_compose, {{"multi_contour", "compose"}, {"multi_contour.contour_darkness"},
+                                          make_pass<ContoursInComposePass>});
 
 }  // namespace plumbago::gpu

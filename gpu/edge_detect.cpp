@@ -1,6 +1,8 @@
 #include "gpu/edge_detect.hpp"
 
-#include "gpu/multi_contour.hpp"
+#include "common/lights.hpp"
+#include "gpu/contour_blocks.hpp"
+#include "gpu/stage.hpp"
 
 namespace plumbago::gpu {
 
@@ -33,5 +35,40 @@ void EdgeDetectPass::run(const GBufferTargets& g, const EdgeDetectParams& p, con
   else
     pass_.draw_inside(program, {&normals, &g.normal}, {&out.lit}, covered, {outside});
 }
+
+namespace {
+
+// Edge detection and contour lighting as a frame draws them: a frame writes only d'; the
+// blocks' marks when multiple contours are drawn (shared as "contour_blocks.marks").
+class EdgeAndLightPass : public GpuPass {
+ public:
+  explicit EdgeAndLightPass(GpuFrame& f) {
+    GBufferChannels read = GBufferChannels::none();
+    bool face = EdgeDetectStage::face_normals(f.config());
+    read.normal = true;  // contour lighting reads the shading normals, whatever the edges compare
+    read.face_normal = face;
+    read.read_region = filter_rect(f.ordinary, 2);  // the filter runs within 1 pixel and reads 1 more
+    f.read_gbuffer("gbuffer", read);
+    if (f.ran("multi_contour")) {
+      marks_ = make_contour_block_marks(f.scene.width, f.scene.height);
+      f.share("contour_blocks.marks", marks_);
+    }
+  }
+  void run(GpuFrame& f) override {
+    pass_.run(f.shared<GBufferTargets>("gbuffer"), f.params<EdgeDetectParams>(), view_space_lights(f.scene),
+              f.params<ContourLightParams>(),
+              {f.output("contour_light.lit_contour_darkness"), f.dumped_output("edge_detect.contour_darkness"),
+               marks_.id() ? &marks_ : nullptr},
+              filter_rect(f.ordinary, 1));
+  }
+
+ private:
+  EdgeDetectPass pass_;
+  Texture marks_;
+};
+
+}  // namespace
+
+PLUMBAGO_GPU_PASS(edge_detect, {{"edge_detect", "contour_light"}, {"edge_detect.contour_darkness"}, make_pass<EdgeAndLightPass>});
 
 }  // namespace plumbago::gpu

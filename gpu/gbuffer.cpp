@@ -5,9 +5,11 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "common/edge_detect.hpp"
-#include "common/interior.hpp"
+#include "common/interior_intensity.hpp"
 #include "common/mesh_topology.hpp"
 #include "common/pencil_interior.hpp"
+#include "common/frame.hpp"
+#include "gpu/stage.hpp"
 
 namespace plumbago::gpu {
 
@@ -261,24 +263,6 @@ TriangleAngles triangle_angles_from(const GBuffer& g) {
   return {make_buffer(angles.data(), angles.size() * sizeof(glm::vec4)), make_buffer(first.data(), first.size() * sizeof(GLuint))};
 }
 
-GBufferChannels channels_read_by(const std::vector<std::string>& stages, const Scene& scene) {
-  auto ran = [&](const char* s) { return std::find(stages.begin(), stages.end(), s) != stages.end(); };
-  bool face_edges = scene.params.get<EdgeDetectParams>().normals == EdgeNormals::Face;
-  bool phong = scene.params.get<InteriorParams>().shading == InteriorShading::Phong;
-  bool interior = ran("pencil_interior");
-  GBufferChannels c;
-  c.normal = (ran("edge_detect") && !face_edges) || ran("contour_light") || (ran("interior_intensity") && phong);
-  c.face_normal = ran("edge_detect") && face_edges;
-  c.bary = interior || (ran("interior_intensity") && !phong);  // w: the Gouraud intensity
-  c.gouraud = false;                                            // its own target: for a dump
-  c.theta_min = c.theta_max = false;  // for a dump: the interior reads TriangleAngles
-  c.triangle_angles = interior;
-  c.depth = false;  // read only by a dump: edge detection reads it next to the normals
-  c.object_only_background = false;
-  c.read_region = filter_rect(scene, 2);  // edge detection runs within 1 pixel and reads 1 more
-  return c;
-}
-
 void GBufferPass::render(const Scene& scene, GBufferTargets& t, const GBufferChannels& channels) {
   int w = t.width(), h = t.height();
   if (w != depth_test_width_ || h != depth_test_height_) {
@@ -365,5 +349,43 @@ void GBufferPass::draw_background(const GBufferChannels& channels, const bool wa
   glDepthFunc(GL_LESS);
   glDisable(GL_SCISSOR_TEST);
 }
+
+namespace {
+
+// A G-buffer stage of a frame: "gbuffer" draws the ordinary objects (with the corner angles
+// where the frame made curvature), "sketchy_gbuffer" the sketchy ones. It shares its
+// targets under the stage's name, and the ordinary one its depth buffer (what a sketchy
+// depth sprite is tested against) and its corner angles.
+class GBufferStagePass : public GpuPass {
+ public:
+  GBufferStagePass(GpuFrame& f, std::string stage, const Scene& objects, const std::vector<Curvature>& curvature)
+      : stage_(std::move(stage)),
+        pass_(objects, curvature),
+        targets_(make_gbuffer_targets(f.scene.width, f.scene.height, f.params<GBufferParams>().normal_format)) {
+    f.share(stage_, targets_);
+    if (stage_ != "gbuffer") return;
+    f.share("gbuffer.depth_buffer", pass_.depth_buffer());
+    f.share("gbuffer.triangle_angles", pass_.triangle_angles());
+  }
+  void run(GpuFrame& f) override { pass_.render(f.scene, targets_, f.gbuffer_channels(stage_)); }
+  void dump(GpuFrame&, const std::vector<std::string>&, std::map<std::string, Image>& out) override {
+    add_gbuffer_buffers(download_gbuffer(targets_), out, stage_);
+  }
+
+ private:
+  std::string stage_;
+  GBufferPass pass_;
+  GBufferTargets targets_;
+};
+
+}  // namespace
+
+PLUMBAGO_GPU_PASS(gbuffer, {{"gbuffer"}, {}, [](GpuFrame& f) -> std::unique_ptr<GpuPass> {
+                              return std::make_unique<GBufferStagePass>(f, "gbuffer", f.ordinary, f.pre.curvature);
+                            }});
+PLUMBAGO_GPU_PASS(sketchy_gbuffer, {{"sketchy_gbuffer"}, {}, [](GpuFrame& f) -> std::unique_ptr<GpuPass> {
+                                      return std::make_unique<GBufferStagePass>(f, "sketchy_gbuffer", f.sketchy,
+                                                                                std::vector<Curvature>{});
+                                    }});
 
 }  // namespace plumbago::gpu

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "common/gbuffer.hpp"
-#include "common/interior.hpp"
+#include "common/interior_intensity.hpp"
 #include "gpu/gl_objects.hpp"
 #include "gpu/program.hpp"
 
@@ -37,8 +37,11 @@ GBuffer download_gbuffer(const GBufferTargets& targets);
 // The reference's G-buffer on the GPU, so that a later stage gets identical inputs.
 GBufferTargets upload_gbuffer(const GBuffer& g);
 
-// Which G-buffer channels a frame's stages read; the others are not written (their draw
-// buffers are GL_NONE), which saves the bandwidth of up to six float targets.
+// Which G-buffer channels a frame's passes sample (each says so: gpu/stage.hpp); the
+// others are not written (their draw buffers are GL_NONE), which saves the bandwidth of up
+// to six float targets. Physical targets, not the stages' declared inputs: the linear
+// depth that edge detection reads rides in the normals' w, the Gouraud intensity in the
+// barycentrics' w, the corner angles in TriangleAngles.
 struct GBufferChannels {
   bool normal = true, face_normal = true, bary = true, gouraud = true, theta_min = true, theta_max = true;
   bool depth = true;  // the depth target; the edge filter reads the depth next to the normals
@@ -51,9 +54,10 @@ struct GBufferChannels {
   // there (filter_rect of the edge filter's reach, common/scene.hpp); a dump, in the whole
   // window (GBufferPass::draw_background).
   PixelRect read_region{0, 0, INT_MAX, INT_MAX};
+
+  // Nothing read: what a frame's readers add to (gpu/stage.hpp GpuFrame::read_gbuffer).
+  static GBufferChannels none() { return {false, false, false, false, false, false, false, false, false, {}}; }
 };
-// The channels `stages` (common/passes.hpp names) read, for the scene's parameters.
-GBufferChannels channels_read_by(const std::vector<std::string>& stages, const Scene& scene);
 
 // Uploads a scene's geometry once; render() draws it into targets of any size.
 class GBufferPass {

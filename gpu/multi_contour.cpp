@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "gpu/stage.hpp"
+
 namespace plumbago::gpu {
 
 ContourInputs make_contour_inputs(const ContourParams& p, const std::vector<Image>& grids, const Image& contour_texture,
@@ -27,37 +29,20 @@ ContourInputs make_contour_inputs(const ContourParams& p, const std::vector<Imag
 }
 
 namespace {
-constexpr int kBlock = 8;  // pixels per side of a block of contour_blocks.frag
-const std::string kBlockDefine = "#define CONTOUR_BLOCK " + std::to_string(kBlock) + "\n";
-
 // How many blocks away a pixel's copies can read. A copy of pixel p reads d' bilinearly at
 // p + offset, |offset| <= reach = largest_offset + 0.5 (a bilinearly filtered offset can
 // exceed its corners' largest value by a rounding error, never by that much): texels
-// floor(p - reach - 0.5) to floor(p + reach - 0.5) + 1. With p = 8b + 0.5 + i (kBlock = 8), i in 0..7,
+// floor(p - reach - 0.5) to floor(p + reach - 0.5) + 1. With p = 8b + 0.5 + i (kContourBlock = 8), i in 0..7,
 // that is from 8b - ceil(reach) to 8b + 8 + floor(reach): blocks b - D to b + D with
 // D = 1 + floor(reach / 8).
-int block_reach(float largest_offset) { return 1 + int(std::floor((largest_offset + 0.5f) / float(kBlock))); }
-
-int blocks(int pixels) { return (pixels + kBlock - 1) / kBlock; }
-
-// Makes `t` a texture of one texel a block for a width x height window, unless it is one.
-void fit_to_blocks(Texture& t, int width, int height) {
-  if (t.width != blocks(width) || t.height != blocks(height)) t = make_texture(blocks(width), blocks(height), GL_R32F);
-}
+int block_reach(float largest_offset) { return 1 + int(std::floor((largest_offset + 0.5f) / float(kContourBlock))); }
 }  // namespace
 
-std::string multi_contour_prelude() { return glsl_params<ContourParams>() + kBlockDefine; }
-std::string contour_block_define() { return kBlockDefine; }
-
-Texture make_contour_block_marks(int width, int height) {
-  Texture t;
-  fit_to_blocks(t, width, height);
-  return t;
-}
+std::string multi_contour_prelude() { return glsl_params<ContourParams>() + contour_block_define(); }
 
 MultiContourPass::MultiContourPass()
     : program_("fullscreen.vert", "multi_contour.frag", multi_contour_prelude()),
-      blocks_program_("fullscreen.vert", "contour_blocks.frag", kBlockDefine),
+      blocks_program_("fullscreen.vert", "contour_blocks.frag", contour_block_define()),
       reach_program_("fullscreen.vert", "contour_block_reach.frag") {
   glProgramUniform1i(program_.id(), program_.uniform("lit_contour_darkness"), 0);
   glProgramUniform1i(program_.id(), program_.uniform("copy_inputs"), 1);
@@ -90,5 +75,31 @@ void MultiContourPass::run(const Texture& lit, const ContourInputs& in, const Co
   program_.set_params(p);
   pass_.draw_inside(program_, {&s.lit, &s.copy_inputs, &s.block_reach_max}, {&out}, covered, {glm::vec4(0.0f)});
 }
+
+ContourInputs make_contour_inputs(const GpuFrame& f) {
+  return make_contour_inputs(f.params<ContourParams>(), f.pre.offset_grids, f.pre.contour_texture, f.pre.texture_shifts,
+                             f.scene.width, f.scene.height);
+}
+
+namespace {
+
+// Multiple contours drawn into their own target: a frame that composes them draws them
+// in the composition pass instead (gpu/compose.cpp).
+class MultiContourStagePass : public GpuPass {
+ public:
+  explicit MultiContourStagePass(GpuFrame& f) : inputs_(make_contour_inputs(f)) {}
+  void run(GpuFrame& f) override {
+    pass_.run(f.input("contour_light.lit_contour_darkness"), inputs_, f.params<ContourParams>(),
+              f.output("multi_contour.contour_darkness"), contour_rect(f.ordinary, f.pre.offset_grids));
+  }
+
+ private:
+  ContourInputs inputs_;
+  MultiContourPass pass_;
+};
+
+}  // namespace
+
+PLUMBAGO_GPU_PASS(multi_contour, {{"multi_contour"}, {}, make_pass<MultiContourStagePass>});
 
 }  // namespace plumbago::gpu

@@ -4,6 +4,8 @@
 #include <string>
 
 #include "common/distortion.hpp"
+#include "common/multi_contour.hpp"
+#include "gpu/contour_blocks.hpp"
 #include "gpu/framebuffer.hpp"
 
 namespace plumbago::gpu {
@@ -18,6 +20,9 @@ struct ContourInputs {
 };
 ContourInputs make_contour_inputs(const ContourParams& p, const std::vector<Image>& grids, const Image& contour_texture,
                                   const std::vector<glm::vec2>& shifts, int width, int height);
+// The same from a frame's preprocessing (gpu/stage.hpp).
+class GpuFrame;
+ContourInputs make_contour_inputs(const GpuFrame& f);
 
 // What drawing the contours reads in a frame, for a pass that draws them itself
 // (compose.frag with MULTI_CONTOUR on, shaders/common_multi_contour.glsl).
@@ -29,11 +34,6 @@ struct ContourSources {
 };
 // The prelude of a program that includes shaders/common_multi_contour.glsl.
 std::string multi_contour_prelude();
-// `#define CONTOUR_BLOCK n`: the side of the blocks of pixels that multiple contour drawing
-// skips when no copy of theirs can read a d' > 0.
-std::string contour_block_define();
-// The blocks' marks for a window (R32F, one texel a block): 1 where some d' > 0, else 0.
-Texture make_contour_block_marks(int width, int height);
 
 class MultiContourPass {
  public:

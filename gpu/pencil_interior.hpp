@@ -3,23 +3,38 @@
 // reference/pencil_interior.cpp.
 #pragma once
 
-#include "common/interior.hpp"
+#include "common/interior_intensity.hpp"
 #include "common/pencil_interior.hpp"
 #include "gpu/framebuffer.hpp"
 #include "gpu/gbuffer.hpp"
 
 namespace plumbago::gpu {
 
+// What the interior reads: the G-buffer (normals, barycentrics, ids) and its corner angles,
+// the pencil layers as a 3D texture and the paper's normal map (any texture when
+// !options.paper).
+struct PencilInteriorInputs {
+  const GBufferTargets& gbuffer;
+  const TriangleAngles& angles;
+  const std::vector<Light>& view_lights;
+  const Texture& stack;
+  const Texture& paper_normal;
+  InteriorOptions options;
+};
+
+// D_i (R32F) and, if wanted, I' (R32F; a frame leaves it out: only a dump reads it).
+struct PencilInteriorOutputs {
+  Texture& darkness;
+  Texture* intensity = nullptr;
+};
+
 class PencilInteriorPass {
  public:
   PencilInteriorPass();
-  // `stack`: the pencil layers as a 3D texture; `paper_normal`: any texture when
-  // !options.paper. Writes D_i into `darkness` and, if given, I' into `intensity` (R32F;
-  // a frame leaves it out: only a dump reads it). Only `covered` (common/scene.hpp
-  // filter_rect, radius 0) runs the shader; outside it the background's D_i = 0 and I' = 1.
-  void run(const GBufferTargets& g, const TriangleAngles& angles, const std::vector<Light>& view_lights, const Texture& stack,
-           const Texture& paper_normal, const InteriorOptions& options, const InteriorParams& p, float mu_p,
-           Texture& darkness, Texture* intensity, const PixelRect& covered);
+  // Only `covered` (common/scene.hpp filter_rect, radius 0) runs the shader; outside it
+  // the background's D_i = 0 and I' = 1.
+  void run(const PencilInteriorInputs& in, const InteriorParams& p, float mu_p, const PencilInteriorOutputs& out,
+           const PixelRect& covered);
 
  private:
   const Program& program_for(const InteriorOptions& options, const InteriorParams& p, bool writes_intensity);

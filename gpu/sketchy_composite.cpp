@@ -1,5 +1,8 @@
 #include "gpu/sketchy_composite.hpp"
 
+#include "common/sketchy_composite.hpp"
+#include "gpu/stage.hpp"
+
 #include <algorithm>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -51,6 +54,7 @@ void SketchyCompositePass::set_uniforms(const SketchyCompositeInputs& in, const 
 void SketchyCompositePass::run(const SketchyCompositeInputs& in, const SketchyParams& p, Texture& color,
                                const Renderbuffer* under_depth, Texture& sprite_depth, const PixelRect& reach) {
   set_uniforms(in, p);
+  set_sampling(in.edge_map, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);  // darkness is read filtered
   if (!under_depth && !own_depth_.id()) own_depth_ = make_renderbuffer(color.width, color.height, GL_DEPTH_COMPONENT32F);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
@@ -81,5 +85,37 @@ void SketchyCompositePass::run(const SketchyCompositeInputs& in, const SketchyPa
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, 0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
+
+namespace {
+
+// The sketch over what the pencil pipeline drew (its color target, tested against its depth
+// buffer), or over white paper where it did not run.
+class SketchyCompositeStagePass : public GpuPass {
+ public:
+  explicit SketchyCompositeStagePass(GpuFrame& f)
+      : noise_(upload_sketchy_noise(f.pre.sketchy_noise)), none_(make_texture(1, 1, GL_RGBA32F)) {
+    GBufferChannels read = GBufferChannels::none();
+    read.depth = true;  // read at the uncertainty's offsets
+    read.read_region = {0, 0, f.scene.width, f.scene.height};
+    f.read_gbuffer("sketchy_gbuffer", read);
+  }
+  void run(GpuFrame& f) override {
+    bool object = f.has("sketchy_enlarged.noise_coordinates");
+    pass_.run({f.input("sketchy_maps.edge"), f.input("sketchy_maps.shade"), f.shared<GBufferTargets>("sketchy_gbuffer"),
+               noise_, object ? f.input("sketchy_enlarged.noise_coordinates") : none_},
+              f.params<SketchyParams>(), f.output("sketchy_composite.color"),
+              f.find_shared<const Renderbuffer>("gbuffer.depth_buffer"), f.output("sketchy_composite.depth"),
+              composite_rect(f.sketchy, f.scene.width, f.scene.height));
+  }
+
+ private:
+  SketchyCompositePass pass_;
+  SketchyNoiseTextures noise_;
+  Texture none_;
+};
+
+}  // namespace
+
+PLUMBAGO_GPU_PASS(sketchy_composite, {{"sketchy_composite"}, {}, make_pass<SketchyCompositeStagePass>});
 
 }  // namespace plumbago::gpu

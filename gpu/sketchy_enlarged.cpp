@@ -4,6 +4,7 @@
 
 #include "common/gbuffer.hpp"
 #include "common/sketchy.hpp"
+#include "gpu/stage.hpp"
 
 namespace plumbago::gpu {
 
@@ -66,5 +67,20 @@ void SketchyEnlargedPass::render(const Camera& camera, Texture& out) {
   glDisable(GL_DEPTH_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
+
+namespace {
+
+class SketchyEnlargedStagePass : public GpuPass {
+ public:
+  explicit SketchyEnlargedStagePass(GpuFrame& f) : pass_(enlarged_scene(f.sketchy)) {}
+  void run(GpuFrame& f) override { pass_.render(f.scene.camera, f.output("sketchy_enlarged.noise_coordinates")); }
+
+ private:
+  SketchyEnlargedPass pass_;
+};
+
+}  // namespace
+
+PLUMBAGO_GPU_PASS(sketchy_enlarged, {{"sketchy_enlarged"}, {}, make_pass<SketchyEnlargedStagePass>});
 
 }  // namespace plumbago::gpu

@@ -1,5 +1,9 @@
 #include "gpu/sketchy_maps.hpp"
 
+#include "common/sketchy.hpp"
+#include "common/sketchy_maps.hpp"
+#include "gpu/stage.hpp"
+
 namespace plumbago::gpu {
 
 namespace {
@@ -29,5 +33,29 @@ void SketchyMapsPass::run(const GBufferTargets& g, const EdgeDetectParams& p, Te
   pass_.draw_inside(program_, {&normals, &g.ids, &colors_}, {&edge, &shade}, covered,
                     {glm::vec4(background_darkness(p), g.far, 0, 0), glm::vec4(0)});
 }
+
+namespace {
+
+class SketchyMapsStagePass : public GpuPass {
+ public:
+  explicit SketchyMapsStagePass(GpuFrame& f) : pass_(object_colors(f.sketchy)) {
+    GBufferChannels read = GBufferChannels::none();
+    read.face_normal = SketchyMapsStage::face_normals(f.config());
+    read.normal = !read.face_normal;
+    read.read_region = {0, 0, f.scene.width, f.scene.height};
+    f.read_gbuffer("sketchy_gbuffer", read);
+  }
+  void run(GpuFrame& f) override {
+    pass_.run(f.shared<GBufferTargets>("sketchy_gbuffer"), f.params<EdgeDetectParams>(), f.output("sketchy_maps.edge"),
+              f.output("sketchy_maps.shade"), filter_rect(f.sketchy, 1));
+  }
+
+ private:
+  SketchyMapsPass pass_;
+};
+
+}  // namespace
+
+PLUMBAGO_GPU_PASS(sketchy_maps, {{"sketchy_maps"}, {}, make_pass<SketchyMapsStagePass>});
 
 }  // namespace plumbago::gpu

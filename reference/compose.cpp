@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "reference/stage.hpp"
+
 namespace plumbago::reference {
 
 namespace {
@@ -35,5 +37,13 @@ Image compose(const Image& contour_darkness, const Image& interior_darkness, con
     }
   return out;
 }
+
+// Composition reads what the effects made: no contours (D_c = 0), no interior, white paper.
+PLUMBAGO_REFERENCE_STAGE(compose, [](ReferenceFrame& f) {
+  const Image* contours = f.find("multi_contour.contour_darkness");
+  const Image* interior = f.find("pencil_interior.interior_darkness");
+  f.put("compose.color", compose(contours ? *contours : Image(f.scene.width, f.scene.height, 1),
+                                 interior ? *interior : Image(), f.pre.paper.color, f.params<ComposeParams>()));
+});
 
 }  // namespace plumbago::reference

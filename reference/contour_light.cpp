@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "common/lights.hpp"
+#include "reference/stage.hpp"
 
 namespace plumbago::reference {
 
@@ -25,5 +26,11 @@ Image lit_contour_darkness(const Image& d, const GBuffer& g, const std::vector<L
     }
   return out;
 }
+
+PLUMBAGO_REFERENCE_STAGE(contour_light, [](ReferenceFrame& f) {
+  f.put("contour_light.lit_contour_darkness",
+        lit_contour_darkness(f.image("edge_detect.contour_darkness"), f.gbuffer("gbuffer"), view_space_lights(f.scene),
+                             f.params<ContourLightParams>()));
+});
 
 }  // namespace plumbago::reference

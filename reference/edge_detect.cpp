@@ -4,6 +4,7 @@
 #include <glm/glm.hpp>
 
 #include "reference/rows.hpp"
+#include "reference/stage.hpp"
 
 namespace plumbago::reference {
 
@@ -64,5 +65,9 @@ Image contour_darkness(const GBuffer& g, const EdgeDetectParams& p) {
   });
   return out;
 }
+
+PLUMBAGO_REFERENCE_STAGE(edge_detect, [](ReferenceFrame& f) {
+  f.put("edge_detect.contour_darkness", contour_darkness(f.gbuffer("gbuffer"), f.params<EdgeDetectParams>()));
+});
 
 }  // namespace plumbago::reference

@@ -11,8 +11,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "common/interior.hpp"
+#include "common/interior_intensity.hpp"
 #include "common/texture_rotation.hpp"
+#include "reference/stage.hpp"
 
 namespace plumbago::reference {
 
@@ -188,5 +189,12 @@ GBuffer trace_gbuffer(const Scene& scene, int width, int height, const std::vect
   rays.check("tracing primary rays");
   return g;
 }
+
+PLUMBAGO_REFERENCE_STAGE(gbuffer, [](ReferenceFrame& f) {
+  f.gbuffers["gbuffer"] = trace_gbuffer(f.ordinary, f.scene.width, f.scene.height, f.pre.curvature);
+});
+PLUMBAGO_REFERENCE_STAGE(sketchy_gbuffer, [](ReferenceFrame& f) {
+  f.gbuffers["sketchy_gbuffer"] = trace_gbuffer(f.sketchy, f.scene.width, f.scene.height);
+});
 
 }  // namespace plumbago::reference

@@ -1,5 +1,8 @@
 #include "reference/interior_intensity.hpp"
 
+#include "common/lights.hpp"
+#include "reference/stage.hpp"
+
 namespace plumbago::reference {
 
 namespace {
@@ -19,5 +22,10 @@ Image interior_intensity(const GBuffer& g, const std::vector<Light>& view_lights
       if (!g.background(x, y)) out.at(x, y) = adjusted_brightness(pixel_intensity(g, x, y, view_lights, p), p);
   return out;
 }
+
+PLUMBAGO_REFERENCE_STAGE(interior_intensity, [](ReferenceFrame& f) {
+  f.put("interior_intensity.intensity",
+        interior_intensity(f.gbuffer("gbuffer"), view_space_lights(f.scene), f.params<InteriorParams>()));
+});
 
 }  // namespace plumbago::reference

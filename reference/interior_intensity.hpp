@@ -2,7 +2,7 @@
 #pragma once
 
 #include "common/gbuffer.hpp"
-#include "common/interior.hpp"
+#include "common/interior_intensity.hpp"
 #include "common/lights.hpp"
 
 namespace plumbago::reference {

@@ -3,6 +3,7 @@
 #include "reference/sampler.hpp"
 
 #include "reference/rows.hpp"
+#include "reference/stage.hpp"
 
 namespace plumbago::reference {
 
@@ -44,5 +45,11 @@ Image multi_contour_darkness(const Image& lit, const std::vector<Image>& grids, 
   });
   return out;
 }
+
+PLUMBAGO_REFERENCE_STAGE(multi_contour, [](ReferenceFrame& f) {
+  f.put("multi_contour.contour_darkness",
+        multi_contour_darkness(f.image("contour_light.lit_contour_darkness"), f.pre.offset_grids, f.pre.contour_texture,
+                               f.pre.texture_shifts, f.params<ContourParams>()));
+});
 
 }  // namespace plumbago::reference

@@ -5,6 +5,7 @@
 
 #include "reference/rows.hpp"
 #include "reference/sampler.hpp"
+#include "reference/stage.hpp"
 
 namespace plumbago::reference {
 
@@ -73,5 +74,12 @@ Image interior_darkness(const GBuffer& g, const Image& intensity, const std::vec
   });
   return out;
 }
+
+PLUMBAGO_REFERENCE_STAGE(pencil_interior, [](ReferenceFrame& f) {
+  f.put("pencil_interior.interior_darkness",
+        interior_darkness(f.gbuffer("gbuffer"), f.image("interior_intensity.intensity"), f.pre.pencil_stack,
+                          f.pre.paper.normal, interior_options(f.scene.effects), f.params<InteriorParams>(),
+                          f.params<PaperParams>().mu_p));
+});
 
 }  // namespace plumbago::reference

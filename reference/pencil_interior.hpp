@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "common/gbuffer.hpp"
-#include "common/interior.hpp"
+#include "common/interior_intensity.hpp"
 #include "common/pencil_interior.hpp"
 
 namespace plumbago::reference {

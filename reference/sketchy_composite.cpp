@@ -5,6 +5,7 @@
 
 #include "reference/rows.hpp"
 #include "reference/sampler.hpp"
+#include "reference/stage.hpp"
 
 namespace plumbago::reference {
 
@@ -123,5 +124,19 @@ SketchyFrame sketchy_composite(const SketchyInputs& in, const SketchyParams& p, 
   });
   return out;
 }
+
+// Over what the pencil pipeline drew, where it ran (else white paper and nothing in front).
+PLUMBAGO_REFERENCE_STAGE(sketchy_composite, [](ReferenceFrame& f) {
+  SketchyMaps maps{f.image("sketchy_maps.edge"), f.image("sketchy_maps.shade")};
+  const Image* coordinates = f.find("sketchy_enlarged.noise_coordinates");
+  Image none;
+  SketchyInputs in{maps, f.gbuffer("sketchy_gbuffer"), f.pre.sketchy_noise, coordinates ? *coordinates : none};
+  const Image* under = f.find("compose.color");
+  auto g = f.gbuffers.find("gbuffer");
+  SketchyFrame sketch = sketchy_composite(in, f.params<SketchyParams>(), under ? *under : none,
+                                          g == f.gbuffers.end() ? none : g->second.depth);
+  f.put("sketchy_composite.color", std::move(sketch.color));
+  f.put("sketchy_composite.depth", std::move(sketch.depth));
+});
 
 }  // namespace plumbago::reference

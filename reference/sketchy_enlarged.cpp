@@ -3,6 +3,7 @@
 #include "common/sketchy.hpp"
 #include "reference/gbuffer.hpp"
 #include "reference/rows.hpp"
+#include "reference/stage.hpp"
 
 namespace plumbago::reference {
 
@@ -24,5 +25,10 @@ Image enlarged_noise_coordinates(const Scene& enlarged, int width, int height) {
   });
   return out;
 }
+
+PLUMBAGO_REFERENCE_STAGE(sketchy_enlarged, [](ReferenceFrame& f) {
+  f.put("sketchy_enlarged.noise_coordinates",
+        enlarged_noise_coordinates(enlarged_scene(f.sketchy), f.scene.width, f.scene.height));
+});
 
 }  // namespace plumbago::reference

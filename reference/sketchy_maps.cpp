@@ -4,6 +4,8 @@
 
 #include "reference/edge_detect.hpp"
 #include "reference/rows.hpp"
+#include "reference/stage.hpp"
+#include "common/sketchy.hpp"
 
 namespace plumbago::reference {
 
@@ -36,5 +38,11 @@ SketchyMaps sketchy_maps(const GBuffer& g, const std::vector<glm::vec3>& colors,
   });
   return maps;
 }
+
+PLUMBAGO_REFERENCE_STAGE(sketchy_maps, [](ReferenceFrame& f) {
+  SketchyMaps maps = sketchy_maps(f.gbuffer("sketchy_gbuffer"), object_colors(f.sketchy), f.params<EdgeDetectParams>());
+  f.put("sketchy_maps.edge", std::move(maps.edge));
+  f.put("sketchy_maps.shade", std::move(maps.shade));
+});
 
 }  // namespace plumbago::reference

@@ -22,7 +22,7 @@ layout(r32f, binding = 0) uniform writeonly image2D contour_block_marks;
 void main() {
   ivec2 x = ivec2(gl_FragCoord.xy);
   float d = contour_darkness_at(x);
-  float l_c = 1.0 - contour.light_influence * min(1.0, light_sum(texelFetch(shading_normals, x, 0).xyz));
+  float l_c = 1.0 - contour_light.light_influence * min(1.0, light_sum(texelFetch(shading_normals, x, 0).xyz));
   lit_contour_darkness = d * l_c;
 #if WRITE_UNLIT
   contour_darkness = d;

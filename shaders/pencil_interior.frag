@@ -1,6 +1,6 @@
 #version 450 core
 // Interior intensity and brightness (SPEC 2.5) and interior pencil shading (SPEC 2.6-2.10)
-// in one pass: D_i is the output, and I' a second one for a dump. Formulas in common/interior.hpp
+// in one pass: D_i is the output, and I' a second one for a dump. Formulas in common/interior_intensity.hpp
 // and common/pencil_interior.hpp.
 #include "common_lights.glsl"
 #include "common_wrap.glsl"
@@ -40,7 +40,7 @@ float corner_sample(vec2 p, float theta, float r, vec3 n) {
   return paper_effect ? clamp(tone + mu_p * dot(vec3(c, s, 0.0), n), 0.0, 1.0) : tone;
 }
 
-// The corners' weights: the barycentrics, or a one-hot of the largest (common/interior.hpp).
+// The corners' weights: the barycentrics, or a one-hot of the largest (common/interior_intensity.hpp).
 vec3 blend_weights(vec3 w) {
   if (!nearest_corner) return w;
   if (w.x >= w.y && w.x >= w.z) return vec3(1.0, 0.0, 0.0);

@@ -38,7 +38,7 @@ class Cli : public ::testing::Test {
 };
 
 TEST_F(Cli, TexturesWritesEveryGeneratedTextureIncludingEachSketchyStylesNoise) {
-  CliRun r = run("textures --size 64x64 --set pencil.layers=8 --set pencil.size=64 --out " + path("textures"));
+  CliRun r = run("textures --size 64x64 --set pencil_textures.layers=8 --set pencil_textures.size=64 --out " + path("textures"));
   ASSERT_EQ(r.code, 0) << r.err;
   for (const char* name : {"pencil_layer_00", "pencil_layer_07", "paper_normal", "contour_offsets_0", "sketchy_noise",
                            "sketchy_white_noise", "sketchy_noise_3d_slice0"})

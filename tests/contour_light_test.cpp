@@ -1,8 +1,9 @@
 // Contour lighting (SPEC 2.3): GPU vs reference on the same inputs, and Eq. 1 itself.
 #include <gtest/gtest.h>
 
-#include "apps/parity.hpp"
+#include "parity/parity.hpp"
 #include "reference/contour_light.hpp"
+#include "tests/parity_checks.hpp"
 #include "tests/test_scenes.hpp"
 
 namespace plumbago {
@@ -13,7 +14,9 @@ class ContourLightParity : public testing::GlTest, public ::testing::WithParamIn
 // Same float formula on the same inputs; measured max abs ~1e-7 on llvmpipe.
 TEST_P(ContourLightParity, GpuMatchesReference) {
   Scene scene = testing::builtin_at(GetParam(), 240, 180);
-  auto r = run_parity(scene, {"contour_light"}).at(0);
+  auto results = run_parity(scene, {"contour_light"});
+  ASSERT_EQ(testing::names_of(results), testing::kEdgeAndLightResults);
+  const StageParity& r = results[1];
   std::printf("[contour_light %s] %s\n", GetParam().c_str(), format_diff(r.name, r.diff).c_str());
   EXPECT_TRUE(r.pass);
 }
@@ -27,7 +30,7 @@ TEST(ContourLightReference, LitContoursAreLighterByLambda) {
   g.normal.at(1, 0, 2) = -1;  // facing away
   Image d(3, 1, 1, 1.0f);     // pixel 2: background normal (0,0,0)
   ParamSet set;
-  set.set("contour.light_influence", 0.4);
+  set.set("contour_light.light_influence", 0.4);
   Image lit = reference::lit_contour_darkness(d, g, {{{0, 0, 1}, 1.0f}}, set.get<ContourLightParams>());
   EXPECT_FLOAT_EQ(lit.at(0, 0), 0.6f);
   EXPECT_FLOAT_EQ(lit.at(1, 0), 1.0f);

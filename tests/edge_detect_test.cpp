@@ -2,9 +2,10 @@
 // G-buffer, in both normal modes, plus the formula's own properties.
 #include <gtest/gtest.h>
 
-#include "apps/parity.hpp"
+#include "parity/parity.hpp"
 #include "reference/edge_detect.hpp"
 #include "reference/gbuffer.hpp"
+#include "tests/parity_checks.hpp"
 #include "tests/test_scenes.hpp"
 
 namespace plumbago {
@@ -22,7 +23,7 @@ TEST_P(EdgeDetectParity, GpuMatchesReferenceOnTheSameGBuffer) {
   Scene scene = testing::builtin_at(scene_name, 320, 240);
   scene.params.set("edge.normals", mode);
   auto results = run_parity(scene, {"edge_detect"});
-  ASSERT_EQ(results.size(), 1u);
+  ASSERT_EQ(testing::names_of(results), testing::kEdgeAndLightResults);
   const StageParity& r = results[0];
   std::printf("[edge_detect %s %s] %s\n", scene_name.c_str(), mode.c_str(), format_diff(r.name, r.diff).c_str());
   EXPECT_TRUE(r.pass);

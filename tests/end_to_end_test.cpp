@@ -1,7 +1,7 @@
 // End to end (SPEC 5): whole frames from both backends, each from its own G-buffer.
 #include <gtest/gtest.h>
 
-#include "apps/parity.hpp"
+#include "parity/parity.hpp"
 #include "tests/test_scenes.hpp"
 
 namespace plumbago {

@@ -5,9 +5,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "apps/parity.hpp"
+#include "parity/parity.hpp"
 #include "common/passes.hpp"
 #include "gpu/gbuffer.hpp"
+#include "gpu/pipeline.hpp"
 #include "tests/parity_checks.hpp"
 #include "tests/test_scenes.hpp"
 
@@ -16,7 +17,7 @@ namespace {
 
 void expect_gbuffer_parity(const Scene& scene, const std::string& label) {
   auto results = run_parity(scene, {"gbuffer"});
-  ASSERT_EQ(testing::names_of(results), (std::vector<std::string>{"gbuffer.depth", "gbuffer.normal", "gbuffer.face_normal",
+  ASSERT_EQ(testing::names_of(results), (std::vector<std::string>{"gbuffer.normal", "gbuffer.face_normal", "gbuffer.depth",
                                                                   "gbuffer.bary", "gbuffer.gouraud"}));
   for (const StageParity& r : results) {
     std::printf("[gbuffer %s] %s  [%s]\n", label.c_str(), format_diff(r.name, r.diff).c_str(), r.note.c_str());
@@ -175,7 +176,7 @@ TEST_F(GBufferBackground, ASecondRenderLeavesNoTraceOfTheFirstOnTheBackground) {
   expect_second_render_leaves_no_trace(gpu::GBufferChannels{}, "every channel, whole window (a dump)");
   Scene scene = testing::builtin_at("sphere", 200, 150);
   scene.effects = {"contours", "interior", "crosshatch", "paper"};
-  gpu::GBufferChannels frame = gpu::channels_read_by(frame_stages(passes_for(scene.effects, scene.params)), scene);
+  gpu::GBufferChannels frame = gpu::Renderer(scene).frame_channels("gbuffer");
   frame.read_region = {0, 0, scene.width, scene.height};  // the moved sphere's region is elsewhere
   expect_second_render_leaves_no_trace(frame, "a frame's channels");
 }

@@ -22,7 +22,7 @@ void expect_finite_frames(const Scene& scene, const std::string& label) {
   Frame ref = reference::render(scene, keep);
   Frame gpu_frame = gpu::Renderer(scene).render(keep);
   for (const Frame* f : {&ref, &gpu_frame}) {
-    EXPECT_GT(f->buffers.size(), 10u) << label;
+    EXPECT_GE(f->buffers.size(), 10u) << label;  // a sketchy-only scene declares 10
     for (const auto& [name, img] : f->buffers) EXPECT_FALSE(has_non_finite(img)) << label << ": " << name;
   }
 }

@@ -2,8 +2,9 @@
 // Gouraud and Phong, with and without the brightness adjustment.
 #include <gtest/gtest.h>
 
-#include "apps/parity.hpp"
+#include "parity/parity.hpp"
 #include "reference/interior_intensity.hpp"
+#include "tests/parity_checks.hpp"
 #include "tests/test_scenes.hpp"
 
 namespace plumbago {
@@ -19,7 +20,9 @@ TEST_P(InteriorIntensityParity, GpuMatchesReference) {
   Scene scene = testing::builtin_at(scene_name, 240, 180);
   scene.params.set("interior.shading", shading);
   scene.params.set("interior.brightness_sqrt", sqrt_on ? 1.0 : 0.0);
-  auto r = run_parity(scene, {"interior_intensity"}).at(0);
+  auto results = run_parity(scene, {"interior_intensity"});
+  ASSERT_EQ(testing::names_of(results), testing::kInteriorResults);
+  const StageParity& r = results[0];
   std::printf("[interior_intensity %s %s sqrt=%d] %s\n", scene_name.c_str(), shading.c_str(), int(sqrt_on),
               format_diff(r.name, r.diff).c_str());
   EXPECT_TRUE(r.pass);

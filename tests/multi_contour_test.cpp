@@ -2,7 +2,7 @@
 // formula's own properties.
 #include <gtest/gtest.h>
 
-#include "apps/parity.hpp"
+#include "parity/parity.hpp"
 #include "reference/multi_contour.hpp"
 #include "tests/parity_checks.hpp"
 #include "tests/test_scenes.hpp"
@@ -11,7 +11,9 @@ namespace plumbago {
 namespace {
 
 // Multiple contour drawing as its own pass, then drawn in the composition pass.
-const std::vector<std::string> kMultiContourResults = {"multi_contour", "multi_contour.in_compose"};
+const std::vector<std::string> kMultiContourResults = {"multi_contour.contour_darkness",
+                                                       "multi_contour.contour_darkness in multi_contour+compose",
+                                                       "compose.color in multi_contour+compose"};
 
 class MultiContourParity : public testing::GlTest, public ::testing::WithParamInterface<std::string> {};
 

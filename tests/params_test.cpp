@@ -87,8 +87,13 @@ size_t check_defaults() {
 }
 
 template <class... P>
-size_t check_all_defaults(TypeList<P...>) {
-  return (check_defaults<P>() + ...);
+size_t check_struct_defaults(TypeList<P...>) {
+  return (size_t(0) + ... + check_defaults<P>());
+}
+
+template <class... Stages>
+size_t check_all_defaults(TypeList<Stages...>) {
+  return (check_struct_defaults(typename Stages::Params{}) + ...);
 }
 
 TEST(Params, DefaultsComeFromTheTable) {
@@ -101,12 +106,12 @@ TEST(Params, DefaultsComeFromTheTable) {
   EXPECT_EQ(param_spec("edge.background_pairs").default_value, 0.0);              // continuous
   EXPECT_EQ(param_spec("compose.contour_attenuation").default_value, 0.5);        // common/compose.hpp
   EXPECT_EQ(param_spec("compose.contrast").default_value, 0.5);
-  EXPECT_EQ(param_spec("contour.copies").default_value, 3.0);                     // common/distortion.hpp
+  EXPECT_EQ(param_spec("contour.copies").default_value, 3.0);                     // common/multi_contour.hpp
   EXPECT_EQ(param_spec("contour.stroke_opacity").default_value, 0.7);
   EXPECT_EQ(param_spec("curvature.ring_fallback").default_value, 1.0);            // common/curvature.hpp
   EXPECT_EQ(param_spec("paper.mu_p").default_value, 0.05);                        // common/paper.hpp
   EXPECT_EQ(param_spec("sketchy.shade_c").default_value, -3.0);                   // common/sketchy.hpp
-  EXPECT_EQ(param_spec("pencil.layers").default_value, 32.0);                     // common/pencil_texture.hpp
+  EXPECT_EQ(param_spec("pencil_textures.layers").default_value, 32.0);            // common/pencil_textures.hpp
   // The edge stage's struct, field by field, as the stages load it.
   EXPECT_EQ(check_defaults<EdgeDetectParams>(), 3u);
   auto p = ParamSet{}.get<EdgeDetectParams>();
@@ -118,7 +123,7 @@ TEST(Params, DefaultsComeFromTheTable) {
 // Every stage's struct (common/stage_registry.hpp) loads the defaults its visit writes, and
 // the table holds exactly their fields.
 TEST(Params, EveryStructLoadsTheDefaultsItsVisitWrites) {
-  EXPECT_EQ(check_all_defaults(AllParamStructs{}), param_specs().size());
+  EXPECT_EQ(check_all_defaults(AllStages{}), param_specs().size());
 }
 
 TEST(Params, UnknownNameIsRefusedWithTheValidNames) {

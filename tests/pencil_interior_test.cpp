@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "apps/parity.hpp"
+#include "parity/parity.hpp"
 #include "common/lights.hpp"
 #include "common/preprocess.hpp"
 #include "reference/gbuffer.hpp"
@@ -16,8 +16,10 @@
 namespace plumbago {
 namespace {
 
-// SPEC 2.6-2.8 alone, then with cross hatching and the paper effect.
-const std::vector<std::string> kPencilInteriorResults = {"pencil_interior.blend", "pencil_interior.hatch_paper"};
+const std::vector<std::string>& kPencilInteriorResults = testing::kInteriorResults;
+// SPEC 2.6-2.8 alone, then with cross hatching (2.9) and the paper effect (2.10).
+const std::vector<std::vector<std::string>> kInteriorEffects = {{"contours", "interior"},
+                                                                {"contours", "interior", "crosshatch", "paper"}};
 
 class PencilInteriorParity : public testing::GlTest, public ::testing::WithParamInterface<std::string> {};
 
@@ -25,11 +27,15 @@ class PencilInteriorParity : public testing::GlTest, public ::testing::WithParam
 // abs 7e-6 on llvmpipe (float textures are filtered with float weights).
 TEST_P(PencilInteriorParity, GpuMatchesReference) {
   Scene scene = testing::builtin_at(GetParam(), 320, 240);
-  auto results = run_parity(scene, {"pencil_interior"});
-  ASSERT_EQ(testing::names_of(results), kPencilInteriorResults);
-  for (const StageParity& r : results) {
-    std::printf("[%s %s] %s\n", r.name.c_str(), GetParam().c_str(), format_diff(r.name, r.diff).c_str());
-    EXPECT_TRUE(r.pass) << r.name;
+  for (const auto& effects : kInteriorEffects) {
+    scene.effects = effects;
+    auto results = run_parity(scene, {"pencil_interior"});
+    ASSERT_EQ(testing::names_of(results), kPencilInteriorResults);
+    for (const StageParity& r : results) {
+      std::printf("[%s %s, %zu effects] %s\n", r.name.c_str(), GetParam().c_str(), effects.size(),
+                  format_diff(r.name, r.diff).c_str());
+      EXPECT_TRUE(r.pass) << r.name;
+    }
   }
 }
 
@@ -37,11 +43,15 @@ INSTANTIATE_TEST_SUITE_P(Scenes, PencilInteriorParity, ::testing::Values("torus"
 
 TEST_F(PencilInteriorParity, Fandisk) {
   PLUMBAGO_REQUIRE_MODEL("fandisk.obj");
-  auto results = run_parity(testing::model_scene("fandisk.obj", 400, 400), {"pencil_interior"});
-  ASSERT_EQ(testing::names_of(results), kPencilInteriorResults);
-  for (const StageParity& r : results) {
-    std::printf("[%s fandisk] %s\n", r.name.c_str(), format_diff(r.name, r.diff).c_str());
-    EXPECT_TRUE(r.pass) << r.name;
+  Scene scene = testing::model_scene("fandisk.obj", 400, 400);
+  for (const auto& effects : kInteriorEffects) {
+    scene.effects = effects;
+    auto results = run_parity(scene, {"pencil_interior"});
+    ASSERT_EQ(testing::names_of(results), kPencilInteriorResults);
+    for (const StageParity& r : results) {
+      std::printf("[%s fandisk, %zu effects] %s\n", r.name.c_str(), effects.size(), format_diff(r.name, r.diff).c_str());
+      EXPECT_TRUE(r.pass) << r.name;
+    }
   }
 }
 

@@ -33,16 +33,6 @@ TEST(PassTable, ContoursNeedOnlyGBufferEdgesAndComposition) {
   EXPECT_THROW(passes_for({"watercolor"}), std::invalid_argument);
 }
 
-TEST(PassTable, EveryPassComesAfterWhatItNeeds) {
-  const auto& table = pass_table();
-  for (size_t i = 0; i < table.size(); ++i)
-    for (const auto& need : table[i].needs) {
-      auto it = std::find_if(table.begin(), table.end(), [&](const PassDef& p) { return p.name == need; });
-      ASSERT_NE(it, table.end()) << table[i].name << " needs unknown " << need;
-      EXPECT_LT(size_t(it - table.begin()), i) << table[i].name << " before " << need;
-    }
-}
-
 class Frames : public testing::GlTest {};
 
 TEST_F(Frames, ContoursOnlySceneRunsNoCurvaturePencilOrPaperWork) {

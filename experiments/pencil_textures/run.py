@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Study 4: the pencil texture stack (Lee et al. 2006 §3, SPEC 1.2): how many tone layers
-(pencil.layers) and how large a tile (pencil.size), against frame time, generation time and
+(pencil_textures.layers) and how large a tile (pencil_textures.size), against frame time, generation time and
 memory.
 
 Reference: the most accurate setting of the sweep, the most layers at the largest tile
@@ -27,7 +27,7 @@ BYTES_PER_TEXEL = 4  # GL_R32F (gpu/pipeline.cpp uploads the stack as R32F)
 
 
 def sets(layers, size, default_layers, default_layer):
-    return ["pencil.layers=%d" % layers, "pencil.size=%d" % size,
+    return ["pencil_textures.layers=%d" % layers, "pencil_textures.size=%d" % size,
             "contour.texture_layer=%d" % min(layers - 1, round(default_layer * layers / default_layers))]
 
 
@@ -35,7 +35,7 @@ def sweep(a):
     size, frames = ("400x400", 3) if a.quick else (None, 8)
     layers = [8, 32, 64] if a.quick else [8, 16, 32, 64]
     tiles = [128, 512] if a.quick else [128, 256, 512, 1024]
-    default_layers, default_tile = pc.param_default("pencil.layers"), pc.param_default("pencil.size")
+    default_layers, default_tile = pc.param_default("pencil_textures.layers"), pc.param_default("pencil_textures.size")
     default_layer = pc.param_default("contour.texture_layer")
     rows = []
     with tempfile.TemporaryDirectory(prefix="plumbago-pencil-") as work:

@@ -1,4 +1,4 @@
-#include "common/pencil_texture.hpp"
+#include "common/pencil_textures.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,6 +8,7 @@
 
 #include "common/noise.hpp"
 #include "common/random.hpp"
+#include "common/preprocess.hpp"
 
 namespace plumbago {
 
@@ -25,7 +26,7 @@ struct Stroke {
   glm::vec2 fibre;
 };
 
-Stroke random_stroke(const PencilParams& p, Rng& rng) {
+Stroke random_stroke(const PencilTexturesParams& p, Rng& rng) {
   float size = float(p.size);
   float angle = float(rng.uniform(-1, 1)) * p.angle_jitter_deg * kPi / 180;
   float length = p.stroke_length * size * float(rng.uniform(0.7, 1.3));
@@ -42,7 +43,7 @@ Stroke random_stroke(const PencilParams& p, Rng& rng) {
 
 // Paper tooth: a fixed per-texel factor in [1 - tooth, 1], mostly near 1, low at a few
 // texels that the lead skips over stroke after stroke (white specks in dark layers).
-Image tooth_field(const PencilParams& p, uint32_t seed) {
+Image tooth_field(const PencilTexturesParams& p, uint32_t seed) {
   Rng rng(seed, "pencil-tooth");
   Image t(p.size, p.size, 1);
   for (float& v : t.data) {
@@ -65,7 +66,7 @@ struct Fibres {
 
 // Darkness 1 - c_s the stroke leaves at distance `across` from its center line, at
 // fraction t of its length: flat core with soft edges, tapered ends, pressure, fibres.
-float stroke_darkness(const Stroke& s, const PencilParams& p, float t, float across, float fibre) {
+float stroke_darkness(const Stroke& s, const PencilTexturesParams& p, float t, float across, float fibre) {
   float half = 0.5f * p.stroke_width, edge = 0.6f;
   float profile = 1.0f - glm::smoothstep(half - edge, half + edge, std::abs(across));
   float taper = std::min(1.0f, std::min(t, 1 - t) * 10.0f);
@@ -77,7 +78,7 @@ int wrap(int i, int n) { return ((i % n) + n) % n; }
 
 // Eq. 3-4 at every texel the stroke touches (the tile wraps); returns the change of the
 // layer's sum of intensities.
-double draw_stroke(const Stroke& s, const PencilParams& p, const Fibres& fibres, const Image& tooth, Image& layer) {
+double draw_stroke(const Stroke& s, const PencilTexturesParams& p, const Fibres& fibres, const Image& tooth, Image& layer) {
   glm::vec2 normal(-s.dir.y, s.dir.x);
   float reach = std::abs(s.bend) + p.stroke_width + 1;
   glm::vec2 a = s.start, b = s.start + s.dir * s.length;
@@ -102,17 +103,17 @@ double draw_stroke(const Stroke& s, const PencilParams& p, const Fibres& fibres,
 
 }  // namespace
 
-float graphite_update(const PencilParams& p, float c_t, float c_s) {
+float graphite_update(const PencilTexturesParams& p, float c_t, float c_s) {
   float c_a = c_t * (1 - c_s);             // c_a = c_t (1 - c_s)                       (Eq. 3)
   if (c_t > p.white_level) c_a *= p.mu_w;  // white enough: c_a = mu_w c_a              (Eq. 4)
   return c_t - p.mu_b * c_a;               // c_t' = c_t - mu_b c_a                     (Eq. 3)
 }
 
-float layer_target(const PencilParams& p, int layer) {
+float layer_target(const PencilTexturesParams& p, int layer) {
   return 1.0f - float(layer) / float(p.layers - 1) * (1.0f - p.darkest);
 }
 
-std::vector<Image> pencil_layers(const PencilParams& p, uint32_t seed, int last) {
+std::vector<Image> pencil_layers(const PencilTexturesParams& p, uint32_t seed, int last) {
   Rng rng(seed, "pencil-strokes");
   Fibres fibres{TileablePerlin(kFibrePeriod, seed, "pencil-fibres"), p.grain, p.fibre_length, p.fibre_width};
   Image tooth = tooth_field(p, seed);
@@ -131,12 +132,16 @@ std::vector<Image> pencil_layers(const PencilParams& p, uint32_t seed, int last)
       if (n % covering != 0) continue;
       if ((before - sum) / texels < kLeastProgress)
         throw std::runtime_error("pencil layer " + std::to_string(l) + " cannot reach mean " +
-                                 std::to_string(layer_target(p, l)) + ": raise pencil.mu_b or pencil.darkest");
+                                 std::to_string(layer_target(p, l)) + ": raise pencil_textures.mu_b or pencil_textures.darkest");
       before = sum;
     }
     layers.push_back(std::move(next));
   }
   return layers;
+}
+
+void PencilTexturesStage::make(const Scene& scene, Preprocessed& out) {
+  out.pencil_stack = pencil_layers(scene.params.get<PencilTexturesParams>(), scene.seed);
 }
 
 }  // namespace plumbago

@@ -9,23 +9,23 @@
 #include <string>
 
 #include "common/params.hpp"
-#include "common/pencil_texture.hpp"
+#include "common/pencil_textures.hpp"
 
 namespace plumbago {
 namespace {
 
-PencilParams small_stack() {
+PencilTexturesParams small_stack() {
   ParamSet set;
-  set.set("pencil.size", 128.0);
-  set.set("pencil.layers", 16.0);
-  return set.get<PencilParams>();
+  set.set("pencil_textures.size", 128.0);
+  set.set("pencil_textures.layers", 16.0);
+  return set.get<PencilTexturesParams>();
 }
 
 double mean(const Image& img) { return std::accumulate(img.data.begin(), img.data.end(), 0.0) / double(img.data.size()); }
 
 // The default stack, as the renderers use it.
 TEST(PencilTexture, LayerZeroIsWhiteAndTonesFallUniformly) {
-  auto p = ParamSet{}.get<PencilParams>();
+  auto p = ParamSet{}.get<PencilTexturesParams>();
   auto layers = pencil_layers(p, 1);
   ASSERT_EQ(int(layers.size()), p.layers);
   for (float v : layers[0].data) ASSERT_EQ(v, 1.0f);
@@ -43,7 +43,7 @@ TEST(PencilTexture, LayerZeroIsWhiteAndTonesFallUniformly) {
 // Eq. 3-4 as SPEC 1.2 writes them, on numbers worked by hand (mu_b 0.2, mu_w 0.4,
 // white_level 0.9).
 TEST(PencilTexture, GraphiteUpdateIsEquations3And4) {
-  auto p = ParamSet{}.get<PencilParams>();
+  auto p = ParamSet{}.get<PencilTexturesParams>();
   ASSERT_FLOAT_EQ(p.mu_b, 0.2f);
   ASSERT_FLOAT_EQ(p.mu_w, 0.4f);
   EXPECT_NEAR(graphite_update(p, 1.0f, 0.3f), 1.0f - 0.2f * 0.4f * 0.7f, 1e-6f);  // white: preserved
@@ -55,7 +55,7 @@ TEST(PencilTexture, GraphiteUpdateIsEquations3And4) {
 // Strokes only darken: every texel of a layer is at most its value one layer up, and
 // all stay in [0, 1]. A stack cut at `last` is the start of the whole stack.
 TEST(PencilTexture, LayersDarkenTexelByTexelAndPrefixesMatch) {
-  PencilParams p = small_stack();
+  PencilTexturesParams p = small_stack();
   auto layers = pencil_layers(p, 2);
   for (size_t l = 1; l < layers.size(); ++l)
     for (size_t i = 0; i < layers[l].data.size(); ++i) {
@@ -70,7 +70,7 @@ TEST(PencilTexture, LayersDarkenTexelByTexelAndPrefixesMatch) {
 // The tile wraps: the jump across the seam (last column to first, top row to bottom) is
 // no larger than the jump between neighbors inside the tile.
 TEST(PencilTexture, TilesWrapWithoutASeam) {
-  PencilParams p = small_stack();
+  PencilTexturesParams p = small_stack();
   const Image img = pencil_layers(p, 3)[8];
   auto column_jump = [&](int a, int b) {
     double s = 0;
@@ -94,9 +94,9 @@ TEST(PencilTexture, TilesWrapWithoutASeam) {
 // Eq. 4: at the same tone, the light layers keep more texels above white_level than
 // they do with preservation off (mu_w = 1).
 TEST(PencilTexture, WhitePreservationKeepsMoreWhiteTexels) {
-  PencilParams p = small_stack();
+  PencilTexturesParams p = small_stack();
   auto white_shares = [&](float mu_w) {
-    PencilParams q = p;
+    PencilTexturesParams q = p;
     q.mu_w = mu_w;
     std::vector<double> shares;
     for (const Image& img : pencil_layers(q, 5, 4)) {
@@ -113,14 +113,14 @@ TEST(PencilTexture, WhitePreservationKeepsMoreWhiteTexels) {
 }
 
 TEST(PencilTexture, SameSeedSameTexturesOtherSeedOtherStrokes) {
-  PencilParams p = small_stack();
+  PencilTexturesParams p = small_stack();
   EXPECT_EQ(pencil_layers(p, 9)[5].data, pencil_layers(p, 9)[5].data);
   EXPECT_NE(pencil_layers(p, 9)[5].data, pencil_layers(p, 10)[5].data);
 }
 
 // A tone no stroke can reach is refused with the keys to change, not looped on forever.
 TEST(PencilTexture, UnreachableToneIsRefused) {
-  PencilParams p = small_stack();
+  PencilTexturesParams p = small_stack();
   p.mu_b = 0;
   EXPECT_THROW(pencil_layers(p, 1, 1), std::runtime_error);
   p = small_stack();
@@ -129,7 +129,7 @@ TEST(PencilTexture, UnreachableToneIsRefused) {
     pencil_layers(p, 1);
     ADD_FAILURE() << "mean 0 reached";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("pencil.darkest"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("pencil_textures.darkest"), std::string::npos) << e.what();
   }
 }
 

@@ -1,10 +1,13 @@
-// Interior shading parameters (SPEC 2.5). The G-buffer's Gouraud channel reads them.
+// Interior intensity and brightness (SPEC 2.5; Lee §3, §5.2), and the parameters of the
+// whole interior (SPEC 2.5-2.9). The G-buffer's Gouraud channel reads them.
+//   I = clamp(k_a + k_d sum_lights intensity max(0, n.L)),  I' = sqrt(I) (brightness_sqrt)
 #pragma once
 
 #include <glm/glm.hpp>
 #include <vector>
 
 #include "common/scene.hpp"
+#include "common/stage.hpp"
 
 namespace plumbago {
 
@@ -41,11 +44,19 @@ struct InteriorParams {
 // directions in the space of n (common/lights.hpp).
 float lambert_intensity(glm::vec3 n, const std::vector<Light>& unit_lights, const InteriorParams& p);
 
-// The weights of the corners' textures (SPEC 2.8): the barycentrics `w` for three-way
-// blending; for nearest_corner, 1 for the largest of them (the first on a tie), 0 else.
-glm::vec3 blend_weights(glm::vec3 w, const InteriorParams& p);
-
 // Brightness adjustment I' = sqrt(I) when p.brightness_sqrt (Lee §5.2).
 float adjusted_brightness(float intensity, const InteriorParams& p);
+
+struct InteriorIntensityStage {
+  using Params = TypeList<InteriorParams>;
+  static bool gouraud(const StageConfig& c) { return c.params.get<InteriorParams>().shading == InteriorShading::Gouraud; }
+  static bool phong(const StageConfig& c) { return !gouraud(c); }
+  static StageDesc describe() {
+    return {"interior_intensity", StageKind::Frame, "interior intensity and brightness (SPEC 2.5)", {"interior"},
+            {{"gbuffer.ids"}, {"gbuffer.gouraud", gouraud}, {"gbuffer.normal", phong}},
+            {{"intensity", 1, Texel::Float, "I'; 1 on the background", tolerance::kFloat,
+              "fed the same G-buffer; float target"}}};
+  }
+};
 
 }  // namespace plumbago

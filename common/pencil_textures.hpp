@@ -8,6 +8,9 @@
 // streaks from the lead's fibres, and a few texels of paper tooth it skips.
 #pragma once
 
+#include "common/scene.hpp"
+#include "common/stage.hpp"
+
 #include <cstdint>
 #include <vector>
 
@@ -15,8 +18,8 @@
 
 namespace plumbago {
 
-struct PencilParams {
-  static constexpr const char* stage = "pencil";
+struct PencilTexturesParams {
+  static constexpr const char* stage = "pencil_textures";
   int layers, size;
   float mu_b, mu_w, white_level, darkest, angle_jitter_deg;
   float stroke_length, stroke_width, stroke_bend, grain, fibre_length, fibre_width, tooth;
@@ -42,12 +45,24 @@ struct PencilParams {
 // Layers 0..last (all when last < 0) of the stack: size x size, 1 channel, intensity
 // (1 = white). The layers are made in order from one stream of strokes, so a prefix is
 // the same as the start of the whole stack.
-std::vector<Image> pencil_layers(const PencilParams& p, uint32_t seed, int last = -1);
+std::vector<Image> pencil_layers(const PencilTexturesParams& p, uint32_t seed, int last = -1);
 
 // One stroke's effect on texel c_t with stroke color c_s (Eq. 3-4).
-float graphite_update(const PencilParams& p, float c_t, float c_s);
+float graphite_update(const PencilTexturesParams& p, float c_t, float c_s);
 
 // Mean intensity layer l aims for: 1 - l / (layers - 1) (1 - darkest).
-float layer_target(const PencilParams& p, int layer);
+float layer_target(const PencilTexturesParams& p, int layer);
+
+struct Preprocessed;
+struct PencilTexturesStage {
+  using Params = TypeList<PencilTexturesParams>;
+  static void make(const Scene& scene, Preprocessed& out);
+  static StageDesc describe() {
+    StageDesc d{"pencil_textures", StageKind::Preprocessing, "the pencil tone stack (SPEC 1.2, Lee Eq. 3-4)",
+                {"pencil_textures"}, {}, {{"stack", 1, Texel::Host, "the layers, white first"}}};
+    d.preprocess = make;
+    return d;
+  }
+};
 
 }  // namespace plumbago

@@ -1,0 +1,25 @@
+// Sketchy drawing's maps (SPEC 3.1): the edge map of the sketchy objects (contour
+// darkness of SPEC 2.2 and the depth it belongs to) and their shade map (unlit color).
+#pragma once
+
+#include "common/edge_detect.hpp"
+#include "common/stage.hpp"
+
+namespace plumbago {
+
+struct SketchyMapsStage {
+  using Params = TypeList<>;
+  static bool face_normals(const StageConfig& c) { return c.params.get<EdgeDetectParams>().normals == EdgeNormals::Face; }
+  static bool smooth_normals(const StageConfig& c) { return !face_normals(c); }
+  static StageDesc describe() {
+    return {"sketchy_maps", StageKind::Frame, "edge and shade maps of the sketchy objects (SPEC 3.1)", {"edge"},
+            {{"sketchy_gbuffer.normal", smooth_normals}, {"sketchy_gbuffer.face_normal", face_normals},
+             {"sketchy_gbuffer.depth"}, {"sketchy_gbuffer.ids"}},
+            {{"edge", 2, Texel::Float, "contour darkness d and the linear depth it belongs to", tolerance::kFloat,
+              "fed the same sketchy G-buffer; float target"},
+             {"shade", 4, Texel::Unorm8, "the object's unlit color, alpha = coverage", tolerance::kByte,
+              "object colors and coverage; 8-bit target"}}};
+  }
+};
+
+}  // namespace plumbago
