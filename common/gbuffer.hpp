@@ -58,9 +58,10 @@ glm::vec3 face_normal(const WorldObject& obj, size_t t);
 // Normalized depth z = (d - near) / (far - near): 1 for background (SPEC §0).
 Image normalized_depth(const GBuffer& g);
 
-// The channels of a G-buffer as outputs of a stage (dumps hold the normalized depth).
-// With `compared`, each states how parity compares raster against ray (SPEC 5).
-std::vector<Output> gbuffer_outputs(bool compared);
+// The channels of a G-buffer as outputs of a stage (dumps hold the normalized depth), each
+// saying how parity compares raster against ray (SPEC 5); the corner angles of SPEC 2.7
+// `with_angles`.
+std::vector<Output> gbuffer_outputs(bool with_angles);
 
 struct GBufferStage {
   using Params = TypeList<GBufferParams>;

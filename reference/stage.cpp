@@ -14,6 +14,11 @@ std::map<std::string, StageFn>& registry() {
   return stages;
 }
 
+std::map<std::string, BoundFn>& bounds() {
+  static std::map<std::string, BoundFn> fns;
+  return fns;
+}
+
 }  // namespace
 
 ReferenceFrame::ReferenceFrame(const Scene& s, Preprocessed p, std::vector<std::string> st)
@@ -54,6 +59,18 @@ StageFn implementation(const std::string& stage) {
   check_implementations();
   find_stage(stage);  // an unknown name says which are known
   return registry().at(stage);
+}
+
+bool register_bound(const char* output, BoundFn fn) {
+  find_output(output);  // throws for an undeclared output
+  if (!bounds().emplace(output, fn).second)
+    throw std::logic_error(std::string("reference/: a second bound for '") + output + "'");
+  return true;
+}
+
+BoundFn find_bound(const std::string& output) {
+  auto it = bounds().find(output);
+  return it == bounds().end() ? nullptr : it->second;
 }
 
 std::map<std::string, Image> dump(const ReferenceFrame& f) {

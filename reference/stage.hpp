@@ -52,6 +52,14 @@ bool register_stage(const char* stage, StageFn fn);
 void check_implementations();
 StageFn implementation(const std::string& stage);
 
+// A per-pixel bound for an output whose backends may differ by more than its declared
+// tolerance at rare pixels the formula can name (a nearest-texel choice at a texel edge):
+// parity allows the declared tolerance plus bound(x, y). Registered with
+// PLUMBAGO_REFERENCE_BOUND next to the stage's code, computed from the frame's inputs.
+using BoundFn = Image (*)(const ReferenceFrame&);
+bool register_bound(const char* output, BoundFn fn);
+BoundFn find_bound(const std::string& output);  // null when the output has none
+
 // The buffers a dump of `frame` holds, by name (common/stage.hpp dumped_buffers).
 std::map<std::string, Image> dump(const ReferenceFrame& frame);
 
@@ -59,3 +67,5 @@ std::map<std::string, Image> dump(const ReferenceFrame& frame);
 
 #define PLUMBAGO_REFERENCE_STAGE(stem, ...) \
   [[maybe_unused]] static const bool registered_reference_##stem = ::plumbago::reference::register_stage(#stem, __VA_ARGS__)
+#define PLUMBAGO_REFERENCE_BOUND(id, output, ...) \
+  [[maybe_unused]] static const bool registered_bound_##id = ::plumbago::reference::register_bound(output, __VA_ARGS__)
