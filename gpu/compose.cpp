@@ -10,12 +10,7 @@ ComposePass::ComposePass()
 
 const Program& ComposePass::program(bool draws_contours, bool writes_contours, bool has_contours,
                                     const ComposeInputs& in, const ComposeParams& p) {
-  const Program& made = programs_.get({draws_contours, writes_contours}, [](const Program& made) {
-    // Units: D_i, paper color, then D_c, or what drawing the contours reads.
-    const char* samplers[] = {"interior_darkness", "paper_color", "contour_darkness", "copy_inputs", "block_reach_max"};
-    for (int i = 0; i < 5; ++i) glProgramUniform1i(made.id(), made.uniform(samplers[i]), i);
-    glProgramUniform1i(made.id(), made.uniform("lit_contour_darkness"), 2);
-  });
+  const Program& made = programs_.get({draws_contours, writes_contours});
   made.set_params(p);
   glProgramUniform1i(made.id(), made.uniform("has_contours"), has_contours);
   glProgramUniform1i(made.id(), made.uniform("has_interior"), in.has_interior);
@@ -31,7 +26,9 @@ void ComposePass::copy_blank_page(const ComposeInputs& in, const ComposeParams& 
     page_ = make_texture(out.width, out.height, out.internal_format);
     page_paper_ = paper;
     ComposeInputs blank{in.paper_color, false, in.paper_color, in.has_paper};
-    pass_.draw(program(false, false, false, blank, p), {&in.paper_color, &in.paper_color, &in.paper_color}, page_);
+    pass_.draw(program(false, false, false, blank, p),
+               {{"interior_darkness", &in.paper_color}, {"paper_color", &in.paper_color}, {"contour_darkness", &in.paper_color}},
+               page_);
   }
   glCopyImageSubData(page_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, out.id(), GL_TEXTURE_2D, 0, 0, 0, 0, out.width, out.height, 1);
 }
@@ -39,7 +36,9 @@ void ComposePass::copy_blank_page(const ComposeInputs& in, const ComposeParams& 
 void ComposePass::run(const Texture& contour_darkness, bool has_contours, const ComposeInputs& in,
                       const ComposeParams& p, Texture& out, const PixelRect& inside) {
   copy_blank_page(in, p, out);
-  pass_.draw_inside(program(false, false, has_contours, in, p), {&in.interior_darkness, &in.paper_color, &contour_darkness},
+  pass_.draw_inside(program(false, false, has_contours, in, p),
+                    {{"interior_darkness", &in.interior_darkness}, {"paper_color", &in.paper_color},
+                     {"contour_darkness", &contour_darkness}},
                     {&out}, inside, {});
 }
 
@@ -48,8 +47,11 @@ void ComposePass::run(const ContourSources& c, const ComposeInputs& in, const Co
   copy_blank_page(in, p, out);
   const Program& made = program(true, contour_darkness != nullptr, true, in, p);
   made.set_params(c.params);
-  std::initializer_list<const Texture*> textures = {&in.interior_darkness, &in.paper_color, &c.lit, &c.copy_inputs,
-                                                    &c.block_reach_max};
+  std::initializer_list<TextureBinding> textures = {{"interior_darkness", &in.interior_darkness},
+                                                   {"paper_color", &in.paper_color},
+                                                   {"lit_contour_darkness", &c.lit},
+                                                   {"copy_inputs", &c.copy_inputs},
+                                                   {"block_reach_max", &c.block_reach_max}};
   if (contour_darkness)
     pass_.draw_inside(made, textures, {&out, contour_darkness}, inside, {});
   else

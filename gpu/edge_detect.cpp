@@ -13,10 +13,7 @@ EdgeDetectPass::EdgeDetectPass()
 
 void EdgeDetectPass::run(const GBufferTargets& g, const EdgeDetectParams& p, const std::vector<Light>& view_lights,
                          const ContourLightParams& light, const EdgeOutputs& out, const PixelRect& covered) {
-  const Program& program = programs_.get({out.darkness != nullptr, out.block_marks != nullptr}, [](const Program& made) {
-    glProgramUniform1i(made.id(), made.uniform("normals"), 0);
-    glProgramUniform1i(made.id(), made.uniform("shading_normals"), 1);
-  });
+  const Program& program = programs_.get({out.darkness != nullptr, out.block_marks != nullptr});
   program.set_params(p);
   program.set_params(light);
   set_lights(program, view_lights);
@@ -31,9 +28,10 @@ void EdgeDetectPass::run(const GBufferTargets& g, const EdgeDetectParams& p, con
   }
   glm::vec4 outside(background);
   if (out.darkness)
-    pass_.draw_inside(program, {&normals, &g.normal}, {&out.lit, out.darkness}, covered, {outside, outside});
+    pass_.draw_inside(program, {{"normals", &normals}, {"shading_normals", &g.normal}}, {&out.lit, out.darkness}, covered,
+                      {outside, outside});
   else
-    pass_.draw_inside(program, {&normals, &g.normal}, {&out.lit}, covered, {outside});
+    pass_.draw_inside(program, {{"normals", &normals}, {"shading_normals", &g.normal}}, {&out.lit}, covered, {outside});
 }
 
 namespace {

@@ -6,17 +6,17 @@ namespace plumbago::gpu {
 
 FullscreenPass::FullscreenPass() : fbo_(make_framebuffer()), empty_(make_vertex_array()) {}
 
-void FullscreenPass::draw(const Program& program, std::initializer_list<const Texture*> textures, Texture& target) {
+void FullscreenPass::draw(const Program& program, std::initializer_list<TextureBinding> textures, Texture& target) {
   draw(program, textures, {&target});
 }
 
-void FullscreenPass::draw(const Program& program, std::initializer_list<const Texture*> textures,
+void FullscreenPass::draw(const Program& program, std::initializer_list<TextureBinding> textures,
                           std::initializer_list<Texture*> targets) {
   bind_targets(targets);
   draw_triangle(program, textures);
 }
 
-void FullscreenPass::draw_inside(const Program& program, std::initializer_list<const Texture*> textures,
+void FullscreenPass::draw_inside(const Program& program, std::initializer_list<TextureBinding> textures,
                                  std::initializer_list<Texture*> targets, const PixelRect& rect,
                                  std::initializer_list<glm::vec4> outside) {
   bind_targets(targets);
@@ -35,7 +35,7 @@ void FullscreenPass::bind_targets(std::initializer_list<Texture*> targets) {
   use_attachments(n, **targets.begin());
 }
 
-void FullscreenPass::draw_layer(const Program& program, std::initializer_list<const Texture*> textures, Texture& array,
+void FullscreenPass::draw_layer(const Program& program, std::initializer_list<TextureBinding> textures, Texture& array,
                                 int layer) {
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, array.id(), 0, layer);
@@ -54,9 +54,9 @@ void FullscreenPass::use_attachments(GLsizei n, const Texture& first) {
   glViewport(0, 0, first.width, first.height);
 }
 
-// Binds `textures` to units 0.. and draws the full-window triangle into the bound targets.
-void FullscreenPass::draw_triangle(const Program& program, std::initializer_list<const Texture*> textures) {
-  bind_textures(textures);
+// Binds `textures` to their samplers and draws the full-window triangle into the bound targets.
+void FullscreenPass::draw_triangle(const Program& program, std::initializer_list<TextureBinding> textures) {
+  bind_textures(program, textures);
   glUseProgram(program.id());
   glBindVertexArray(empty_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);

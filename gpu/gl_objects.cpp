@@ -148,13 +148,4 @@ Renderbuffer make_renderbuffer(int width, int height, GLenum internal_format) {
   return Renderbuffer(id);
 }
 
-void bind_textures(std::initializer_list<const Texture*> textures) {
-  GLenum unit = 0;
-  for (const Texture* t : textures) {
-    glActiveTexture(GL_TEXTURE0 + unit++);
-    glBindTexture(t->target, t->id());
-  }
-  glActiveTexture(GL_TEXTURE0);
-}
-
 }  // namespace plumbago::gpu

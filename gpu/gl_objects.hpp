@@ -74,8 +74,6 @@ void write_texture(const Texture& tex, int channels, bool integer, const void* d
 // Filter (GL_NEAREST/GL_LINEAR) and wrap modes (GL_REPEAT/GL_CLAMP_TO_EDGE) of a texture
 // (wrap_r matters for 3D textures only).
 void set_sampling(const Texture& tex, GLenum filter, GLenum wrap_s, GLenum wrap_t, GLenum wrap_r = GL_CLAMP_TO_EDGE);
-// Binds `textures` to texture units 0, 1, ... in order.
-void bind_textures(std::initializer_list<const Texture*> textures);
 // Reads back `channels` float channels (row 0 = bottom, as GL stores it).
 Image download_texture(const Texture& tex, int channels);
 ImageU32 download_texture_u32(const Texture& tex, int channels);

@@ -16,14 +16,12 @@ ContourInputs make_contour_inputs(const ContourParams& p, const std::vector<Imag
   set_sampling(texture, GL_LINEAR, GL_REPEAT, GL_REPEAT);
   Program program("fullscreen.vert", "contour_copies.frag", glsl_params<ContourParams>());
   program.set_params(p);
-  glProgramUniform1i(program.id(), program.uniform("offset_grids"), 0);
-  glProgramUniform1i(program.id(), program.uniform("contour_texture"), 1);
   ContourInputs in{make_texture_array(width, height, p.copies, GL_RGBA32F), largest_offset(grids)};
   FullscreenPass pass;
   for (int k = 0; k < p.copies; ++k) {
     glProgramUniform1i(program.id(), program.uniform("copy"), k);
     glProgramUniform2fv(program.id(), program.uniform("texture_shift"), 1, &shifts[size_t(k)].x);
-    pass.draw_layer(program, {&offset_grids, &texture}, in.copy_inputs, k);
+    pass.draw_layer(program, {{"offset_grids", &offset_grids}, {"contour_texture", &texture}}, in.copy_inputs, k);
   }
   return in;
 }
@@ -43,13 +41,9 @@ std::string multi_contour_prelude() { return glsl_params<ContourParams>() + cont
 MultiContourPass::MultiContourPass()
     : program_("fullscreen.vert", "multi_contour.frag", multi_contour_prelude()),
       blocks_program_("fullscreen.vert", "contour_blocks.frag", contour_block_define()),
-      reach_program_("fullscreen.vert", "contour_block_reach.frag") {
-  glProgramUniform1i(program_.id(), program_.uniform("lit_contour_darkness"), 0);
-  glProgramUniform1i(program_.id(), program_.uniform("copy_inputs"), 1);
-  glProgramUniform1i(program_.id(), program_.uniform("block_reach_max"), 2);
-}
+      reach_program_("fullscreen.vert", "contour_block_reach.frag") {}
 
-void MultiContourPass::mark_blocks(const Texture& lit, Texture& marks) { pass_.draw(blocks_program_, {&lit}, marks); }
+void MultiContourPass::mark_blocks(const Texture& lit, Texture& marks) { pass_.draw(blocks_program_, {{"lit_contour_darkness", &lit}}, marks); }
 
 ContourSources MultiContourPass::prepare(const Texture& lit, const ContourInputs& in, const ContourParams& p,
                                          const Texture* marks) {
@@ -65,7 +59,7 @@ ContourSources MultiContourPass::prepare(const Texture& lit, const ContourInputs
     marks = &block_marks_;
   }
   glProgramUniform1i(reach_program_.id(), reach_program_.uniform("block_reach"), block_reach(in.largest_offset));
-  pass_.draw(reach_program_, {marks}, block_reach_max_);
+  pass_.draw(reach_program_, {{"block_marks", marks}}, block_reach_max_);
   return {lit, in.copy_inputs, block_reach_max_, p};
 }
 
@@ -73,7 +67,9 @@ void MultiContourPass::run(const Texture& lit, const ContourInputs& in, const Co
                            const PixelRect& covered) {
   ContourSources s = prepare(lit, in, p);
   program_.set_params(p);
-  pass_.draw_inside(program_, {&s.lit, &s.copy_inputs, &s.block_reach_max}, {&out}, covered, {glm::vec4(0.0f)});
+  pass_.draw_inside(program_,
+                    {{"lit_contour_darkness", &s.lit}, {"copy_inputs", &s.copy_inputs}, {"block_reach_max", &s.block_reach_max}},
+                    {&out}, covered, {glm::vec4(0.0f)});
 }
 
 ContourInputs make_contour_inputs(const GpuFrame& f) {

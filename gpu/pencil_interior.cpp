@@ -13,11 +13,7 @@ PencilInteriorPass::PencilInteriorPass()
 // The choices that decide which code runs are compiled in (shaders/pencil_interior.frag).
 const Program& PencilInteriorPass::program_for(const InteriorOptions& o, const InteriorParams& p, bool writes_intensity) {
   return programs_.get({p.shading == InteriorShading::Phong, p.blend == InteriorBlend::NearestCorner, o.crosshatch, o.paper,
-                        writes_intensity},
-                       [](const Program& made) {
-                         const char* samplers[] = {"normals", "bary", "ids", "pencil_stack", "paper_normal"};
-                         for (int i = 0; i < 5; ++i) glProgramUniform1i(made.id(), made.uniform(samplers[i]), i);
-                       });
+                        writes_intensity});
 }
 
 void PencilInteriorPass::run(const PencilInteriorInputs& in, const InteriorParams& p, float mu_p,
@@ -29,7 +25,11 @@ void PencilInteriorPass::run(const PencilInteriorInputs& in, const InteriorParam
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.angles.angles.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, in.angles.first_triangle.id());
   const GBufferTargets& g = in.gbuffer;
-  std::initializer_list<const Texture*> textures = {&g.normal, &g.bary, &g.ids, &in.stack, &in.paper_normal};
+  std::initializer_list<TextureBinding> textures = {{"normals", &g.normal},
+                                                   {"bary", &g.bary},
+                                                   {"ids", &g.ids},
+                                                   {"pencil_stack", &in.stack},
+                                                   {"paper_normal", &in.paper_normal}};
   if (out.intensity)
     pass_.draw_inside(program, textures, {&out.darkness, out.intensity}, covered, {glm::vec4(0.0f), glm::vec4(1.0f)});
   else

@@ -96,15 +96,13 @@ void Program::link(std::initializer_list<GLuint> shaders, const std::string& wha
   }
 }
 
-const Program& ProgramVariants::get(const std::vector<bool>& on, const std::function<void(const Program&)>& setup) {
+const Program& ProgramVariants::get(const std::vector<bool>& on) {
   if (on.size() != switches_.size()) throw std::invalid_argument("program " + fragment_ + ": wrong number of switches");
   auto it = made_.find(on);
   if (it != made_.end()) return it->second;
   std::string defines;
   for (size_t k = 0; k < on.size(); ++k) defines += "#define " + switches_[k] + (on[k] ? " 1\n" : " 0\n");
-  it = made_.emplace(on, Program(vertex_, fragment_, prelude_ + defines)).first;
-  if (setup) setup(it->second);
-  return it->second;
+  return made_.emplace(on, Program(vertex_, fragment_, prelude_ + defines)).first->second;
 }
 
 void set_lights(const Program& program, const std::vector<Light>& lights) {
@@ -123,6 +121,16 @@ void set_lights(const Program& program, const std::vector<Light>& lights) {
   if (lights.empty()) return;
   glProgramUniform3fv(id, program.uniform("light_direction"), GLsizei(lights.size()), &directions[0].x);
   glProgramUniform1fv(id, program.uniform("light_intensity"), GLsizei(lights.size()), intensities.data());
+}
+
+void bind_textures(const Program& program, std::initializer_list<TextureBinding> textures) {
+  GLint unit = 0;
+  for (const TextureBinding& b : textures) {
+    glActiveTexture(GL_TEXTURE0 + GLenum(unit));
+    glBindTexture(b.texture->target, b.texture->id());
+    glProgramUniform1i(program.id(), program.uniform(b.sampler), unit++);
+  }
+  glActiveTexture(GL_TEXTURE0);
 }
 
 }  // namespace plumbago::gpu

@@ -7,7 +7,6 @@
 #pragma once
 
 #include <cctype>
-#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -103,14 +102,24 @@ class ProgramVariants {
  public:
   ProgramVariants(std::string vertex, std::string fragment, std::string prelude, std::vector<std::string> switches)
       : vertex_(std::move(vertex)), fragment_(std::move(fragment)), prelude_(std::move(prelude)), switches_(std::move(switches)) {}
-  // The program with switch k set to on[k]; `setup` runs once on a program when it is made.
-  const Program& get(const std::vector<bool>& on, const std::function<void(const Program&)>& setup = {});
+  // The program with switch k set to on[k].
+  const Program& get(const std::vector<bool>& on);
 
  private:
   std::string vertex_, fragment_, prelude_;
   std::vector<std::string> switches_;
   std::map<std::vector<bool>, Program> made_;
 };
+
+// A texture for the sampler uniform of that name.
+struct TextureBinding {
+  const char* sampler;
+  const Texture* texture;
+};
+// Binds each texture to a unit of its own (0, 1, ... in order) and points its sampler
+// there, so that a pass names what it binds instead of keeping two lists in step. A
+// sampler the program does not use is skipped (its location is -1).
+void bind_textures(const Program& program, std::initializer_list<TextureBinding> textures);
 
 // Sets the uniforms of shaders/common_lights.glsl from view-space unit lights; throws
 // past its MAX_LIGHTS (8).

@@ -30,10 +30,7 @@ SketchyNoiseTextures upload_sketchy_noise(const SketchyNoise& n) {
 SketchyCompositePass::SketchyCompositePass()
     : program_("fullscreen.vert", "sketchy_composite.frag", glsl_params<SketchyParams>()),
       fbo_(make_framebuffer()),
-      empty_(make_vertex_array()) {
-  const char* units[] = {"edge_map", "shade_map", "depth", "noise", "white_noise", "noise_3d", "noise_coordinates"};
-  for (int k = 0; k < 7; ++k) glProgramUniform1i(program_.id(), program_.uniform(units[k]), k);
-}
+      empty_(make_vertex_array()) {}
 
 void SketchyCompositePass::set_uniforms(const SketchyCompositeInputs& in, const SketchyParams& p) {
   GLuint id = program_.id();
@@ -72,8 +69,13 @@ void SketchyCompositePass::run(const SketchyCompositeInputs& in, const SketchyPa
   glViewport(0, 0, color.width, color.height);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
-  bind_textures({&in.edge_map, &in.shade_map, &in.gbuffer.depth, &in.noise.perlin, &in.noise.white, &in.noise.perlin_3d,
-                 &in.noise_coordinates});
+  bind_textures(program_, {{"edge_map", &in.edge_map},
+                           {"shade_map", &in.shade_map},
+                           {"depth", &in.gbuffer.depth},
+                           {"noise", &in.noise.perlin},
+                           {"white_noise", &in.noise.white},
+                           {"noise_3d", &in.noise.perlin_3d},
+                           {"noise_coordinates", &in.noise_coordinates}});
   glUseProgram(program_.id());
   glBindVertexArray(empty_.id());
   glEnable(GL_SCISSOR_TEST);

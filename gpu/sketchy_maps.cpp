@@ -18,10 +18,7 @@ Texture color_table(const std::vector<glm::vec3>& colors) {
 }  // namespace
 
 SketchyMapsPass::SketchyMapsPass(const std::vector<glm::vec3>& colors)
-    : program_("fullscreen.vert", "sketchy_maps.frag", glsl_params<EdgeDetectParams>()), colors_(color_table(colors)) {
-  const char* units[] = {"normals", "ids", "colors"};
-  for (int k = 0; k < 3; ++k) glProgramUniform1i(program_.id(), program_.uniform(units[k]), k);
-}
+    : program_("fullscreen.vert", "sketchy_maps.frag", glsl_params<EdgeDetectParams>()), colors_(color_table(colors)) {}
 
 void SketchyMapsPass::run(const GBufferTargets& g, const EdgeDetectParams& p, Texture& edge, Texture& shade,
                           const PixelRect& covered) {
@@ -30,7 +27,7 @@ void SketchyMapsPass::run(const GBufferTargets& g, const EdgeDetectParams& p, Te
   glProgramUniform1f(program_.id(), program_.uniform("far_plane"), g.far);
   const Texture& normals = p.normals == EdgeNormals::Face ? g.face_normal : g.normal;
   // Background pixels: their d, edge depth = far, no shade.
-  pass_.draw_inside(program_, {&normals, &g.ids, &colors_}, {&edge, &shade}, covered,
+  pass_.draw_inside(program_, {{"normals", &normals}, {"ids", &g.ids}, {"colors", &colors_}}, {&edge, &shade}, covered,
                     {glm::vec4(background_darkness(p), g.far, 0, 0), glm::vec4(0)});
 }
 

@@ -105,8 +105,6 @@ class SamplerVsGpu : public plumbago::testing::GlTest {
                     float r_offset) {
     gpu::Program probe("fullscreen.vert", "sampler_probe.frag");
     GLuint p = probe.id();
-    glProgramUniform1i(p, probe.uniform(is_3d ? "image3d" : "image2d"), 0);
-    glProgramUniform1i(p, probe.uniform(is_3d ? "image2d" : "image3d"), 1);
     glProgramUniform1i(p, probe.uniform("use_3d"), is_3d);
     glProgramUniform2f(p, probe.uniform("scale"), scale.x, scale.y);
     glProgramUniform2f(p, probe.uniform("offset"), offset.x, offset.y);
@@ -114,7 +112,7 @@ class SamplerVsGpu : public plumbago::testing::GlTest {
     glProgramUniform1f(p, probe.uniform("r_offset"), r_offset);
     gpu::Texture out = gpu::make_texture(kW, kH, GL_RGBA32F);
     gpu::Texture other = is_3d ? gpu::make_texture(1, 1, GL_RGBA32F) : gpu::upload_texture_3d({Image(1, 1, 4)}, GL_RGBA32F);
-    gpu::FullscreenPass().draw(probe, {&tex, &other}, out);
+    gpu::FullscreenPass().draw(probe, {{is_3d ? "image3d" : "image2d", &tex}, {is_3d ? "image2d" : "image3d", &other}}, out);
     return gpu::download_texture(out, 4);
   }
 
