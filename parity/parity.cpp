@@ -201,8 +201,12 @@ class PassParity {
       covered = covered_interior(ref, ras);
       mask = &covered;
     }
-    if (o.value == ParityValue::Angles) ref = angle_vectors(ref), ras = angle_vectors(ras);
     std::string shown = pass_.stages.size() > 1 ? name + " in " + pass_.name() : name;
+    if (o.value == ParityValue::Angles) {  // compared as (cos, sin); kept as angles, viewable
+      StageParity r = compared(shown, angle_vectors(ref), angle_vectors(ras), o.tolerance, mask, note);
+      r.reference = std::move(ref), r.gpu = std::move(ras);
+      return r;
+    }
     reference::BoundFn bound = reference::find_bound(name);
     if (!bound) return compared(shown, std::move(ref), std::move(ras), o.tolerance, mask, note);
     Image b = bound(rf_);

@@ -19,7 +19,7 @@ struct StageParity {
   std::string name;  // "<stage>.<output>", and " in <a+b>" for a fused pass's
   ImageDiff diff;
   bool pass = false;
-  Image reference, gpu;  // what was compared (the heat map is made on request)
+  Image reference, gpu;  // the two outputs (the heat map is made on request; angles are compared as (cos, sin))
   std::string note;      // what was excluded, and why the tolerance is what it is
 };
 

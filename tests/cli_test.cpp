@@ -103,6 +103,23 @@ TEST_F(Cli, CompareReportsEveryStageAsJson) {
       EXPECT_TRUE(s.contains(key)) << key;
 }
 
+// Every compared output can be written as images, the corner angles and the fused
+// passes' outputs too (this failed on the angles' six channels, after half the files).
+TEST_F(Cli, CompareWritesEveryOutputAsImages) {
+  write("pencil.json", R"({"mesh": {"procedural": "torus"}, "resolution": [96, 72],
+                           "effects": ["contours", "interior", "crosshatch", "paper"]})");
+  CliRun r = run("compare " + path("pencil.json") + " --json --out " + path("parity"));
+  ASSERT_EQ(r.code, 0) << r.err << r.out;
+  auto j = nlohmann::json::parse(r.out);
+  ASSERT_GE(j["stages"].size(), 15u);
+  for (const auto& s : j["stages"])
+    for (const char* kind : {".reference.png", ".gpu.png", ".diff.png"}) {
+      std::string file = path("parity") + "/" + s["name"].get<std::string>() + kind;
+      EXPECT_TRUE(fs::exists(file)) << file;
+    }
+  EXPECT_TRUE(fs::exists(path("parity") + "/gbuffer.theta_min.diff.png"));
+}
+
 TEST_F(Cli, DumpStagesWritesEveryIntermediateBufferOnBothBackends) {
   write("all.json", R"({"mesh": {"procedural": "torus"}, "resolution": [96, 72],
                         "effects": ["contours", "interior", "crosshatch", "paper"]})");
