@@ -1,7 +1,8 @@
 // The registry: every stage, once, in the order they run (each after the stages whose
-// outputs it reads). Adding a stage is adding its type here; `plumbago params`, --set,
-// scene files, the GLSL declarations, the pass table, the dumps and the parity runner
-// follow from its descriptor (common/stage.hpp).
+// outputs it reads). Adding a stage is adding its header and its type here, one line
+// each; `plumbago params`, --set, scene files, the GLSL declarations, the pass table,
+// the effects, the dumps and the parity runner follow from its descriptor
+// (common/stage.hpp).
 #pragma once
 
 #include "common/compose.hpp"
@@ -26,11 +27,24 @@ namespace plumbago {
 
 using AllStages = TypeList<
     // preprocessing (SPEC 1), made once per scene and parameters
-    DistortionStage, PencilTexturesStage, ContourTextureStage, PaperStage, SketchyNoiseStage, CurvatureStage,
+    DistortionStage,
+    PencilTexturesStage,
+    ContourTextureStage,
+    PaperStage,
+    SketchyNoiseStage,
+    CurvatureStage,
     // the pencil pipeline (SPEC 2)
-    GBufferStage, EdgeDetectStage, ContourLightStage, InteriorIntensityStage, PencilInteriorStage, MultiContourStage,
+    GBufferStage,
+    EdgeDetectStage,
+    ContourLightStage,
+    InteriorIntensityStage,
+    PencilInteriorStage,
+    MultiContourStage,
     ComposeStage,
     // sketchy drawing (SPEC 3)
-    SketchyGBufferStage, SketchyEnlargedStage, SketchyMapsStage, SketchyCompositeStage>;
+    SketchyGBufferStage,
+    SketchyEnlargedStage,
+    SketchyMapsStage,
+    SketchyCompositeStage>;
 
 }  // namespace plumbago
