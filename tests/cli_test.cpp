@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "common/passes.hpp"
 #include "tests/cli_run.hpp"
 
 namespace plumbago {
@@ -91,6 +92,17 @@ TEST_F(Cli, NanCoordinatesNameTheMeshFileAndLine) {
 }
 
 TEST_F(Cli, BadSizeIsRefused) { expect_refused("render --size 0x10", {"--size"}); }
+
+// Every effect the stages declare, with the stages it runs.
+TEST_F(Cli, EffectsListsEveryEffectAndItsStages) {
+  CliRun r = run("effects");
+  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_GE(effect_table().size(), 5u);
+  for (const EffectDef& e : effect_table()) EXPECT_NE(r.out.find(e.name + " "), std::string::npos) << e.name;
+  EXPECT_NE(r.out.find("runs: distortion contour_texture gbuffer edge_detect contour_light multi_contour compose"),
+            std::string::npos)
+      << r.out;
+}
 
 TEST_F(Cli, CompareReportsEveryStageAsJson) {
   CliRun r = run("compare builtin:torus --size 160x120 --json");

@@ -1,0 +1,27 @@
+// plumbago effects: every effect a scene can ask for, its doc, and the stages it runs
+// (common/passes.hpp passes_for, with the default parameters).
+#include <cstdio>
+
+#include "apps/command.hpp"
+#include "common/passes.hpp"
+
+namespace plumbago {
+namespace {
+
+void print_effects() {
+  for (const EffectDef& e : effect_table()) {
+    std::string stages;
+    for (const std::string& s : passes_for({e.name})) stages += (stages.empty() ? "" : " ") + s;
+    std::printf("%-12s %s\n%-12s runs: %s\n", e.name.c_str(), e.doc.c_str(), "", stages.c_str());
+  }
+}
+
+void setup(CLI::App& app) {
+  auto* cmd = app.add_subcommand("effects", "List every effect a scene can ask for, and the stages each runs");
+  cmd->callback(print_effects);
+}
+
+PLUMBAGO_COMMAND(setup);
+
+}  // namespace
+}  // namespace plumbago
