@@ -5,6 +5,7 @@
 // (common/stage.hpp).
 #pragma once
 
+#include "common/base_coat.hpp"
 #include "common/compose.hpp"
 #include "common/contour_light.hpp"
 #include "common/contour_texture.hpp"
@@ -35,6 +36,7 @@ using AllStages = TypeList<
     CurvatureStage,
     // the pencil pipeline (SPEC 2)
     GBufferStage,
+    BaseCoatStage,
     EdgeDetectStage,
     ContourLightStage,
     InteriorIntensityStage,

@@ -1,0 +1,39 @@
+// Base coat, CPU reference (SPEC 4.1; formula in common/base_coat.hpp).
+#include "common/base_coat.hpp"
+
+#include "reference/rows.hpp"
+#include "reference/sampler.hpp"
+#include "reference/stage.hpp"
+
+namespace plumbago::reference {
+
+namespace {
+
+// s at the pixel: the corners' s weighted by the barycentrics.
+float interpolated_shade(const GBuffer& g, const TriangleShades& shades, int x, int y) {
+  glm::vec4 corners = shades.corners[shades.first_triangle[g.ids.at(x, y, 0) - 1] + g.ids.at(x, y, 1)];
+  return g.bary.at(x, y, 0) * corners[0] + g.bary.at(x, y, 1) * corners[1] + g.bary.at(x, y, 2) * corners[2];
+}
+
+// The coat over white paper; white on the background.
+Image base_coat(const GBuffer& g, const TriangleShades& shades, const Image& texture) {
+  Image out(g.ids.width, g.ids.height, 3, 1.0f);
+  const SamplerState linear_clamped;  // LINEAR, CLAMP_TO_EDGE
+  for_each_row(out.height, [&](int y) {
+    for (int x = 0; x < out.width; ++x) {
+      if (g.background(x, y)) continue;
+      glm::vec3 c = over_white(sample(texture, {interpolated_shade(g, shades, x, y), 0.5f}, linear_clamped));
+      for (int ch = 0; ch < 3; ++ch) out.at(x, y, ch) = c[ch];
+    }
+  });
+  return out;
+}
+
+}  // namespace
+
+PLUMBAGO_REFERENCE_STAGE(base_coat, [](ReferenceFrame& f) {
+  auto p = f.params<BaseCoatParams>();
+  f.put("base_coat.color", base_coat(f.gbuffer("gbuffer"), triangle_shades(f.ordinary, p), base_coat_texture(p)));
+});
+
+}  // namespace plumbago::reference
