@@ -3,6 +3,7 @@
 #include <exception>
 
 #include "apps/command.hpp"
+#include "parity/parity.hpp"
 
 namespace plumbago {
 std::vector<CommandSetup>& command_registry() {
@@ -12,6 +13,12 @@ std::vector<CommandSetup>& command_registry() {
 }  // namespace plumbago
 
 int main(int argc, char** argv) {
+  try {  // a stage declared wrong or implemented on one backend only: before any command runs
+    plumbago::check_stage_registry();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "plumbago: stage registry: %s\n", e.what());
+    return 3;
+  }
   CLI::App app{"Plumbago: real-time pencil and sketch rendering, with a CPU reference for every stage"};
   app.require_subcommand(1);
   for (auto setup : plumbago::command_registry()) setup(app);

@@ -13,10 +13,8 @@ struct ContourTextureStage {
   // The stack's own layer when the stack was made; else only the layers up to it.
   static void make(const Scene& scene, Preprocessed& out);
   static StageDesc describe() {
-    StageDesc d{"contour_texture", StageKind::Preprocessing, "the pencil layer used as contour texture (SPEC 1.2)",
-                {"contour", "pencil_textures"}, {}, {{"texture", 1, Texel::Host, "T_c"}}};
-    d.preprocess = make;
-    return d;
+    return preprocessing_stage("contour_texture", "the pencil layer used as contour texture (SPEC 1.2)",
+                               {"contour", "pencil_textures"}, {{"texture", 1, Texel::Host, "T_c"}}, make);
   }
 };
 

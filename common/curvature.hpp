@@ -104,10 +104,9 @@ struct CurvatureStage {
   using Params = TypeList<CurvatureParams>;
   static void make(const Scene& scene, Preprocessed& out);
   static StageDesc describe() {
-    StageDesc d{"curvature", StageKind::Preprocessing, "principal curvature per vertex (SPEC 1.1)", {"curvature"}, {},
-                {{"principal", 8, Texel::Host, "k_min, k_max and their directions, per vertex of each object"}}};
-    d.preprocess = make;
-    return d;
+    return preprocessing_stage("curvature", "principal curvature per vertex (SPEC 1.1)", {"curvature"},
+                               {{"principal", 8, Texel::Host, "k_min, k_max and their directions, per vertex of each object"}},
+                               make);
   }
 };
 

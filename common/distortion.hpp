@@ -30,12 +30,10 @@ struct DistortionStage {
   using Params = TypeList<>;
   static void make(const Scene& scene, Preprocessed& out);
   static StageDesc describe() {
-    StageDesc d{"distortion", StageKind::Preprocessing, "offset grids of the contour copies (SPEC 1.4, Lee Eq. 2)",
-                {"contour"}, {},
-                {{"offset_grids", 2, Texel::Host, "one RG grid of pixel offsets per contour copy"},
-                 {"texture_shifts", 2, Texel::Host, "o_k: the shift of copy k's contour texture, texels"}}};
-    d.preprocess = make;
-    return d;
+    return preprocessing_stage("distortion", "offset grids of the contour copies (SPEC 1.4, Lee Eq. 2)", {"contour"},
+                               {{"offset_grids", 2, Texel::Host, "one RG grid of pixel offsets per contour copy"},
+                                {"texture_shifts", 2, Texel::Host, "o_k: the shift of copy k's contour texture, texels"}},
+                               make);
   }
 };
 

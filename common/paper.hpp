@@ -48,13 +48,11 @@ struct PaperStage {
   using Params = TypeList<PaperParams>;
   static void make(const Scene& scene, Preprocessed& out);
   static StageDesc describe() {
-    StageDesc d{"paper", StageKind::Preprocessing, "paper height, normal map and color (SPEC 1.3)", {"paper"}, {},
-                {{"height", 1, Texel::Host, "h in [0, 1]"},
-                 {"normal", 3, Texel::Host, "unit normal map"},
-                 {"color", 3, Texel::Host, "c_p"}},
-                {"paper"}};
-    d.preprocess = make;
-    return d;
+    return preprocessing_stage("paper", "paper height, normal map and color (SPEC 1.3)", {"paper"},
+                               {{"height", 1, Texel::Host, "h in [0, 1]"},
+                                {"normal", 3, Texel::Host, "unit normal map"},
+                                {"color", 3, Texel::Host, "c_p"}},
+                               make);
   }
 };
 

@@ -58,10 +58,8 @@ struct PencilTexturesStage {
   using Params = TypeList<PencilTexturesParams>;
   static void make(const Scene& scene, Preprocessed& out);
   static StageDesc describe() {
-    StageDesc d{"pencil_textures", StageKind::Preprocessing, "the pencil tone stack (SPEC 1.2, Lee Eq. 3-4)",
-                {"pencil_textures"}, {}, {{"stack", 1, Texel::Host, "the layers, white first"}}};
-    d.preprocess = make;
-    return d;
+    return preprocessing_stage("pencil_textures", "the pencil tone stack (SPEC 1.2, Lee Eq. 3-4)", {"pencil_textures"},
+                               {{"stack", 1, Texel::Host, "the layers, white first"}}, make);
   }
 };
 

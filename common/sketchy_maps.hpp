@@ -9,11 +9,10 @@ namespace plumbago {
 
 struct SketchyMapsStage {
   using Params = TypeList<>;
-  static bool face_normals(const StageConfig& c) { return c.params.get<EdgeDetectParams>().normals == EdgeNormals::Face; }
-  static bool smooth_normals(const StageConfig& c) { return !face_normals(c); }
   static StageDesc describe() {
     return {"sketchy_maps", StageKind::Frame, "edge and shade maps of the sketchy objects (SPEC 3.1)", {"edge"},
-            {{"sketchy_gbuffer.normal", smooth_normals}, {"sketchy_gbuffer.face_normal", face_normals},
+            {{"sketchy_gbuffer.normal", EdgeDetectStage::smooth_normals},
+             {"sketchy_gbuffer.face_normal", EdgeDetectStage::face_normals},
              {"sketchy_gbuffer.depth"}, {"sketchy_gbuffer.ids"}},
             {{"edge", 2, Texel::Float, "contour darkness d and the linear depth it belongs to", tolerance::kFloat,
               "fed the same sketchy G-buffer; float target"},

@@ -13,11 +13,9 @@ struct SketchyNoiseStage {
   using Params = TypeList<NoiseTextureParams>;
   static void make(const Scene& scene, Preprocessed& out);
   static StageDesc describe() {
-    StageDesc d{"sketchy_noise", StageKind::Preprocessing, "noise textures of the sketchy uncertainty (SPEC 3.2, 3.5)",
-                {"noise", "sketchy"}, {},
-                {{"textures", 2, Texel::Host, "2D Perlin, white noise or 3D Perlin, as the style reads"}}};
-    d.preprocess = make;
-    return d;
+    return preprocessing_stage("sketchy_noise", "noise textures of the sketchy uncertainty (SPEC 3.2, 3.5)",
+                               {"noise", "sketchy"},
+                               {{"textures", 2, Texel::Host, "2D Perlin, white noise or 3D Perlin, as the style reads"}}, make);
   }
 };
 

@@ -70,6 +70,13 @@ const std::vector<StageDesc>& stage_table() {
   return table;
 }
 
+StageDesc preprocessing_stage(std::string name, std::string doc, std::vector<std::string> params,
+                              std::vector<Output> outputs, void (*make)(const Scene&, Preprocessed&)) {
+  StageDesc d{std::move(name), StageKind::Preprocessing, std::move(doc), std::move(params), {}, std::move(outputs)};
+  d.preprocess = make;
+  return d;
+}
+
 bool is_stage(const std::string& name) {
   const auto& t = stage_table();
   return std::any_of(t.begin(), t.end(), [&](const StageDesc& s) { return s.name == name; });

@@ -149,6 +149,11 @@ struct StageDesc {
   std::string output_name(const Output& o) const { return name + "." + o.name; }
 };
 
+// A preprocessing stage: reads only the scene, made once on the CPU by `make` for both
+// backends; its outputs are host data (Texel::Host) the stages that read them upload.
+StageDesc preprocessing_stage(std::string name, std::string doc, std::vector<std::string> params,
+                              std::vector<Output> outputs, void (*make)(const Scene&, Preprocessed&));
+
 // Every stage, in registry order (common/stage_registry.hpp), which is also the order they
 // run in. Checked when first called: unique names and parameter prefixes, inputs that
 // name an output of an earlier stage, known effects; throws std::logic_error otherwise.

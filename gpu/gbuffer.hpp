@@ -28,13 +28,13 @@ struct TriangleAngles {
   Buffer angles;          // std430 vec4 pairs: theta_min of corners 0-2, then theta_max (w unused)
   Buffer first_triangle;  // uint per object (object id - 1): the index of its first record
 };
-// The records of a G-buffer's ids and angle channels (zero where it has no angles), for a
-// stage fed the reference's G-buffer.
+// Parity only: the records of a G-buffer's ids and angle channels (zero where it has no
+// angles), for a stage fed the reference's G-buffer.
 TriangleAngles triangle_angles_from(const GBuffer& g);
 
 GBufferTargets make_gbuffer_targets(int width, int height, GBufferFormat normal_format);
 GBuffer download_gbuffer(const GBufferTargets& targets);
-// The reference's G-buffer on the GPU, so that a later stage gets identical inputs.
+// Parity only: the reference's G-buffer on the GPU, so that a later stage gets identical inputs.
 GBufferTargets upload_gbuffer(const GBuffer& g);
 
 // Which G-buffer channels a frame's passes sample (each says so: gpu/stage.hpp); the

@@ -43,7 +43,9 @@ class MultiContourPass {
   // Only `covered` (common/distortion.hpp contour_rect) runs the shader; outside it D_c = 0.
   // Inside it, blocks of pixels whose copies can only read d' = 0 (found from the blocks'
   // marks, mark_blocks, and the marks within the copies' reach, contour_block_reach.frag)
-  // are not shaded either: their D_c is 0 too.
+  // are not shaded either: their D_c is 0 too. A frame draws the contours in the
+  // composition pass (prepare); this pass runs for parity, or a frame that draws contours
+  // without composing them.
   void run(const Texture& lit, const ContourInputs& in, const ContourParams& p, Texture& out, const PixelRect& covered);
   // The same checks and block passes, without the drawing: what another pass needs to draw
   // the contours (valid until the next call). `marks`: the blocks' marks made while d' was
@@ -51,7 +53,8 @@ class MultiContourPass {
   ContourSources prepare(const Texture& lit, const ContourInputs& in, const ContourParams& p,
                          const Texture* marks = nullptr);
   // Marks the blocks of `lit` that hold some d' > 0 (contour_blocks.frag) into `marks`
-  // (make_contour_block_marks of lit's size).
+  // (make_contour_block_marks of lit's size). A frame's edge pass marks them as it draws
+  // d'; this is for d' uploaded by parity (tests/skipped_pixels_test.cpp checks the two agree).
   void mark_blocks(const Texture& lit, Texture& marks);
 
  private:

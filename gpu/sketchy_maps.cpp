@@ -37,7 +37,7 @@ class SketchyMapsStagePass : public GpuPass {
  public:
   explicit SketchyMapsStagePass(GpuFrame& f) : pass_(object_colors(f.sketchy)) {
     GBufferChannels read = GBufferChannels::none();
-    read.face_normal = SketchyMapsStage::face_normals(f.config());
+    read.face_normal = EdgeDetectStage::face_normals(f.config());
     read.normal = !read.face_normal;
     read.read_region = {0, 0, f.scene.width, f.scene.height};
     f.read_gbuffer("sketchy_gbuffer", read);

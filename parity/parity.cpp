@@ -272,6 +272,13 @@ class ReferenceFrames {
 
 }  // namespace
 
+void check_stage_registry() {
+  stage_table();
+  param_specs();
+  reference::check_implementations();
+  gpu::check_implementations();
+}
+
 StageParity compared(std::string name, Image ref, Image gpu, double tol, const Image* mask, std::string note) {
   StageParity s{std::move(name), compare_images(ref, gpu, tol, mask), false, std::move(ref), std::move(gpu), std::move(note)};
   s.pass = s.diff.over_tolerance == 0;
@@ -307,8 +314,7 @@ std::vector<StageParity> run_parity(const Scene& scene, const std::vector<std::s
       throw std::invalid_argument("unknown stage '" + s + "' (known: " + list + ")");
     }
   gpu::Context::get();
-  reference::check_implementations();
-  gpu::check_implementations();
+  check_stage_registry();
   ReferenceFrames references;
   std::vector<std::string> checked;  // GPU passes, each once
   std::vector<StageParity> out;

@@ -23,6 +23,11 @@ struct StageParity {
   std::string note;      // what was excluded, and why the tolerance is what it is
 };
 
+// The stage registry as a program starts: the descriptors and their parameter structs
+// (common/stage.hpp), and a frame implementation of every frame stage on both backends.
+// Throws std::logic_error saying what is wrong.
+void check_stage_registry();
+
 // One comparison; it passes when no pixel (within `mask`, if given) is over `tolerance`.
 StageParity compared(std::string name, Image reference, Image gpu, double tolerance, const Image* mask, std::string note);
 
