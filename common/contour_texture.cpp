@@ -8,11 +8,15 @@
 
 namespace plumbago {
 
+int ContourTextureStage::layer(const ParamSet& params) {
+  return std::min(params.get<ContourParams>().texture_layer, params.get<PencilTexturesParams>().layers - 1);
+}
+
 void ContourTextureStage::make(const Scene& scene, Preprocessed& out) {
-  auto pencil = scene.params.get<PencilTexturesParams>();
-  int layer = std::min(scene.params.get<ContourParams>().texture_layer, pencil.layers - 1);
-  out.contour_texture = out.pencil_stack.empty() ? pencil_layers(pencil, scene.seed, layer).back()
-                                                 : out.pencil_stack[size_t(layer)];
+  int l = layer(scene.params);
+  out.contour_texture = out.pencil_stack.empty()
+                            ? pencil_layers(scene.params.get<PencilTexturesParams>(), scene.seed, l).back()
+                            : out.pencil_stack[size_t(l)];
 }
 
 }  // namespace plumbago

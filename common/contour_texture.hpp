@@ -12,6 +12,8 @@ struct ContourTextureStage {
   using Params = TypeList<>;
   // The stack's own layer when the stack was made; else only the layers up to it.
   static void make(const Scene& scene, Preprocessed& out);
+  // The layer: contour.texture_layer, or the stack's last when it has fewer.
+  static int layer(const ParamSet& params);
   static StageDesc describe() {
     return preprocessing_stage("contour_texture", "the pencil layer used as contour texture (SPEC 1.2)",
                                {"contour", "pencil_textures"}, {{"texture", 1, Texel::Host, "T_c"}}, make);

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "common/contour_texture.hpp"
 #include "common/distortion.hpp"
 #include "common/noise.hpp"
 #include "common/sketchy.hpp"
@@ -54,7 +55,7 @@ std::map<std::string, Image> texture_gallery(const ParamSet& params, uint32_t se
     out[name] = layers[l];
   }
   out["pencil_contact_sheet"] = contact_sheet(layers, 8);
-  out["contour_texture"] = layers.at(size_t(std::min(contour.texture_layer, pencil.layers - 1)));
+  out["contour_texture"] = layers.at(size_t(ContourTextureStage::layer(params)));
   Paper paper = make_paper(params.get<PaperParams>(), seed);
   out["paper_height"] = paper.height;
   out["paper_normal"] = signed_view(paper.normal);

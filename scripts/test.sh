@@ -8,4 +8,4 @@ BUILD_DIR=build scripts/build.sh -DPLUMBAGO_WERROR="$werror"
 (cd build && ctest --output-on-failure -j"$(nproc)" --timeout 900)
 cmake -S . -B build-osmesa -G Ninja -DCMAKE_BUILD_TYPE=Release -DPLUMBAGO_GL=osmesa -DPLUMBAGO_WERROR="$werror"
 cmake --build build-osmesa -j"$(nproc)" --target plumbago_tests
-(cd build-osmesa && ctest --output-on-failure -j"$(nproc)" --timeout 900 -R "GlContext|Parity|GlTest|Frames|SamplerVsGpu|Cli")
+(cd build-osmesa && ctest --output-on-failure -j"$(nproc)" --timeout 900 -R "GlContext|Parity|GlTest|Frames|SamplerVsGpu|Cli|Golden|Stage|BaseCoat")

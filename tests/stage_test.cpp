@@ -60,6 +60,16 @@ TEST(Stages, EveryFrameStageIsImplementedOnBothBackends) {
   }
 }
 
+// A pass asking whether a misspelled stage ran gets an error, not a silent false.
+TEST(Stages, AskingWhetherAnUnknownStageRanIsAnError) {
+  Scene scene = testing::builtin_at("torus", 32, 24);
+  Preprocessed pre;
+  gpu::GpuFrame f(scene, pre, frame_stages(passes_for(scene.effects, scene.params)));
+  EXPECT_TRUE(f.ran("contour_light"));
+  EXPECT_FALSE(f.ran("pencil_interior"));
+  EXPECT_THROW(f.ran("contour_lihgt"), std::invalid_argument);
+}
+
 std::vector<std::string> pass_names(const std::vector<std::string>& effects) {
   ParamSet params;
   StageConfig config{params, effects};
