@@ -5,7 +5,7 @@
 // (common/stage.hpp).
 #pragma once
 
-#include "common/base_coat.hpp"
+#include "common/basecoat.hpp"
 #include "common/compose.hpp"
 #include "common/contour_light.hpp"
 #include "common/contour_texture.hpp"

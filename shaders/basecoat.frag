@@ -1,11 +1,11 @@
 #version 450 core
 // Base coat (SPEC 4.1): s interpolated from the triangle's corners with the barycentrics
-// looks up the 1D texture; the coat goes over white paper. Formula in common/base_coat.hpp.
+// looks up the 1D texture; the coat goes over white paper. Formula in common/basecoat.hpp.
 
 uniform usampler2D ids;  // object id, triangle index
 uniform sampler2D bary;
 uniform sampler2D coat;  // the 1D texture as one row: LINEAR, CLAMP_TO_EDGE
-// Per triangle, its corners' s (common/base_coat.hpp TriangleShades).
+// Per triangle, its corners' s (common/basecoat.hpp TriangleShades).
 layout(std430, binding = 0) readonly buffer Shades { vec4 corner_shades[]; };
 layout(std430, binding = 1) readonly buffer FirstTriangle { uint first_triangle[]; };  // per object
 

@@ -1,5 +1,5 @@
-// Base coat, CPU reference (SPEC 4.1; formula in common/base_coat.hpp).
-#include "common/base_coat.hpp"
+// Base coat, CPU reference (SPEC 4.1; formula in common/basecoat.hpp).
+#include "common/basecoat.hpp"
 
 #include "reference/rows.hpp"
 #include "reference/sampler.hpp"
@@ -16,7 +16,7 @@ float interpolated_shade(const GBuffer& g, const TriangleShades& shades, int x, 
 }
 
 // The coat over white paper; white on the background.
-Image base_coat(const GBuffer& g, const TriangleShades& shades, const Image& texture) {
+Image basecoat(const GBuffer& g, const TriangleShades& shades, const Image& texture) {
   Image out(g.ids.width, g.ids.height, 3, 1.0f);
   const SamplerState linear_clamped;  // LINEAR, CLAMP_TO_EDGE
   for_each_row(out.height, [&](int y) {
@@ -31,9 +31,9 @@ Image base_coat(const GBuffer& g, const TriangleShades& shades, const Image& tex
 
 }  // namespace
 
-PLUMBAGO_REFERENCE_STAGE(base_coat, [](ReferenceFrame& f) {
+PLUMBAGO_REFERENCE_STAGE(basecoat, [](ReferenceFrame& f) {
   auto p = f.params<BaseCoatParams>();
-  f.put("base_coat.color", base_coat(f.gbuffer("gbuffer"), triangle_shades(f.ordinary, p), base_coat_texture(p)));
+  f.put("basecoat.color", basecoat(f.gbuffer("gbuffer"), triangle_shades(f.ordinary, p), basecoat_texture(p)));
 });
 
 }  // namespace plumbago::reference

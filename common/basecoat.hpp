@@ -23,7 +23,7 @@ namespace plumbago {
 enum class BaseCoatPreset { Toon, Smooth, Solid };
 
 struct BaseCoatParams {
-  static constexpr const char* stage = "base_coat";
+  static constexpr const char* stage = "basecoat";
   BaseCoatPreset preset;
   bool abs_n_dot_l;
   float threshold;
@@ -48,7 +48,7 @@ struct BaseCoatParams {
 constexpr int kBaseCoatTexels = 256;  // the 1D texture's width
 
 // T: kBaseCoatTexels x 1, RGBA, straight alpha.
-Image base_coat_texture(const BaseCoatParams& p);
+Image basecoat_texture(const BaseCoatParams& p);
 
 // s at each corner of each triangle, the objects' records one after the other
 // ((s0, s1, s2, 0) per triangle; first_triangle[o] is object o's first), from the world
@@ -65,13 +65,13 @@ inline glm::vec3 over_white(glm::vec4 t) { return glm::vec3(t) * t.w + glm::vec3
 struct BaseCoatStage {
   using Params = TypeList<BaseCoatParams>;
   static StageDesc describe() {
-    StageDesc d{"base_coat", StageKind::Frame, "toon or solid base coat from a 1D texture (SPEC 4.1, Kalnins §4.2)",
-                {"base_coat"}, {{"gbuffer.ids"}, {"gbuffer.bary"}},
+    StageDesc d{"basecoat", StageKind::Frame, "toon or solid base coat from a 1D texture (SPEC 4.1, Kalnins §4.2)",
+                {"basecoat"}, {{"gbuffer.ids"}, {"gbuffer.bary"}},
                 {{"color", 3, Texel::Unorm8, "the coat over white paper", tolerance::kByte,
                   "fed the same G-buffer and per-vertex s; bilinear lookup of the 1D texture; 8-bit target"}},
-                {"base_coat"}};
+                {"basecoat"}};
     d.outputs[0].frame_color = true;
-    d.declared_effects = {{"base_coat", "the base coat of stroke-based rendering (Kalnins 2002 §4.2), over white paper"}};
+    d.declared_effects = {{"basecoat", "the base coat of stroke-based rendering (Kalnins 2002 §4.2), over white paper"}};
     return d;
   }
 };

@@ -1,6 +1,6 @@
-// Base coat on the GPU (SPEC 4.1), the twin of reference/base_coat.cpp: a full-window pass
+// Base coat on the GPU (SPEC 4.1), the twin of reference/basecoat.cpp: a full-window pass
 // over the G-buffer's ids and barycentrics, with the corners' s as one record per triangle.
-#include "common/base_coat.hpp"
+#include "common/basecoat.hpp"
 
 #include "gpu/framebuffer.hpp"
 #include "gpu/stage.hpp"
@@ -11,14 +11,14 @@ namespace {
 
 class BaseCoatPass : public GpuPass {
  public:
-  explicit BaseCoatPass(GpuFrame& f) : program_("fullscreen.vert", "base_coat.frag", glsl_params<BaseCoatParams>()) {
+  explicit BaseCoatPass(GpuFrame& f) : program_("fullscreen.vert", "basecoat.frag", glsl_params<BaseCoatParams>()) {
     auto p = f.params<BaseCoatParams>();
     TriangleShades shades = triangle_shades(f.ordinary, p);
     if (shades.corners.empty()) shades.corners.push_back(glm::vec4(0.0f));
     if (shades.first_triangle.empty()) shades.first_triangle.push_back(0);
     corners_ = make_buffer(shades.corners.data(), shades.corners.size() * sizeof(glm::vec4));
     first_ = make_buffer(shades.first_triangle.data(), shades.first_triangle.size() * sizeof(uint32_t));
-    texture_ = upload_texture(base_coat_texture(p), GL_RGBA32F);
+    texture_ = upload_texture(basecoat_texture(p), GL_RGBA32F);
     set_sampling(texture_, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
     GBufferChannels read = GBufferChannels::none();
     read.bary = true;
@@ -30,7 +30,7 @@ class BaseCoatPass : public GpuPass {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, corners_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, first_.id());
     // Only the objects' rectangle runs the shader; outside it the background is white.
-    pass_.draw_inside(program_, {{"ids", &g.ids}, {"bary", &g.bary}, {"coat", &texture_}}, {&f.output("base_coat.color")},
+    pass_.draw_inside(program_, {{"ids", &g.ids}, {"bary", &g.bary}, {"coat", &texture_}}, {&f.output("basecoat.color")},
                       filter_rect(f.ordinary, 0), {glm::vec4(1.0f)});
   }
 
@@ -43,6 +43,6 @@ class BaseCoatPass : public GpuPass {
 
 }  // namespace
 
-PLUMBAGO_GPU_PASS(base_coat, {{"base_coat"}, {}, make_pass<BaseCoatPass>});
+PLUMBAGO_GPU_PASS(basecoat, {{"basecoat"}, {}, make_pass<BaseCoatPass>});
 
 }  // namespace plumbago::gpu

@@ -1,4 +1,4 @@
-#include "common/base_coat.hpp"
+#include "common/basecoat.hpp"
 
 #include <cmath>
 
@@ -7,7 +7,7 @@
 
 namespace plumbago {
 
-Image base_coat_texture(const BaseCoatParams& p) {
+Image basecoat_texture(const BaseCoatParams& p) {
   const glm::vec4 dark(p.dark_r, p.dark_g, p.dark_b, p.dark_a), light(p.light_r, p.light_g, p.light_b, p.light_a);
   Image t(kBaseCoatTexels, 1, 4);
   for (int k = 0; k < kBaseCoatTexels; ++k) {

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "common/base_coat.hpp"
+#include "common/basecoat.hpp"
 #include "gpu/pipeline.hpp"
 #include "parity/parity.hpp"
 #include "reference/pipeline.hpp"
@@ -16,8 +16,8 @@ namespace {
 
 Scene coat_scene(const std::string& name, const std::string& preset) {
   Scene scene = testing::builtin_at(name, 240, 180);
-  scene.effects = {"base_coat"};
-  scene.params.set("base_coat.preset", preset);
+  scene.effects = {"basecoat"};
+  scene.params.set("basecoat.preset", preset);
   return scene;
 }
 
@@ -29,10 +29,10 @@ class BaseCoatParity : public testing::GlTest,
 TEST_P(BaseCoatParity, GpuMatchesReference) {
   auto [name, preset] = GetParam();
   Scene scene = coat_scene(name, preset);
-  auto results = run_parity(scene, {"base_coat"});
-  ASSERT_EQ(testing::names_of(results), std::vector<std::string>{"base_coat.color"});
+  auto results = run_parity(scene, {"basecoat"});
+  ASSERT_EQ(testing::names_of(results), std::vector<std::string>{"basecoat.color"});
   const StageParity& r = results[0];
-  std::printf("[base_coat %s %s] %s\n", name.c_str(), preset.c_str(), format_diff(r.name, r.diff).c_str());
+  std::printf("[basecoat %s %s] %s\n", name.c_str(), preset.c_str(), format_diff(r.name, r.diff).c_str());
   EXPECT_EQ(r.diff.compared, size_t(scene.width) * size_t(scene.height));
   EXPECT_TRUE(r.pass) << r.note;
 }
@@ -44,7 +44,7 @@ INSTANTIATE_TEST_SUITE_P(Scenes, BaseCoatParity,
 TEST(BaseCoatTexture, PresetsAreTwoTonesARampOrOneColor) {
   ParamSet set;
   auto p = set.get<BaseCoatParams>();
-  Image toon = base_coat_texture(p);
+  Image toon = basecoat_texture(p);
   ASSERT_EQ(toon.width, kBaseCoatTexels);
   ASSERT_EQ(toon.channels, 4);
   EXPECT_FLOAT_EQ(toon.at(0, 0, 0), p.dark_r);
@@ -53,10 +53,10 @@ TEST(BaseCoatTexture, PresetsAreTwoTonesARampOrOneColor) {
   while (toon.at(split, 0, 0) == p.dark_r) ++split;
   EXPECT_EQ(split, int(std::ceil(p.threshold * kBaseCoatTexels - 0.5f)));
   p.preset = BaseCoatPreset::Smooth;
-  Image smooth = base_coat_texture(p);
+  Image smooth = basecoat_texture(p);
   EXPECT_NEAR(smooth.at(128, 0, 1), p.dark_g + (p.light_g - p.dark_g) * (128.5f / 256.0f), 1e-6);
   p.preset = BaseCoatPreset::Solid;
-  for (float v : base_coat_texture(p).data) EXPECT_TRUE(v == p.light_r || v == p.light_g || v == p.light_b || v == p.light_a);
+  for (float v : basecoat_texture(p).data) EXPECT_TRUE(v == p.light_r || v == p.light_g || v == p.light_b || v == p.light_a);
 }
 
 // One triangle facing the only light: s = 1 at every corner; turned away, s = -1, or 1
