@@ -3,10 +3,9 @@
 // scene's unit lights L_k (world space, intensities I_k),
 //   s = sum_k I_k (n . L_k)          (|n . L_k| with abs_n_dot_l)
 // interpolated across the face with the barycentrics, looks up a 1D RGBA texture T at
-// texture coordinate s (LINEAR, CLAMP_TO_EDGE: s <= 0 reads the first texel). Until the
-// paper effect of SPEC 4.2 composes it, the coat goes over white paper:
-//   color = T(s).rgb T(s).a + (1 - T(s).a),   white on the background.
-// T is generated here from a preset: `toon`, two tones split at `threshold`; `smooth`, a
+// texture coordinate s (LINEAR, CLAMP_TO_EDGE: s <= 0 reads the first texel): the coat is
+// T(s), straight alpha, and transparent (0) on the background. The paper effect of SPEC 4.2
+// (common/stroke_paper.hpp) composes it. T is generated here from a preset: `toon`, two tones split at `threshold`; `smooth`, a
 // linear ramp from the dark to the light color; `solid`, the light color alone.
 #pragma once
 
@@ -59,19 +58,16 @@ struct TriangleShades {
 };
 TriangleShades triangle_shades(const Scene& scene, const BaseCoatParams& p);
 
-// The coat over white paper of the texture's color `t` (straight alpha).
-inline glm::vec3 over_white(glm::vec4 t) { return glm::vec3(t) * t.w + glm::vec3(1.0f - t.w); }
-
 struct BaseCoatStage {
   using Params = TypeList<BaseCoatParams>;
   static StageDesc describe() {
     StageDesc d{"basecoat", StageKind::Frame, "toon or solid base coat from a 1D texture (SPEC 4.1, Kalnins §4.2)",
                 {"basecoat"}, {{"gbuffer.ids"}, {"gbuffer.bary"}},
-                {{"color", 3, Texel::Unorm8, "the coat over white paper", tolerance::kByte,
+                {{"coat", 4, Texel::Unorm8, "T(s), straight alpha; 0 on the background", tolerance::kByte,
                   "fed the same G-buffer and per-vertex s; bilinear lookup of the 1D texture; 8-bit target"}},
                 {"basecoat"}};
-    d.outputs[0].frame_color = true;
-    d.declared_effects = {{"basecoat", "the base coat of stroke-based rendering (Kalnins 2002 §4.2), over white paper"}};
+    d.declared_effects = {{"basecoat", "the base coat of stroke-based rendering (Kalnins 2002 §4.2), through the paper "
+                                       "effect (§4.4) onto white"}};
     return d;
   }
 };

@@ -23,6 +23,7 @@
 #include "common/sketchy_gbuffer.hpp"
 #include "common/sketchy_maps.hpp"
 #include "common/sketchy_noise.hpp"
+#include "common/stroke_paper.hpp"
 
 namespace plumbago {
 
@@ -37,6 +38,7 @@ using AllStages = TypeList<
     // the pencil pipeline (SPEC 2)
     GBufferStage,
     BaseCoatStage,
+    StrokePaperStage,
     EdgeDetectStage,
     ContourLightStage,
     InteriorIntensityStage,

@@ -29,9 +29,9 @@ class BaseCoatPass : public GpuPass {
     const GBufferTargets& g = f.shared<GBufferTargets>("gbuffer");
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, corners_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, first_.id());
-    // Only the objects' rectangle runs the shader; outside it the background is white.
-    pass_.draw_inside(program_, {{"ids", &g.ids}, {"bary", &g.bary}, {"coat", &texture_}}, {&f.output("basecoat.color")},
-                      filter_rect(f.ordinary, 0), {glm::vec4(1.0f)});
+    // Only the objects' rectangle runs the shader; outside it the coat is transparent.
+    pass_.draw_inside(program_, {{"ids", &g.ids}, {"bary", &g.bary}, {"coat", &texture_}}, {&f.output("basecoat.coat")},
+                      filter_rect(f.ordinary, 0), {glm::vec4(0.0f)});
   }
 
  private:

@@ -15,15 +15,15 @@ float interpolated_shade(const GBuffer& g, const TriangleShades& shades, int x, 
   return g.bary.at(x, y, 0) * corners[0] + g.bary.at(x, y, 1) * corners[1] + g.bary.at(x, y, 2) * corners[2];
 }
 
-// The coat over white paper; white on the background.
-Image basecoat(const GBuffer& g, const TriangleShades& shades, const Image& texture) {
-  Image out(g.ids.width, g.ids.height, 3, 1.0f);
+// The coat T(s), straight alpha; transparent on the background.
+Image coat(const GBuffer& g, const TriangleShades& shades, const Image& texture) {
+  Image out(g.ids.width, g.ids.height, 4);
   const SamplerState linear_clamped;  // LINEAR, CLAMP_TO_EDGE
   for_each_row(out.height, [&](int y) {
     for (int x = 0; x < out.width; ++x) {
       if (g.background(x, y)) continue;
-      glm::vec3 c = over_white(sample(texture, {interpolated_shade(g, shades, x, y), 0.5f}, linear_clamped));
-      for (int ch = 0; ch < 3; ++ch) out.at(x, y, ch) = c[ch];
+      glm::vec4 c = sample(texture, {interpolated_shade(g, shades, x, y), 0.5f}, linear_clamped);
+      for (int ch = 0; ch < 4; ++ch) out.at(x, y, ch) = c[ch];
     }
   });
   return out;
@@ -33,7 +33,7 @@ Image basecoat(const GBuffer& g, const TriangleShades& shades, const Image& text
 
 PLUMBAGO_REFERENCE_STAGE(basecoat, [](ReferenceFrame& f) {
   auto p = f.params<BaseCoatParams>();
-  f.put("basecoat.color", basecoat(f.gbuffer("gbuffer"), triangle_shades(f.ordinary, p), basecoat_texture(p)));
+  f.put("basecoat.coat", coat(f.gbuffer("gbuffer"), triangle_shades(f.ordinary, p), basecoat_texture(p)));
 });
 
 }  // namespace plumbago::reference

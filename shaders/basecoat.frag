@@ -1,6 +1,7 @@
 #version 450 core
 // Base coat (SPEC 4.1): s interpolated from the triangle's corners with the barycentrics
-// looks up the 1D texture; the coat goes over white paper. Formula in common/basecoat.hpp.
+// looks up the 1D texture: the coat, straight alpha, transparent on the background.
+// Formula in common/basecoat.hpp.
 
 uniform usampler2D ids;  // object id, triangle index
 uniform sampler2D bary;
@@ -9,17 +10,16 @@ uniform sampler2D coat;  // the 1D texture as one row: LINEAR, CLAMP_TO_EDGE
 layout(std430, binding = 0) readonly buffer Shades { vec4 corner_shades[]; };
 layout(std430, binding = 1) readonly buffer FirstTriangle { uint first_triangle[]; };  // per object
 
-layout(location = 0) out vec4 color;
+layout(location = 0) out vec4 coat_out;
 
 void main() {
   ivec2 x = ivec2(gl_FragCoord.xy);
   uvec2 id = texelFetch(ids, x, 0).xy;
   if (id.x == 0u) {
-    color = vec4(1.0);
+    coat_out = vec4(0.0);
     return;
   }
   vec3 s = corner_shades[first_triangle[id.x - 1u] + id.y].xyz;
   vec3 w = texelFetch(bary, x, 0).xyz;
-  vec4 t = texture(coat, vec2(w.x * s.x + w.y * s.y + w.z * s.z, 0.5));
-  color = vec4(t.rgb * t.a + vec3(1.0 - t.a), 1.0);
+  coat_out = texture(coat, vec2(w.x * s.x + w.y * s.y + w.z * s.z, 0.5));
 }
