@@ -102,8 +102,13 @@ TEST(FeatureLines, SphereSilhouetteIsOneLoopOnTheTrueSilhouetteCircle) {
       EXPECT_TRUE(lines.silhouettes[0].closed);
       EXPECT_TRUE(lines.silhouettes[0].front_facing);
       double worst = 0;
-      for (const auto& p : lines.silhouettes[0].points)
-        worst = std::max(worst, distance_to_sphere_silhouette(p.position, r, eye));
+      const auto& loop = lines.silhouettes[0].points;
+      for (size_t i = 0; i < loop.size(); ++i) {
+        glm::dvec3 p = loop[i].position, d = loop[(i + 1) % loop.size()].position - p;
+        worst = std::max(worst, distance_to_sphere_silhouette(p, r, eye));
+        // Oriented with the visible side (towards the eye) on the left, seen from outside.
+        ASSERT_GT(glm::dot(glm::cross(glm::normalize(p), d), eye - p), 0) << "segment " << i;
+      }
       std::printf("sphere (%zu faces, max edge angle %.4f rad) D %.0f %s: %zu points, max distance to the true "
                   "silhouette %.3g (bound %.3g)\n",
                   sphere.triangles.size(), theta, D, normalized ? "normalized" : "literal c - x",
@@ -274,6 +279,27 @@ TEST(FeatureLines, TorusPiecesJoinIntoClosedLoops) {
       EXPECT_EQ(matches, 1u) << "an open end at no other piece's end";
     }
   }
+}
+
+// Seen down its axis, a torus shows two front-facing closed loops: the outer equator and
+// the rim of the hole (the tube bends away from the viewer on both), and nothing
+// back-facing.
+TEST(FeatureLines, TorusFromAboveHasTwoFrontFacingLoops) {
+  Mesh torus = make_procedural("torus", 1.0f);
+  FeatureLineOptions all;
+  all.keep_back_facing = true;
+  FeatureLines lines = feature_lines(torus, kIdentity, glm::dvec3(0.03, 0.02, 6.0), all);
+  ASSERT_EQ(lines.silhouettes.size(), 2u);
+  double radii[2];
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_TRUE(lines.silhouettes[i].closed);
+    EXPECT_TRUE(lines.silhouettes[i].front_facing);
+    glm::dvec3 p = lines.silhouettes[i].points[0].position;
+    radii[i] = std::hypot(p.x, p.y);
+  }
+  std::printf("torus from above: loops at radius %.3f and %.3f (equators 1.4 and 0.6)\n", radii[0], radii[1]);
+  EXPECT_NEAR(std::max(radii[0], radii[1]), 1.4, 0.02);
+  EXPECT_NEAR(std::min(radii[0], radii[1]), 0.6, 0.02);
 }
 
 // Moving the object and the eye together changes nothing (the eye goes to object space).
