@@ -83,7 +83,9 @@ Frame Renderer::render(const FrameOptions& options) {
   frame.ran = state_->pre.ran;  // once per Renderer, listed with every frame it renders
   for (const PassTime& t : state_->timer.results()) frame.ran.push_back(t);
   Stopwatch readback;
-  frame.color = download_texture(state_->frame.output(frame_color_buffer(state_->frame.stages)), 3);
+  std::string color = frame_color_buffer(state_->frame.stages);  // none without effects: the blank page
+  const Scene& scene = state_->frame.scene;
+  frame.color = color.empty() ? Image(scene.width, scene.height, 3, 1.0f) : download_texture(state_->frame.output(color), 3);
   frame.ran.push_back({"readback", readback.ms()});
   if (options.keep_buffers) frame.buffers = state_->dump();
   Context::get().check_errors("reading back the frame");

@@ -22,7 +22,8 @@ ReferenceFrame run_stages(const Scene& scene, std::vector<PassTime>& ran) {
 Frame render(const Scene& scene, const FrameOptions& options) {
   Frame frame;
   ReferenceFrame f = run_stages(scene, frame.ran);
-  frame.color = f.image(frame_color_buffer(f.stages));
+  std::string color = frame_color_buffer(f.stages);  // none without effects: the blank page
+  frame.color = color.empty() ? Image(scene.width, scene.height, 3, 1.0f) : f.image(color);
   if (options.keep_buffers) frame.buffers = dump(f);
   return frame;
 }

@@ -133,6 +133,17 @@ TEST_F(Frames, EveryBufferIsFiniteOnBothBackends) {
   }
 }
 
+// No effect: nothing runs, and the image is the blank page on both backends (the GPU's
+// used to be its color target's uninitialized memory).
+TEST_F(Frames, NoEffectDrawsTheBlankPage) {
+  Scene scene = testing::builtin_at("torus", 64, 48);
+  scene.effects = {};
+  for (const Frame& f : {reference::render(scene), gpu::Renderer(scene).render()}) {
+    ASSERT_EQ(f.color.pixels(), 64u * 48u);
+    for (float v : f.color.data) ASSERT_EQ(v, 1.0f);
+  }
+}
+
 TEST_F(Frames, ContoursAreDrawnWhereTheSilhouetteIs) {
   Scene scene = testing::builtin_at("sphere", 200, 200);
   for (const Frame& f : {reference::render(scene), gpu::Renderer(scene).render()}) {
