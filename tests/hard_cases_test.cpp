@@ -11,7 +11,9 @@
 namespace plumbago {
 namespace {
 
-const char* kAllEffects = R"("effects": ["contours", "interior", "crosshatch", "paper"], "resolution": [160, 120])";
+// Every effect of the pencil pipeline and the base coat of stroke-based rendering.
+const char* kAllEffects =
+    R"("effects": ["contours", "interior", "crosshatch", "paper", "basecoat"], "resolution": [160, 120])";
 
 Scene hard_scene(const std::string& body, const std::string& base = ".") {
   return parse_scene("{" + body + ", " + kAllEffects + "}", "hard-case", base);
