@@ -82,7 +82,14 @@ void check_off_lines(const std::string& path) {
   std::string line;
   size_t number = 0, vertices = 0, faces = 0, rows = 0;
   bool counts_read = false;
-  auto count = [](const std::string& word) { return size_t(std::clamp(std::stod(word), 0.0, 1e15)); };
+  // A count must be a whole number from 0 up: a negative one would otherwise become a
+  // huge size in OpenMesh's reader (it reserves room for V vertices and F faces).
+  auto count = [&](const std::string& word, const char* what) {
+    double v = std::stod(word);
+    if (v < 0 || v != std::floor(v))
+      throw MeshError(path + ":" + std::to_string(number) + ": " + what + " '" + word + "' is not a count");
+    return size_t(std::min(v, 1e15));
+  };
   while (std::getline(in, line)) {
     ++number;
     std::istringstream ss(line.substr(0, line.find('#')));
@@ -97,13 +104,17 @@ void check_off_lines(const std::string& path) {
       if (!is_finite_number(w))
         throw MeshError(path + ":" + std::to_string(number) + ": '" + w + "' is not a finite number");
     if (!counts_read) {  // "V F E"
-      vertices = count(words[0]);
-      faces = words.size() > 1 ? count(words[1]) : 0;
+      vertices = count(words[0], "vertex count");
+      faces = words.size() > 1 ? count(words[1], "face count") : 0;
+      if (words.size() > 2) count(words[2], "edge count");
       counts_read = true;
     } else if (size_t row = rows++; row >= vertices && row < vertices + faces) {  // "n i1 ... in [color]"
-      size_t n = count(words[0]);
-      for (size_t k = 1; k <= n && k < words.size(); ++k)
-        if (std::stod(words[k]) < 0 || std::stod(words[k]) >= double(vertices))
+      size_t n = count(words[0], "face corner count");
+      if (n + 1 > words.size())
+        throw MeshError(path + ":" + std::to_string(number) + ": face with " + words[0] + " corners has only " +
+                        std::to_string(words.size() - 1) + " indices");
+      for (size_t k = 1; k <= n; ++k)
+        if (double i = std::stod(words[k]); i < 0 || i >= double(vertices) || i != std::floor(i))
           throw MeshError(path + ":" + std::to_string(number) + ": face index " + words[k] +
                           " is out of range (" + std::to_string(vertices) + " vertices, counted from 0)");
     }
