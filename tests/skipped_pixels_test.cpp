@@ -7,9 +7,7 @@
 
 #include "parity/parity.hpp"
 #include "common/image_compare.hpp"
-#include "common/lights.hpp"
 #include "gpu/compose.hpp"
-#include "gpu/edge_detect.hpp"
 #include "gpu/multi_contour.hpp"
 #include "reference/gbuffer.hpp"
 #include "reference/multi_contour.hpp"
@@ -21,49 +19,20 @@ namespace {
 
 class SkippedPixels : public testing::GlTest, public ::testing::WithParamInterface<std::string> {};
 
-// A square and a torus, 240 x 180 (the blocks of 8 x 8 pixels do not fit its height).
-Scene square_and_torus(const std::string& background_pairs) {
-  std::string json = R"({"objects": [{"mesh": {"procedural": "plane"},
-      "transform": [0.3, 0, 0, 0,  0, 0.3, 0, 0,  0, 0, 0.3, 0,  0.9, 0.5, 0.2, 1]},
-      {"mesh": {"procedural": "torus"}, "transform": [0.5, 0, 0, 0,  0, 0.5, 0, 0,  0, 0, 0.5, 0,  -0.6, -0.4, 0, 1]}],
-    "camera": {"view_direction": [0, 0, 1]}, "effects": ["contours", "interior"], "resolution": [240, 180],
-    "params": {"edge.background_pairs": ")" + background_pairs + R"("}})";
-  return parse_scene(json, "test:skipped", ".");
-}
-
 TEST_P(SkippedPixels, PassesMatchTheReferenceInsideAndOutside) {
-  Scene scene = square_and_torus(GetParam());
+  Scene scene = testing::square_and_torus(GetParam());
   auto results = run_parity(scene, {"edge_detect", "contour_light", "multi_contour", "interior_intensity", "pencil_interior",
                                     "compose"});
   // each GPU pass once: multi_contour and compose alone and in one pass
-  ASSERT_EQ(testing::names_of(results), (std::vector<std::string>{"edge_detect.contour_darkness in edge_detect+contour_light", "contour_light.lit_contour_darkness in edge_detect+contour_light", "interior_intensity.intensity in interior_intensity+pencil_interior", "pencil_interior.interior_darkness in interior_intensity+pencil_interior", "multi_contour.contour_darkness", "multi_contour.contour_darkness in multi_contour+compose", "compose.color in multi_contour+compose", "compose.color"}));
+  std::vector<std::string> expected = testing::kEdgeAndLightResults;
+  expected.insert(expected.end(), testing::kInteriorResults.begin(), testing::kInteriorResults.end());
+  expected.insert(expected.end(), {"multi_contour.contour_darkness", "multi_contour.contour_darkness in multi_contour+compose",
+                                   "compose.color in multi_contour+compose", "compose.color"});
+  ASSERT_EQ(testing::names_of(results), expected);
   for (const auto& r : results) {
     std::printf("[skipped pixels, background %s] %s\n", GetParam().c_str(), format_diff(r.name, r.diff).c_str());
     EXPECT_TRUE(r.pass) << r.name << ": " << r.note;
   }
-}
-
-// A frame marks the blocks with some d' > 0 while it draws d' (edge_detect.frag, inside
-// filter_rect; a clear outside it); multiple contour drawing alone finds them from d'
-// (contour_blocks.frag). The marks must be the same, or a frame would skip contours (a
-// mark missing) or compute pixels for nothing (a mark too many).
-TEST_P(SkippedPixels, TheEdgePassMarksTheBlocksTheContoursPassFinds) {
-  Scene scene = square_and_torus(GetParam());
-  gpu::GBufferTargets g = gpu::upload_gbuffer(reference::trace_gbuffer(scene, scene.width, scene.height));
-  gpu::Texture lit = gpu::make_texture(scene.width, scene.height, GL_R32F);
-  gpu::Texture marked = gpu::make_contour_block_marks(scene.width, scene.height);
-  gpu::Texture found = gpu::make_contour_block_marks(scene.width, scene.height);
-  gpu::EdgeDetectPass().run(g, scene.params.get<EdgeDetectParams>(), view_space_lights(scene),
-                            scene.params.get<ContourLightParams>(), {lit, nullptr, &marked}, filter_rect(scene, 1));
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-  gpu::MultiContourPass().mark_blocks(lit, found);
-  Image a = gpu::download_texture(marked, 1), b = gpu::download_texture(found, 1);
-  double ones = 0;
-  for (float v : b.data) ones += v;
-  std::printf("[skipped pixels, background %s] %zu blocks, %.0f marked\n", GetParam().c_str(), b.pixels(), ones);
-  EXPECT_EQ(a.data, b.data);
-  EXPECT_GT(ones, 0.0);
-  EXPECT_LT(ones, double(b.pixels()) * (GetParam() == "formula" ? 1.01 : 0.9));  // the background is unmarked
 }
 
 INSTANTIATE_TEST_SUITE_P(BackgroundPairs, SkippedPixels, ::testing::Values("continuous", "formula"));

@@ -30,6 +30,17 @@ inline Scene builtin_at(const std::string& name, int width, int height) {
   return s;
 }
 
+// A small square seen face-on and a torus, 240 x 180 (the blocks of 8 x 8 pixels do not fit
+// its height): the GPU's skipped-pixel rectangles are exact around the square.
+inline Scene square_and_torus(const std::string& background_pairs) {
+  std::string json = R"({"objects": [{"mesh": {"procedural": "plane"},
+      "transform": [0.3, 0, 0, 0,  0, 0.3, 0, 0,  0, 0, 0.3, 0,  0.9, 0.5, 0.2, 1]},
+      {"mesh": {"procedural": "torus"}, "transform": [0.5, 0, 0, 0,  0, 0.5, 0, 0,  0, 0, 0.5, 0,  -0.6, -0.4, 0, 1]}],
+    "camera": {"view_direction": [0, 0, 1]}, "effects": ["contours", "interior"], "resolution": [240, 180],
+    "params": {"edge.background_pairs": ")" + background_pairs + R"("}})";
+  return parse_scene(json, "test:skipped", ".");
+}
+
 // Multiple-contour parameters without the contour texture: each copy lays down alpha d'.
 inline ContourParams untextured_contours(int copies, int grid_cell) {
   ParamSet set;
