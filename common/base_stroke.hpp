@@ -83,7 +83,8 @@ struct Ribbon {
 // positive and finite or the curve would take more than 1e7 samples.
 std::vector<glm::dvec2> catmull_rom_resample(const std::vector<glm::dvec2>& points, double spacing_px, bool closed);
 
-// The example's offset at arc length s of a run of length run_length (4. above).
+// The example's offset at arc length s of a run of length run_length (4. above); the
+// example must be one validate_stroke_style accepts.
 struct StampedOffset {
   double displacement_px;  // already scaled by min(run_length / L_drawn, 1)
   double pressure;
@@ -92,7 +93,8 @@ struct StampedOffset {
 StampedOffset rubber_stamp(const OffsetExample& example, double s, double run_length);
 
 // The ribbon of one run; empty for a run of fewer than 2 distinct points. Throws
-// StrokeStyleError for a style validate_stroke_style refuses.
+// StrokeStyleError for a style validate_stroke_style refuses, std::invalid_argument for a
+// run that would take more than 1e7 samples.
 Ribbon base_stroke(const StrokeRun& run, const StrokeStyle& style);
 
 }  // namespace plumbago

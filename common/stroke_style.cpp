@@ -94,10 +94,8 @@ struct Validator {
   }
 };
 
-std::string type_name(const json& j) { return j.type_name(); }
-
 double read_number(const json& j, const std::string& path, double lo, double hi, const Refuser& r) {
-  if (!j.is_number()) r.fail(path, std::string("expected a number, got ") + type_name(j));
+  if (!j.is_number()) r.fail(path, std::string("expected a number, got ") + j.type_name());
   double x = j.get<double>();
   r.check_range(path, x, lo, hi);
   return x;
@@ -114,7 +112,7 @@ class Reader {
   void boolean(bool& b, const char* name, bool def, const char*) {
     b = def;
     if (!read(name)) return;
-    if (!j_[name].is_boolean()) r_.fail(key_path(name), std::string("expected true or false, got ") + type_name(j_[name]));
+    if (!j_[name].is_boolean()) r_.fail(key_path(name), std::string("expected true or false, got ") + j_[name].type_name());
     b = j_[name].get<bool>();
   }
   template <class E>
@@ -146,7 +144,7 @@ StrokeOffset read_offset(const json& j, const std::string& path, const Refuser& 
   o.t = read_number(j[0], path + "/0", -INFINITY, INFINITY, r);
   o.displacement_px = read_number(j[1], path + "/1", -INFINITY, INFINITY, r);
   o.pressure = read_number(j[2], path + "/2", -INFINITY, INFINITY, r);
-  if (!j[3].is_boolean()) r.fail(path + "/3", std::string("expected true or false, got ") + type_name(j[3]));
+  if (!j[3].is_boolean()) r.fail(path + "/3", std::string("expected true or false, got ") + j[3].type_name());
   o.pen_up = j[3].get<bool>();
   return o;
 }
