@@ -38,10 +38,12 @@ float vertex_shade(glm::vec3 n, const std::vector<Light>& unit_lights, const Bas
 TriangleShades triangle_shades(const Scene& scene, const BaseCoatParams& p) {
   std::vector<Light> lights = unit_world_lights(scene);
   TriangleShades out;
-  for (const WorldObject& obj : world_geometry(scene)) {
+  std::vector<WorldObject> objects = world_geometry(scene);
+  for (size_t o = 0; o < objects.size(); ++o) {
+    const WorldObject& obj = objects[o];
     out.first_triangle.push_back(uint32_t(out.corners.size()));
     for (const glm::uvec3& t : obj.triangles) {
-      glm::vec4 record(0.0f);
+      glm::vec4 record(0.0f, 0.0f, 0.0f, scene.objects[o].style == Style::Strokes ? 1.0f : 0.0f);
       for (int k = 0; k < 3; ++k) record[k] = vertex_shade(obj.normals[t[k]], lights, p);
       out.corners.push_back(record);
     }

@@ -4,7 +4,8 @@
 //   s = sum_k I_k (n . L_k)          (|n . L_k| with abs_n_dot_l)
 // interpolated across the face with the barycentrics, looks up a 1D RGBA texture T at
 // texture coordinate s (LINEAR, CLAMP_TO_EDGE: s <= 0 reads the first texel): the coat is
-// T(s), straight alpha, and transparent (0) on the background. The paper effect of SPEC 4.2
+// T(s), straight alpha, on the objects whose style is `strokes` and transparent (0)
+// elsewhere. The paper effect of SPEC 4.2
 // (common/stroke_paper.hpp) composes it. T is generated here from a preset: `toon`, two tones split at `threshold`; `smooth`, a
 // linear ramp from the dark to the light color; `solid`, the light color alone.
 #pragma once
@@ -50,8 +51,9 @@ constexpr int kBaseCoatTexels = 256;  // the 1D texture's width
 Image basecoat_texture(const BaseCoatParams& p);
 
 // s at each corner of each triangle, the objects' records one after the other
-// ((s0, s1, s2, 0) per triangle; first_triangle[o] is object o's first), from the world
-// geometry both backends draw (common/gbuffer.hpp world_geometry).
+// ((s0, s1, s2, coated) per triangle, coated = 1 on a `strokes` object and 0 on others;
+// first_triangle[o] is object o's first), from the world geometry both backends draw
+// (common/gbuffer.hpp world_geometry). The coat is T(s) coated.
 struct TriangleShades {
   std::vector<glm::vec4> corners;
   std::vector<uint32_t> first_triangle;
@@ -63,11 +65,11 @@ struct BaseCoatStage {
   static StageDesc describe() {
     StageDesc d{"basecoat", StageKind::Frame, "toon or solid base coat from a 1D texture (SPEC 4.1, Kalnins §4.2)",
                 {"basecoat"}, {{"gbuffer.ids"}, {"gbuffer.bary"}},
-                {{"coat", 4, Texel::Unorm8, "T(s), straight alpha; 0 on the background", tolerance::kByte,
+                {{"coat", 4, Texel::Unorm8, "T(s), straight alpha, on the stroke objects; 0 elsewhere", tolerance::kByte,
                   "fed the same G-buffer and per-vertex s; bilinear lookup of the 1D texture; 8-bit target"}},
                 {"basecoat"}};
-    d.declared_effects = {{"basecoat", "the base coat of stroke-based rendering (Kalnins 2002 §4.2), through the paper "
-                                       "effect (§4.4) onto white"}};
+    d.declared_effects = {{"basecoat", "the base coat of the objects whose style is strokes (Kalnins 2002 §4.2), through "
+                                       "the paper effect (§4.4); on by default for them", true}};
     return d;
   }
 };

@@ -164,7 +164,33 @@ class SceneReader {
     return fit_camera(center, radius, direction, fov);
   }
 
+  // "strokes": {"crease": STYLE, "border": STYLE, "silhouette": STYLE}, each a preset name
+  // or a style file (relative to the scene's folder).
+  StrokeStyles stroke_styles(const json& j, const std::string& path) const {
+    only_keys(j, path, {"crease", "border", "silhouette"});
+    StrokeStyles out;
+    for (auto [key, style] : {std::pair{"crease", &out.crease}, {"border", &out.border}, {"silhouette", &out.silhouette}}) {
+      if (!j.contains(key)) continue;
+      const json& v = j[key];
+      if (!v.is_string()) fail(path + "/" + key, "expected a style name (" + join(stroke_style_names()) + ") or a style file");
+      std::string name = v.get<std::string>();
+      bool file = name.find('/') != std::string::npos || name.ends_with(".json");
+      try {
+        *style = load_stroke_style(file && !fs::path(name).is_absolute() ? (fs::path(base_) / name).string() : name);
+      } catch (const StrokeStyleError& e) {
+        fail(path + "/" + key, e.what());
+      }
+    }
+    return out;
+  }
+
  private:
+  static std::string join(const std::vector<std::string>& names) {
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+    return list;
+  }
+
   std::shared_ptr<const Mesh> mesh_file(const std::string& relative) {
     fs::path p = fs::path(relative).is_absolute() ? fs::path(relative) : fs::path(base_) / relative;
     std::string key = p.lexically_normal().string();
@@ -190,8 +216,8 @@ class SceneReader {
 
   Style style(const json& j, const std::string& path) const {
     static const std::map<std::string, Style> styles = {
-        {"pencil", Style::Pencil}, {"sketchy", Style::Sketchy}, {"shaded", Style::Shaded}};
-    if (!j.is_string() || !styles.count(j.get<std::string>())) fail(path, "expected pencil, sketchy or shaded");
+        {"pencil", Style::Pencil}, {"sketchy", Style::Sketchy}, {"shaded", Style::Shaded}, {"strokes", Style::Strokes}};
+    if (!j.is_string() || !styles.count(j.get<std::string>())) fail(path, "expected pencil, sketchy, shaded or strokes");
     return styles.at(j.get<std::string>());
   }
 
@@ -226,22 +252,32 @@ std::string line_and_column(const std::string& text, size_t byte) {
   return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
 
-// The scene's effects; "sketchy" goes with objects of that style (SPEC 3): on by itself
-// when one is, refused when none is. Without "effects": contours for the other objects.
+// The scene's effects. "sketchy" and "strokes" go with objects of those styles (SPEC 3, 4):
+// on by themselves when one is, refused when none is; so is "basecoat", which coats the
+// stroke objects. Without "effects": contours for the pencil objects, the base coat for
+// the stroke objects.
 void set_effects(const json& j, const SceneReader& r, Scene& s) {
-  auto sketchy = [](const SceneObject& o) { return o.style == Style::Sketchy; };
-  bool any_sketchy = std::any_of(s.objects.begin(), s.objects.end(), sketchy);
-  bool all_sketchy = std::all_of(s.objects.begin(), s.objects.end(), sketchy);
+  auto any = [&](Style style) {
+    return std::any_of(s.objects.begin(), s.objects.end(), [&](const SceneObject& o) { return o.style == style; });
+  };
+  auto listed = [&](const char* effect) { return std::find(s.effects.begin(), s.effects.end(), effect) != s.effects.end(); };
   s.effects.clear();
   if (j.contains("effects")) s.effects = r.effects(j["effects"], "/effects");
-  else if (!all_sketchy) s.effects = {"contours"};
-  bool listed = std::find(s.effects.begin(), s.effects.end(), "sketchy") != s.effects.end();
-  if (listed && !any_sketchy) r.fail("/effects", "'sketchy' draws the objects whose style is sketchy, and no object has it");
-  if (any_sketchy && !listed) s.effects.push_back("sketchy");
+  else {
+    if (any(Style::Pencil) || any(Style::Shaded)) s.effects.push_back("contours");
+    if (any(Style::Strokes)) s.effects.push_back("basecoat");
+  }
+  const std::pair<const char*, Style> styled[] = {{"sketchy", Style::Sketchy}, {"strokes", Style::Strokes}, {"basecoat", Style::Strokes}};
+  for (auto [effect, style] : styled) {
+    const char* name = style == Style::Sketchy ? "sketchy" : "strokes";
+    if (listed(effect) && !any(style))
+      r.fail("/effects", "'" + std::string(effect) + "' draws the objects whose style is " + name + ", and no object has it");
+    if (any(style) && !listed(name)) s.effects.push_back(name);
+  }
 }
 
 Scene read_scene(const json& j, SceneReader& r, const std::string& source) {
-  r.only_keys(j, "", {"mesh", "objects", "camera", "lights", "resolution", "seed", "effects", "params"});
+  r.only_keys(j, "", {"mesh", "objects", "camera", "lights", "resolution", "seed", "effects", "params", "strokes"});
   Scene s;
   s.source = source;
   if (j.contains("mesh") == j.contains("objects")) r.fail("", "give either \"mesh\" (one object) or \"objects\"");
@@ -261,6 +297,7 @@ Scene read_scene(const json& j, SceneReader& r, const std::string& source) {
   }
   set_effects(j, r, s);
   if (j.contains("params")) r.params(j["params"], "/params", s.params);
+  if (j.contains("strokes")) s.strokes = r.stroke_styles(j["strokes"], "/strokes");
   s.camera = j.contains("camera") ? r.camera(j["camera"], "/camera", s) : SceneReader::fitted_camera(s, 35.0f);
   s.lights = j.contains("lights") ? r.lights(j["lights"], "/lights") : default_lights(s.camera);
   return s;

@@ -13,10 +13,13 @@
 #include "common/image.hpp"
 #include "common/mesh.hpp"
 #include "common/params.hpp"
+#include "common/stroke_style.hpp"
 
 namespace plumbago {
 
-enum class Style { Pencil, Sketchy, Shaded };
+// Which pipeline draws an object: the pencil effects (SPEC 2), sketchy drawing (SPEC 3),
+// or stroke-based rendering (SPEC 4). `Shaded` objects are drawn by the pencil effects.
+enum class Style { Pencil, Sketchy, Shaded, Strokes };
 
 struct SceneObject {
   std::shared_ptr<const Mesh> mesh;
@@ -24,6 +27,12 @@ struct SceneObject {
   Style style = Style::Pencil;
   glm::vec3 color{1.0f};
   bool flat = false;          // shading normals = face normals
+};
+
+// The stroke style of each kind of feature line of the stroke objects (SPEC 4.6-4.7;
+// presets in styles/strokes, common/stroke_style.hpp). Scene key "strokes".
+struct StrokeStyles {
+  StrokeStyle crease = default_stroke_style(), border = default_stroke_style(), silhouette = default_stroke_style();
 };
 
 struct Light {
@@ -40,6 +49,7 @@ struct Scene {
   uint32_t seed = 1;
   std::vector<std::string> effects{"contours"};
   ParamSet params;
+  StrokeStyles strokes;
 };
 
 // A scene refused: the message names the file and the JSON path of the offending key.

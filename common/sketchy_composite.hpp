@@ -18,16 +18,16 @@ struct SketchyCompositeStage {
                 "perturbed edges and shade, drawn as a depth sprite over the ordinary objects (SPEC 3.2-3.4)", {"sketchy"},
                 {{"sketchy_maps.edge"}, {"sketchy_maps.shade"}, {"sketchy_gbuffer.depth"}, {"sketchy_noise.textures"},
                  {"sketchy_enlarged.noise_coordinates", object_style}, {"compose.color", when::pencil_effects, false},
-                 {"gbuffer.depth", when::pencil_effects, false}},
+                 {"gbuffer.depth", when::ordinary_drawn, false}},
                 {{"color", 3, Texel::Unorm8, "the sketch over what the ordinary objects drew", tolerance::kByte,
                   "fed the same maps, sketchy G-buffer, noise and noise coordinates; 8-bit target"},
                  {"depth", 1, Texel::Float, "the sprite's normalized depth where the sketch was drawn, 1 elsewhere",
                   tolerance::kFloat, "fed the same maps, sketchy G-buffer, noise and noise coordinates; float target"}},
                 {"sketchy"}};
     d.outputs[0].frame_color = true;
-    d.outputs[0].draws_over = "compose.color";
+    d.outputs[0].draws_over = {"compose.color"};
     d.declared_effects = {{"sketchy", "sketchy drawing of the objects whose style is sketchy (Nienhaus & Doellner 2004); "
-                                      "on by itself when one is"}};
+                                      "on by itself when one is", true}};
     return d;
   }
 };

@@ -17,6 +17,9 @@ bool effect_contours(const StageConfig& c) { return c.has("contours"); }
 bool effect_interior(const StageConfig& c) { return c.has("interior") || c.has("crosshatch"); }
 bool effect_paper(const StageConfig& c) { return c.has("paper"); }
 bool pencil_effects(const StageConfig& c) { return effect_contours(c) || effect_interior(c) || effect_paper(c); }
+bool effect_sketchy(const StageConfig& c) { return c.has("sketchy"); }
+bool ordinary_drawn(const StageConfig& c) { return pencil_effects(c) || c.has("strokes"); }
+bool effect_basecoat(const StageConfig& c) { return c.has("basecoat"); }
 }  // namespace when
 
 namespace {
@@ -121,7 +124,7 @@ std::vector<std::string> dumped_buffers(const std::vector<std::string>& stages, 
   std::set<std::string> drawn_over;
   for (const std::string& name : stages)
     for (const Output& o : find_stage(name).outputs)
-      if (!o.draws_over.empty()) drawn_over.insert(o.draws_over);
+      if (std::string under = plumbago::drawn_over(o, stages); !under.empty()) drawn_over.insert(under);
   std::vector<std::string> names;
   for (const std::string& name : stages) {
     const StageDesc& stage = find_stage(name);
@@ -130,6 +133,12 @@ std::vector<std::string> dumped_buffers(const std::vector<std::string>& stages, 
       if (!drawn_over.count(stage.output_name(*o))) names.push_back(stage.output_name(*o));
   }
   return names;
+}
+
+std::string drawn_over(const Output& output, const std::vector<std::string>& stages) {
+  for (const std::string& under : output.draws_over)
+    if (std::find(stages.begin(), stages.end(), stage_of(under).name) != stages.end()) return under;
+  return {};
 }
 
 std::string frame_color_buffer(const std::vector<std::string>& stages) {

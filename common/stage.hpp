@@ -103,9 +103,10 @@ struct Output {
   ParityValue value;
   // The frame's color: the last stage that ran with such an output made the image.
   bool frame_color = false;
-  // Drawn in place over another stage's output (the same GPU target): a dump keeps the
-  // one drawn over only where this stage did not run.
-  std::string draws_over;
+  // Drawn in place over another stage's output (the same GPU target): the first of these
+  // whose stage ran (drawn_over below); a dump keeps the one drawn over only where this
+  // stage did not run.
+  std::vector<std::string> draws_over;
   // Written only when a condition holds (e.g. the corner angles need curvature).
   Condition written = nullptr;
   bool compared = true;  // false: not a parity output (the note in tolerance_why says why)
@@ -127,6 +128,9 @@ struct Input {
 struct EffectDef {
   std::string name;
   std::string doc;
+  // Goes with the objects of a style (sketchy, strokes): a scene has it exactly when it
+  // has such an object (common/scene.cpp), so nothing adds it to another scene.
+  bool styled = false;
 };
 
 struct StageDesc {
@@ -173,6 +177,8 @@ std::string stage_names();  // "gbuffer, edge_detect, ..." for messages
 // The buffers a dump of a frame that ran `stages` holds: every output the frame stages
 // write, less those another stage that ran drew over in place.
 std::vector<std::string> dumped_buffers(const std::vector<std::string>& stages, const StageConfig& config);
+// The buffer `output` draws over in a frame that runs `stages`; empty when none.
+std::string drawn_over(const Output& output, const std::vector<std::string>& stages);
 // The buffer that holds the frame's color: the last frame_color output of `stages`.
 std::string frame_color_buffer(const std::vector<std::string>& stages);
 
@@ -182,6 +188,9 @@ bool effect_contours(const StageConfig& c);
 bool effect_interior(const StageConfig& c);  // interior or crosshatch
 bool effect_paper(const StageConfig& c);
 bool pencil_effects(const StageConfig& c);   // any effect of the pencil pipeline
+bool effect_sketchy(const StageConfig& c);
+bool ordinary_drawn(const StageConfig& c);   // the G-buffer's objects are drawn (pencil or strokes)
+bool effect_basecoat(const StageConfig& c);
 }  // namespace when
 
 }  // namespace plumbago

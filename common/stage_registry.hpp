@@ -13,6 +13,7 @@
 #include "common/distortion.hpp"
 #include "common/edge_detect.hpp"
 #include "common/gbuffer.hpp"
+#include "common/id_image.hpp"
 #include "common/interior_intensity.hpp"
 #include "common/multi_contour.hpp"
 #include "common/paper.hpp"
@@ -23,7 +24,9 @@
 #include "common/sketchy_gbuffer.hpp"
 #include "common/sketchy_maps.hpp"
 #include "common/sketchy_noise.hpp"
+#include "common/stroke.hpp"
 #include "common/stroke_paper.hpp"
+#include "common/visibility.hpp"
 
 namespace plumbago {
 
@@ -37,8 +40,6 @@ using AllStages = TypeList<
     CurvatureStage,
     // the pencil pipeline (SPEC 2)
     GBufferStage,
-    BaseCoatStage,
-    StrokePaperStage,
     EdgeDetectStage,
     ContourLightStage,
     InteriorIntensityStage,
@@ -49,6 +50,12 @@ using AllStages = TypeList<
     SketchyGBufferStage,
     SketchyEnlargedStage,
     SketchyMapsStage,
-    SketchyCompositeStage>;
+    SketchyCompositeStage,
+    // stroke-based rendering (SPEC 4), over what the others drew
+    BaseCoatStage,
+    StrokePaperStage,
+    IdImageStage,
+    VisibilityStage,
+    StrokeStage>;
 
 }  // namespace plumbago

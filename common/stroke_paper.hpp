@@ -6,11 +6,20 @@
 //   a' = h' sat(2 a) + (1 - h') sat(2 a - 1)          peaks catch pigment, valleys resist
 //   out = rgb a' + out (1 - a')                        premultiplied "over" (ONE, ONE_MINUS_SRC_ALPHA)
 // With b = c = 1/2, h' = h and a' is the paper's t(a). The page is white.
+//
+// The stage draws the page of the objects whose style is `strokes` (SPEC 4): at the
+// pixels where the G-buffer shows one, and no sketchy sprite lies in front of it, the
+// frame becomes the coat (with the base coat effect; else nothing) on the white page
+// through the paper; every other pixel keeps what the other pipelines drew (white when
+// none ran). Parity feeds no other pipeline's frame: there the others' pixels are white.
 #pragma once
 
 #include <algorithm>
+#include <vector>
 
 #include <glm/glm.hpp>
+
+#include "common/scene.hpp"
 
 #include "common/stage.hpp"
 
@@ -44,16 +53,30 @@ inline glm::vec3 over_paper(glm::vec4 layer, glm::vec3 under, float h, const Str
   return glm::vec3(layer) * a + under * (1.0f - a);
 }
 
+// Per object of `ordinary` (the G-buffer's objects): 1 when its style is strokes.
+inline std::vector<uint32_t> stroke_object_flags(const Scene& ordinary) {
+  std::vector<uint32_t> flags;
+  for (const SceneObject& o : ordinary.objects) flags.push_back(o.style == Style::Strokes);
+  return flags;
+}
+
 struct StrokePaperStage {
   using Params = TypeList<StrokePaperParams>;
   static StageDesc describe() {
-    StageDesc d{"stroke_paper", StageKind::Frame, "the base coat onto the page through the paper effect (SPEC 4.2)",
-                {"stroke_paper"}, {{"basecoat.coat"}, {"paper.height"}},
-                {{"color", 3, Texel::Unorm8, "the page with the coat", tolerance::kByte,
+    StageDesc d{"stroke_paper", StageKind::Frame,
+                "the stroke objects' page: the base coat through the paper effect (SPEC 4.2)", {"stroke_paper"},
+                {{"basecoat.coat", when::effect_basecoat}, {"paper.height"}, {"gbuffer.ids"},
+                 {"compose.color", when::pencil_effects, false},
+                 {"sketchy_composite.color", when::effect_sketchy, false},
+                 {"sketchy_composite.depth", when::effect_sketchy, false}},
+                {{"color", 3, Texel::Unorm8, "the page with the coat over the stroke objects", tolerance::kByte,
                   "fed the same coat and paper height; the GPU's coat is 8-bit: alpha off by half a step, doubled by the "
                   "transfer's slope, plus half an output step: 1.5/255 at most (measured 1.05/255)"}},
-                {"basecoat"}};
+                {"strokes"}};
     d.outputs[0].frame_color = true;
+    d.outputs[0].draws_over = {"sketchy_composite.color", "compose.color"};
+    d.declared_effects = {{"strokes", "stroke-based rendering of the objects whose style is strokes (Kalnins et al. 2002): "
+                                      "paper, feature-line strokes; on by itself when one is", true}};
     return d;
   }
 };

@@ -73,15 +73,29 @@ void write_texture(const Texture& tex, int channels, bool integer, const void* d
   glBindTexture(GL_TEXTURE_2D, 0);
 }
 
+bool integer_texture(GLenum internal_format) {
+  return internal_format == GL_R32UI || internal_format == GL_RG32UI || internal_format == GL_RGBA32UI;
+}
+
 Texture upload_texture(const Image& img, GLenum internal_format) {
   Texture t = make_texture(img.width, img.height, internal_format);
-  write_texture(t, img.channels, false, img.data.data());
+  if (!integer_texture(internal_format)) {
+    write_texture(t, img.channels, false, img.data.data());
+    return t;
+  }
+  std::vector<uint32_t> values(img.data.begin(), img.data.end());  // whole numbers held as floats
+  write_texture(t, img.channels, true, values.data());
   return t;
 }
 
 Image download_texture(const Texture& tex, int channels) {
   Image img(tex.width, tex.height, channels);
-  read_texture(tex, format_of(channels), GL_FLOAT, img.data);
+  if (!integer_texture(tex.internal_format)) {
+    read_texture(tex, format_of(channels), GL_FLOAT, img.data);
+    return img;
+  }
+  ImageU32 values = download_texture_u32(tex, channels);
+  img.data.assign(values.data.begin(), values.data.end());
   return img;
 }
 

@@ -67,14 +67,16 @@ Texture make_texture_array(int width, int height, int layers, GLenum internal_fo
 // GL_TEXTURE_2D_ARRAY (layers kept apart) made of `layers` (equal sizes); LINEAR,
 // REPEAT in s and t, CLAMP_TO_EDGE in r.
 Texture upload_texture_3d(const std::vector<Image>& layers, GLenum internal_format, GLenum target = GL_TEXTURE_3D);
-// Uploads a float image (1-4 channels) into a texture of `internal_format`.
+// Uploads a float image (1-4 channels) into a texture of `internal_format`; an unsigned
+// integer format gets the floats as whole numbers.
 Texture upload_texture(const Image& img, GLenum internal_format);
 // Replaces a texture's contents: `channels` floats (or uint32 when `integer`) per texel.
 void write_texture(const Texture& tex, int channels, bool integer, const void* data);
 // Filter (GL_NEAREST/GL_LINEAR) and wrap modes (GL_REPEAT/GL_CLAMP_TO_EDGE) of a texture
 // (wrap_r matters for 3D textures only).
 void set_sampling(const Texture& tex, GLenum filter, GLenum wrap_s, GLenum wrap_t, GLenum wrap_r = GL_CLAMP_TO_EDGE);
-// Reads back `channels` float channels (row 0 = bottom, as GL stores it).
+// Reads back `channels` float channels (row 0 = bottom, as GL stores it); an unsigned
+// integer texture's values as floats.
 Image download_texture(const Texture& tex, int channels);
 ImageU32 download_texture_u32(const Texture& tex, int channels);
 

@@ -37,7 +37,7 @@ bool GpuFrame::ran(const std::string& stage) const {
 
 Texture& GpuFrame::output(const std::string& name) {
   const Output& declared = find_output(name);
-  if (!declared.draws_over.empty() && ran(stage_of(declared.draws_over).name)) return output(declared.draws_over);
+  if (std::string under = drawn_over(declared, stages); !under.empty()) return output(under);
   auto it = textures_.find(name);
   if (it == textures_.end())
     it = textures_.emplace(name, make_texture(scene.width, scene.height, texture_format(declared))).first;

@@ -19,6 +19,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "common/host_data.hpp"
 #include "common/preprocess.hpp"
 #include "common/scene.hpp"
 #include "common/stage.hpp"
@@ -36,6 +37,7 @@ class GpuFrame {
   const Preprocessed& pre;
   const std::vector<std::string> stages;  // the frame stages that run
   bool dump = false;  // a dump writes every output, the skipped ones too, in the whole window
+  HostData host;     // CPU data the stages share (common/host_data.hpp)
 
   template <class P>
   P params() const {

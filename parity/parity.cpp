@@ -112,8 +112,8 @@ RasterMasks raster_masks(const GBuffer& ref, const GBuffer& ras) {
 }
 
 // The scene with the effect that makes `stage` run added (itself when it runs); false when
-// no effect runs it there. "sketchy" is never added: it draws the objects of that style,
-// and the scene has it exactly when it has some.
+// no effect runs it there. An effect that goes with a style (EffectDef::styled) is never
+// added: the scene has it exactly when it has objects of that style.
 bool scene_running(const Scene& scene, const std::string& stage, Scene& out) {
   auto runs = [&](const std::vector<std::string>& effects) { return contains(passes_for(effects, scene.params), stage); };
   out = scene;
@@ -121,7 +121,7 @@ bool scene_running(const Scene& scene, const std::string& stage, Scene& out) {
   for (const EffectDef& e : effect_table()) {
     out.effects = scene.effects;
     out.effects.push_back(e.name);
-    if (e.name != "sketchy" && !contains(scene.effects, e.name) && runs(out.effects)) return true;
+    if (!e.styled && !contains(scene.effects, e.name) && runs(out.effects)) return true;
   }
   return false;
 }
@@ -147,6 +147,7 @@ class PassParity {
   PassParity(const Scene& scene, const reference::ReferenceFrame& ref, const gpu::GpuPassDef& pass)
       : pass_(pass), rf_(scene, ref.pre, pass.stages), gf_(scene, rf_.pre, pass.stages) {
     gf_.dump = true;  // every output, the skipped ones too, in the whole window
+    rf_.host = gf_.host = ref.host;  // CPU data (the window lines, the visible runs) as it is
     for (const std::string& buffer : fed_inputs(pass, rf_.config())) feed(ref, buffer);
   }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "common/gbuffer.hpp"
+#include "common/host_data.hpp"
 #include "common/preprocess.hpp"
 #include "common/scene.hpp"
 #include "common/stage.hpp"
@@ -41,6 +42,7 @@ struct ReferenceFrame {
   // An optional input (an input whose condition may not hold): null when not made.
   const Image* find(const std::string& name) const;
   void put(const std::string& name, Image image) { images[name] = std::move(image); }
+  HostData host;  // CPU data the stages share (common/host_data.hpp)
 };
 
 using StageFn = void (*)(ReferenceFrame&);

@@ -1,6 +1,6 @@
 #version 450 core
 // Base coat (SPEC 4.1): s interpolated from the triangle's corners with the barycentrics
-// looks up the 1D texture: the coat, straight alpha, transparent on the background.
+// looks up the 1D texture: the coat, straight alpha, on the stroke objects only.
 // Formula in common/basecoat.hpp.
 
 uniform usampler2D ids;  // object id, triangle index
@@ -19,7 +19,7 @@ void main() {
     coat_out = vec4(0.0);
     return;
   }
-  vec3 s = corner_shades[first_triangle[id.x - 1u] + id.y].xyz;
+  vec4 s = corner_shades[first_triangle[id.x - 1u] + id.y];  // (s0, s1, s2, coated)
   vec3 w = texelFetch(bary, x, 0).xyz;
-  coat_out = texture(coat, vec2(w.x * s.x + w.y * s.y + w.z * s.z, 0.5));
+  coat_out = s.w * texture(coat, vec2(w.x * s.x + w.y * s.y + w.z * s.z, 0.5));
 }

@@ -16,7 +16,7 @@ namespace {
 
 Scene coat_scene(const std::string& name, const std::string& preset) {
   Scene scene = testing::builtin_at(name, 240, 180);
-  scene.effects = {"basecoat"};
+  scene = testing::drawn_with_strokes(scene);
   scene.params.set("basecoat.preset", preset);
   return scene;
 }

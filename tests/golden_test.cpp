@@ -74,7 +74,7 @@ std::vector<GoldenCase> golden_cases() {
   for (const auto& n : builtin_scene_names()) cases.push_back({n, "builtin:" + n, ""});
   cases.push_back({"fandisk_pencil", "scenes/fandisk_pencil.json", "fandisk.obj"});  // every pencil effect
   cases.push_back({"ogre_sketchy", "scenes/ogre_sketchy.json", "ogre.obj"});
-  cases.push_back({"torus_basecoat", "scenes/torus_basecoat.json", ""});  // stroke-based rendering's base coat
+  cases.push_back({"torus_strokes", "scenes/torus_strokes.json", ""});  // stroke-based rendering: base coat, paper, silhouette strokes
   return cases;
 }
 

@@ -41,7 +41,7 @@ TEST(StrokePaper, BrightnessAndContrastMoveTheHeight) {
 // A coat half transparent in the shadow: the paper decides how much of it each pixel keeps.
 Scene translucent_coat(const std::string& name) {
   Scene scene = testing::builtin_at(name, 240, 180);
-  scene.effects = {"basecoat"};
+  scene = testing::drawn_with_strokes(scene);
   scene.params.set("basecoat.dark_a", 0.5);
   return scene;
 }

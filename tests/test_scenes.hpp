@@ -30,6 +30,13 @@ inline Scene builtin_at(const std::string& name, int width, int height) {
   return s;
 }
 
+// `s` with every object drawn by stroke-based rendering (SPEC 4): base coat and strokes.
+inline Scene drawn_with_strokes(Scene s) {
+  for (SceneObject& o : s.objects) o.style = Style::Strokes;
+  s.effects = {"basecoat", "strokes"};
+  return s;
+}
+
 // A small square seen face-on and a torus, 240 x 180 (the blocks of 8 x 8 pixels do not fit
 // its height): the GPU's skipped-pixel rectangles are exact around the square.
 inline Scene square_and_torus(const std::string& background_pairs) {

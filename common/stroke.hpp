@@ -1,0 +1,56 @@
+// The stroke raster (SPEC 4.6-4.7; Kalnins et al. 2002 §4.1, §4.4): each visible run of a
+// stroke object's feature lines (common/visibility.hpp) becomes a base stroke in its line
+// kind's style (common/base_stroke.hpp, the scene's "strokes" styles), a ribbon of window
+// triangles. Per fragment, with the ribbon's interpolated alpha a_v and texture
+// coordinates (u along, v across; affine in window space), and T the style's stroke
+// texture (common/stroke_textures.hpp; u REPEAT, v CLAMP_TO_EDGE, LINEAR):
+//   a = a_v T(u, v)
+//   out = color a' + out (1 - a'),  a' = the paper's alpha transfer of a (SPEC 4.2)
+// premultiplied "over", ribbon after ribbon in path order (creases and borders, then
+// silhouettes), triangle after triangle. Both backends draw the same triangles: the GPU as
+// one draw call, the reference through its scalar rasterizer.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "common/base_stroke.hpp"
+#include "common/stage.hpp"
+#include "common/visibility.hpp"
+
+namespace plumbago {
+
+// One vertex as both backends read it: window position, (u, v), alpha, color, the stroke
+// texture's layer (StrokeTextureKind).
+struct StrokeVertex {
+  glm::vec2 position, uv;
+  float alpha;
+  glm::vec3 color;
+  float layer;
+};
+static_assert(sizeof(StrokeVertex) == 9 * sizeof(float), "shaders/stroke.vert reads 9 packed floats");
+
+// The ribbons of every visible run, three vertices a triangle, in drawing order.
+std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles);
+
+// The stroke textures, one per StrokeTextureKind, from the scene seed.
+std::vector<Image> stroke_texture_layers(uint32_t seed);
+
+struct StrokeStage {
+  using Params = TypeList<>;
+  static StageDesc describe() {
+    StageDesc d{"stroke", StageKind::Frame, "stylized strokes of the visible feature lines (SPEC 4.6-4.7)",
+                {"stroke_paper"},
+                {{"visibility.flags", nullptr, false}, {"stroke_paper.color"}, {"paper.height"}},
+                {{"color", 3, Texel::Unorm8, "the strokes over the page", tolerance::kByte,
+                  "fed the same page, visible runs and paper; the same triangles; the GPU blends each fragment into an "
+                  "8-bit target and filters the stroke texture with 8-bit weights"}},
+                {"strokes"}};
+    d.outputs[0].frame_color = true;
+    d.outputs[0].draws_over = {"stroke_paper.color"};
+    return d;
+  }
+};
+
+}  // namespace plumbago

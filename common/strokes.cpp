@@ -1,0 +1,183 @@
+// Feature lines in the window, keyed for the ID image: see common/strokes.hpp.
+#include "common/strokes.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "common/host_data.hpp"
+
+namespace plumbago {
+
+namespace {
+
+FeatureLineOptions line_options(const StrokesParams& p) {
+  return {double(p.crease_deg), p.keep_back_facing, p.silhouette_normalized};
+}
+
+bool drawn(const SceneObject& o, LineObjects which) {
+  return which == LineObjects::Strokes ? o.style == Style::Strokes : o.style != Style::Sketchy;
+}
+
+// The mesh vertex a path point sits on (crease and border points are vertices).
+uint32_t vertex_of(const Mesh& mesh, const SurfacePoint& p) {
+  int k = int(std::max_element(&p.bary[0], &p.bary[0] + 3) - &p.bary[0]);
+  return mesh.triangles[p.face][k];
+}
+
+uint64_t edge_key(uint32_t a, uint32_t b) { return uint64_t(std::min(a, b)) << 32 | std::max(a, b); }
+
+// The faces around each edge, for the crease and border segments.
+class EdgeFaces {
+ public:
+  explicit EdgeFaces(const Mesh& mesh) {
+    for (uint32_t f = 0; f < mesh.triangles.size(); ++f)
+      for (int k = 0; k < 3; ++k) faces_[edge_key(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3])].push_back(f);
+  }
+  const std::vector<uint32_t>& of(uint32_t a, uint32_t b) const {
+    static const std::vector<uint32_t> none;
+    auto it = faces_.find(edge_key(a, b));
+    return it == faces_.end() ? none : it->second;
+  }
+
+ private:
+  std::unordered_map<uint64_t, std::vector<uint32_t>> faces_;
+};
+
+// Whether face f of `mesh` (object to world `m`) faces the eye.
+bool faces_eye(const Mesh& mesh, const glm::dmat4& m, uint32_t f, glm::dvec3 eye) {
+  glm::dvec3 p[3];
+  for (int k = 0; k < 3; ++k) p[k] = glm::dvec3(m * glm::dvec4(glm::dvec3(mesh.positions[mesh.triangles[f][k]]), 1.0));
+  return glm::dot(glm::cross(p[1] - p[0], p[2] - p[0]), eye - p[0]) > 0;
+}
+
+class PathBuilder {
+ public:
+  PathBuilder(const Scene& scene, const WindowProjection& project, WindowLines& out)
+      : scene_(scene), project_(project), out_(out), eye_(scene.camera.eye) {}
+
+  // Adds the pieces of `path` in front of the near plane.
+  void add(const FeaturePath& path, LineKind kind, uint32_t object, const EdgeFaces* edges) {
+    const SceneObject& o = scene_.objects[object];
+    glm::dmat4 m(o.transform);
+    WindowPath piece = empty(path, kind, object);
+    size_t n = path.points.size();
+    bool whole = true;
+    for (size_t i = 0; i < n; ++i) {
+      glm::dvec3 w = glm::dvec3(m * glm::dvec4(path.points[i].position, 1.0));
+      glm::dvec3 win = project_(w);
+      if (win.z < double(scene_.camera.near)) {
+        whole = false;
+        flush(piece);
+        piece = empty(path, kind, object);
+        continue;
+      }
+      piece.surface.push_back(path.points[i]);
+      piece.world.push_back(w);
+      piece.window.push_back({win.x, win.y});
+      piece.depth.push_back(win.z);
+      if (edges && i + 1 < n) piece.front_faces.push_back(front_faces(*o.mesh, m, path.points[i], path.points[i + 1], object, *edges));
+    }
+    piece.closed = path.closed && whole;
+    if (edges && piece.closed) piece.front_faces.push_back(front_faces(*o.mesh, m, path.points[n - 1], path.points[0], object, *edges));
+    flush(piece);
+  }
+
+ private:
+  WindowPath empty(const FeaturePath& path, LineKind kind, uint32_t object) const {
+    return {kind, object, false, path.front_facing, 0, {}, {}, {}, {}, {}, {}, 0};
+  }
+
+  glm::uvec2 front_faces(const Mesh& mesh, const glm::dmat4& m, const SurfacePoint& a, const SurfacePoint& b, uint32_t object,
+                         const EdgeFaces& edges) const {
+    glm::uvec2 keys(0);
+    int k = 0;
+    for (uint32_t f : edges.of(vertex_of(mesh, a), vertex_of(mesh, b)))
+      if (k < 2 && faces_eye(mesh, m, f, glm::dvec3(eye_))) keys[k++] = out_.face_key(object, f);
+    return keys;
+  }
+
+  // Keeps a piece of two points or more, with its window arc lengths.
+  void flush(WindowPath& piece) {
+    if (piece.window.size() < 2) return;
+    piece.front_faces.resize(piece.closed ? piece.window.size() : piece.window.size() - 1);
+    piece.arc_px.push_back(0);
+    for (size_t i = 1; i < piece.window.size(); ++i)
+      piece.arc_px.push_back(piece.arc_px.back() + glm::distance(piece.window[i - 1], piece.window[i]));
+    piece.length_px = piece.arc_px.back();
+    if (piece.closed) piece.length_px += glm::distance(piece.window.back(), piece.window.front());
+    out_.paths.push_back(std::move(piece));
+  }
+
+  const Scene& scene_;
+  const WindowProjection& project_;
+  WindowLines& out_;
+  glm::vec3 eye_;
+};
+
+// Numbers the paths (creases and borders first) and checks that the keys fit 32 bits.
+void assign_keys(WindowLines& lines) {
+  std::stable_partition(lines.paths.begin(), lines.paths.end(), [](const WindowPath& p) { return p.kind != LineKind::Silhouette; });
+  uint64_t next = uint64_t(lines.face_count) + 1;
+  size_t silhouettes = 0;
+  for (WindowPath& p : lines.paths)
+    if (p.kind != LineKind::Silhouette) p.key = uint32_t(next++);
+    else ++silhouettes;
+  uint64_t base = ((next - 1) >> 8) + 1;
+  if (base + silhouettes >= (uint64_t(1) << 24))
+    throw std::length_error("the ID image's keys do not fit 32 bits: " + std::to_string(lines.face_count) + " faces, " +
+                            std::to_string(next - 1 - lines.face_count) + " crease and border paths, " +
+                            std::to_string(silhouettes) + " silhouette paths");
+  lines.silhouette_base = uint32_t(base);
+  for (WindowPath& p : lines.paths)
+    if (p.kind == LineKind::Silhouette) p.key = uint32_t(base++);
+}
+
+}  // namespace
+
+const char* line_kind_name(LineKind kind) {
+  switch (kind) {
+    case LineKind::Crease: return "crease";
+    case LineKind::Border: return "border";
+    case LineKind::Silhouette: break;
+  }
+  return "silhouette";
+}
+
+WindowProjection::WindowProjection(const Camera& camera, int width, int height)
+    : view(glm::dmat4(camera.view())), clip(glm::dmat4(camera.projection(float(width) / float(height))) * view),
+      width(width), height(height) {}
+
+glm::dvec3 WindowProjection::operator()(glm::dvec3 world) const {
+  glm::dvec4 c = clip * glm::dvec4(world, 1.0);
+  double d = -(view * glm::dvec4(world, 1.0)).z;
+  return {(c.x / c.w * 0.5 + 0.5) * width, (c.y / c.w * 0.5 + 0.5) * height, d};
+}
+
+WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which) {
+  WindowLines out;
+  out.width = scene.width, out.height = scene.height;
+  for (const SceneObject& o : scene.objects) {
+    out.first_face.push_back(out.face_count);
+    out.face_count += uint32_t(o.mesh->triangles.size());
+  }
+  WindowProjection project(scene.camera, scene.width, scene.height);
+  PathBuilder builder(scene, project, out);
+  for (uint32_t i = 0; i < scene.objects.size(); ++i) {
+    const SceneObject& o = scene.objects[i];
+    if (!drawn(o, which)) continue;
+    FeatureLines lines = feature_lines(*o.mesh, glm::dmat4(o.transform), glm::dvec3(scene.camera.eye), line_options(p));
+    EdgeFaces edges(*o.mesh);
+    for (const FeaturePath& path : lines.creases) builder.add(path, LineKind::Crease, i, &edges);
+    for (const FeaturePath& path : lines.borders) builder.add(path, LineKind::Border, i, &edges);
+    for (const FeaturePath& path : lines.silhouettes) builder.add(path, LineKind::Silhouette, i, nullptr);
+  }
+  assign_keys(out);
+  return out;
+}
+
+const WindowLines& frame_lines(HostData& host, const Scene& scene) {
+  return host.get<WindowLines>("strokes.lines", [&] { return window_lines(scene, scene.params.get<StrokesParams>()); });
+}
+
+}  // namespace plumbago

@@ -1,0 +1,93 @@
+// The lines of stroke-based rendering in the window (SPEC 4.3-4.5; Kalnins et al. 2002
+// §4.5-4.6): the feature lines of common/feature_lines.hpp, for one camera, projected to
+// window pixels and keyed for the ID reference image. Both backends draw and test exactly
+// these paths; the `lines` command writes them.
+//
+// Keys (SPEC 4.4; one 32-bit space, 0 = nothing):
+//   - face f of object o (every object of the scene, in order): first_face[o] + f + 1;
+//   - crease and border path i: face_count + 1 + i;
+//   - silhouette path j: silhouette_base + j, drawn as key << 8 | floor(255 s / L), with
+//     silhouette_base the smallest key whose shifted values lie above every other key.
+// A scene whose keys do not fit 32 bits is refused (std::length_error, with the counts).
+//
+// Window coordinates are SPEC 0's (pixels, origin bottom-left); depth is linear view depth
+// d = -z_view. A path point nearer than the near plane is dropped and splits its path.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "common/feature_lines.hpp"
+#include "common/scene.hpp"
+
+namespace plumbago {
+
+struct StrokesParams {
+  static constexpr const char* stage = "strokes";
+  float crease_deg;
+  bool silhouette_normalized, keep_back_facing;
+  float id_crease_px, id_silhouette_px, id_depth_bias, vis_step_px;
+  template <class V>
+  void visit(V& v) {
+    v.real(crease_deg, "crease_deg", 60.0, 0.0, 180.0, "an edge is a crease when its face normals differ by more (SPEC 4.3)");
+    v.boolean(silhouette_normalized, "silhouette_normalized", true,
+              "g = n.normalize(eye - x); false: the paper's literal n.(eye - x) (SPEC 4.3)");
+    v.boolean(keep_back_facing, "keep_back_facing", false, "keep back-facing silhouettes (hidden-line mode, SPEC 4.3)");
+    v.real(id_crease_px, "id_crease_px", 2.0, 0.5, 16.0, "width of crease and border quads in the ID image (SPEC 4.4)");
+    v.real(id_silhouette_px, "id_silhouette_px", 3.0, 0.5, 16.0, "width of silhouette quads in the ID image (SPEC 4.4)");
+    v.real(id_depth_bias, "id_depth_bias", 0.005, 0.0, 0.5,
+           "lines are depth-tested at d (1 - bias) against the faces (SPEC 4.4; relative, linear view depth)");
+    v.real(vis_step_px, "vis_step_px", 2.0, 0.25, 64.0, "visibility samples along a path, pixels apart (SPEC 4.5)");
+  }
+};
+
+enum class LineKind : uint8_t { Crease, Border, Silhouette };
+const char* line_kind_name(LineKind kind);
+
+struct WindowPath {
+  LineKind kind;
+  uint32_t object;  // index in scene.objects
+  bool closed, front_facing;
+  uint32_t key;                       // its key (a silhouette's before the shift)
+  std::vector<SurfacePoint> surface;  // object space
+  std::vector<glm::dvec3> world;
+  std::vector<glm::dvec2> window;  // pixels, origin bottom-left
+  std::vector<double> depth;       // linear view depth
+  // Creases and borders: per segment (point k to k + 1, the closing one last), the keys
+  // of its adjacent faces that face the eye (0 where none).
+  std::vector<glm::uvec2> front_faces;
+  std::vector<double> arc_px;  // window arc length at each point (the closing point last)
+  double length_px = 0;        // the whole window length (closed: around the loop)
+};
+
+struct WindowLines {
+  std::vector<WindowPath> paths;  // creases and borders first, then silhouettes
+  std::vector<uint32_t> first_face;  // per scene object
+  uint32_t face_count = 0, silhouette_base = 0;
+  int width = 0, height = 0;
+
+  uint32_t face_key(uint32_t object, uint32_t face) const { return first_face[object] + face + 1; }
+};
+
+// Which objects' lines: those drawn with strokes, or every object but the sketchy ones
+// (the `lines` command: pencil objects too).
+enum class LineObjects { Strokes, AllButSketchy };
+
+WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which = LineObjects::Strokes);
+
+class HostData;
+// The frame's window lines of stroke objects, made once per frame into `host`.
+const WindowLines& frame_lines(HostData& host, const Scene& scene);
+
+// The window position and linear depth of a world point (SPEC 0), in double.
+struct WindowProjection {
+  WindowProjection(const Camera& camera, int width, int height);
+  glm::dvec3 operator()(glm::dvec3 world) const;  // (x, y, d)
+  glm::dmat4 view, clip;
+  int width, height;
+};
+
+}  // namespace plumbago
