@@ -125,6 +125,15 @@ Mesh cylinder(float res) {
   return m;
 }
 
+// The unit cube [-0.5, 0.5]^3 as a square wall with two capped fans: 12 crease edges (SPEC 4.3).
+Mesh cube(float) {
+  Mesh m;
+  auto rings = add_wall(m, {{-0.5f, -0.5f}, {0.5f, -0.5f}, {0.5f, 0.5f}, {-0.5f, 0.5f}}, -0.5f, 0.5f, 1);
+  add_fan(m, rings.front(), 4, {0, 0, -0.5f}, false);
+  add_fan(m, rings.back(), 4, {0, 0, 0.5f}, true);
+  return m;
+}
+
 // Where the ray from `from` at `angle` leaves the slab's outline: the rectangle
 // [-1.2, 0] x [-0.6, 0.6] joined to the disc of radius 0.6 around the origin. Both hold
 // `from`, so the ray leaves their union where it leaves the later of the two.
@@ -167,7 +176,7 @@ using Maker = Mesh (*)(float resolution);
 
 const std::vector<std::pair<std::string, Maker>>& makers() {
   static const std::vector<std::pair<std::string, Maker>> table = {
-      {"torus", torus}, {"sphere", sphere}, {"cad", cad_part}, {"plane", plane}, {"cylinder", cylinder}};
+      {"torus", torus}, {"sphere", sphere}, {"cad", cad_part}, {"plane", plane}, {"cylinder", cylinder}, {"cube", cube}};
   return table;
 }
 

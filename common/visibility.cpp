@@ -29,7 +29,9 @@ PathPoint point_at(const WindowPath& p, double s) {
   return {p.window[k] + t * (p.window[next] - p.window[k]), k};
 }
 
-VisibilitySample make_sample(const WindowPath& p, double s) {
+}  // namespace
+
+VisibilitySample sample_at(const WindowPath& p, double s) {
   PathPoint at = point_at(p, s);
   VisibilitySample v{glm::vec2(at.window), p.kind == LineKind::Silhouette, p.key, {0, 0}, 0, 0};
   if (v.silhouette) {
@@ -42,6 +44,8 @@ VisibilitySample make_sample(const WindowPath& p, double s) {
   }
   return v;
 }
+
+namespace {
 
 // Arc lengths of the first round of samples of a path.
 std::vector<double> sample_arcs(const WindowPath& p, double step) {
@@ -69,7 +73,7 @@ class RunBuilder {
     for (uint32_t i = 0; i < lines.paths.size(); ++i) {
       std::vector<double> s = sample_arcs(lines.paths[i], p.vis_step_px);
       first_.push_back(tested_.size());
-      for (double at : s) tested_.push_back({at, false}), batch_.push_back(make_sample(lines.paths[i], at));
+      for (double at : s) tested_.push_back({at, false}), batch_.push_back(sample_at(lines.paths[i], at));
     }
     first_.push_back(tested_.size());
     std::vector<uint8_t> f = run_batch();
@@ -109,7 +113,7 @@ class RunBuilder {
   bool bisect(std::vector<Change>& changes) {
     std::vector<Change*> open;
     for (Change& c : changes)
-      if (c.b.s - c.a.s > kLocatedPx) open.push_back(&c), batch_.push_back(make_sample(lines_.paths[c.path], (c.a.s + c.b.s) / 2));
+      if (c.b.s - c.a.s > kLocatedPx) open.push_back(&c), batch_.push_back(sample_at(lines_.paths[c.path], (c.a.s + c.b.s) / 2));
     if (open.empty()) return false;
     std::vector<uint8_t> f = run_batch();
     for (size_t k = 0; k < open.size(); ++k) {

@@ -40,6 +40,9 @@ struct VisibilitySample {
   uint32_t byte_window;  // silhouette: ceil(2 max(2, 256 / L_px)), at most 255; bit 8: a closed path
 };
 
+// The sample of `path` at window arc length s.
+VisibilitySample sample_at(const WindowPath& path, double s);
+
 // The SPEC 4.5 test of one sample against the ID image's keys.
 bool sample_visible(const ImageU32& keys, const VisibilitySample& s);
 

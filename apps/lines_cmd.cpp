@@ -1,0 +1,150 @@
+// plumbago lines SCENE -o lines.json|lines.svg [--backend gpu|reference]: the feature
+// lines of every object but the sketchy ones (SPEC 4.3), for the scene's camera, with
+// their visibility from the chosen backend's ID image (SPEC 4.4-4.5).
+//   .json: every path, {"paths": [{"kind", "object", "closed", "points" (world),
+//          "screen" (pixels, origin bottom-left), "visible" (per point)}]};
+//   .svg:  the visible runs as the strokes draw them: one <path> per run, the outline of
+//          its variable-width ribbon (SPEC 4.6), filled with its style's color and alpha.
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "apps/command.hpp"
+#include "apps/scene_options.hpp"
+#include "common/base_stroke.hpp"
+#include "common/id_image.hpp"
+#include "common/output_file.hpp"
+#include "common/visibility.hpp"
+#include "gpu/pipeline.hpp"
+#include "reference/pipeline.hpp"
+
+namespace plumbago {
+namespace {
+
+struct LinesOptions {
+  SceneOptions scene;
+  std::string output = "lines.json";
+  std::string backend = "gpu";
+};
+
+// The scene with every object but the sketchy ones drawn with strokes: its frame's ID image
+// holds all their lines.
+Scene lines_scene(const Scene& scene) {
+  Scene s = scene;
+  for (SceneObject& o : s.objects)
+    if (o.style != Style::Sketchy) o.style = Style::Strokes;
+  s.effects = {"strokes"};
+  if (!sketchy_objects(scene).objects.empty()) s.effects.push_back("sketchy");
+  return s;
+}
+
+ImageU32 id_image(const Scene& scene, const std::string& backend) {
+  FrameOptions keep{true};
+  Frame f = backend == "reference" ? reference::render(scene, keep) : gpu::Renderer(scene).render(keep);
+  return keys_from_channels(f.buffers.at("id_image.ids"));
+}
+
+nlohmann::json path_json(const WindowPath& p, const ImageU32& keys) {
+  nlohmann::json points = nlohmann::json::array(), screen = nlohmann::json::array(), visible = nlohmann::json::array();
+  for (size_t k = 0; k < p.window.size(); ++k) {
+    points.push_back({p.world[k].x, p.world[k].y, p.world[k].z});
+    screen.push_back({p.window[k].x, p.window[k].y});
+    visible.push_back(p.front_facing && sample_visible(keys, sample_at(p, p.arc_px[k])));
+  }
+  return {{"kind", line_kind_name(p.kind)}, {"object", p.object}, {"closed", p.closed}, {"front_facing", p.front_facing},
+          {"points", points}, {"screen", screen}, {"visible", visible}};
+}
+
+const StrokeStyle& style_for(LineKind kind, const StrokeStyles& styles) {
+  return kind == LineKind::Crease ? styles.crease : kind == LineKind::Border ? styles.border : styles.silhouette;
+}
+
+// The outline of each strip of a ribbon (its triangles in GL strip order, R0 L0 R1 L1 ...):
+// the left side forwards, the right side back; a strip starts where a triangle shares no
+// vertex with the one before.
+std::string outline(const Ribbon& r, int height) {
+  std::string d;
+  std::vector<glm::vec2> left, right;
+  auto flush = [&] {
+    char xy[64];
+    for (size_t k = 0; k < left.size() + right.size(); ++k) {
+      glm::vec2 p = k < left.size() ? left[k] : right[right.size() - 1 - (k - left.size())];
+      std::snprintf(xy, sizeof xy, "%c%.2f %.2f ", k == 0 ? 'M' : 'L', p.x, float(height) - p.y);
+      d += xy;
+    }
+    if (!left.empty()) d += "Z ";
+    left.clear(), right.clear();
+  };
+  auto add = [&](const RibbonVertex& v) {
+    std::vector<glm::vec2>& side = v.uv.y > 0.5f ? left : right;
+    if (side.empty() || side.back() != v.position) side.push_back(v.position);
+  };
+  for (size_t t = 0; t + 2 < r.triangles.size(); t += 3) {
+    const RibbonVertex* v = &r.triangles[t];
+    bool joined = t > 0 && (v[0].position == r.triangles[t - 1].position || v[1].position == r.triangles[t - 1].position);
+    if (t > 0 && !joined) flush();
+    for (int k = 0; k < 3; ++k) add(v[k]);
+  }
+  flush();
+  return d;
+}
+
+std::string svg(const Scene& scene, const WindowLines& lines, const Visibility& v) {
+  std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(scene.width) + "\" height=\"" +
+                    std::to_string(scene.height) + "\" viewBox=\"0 0 " + std::to_string(scene.width) + " " +
+                    std::to_string(scene.height) + "\">\n";
+  for (const VisibleRun& run : v.runs) {
+    const WindowPath& p = lines.paths[run.path];
+    const StrokeStyle& style = style_for(p.kind, scene.strokes);
+    std::string d = outline(base_stroke({run.window, run.closed, run.occluded_start, run.occluded_end}, style), scene.height);
+    if (d.empty()) continue;
+    char fill[160];
+    std::snprintf(fill, sizeof fill, "fill=\"rgb(%d,%d,%d)\" fill-opacity=\"%.3f\"", int(style.color_r * 255 + 0.5f),
+                  int(style.color_g * 255 + 0.5f), int(style.color_b * 255 + 0.5f), style.alpha);
+    out += "  <path class=\"" + std::string(line_kind_name(p.kind)) + "\" data-object=\"" + std::to_string(p.object) + "\" " +
+           fill + " d=\"" + d + "\"/>\n";
+  }
+  return out + "</svg>\n";
+}
+
+void run(const LinesOptions& o) {
+  bool as_svg = o.output.ends_with(".svg");
+  if (!as_svg && !o.output.ends_with(".json")) throw std::invalid_argument("lines: -o must end in .json or .svg, not '" + o.output + "'");
+  Scene scene = lines_scene(o.scene.load());
+  auto p = scene.params.get<StrokesParams>();
+  WindowLines lines = window_lines(scene, p);
+  ImageU32 keys = id_image(scene, o.backend);
+  std::string text;
+  if (as_svg) {
+    auto test = [&](const std::vector<VisibilitySample>& batch) {
+      std::vector<uint8_t> flags;
+      for (const VisibilitySample& s : batch) flags.push_back(sample_visible(keys, s));
+      return flags;
+    };
+    text = svg(scene, lines, visible_runs(lines, p, test));
+  } else {
+    nlohmann::json paths = nlohmann::json::array();
+    for (const WindowPath& path : lines.paths) paths.push_back(path_json(path, keys));
+    text = nlohmann::json{{"paths", paths}}.dump() + "\n";
+  }
+  OutputFile file(o.output);
+  std::ofstream(file.temporary_path()) << text;
+  file.commit();
+  std::printf("%zu paths -> %s\n", lines.paths.size(), o.output.c_str());
+}
+
+void setup(CLI::App& app) {
+  auto o = std::make_shared<LinesOptions>();
+  auto* cmd = app.add_subcommand("lines", "Write the scene's feature lines (JSON) or its visible strokes (SVG)");
+  o->scene.add_to(cmd, true);
+  cmd->add_option("-o,--output", o->output, "lines.json (every path) or lines.svg (the visible strokes)")->capture_default_str();
+  cmd->add_option("--backend", o->backend, "whose ID image decides visibility: gpu or reference")
+      ->check(CLI::IsMember({"gpu", "reference"}))
+      ->capture_default_str();
+  cmd->callback([o] { run(*o); });
+}
+
+PLUMBAGO_COMMAND(setup);
+
+}  // namespace
+}  // namespace plumbago
