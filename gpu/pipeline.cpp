@@ -28,6 +28,7 @@ struct Renderer::State {
   }
 
   void run_frame() {
+    frame.host = {};  // CPU data of the frame (the window lines ...) is made anew each frame
     for (size_t i = 0; i < plan.size(); ++i) {
       const std::string name = plan[i]->name();
       timer.begin(name);
