@@ -125,7 +125,8 @@ Mesh cylinder(float res) {
   return m;
 }
 
-// The unit cube [-0.5, 0.5]^3 as a square wall with two capped fans: 12 crease edges (SPEC 4.3).
+// The unit cube [-0.5, 0.5]^3 as a square wall with two capped fans: 12 crease edges (SPEC
+// 4.3); flat faces, so the resolution changes nothing.
 Mesh cube(float) {
   Mesh m;
   auto rings = add_wall(m, {{-0.5f, -0.5f}, {0.5f, -0.5f}, {0.5f, 0.5f}, {-0.5f, 0.5f}}, -0.5f, 0.5f, 1);
