@@ -137,7 +137,9 @@ TEST(Procedural, ACubeIsTwelveCreaseEdgesAroundAUnitCube) {
 
 TEST(Procedural, ResolutionScalesTheTessellation) {
   for (const auto& kind : procedural_kinds())
-    if (kind != "cube") EXPECT_GT(make_procedural(kind, 2).triangles.size(), 2 * make_procedural(kind, 1).triangles.size()) << kind;
+    if (kind != "cube") {
+      EXPECT_GT(make_procedural(kind, 2).triangles.size(), 2 * make_procedural(kind, 1).triangles.size()) << kind;
+    }
 }
 
 TEST(Procedural, UnknownKindAndBadResolutionAreRefused) {
