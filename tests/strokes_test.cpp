@@ -47,7 +47,7 @@ Scene cube_from_a_corner() {
       "camera": {"eye": [2.2, 1.7, 2.6], "target": [0, 0, 0], "up": [0, 1, 0]}})", "cube", "."));
 }
 
-std::vector<double> visible_share_per_path(const Scene& scene, const ImageU32& keys, const WindowLines& lines) {
+std::vector<double> visible_share_per_path(const ImageU32& keys, const WindowLines& lines) {
   std::vector<double> share;
   for (const WindowPath& p : lines.paths) {
     int seen = 0, n = 32;
@@ -65,7 +65,7 @@ TEST_F(StrokeVisibility, ACubeShowsNineOfItsTwelveEdges) {
   ASSERT_EQ(lines.paths.size(), 12u);  // no silhouette of its own: a cube's outline is crease edges
   FrameOptions keep{true};
   for (const Frame& f : {reference::render(scene, keep), gpu::Renderer(scene).render(keep)}) {
-    std::vector<double> share = visible_share_per_path(scene, keys_from_channels(f.buffers.at("id_image.ids")), lines);
+    std::vector<double> share = visible_share_per_path(keys_from_channels(f.buffers.at("id_image.ids")), lines);
     int visible = 0, hidden = 0;
     for (double s : share) visible += s == 1.0, hidden += s == 0.0;
     EXPECT_EQ(visible, 9);
