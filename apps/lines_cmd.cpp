@@ -3,6 +3,11 @@
 // their visibility from the chosen backend's ID image (SPEC 4.4-4.5).
 //   .json: every path, {"paths": [{"kind", "object", "closed", "points" (world),
 //          "screen" (pixels, origin bottom-left), "visible" (per point)}]};
+//          With --truth also, per path, its window arc length at each point ("arc_px"),
+//          the visible runs the strokes would draw ("runs": [[s0, s1], ...], arc px), and
+//          what rays say ("truth": an Embree occlusion ray to the path every 0.5 px of
+//          arc, reference/ray_visibility.hpp), and the frame's passes with their times
+//          ("ran"): the accuracy study of experiments/stroke_visibility compares them;
 //   .svg:  the visible runs as the strokes draw them: one <path> per run, the outline of
 //          its variable-width ribbon (SPEC 4.6), filled with its style's color and alpha.
 #include <cstdio>
@@ -17,6 +22,7 @@
 #include "common/visibility.hpp"
 #include "gpu/pipeline.hpp"
 #include "reference/pipeline.hpp"
+#include "reference/ray_visibility.hpp"
 
 namespace plumbago {
 namespace {
@@ -25,7 +31,10 @@ struct LinesOptions {
   SceneOptions scene;
   std::string output = "lines.json";
   std::string backend = "gpu";
+  bool truth = false;
 };
+
+constexpr double kTruthStepPx = 0.5;
 
 // The scene with every object but the sketchy ones drawn with strokes: its frame's ID image
 // holds all their lines.
@@ -38,10 +47,9 @@ Scene lines_scene(const Scene& scene) {
   return s;
 }
 
-ImageU32 id_image(const Scene& scene, const std::string& backend) {
+Frame strokes_frame(const Scene& scene, const std::string& backend) {
   FrameOptions keep{true};
-  Frame f = backend == "reference" ? reference::render(scene, keep) : gpu::Renderer(scene).render(keep);
-  return keys_from_channels(f.buffers.at("id_image.ids"));
+  return backend == "reference" ? reference::render(scene, keep) : gpu::Renderer(scene).render(keep);
 }
 
 nlohmann::json path_json(const WindowPath& p, const ImageU32& keys) {
@@ -107,25 +115,49 @@ std::string svg(const Scene& scene, const WindowLines& lines, const Visibility& 
   return out + "</svg>\n";
 }
 
+// Adds "arc_px", "runs" and "truth" to each path's JSON.
+void add_truth(const Scene& scene, const WindowLines& lines, const Visibility& v, nlohmann::json& paths) {
+  std::vector<glm::dvec3> points;
+  std::vector<size_t> first;
+  for (const WindowPath& p : lines.paths) {
+    first.push_back(points.size());
+    for (double s = 0; s <= p.length_px; s += kTruthStepPx) points.push_back(world_at(p, s));
+  }
+  first.push_back(points.size());
+  std::vector<uint8_t> seen = reference::visible_by_rays(scene, points);
+  for (size_t i = 0; i < lines.paths.size(); ++i) {
+    paths[i]["arc_px"] = lines.paths[i].arc_px;
+    paths[i]["runs"] = nlohmann::json::array();
+    paths[i]["truth"] = {{"step_px", kTruthStepPx}, {"visible", std::vector<bool>(seen.begin() + long(first[i]), seen.begin() + long(first[i + 1]))}};
+  }
+  for (const VisibleRun& run : v.runs) paths[run.path]["runs"].push_back({run.s0, run.s1});
+}
+
 void run(const LinesOptions& o) {
   bool as_svg = o.output.ends_with(".svg");
   if (!as_svg && !o.output.ends_with(".json")) throw std::invalid_argument("lines: -o must end in .json or .svg, not '" + o.output + "'");
   Scene scene = lines_scene(o.scene.load());
   auto p = scene.params.get<StrokesParams>();
   WindowLines lines = window_lines(scene, p);
-  ImageU32 keys = id_image(scene, o.backend);
+  Frame frame = strokes_frame(scene, o.backend);
+  ImageU32 keys = keys_from_channels(frame.buffers.at("id_image.ids"));
+  auto test = [&](const std::vector<VisibilitySample>& batch) {
+    std::vector<uint8_t> flags;
+    for (const VisibilitySample& s : batch) flags.push_back(sample_visible(keys, s));
+    return flags;
+  };
   std::string text;
   if (as_svg) {
-    auto test = [&](const std::vector<VisibilitySample>& batch) {
-      std::vector<uint8_t> flags;
-      for (const VisibilitySample& s : batch) flags.push_back(sample_visible(keys, s));
-      return flags;
-    };
     text = svg(scene, lines, visible_runs(lines, p, test));
   } else {
     nlohmann::json paths = nlohmann::json::array();
     for (const WindowPath& path : lines.paths) paths.push_back(path_json(path, keys));
-    text = nlohmann::json{{"paths", paths}}.dump() + "\n";
+    nlohmann::json j{{"paths", paths}};
+    if (o.truth) {
+      add_truth(scene, lines, visible_runs(lines, p, test), j["paths"]);
+      for (const PassTime& t : frame.ran) j["ran"].push_back({{"name", t.name}, {"ms", t.ms}});
+    }
+    text = j.dump() + "\n";
   }
   OutputFile file(o.output);
   std::ofstream(file.temporary_path()) << text;
@@ -141,6 +173,7 @@ void setup(CLI::App& app) {
   cmd->add_option("--backend", o->backend, "whose ID image decides visibility: gpu or reference")
       ->check(CLI::IsMember({"gpu", "reference"}))
       ->capture_default_str();
+  cmd->add_flag("--truth", o->truth, "JSON: add the visible runs and what Embree rays say every 0.5 px (accuracy studies)");
   cmd->callback([o] { run(*o); });
 }
 

@@ -1,12 +1,17 @@
 // Stroke-based rendering at 800x800 (Kalnins et al. 2002, SPEC 4; the paper: 20 fps for a
 // 5K-face cup on a GeForce3): the feature lines alone (CPU, shared by both backends), and
 // whole frames of every object drawn with strokes (base coat, paper, ID image,
-// visibility, strokes) on each backend. `plumbago render --stats` splits a frame by pass.
+// visibility, strokes) on each backend; the GPU frame also reports each pass's GL timer
+// (counters <pass>_gl_ms, the GPU side only). And the readback A/B: Kalnins et al. read
+// the whole ID image back every frame; Plumbago reads back only the sample flags.
 #include <benchmark/benchmark.h>
 
 #include "bench/bench_scenes.hpp"
 #include "bench/frame_timing.hpp"
+#include <map>
+
 #include "common/strokes.hpp"
+#include "gpu/gl_objects.hpp"
 
 namespace plumbago::bench {
 namespace {
@@ -42,8 +47,39 @@ void feature_lines_cpu(benchmark::State& state, const std::string& model) {
 void strokes_frame_gpu(benchmark::State& state, const std::string& model) {
   Scene scene;
   if (!load_strokes_scene(state, model, scene)) return;
-  time_gpu_frames(state, scene);
+  gpu::Renderer renderer(scene);
+  renderer.render();  // warm-up
+  std::map<std::string, double> pass_ms;
+  for (auto _ : state) {
+    Frame timing;
+    state.SetIterationTime(renderer.render_frame(timing) * 1e-3);
+    for (const PassTime& t : timing.ran) pass_ms[t.name] += t.ms;
+  }
+  for (const auto& [pass, ms] : pass_ms)
+    state.counters[pass + "_gl_ms"] = benchmark::Counter(ms, benchmark::Counter::kAvgIterations);
+  state.SetLabel(gpu::Context::get().renderer());
   count_lines(state, scene);
+}
+
+// What a frame reads back to decide visibility: the whole ID image (RG32UI at 800x800, as
+// Kalnins et al.) against the flags of `samples` samples (one uint each, as Plumbago).
+void readback(benchmark::State& state, bool whole_image) {
+  gpu::Context& ctx = gpu::Context::get();
+  const int side = 800, samples = int(state.range(0));
+  gpu::Texture ids = gpu::make_texture(side, side, GL_RG32UI);
+  gpu::Buffer flags = gpu::make_buffer(nullptr, size_t(samples) * sizeof(uint32_t));
+  std::vector<uint32_t> read(static_cast<size_t>(samples));
+  for (auto _ : state) {
+    Stopwatch w;
+    if (whole_image) benchmark::DoNotOptimize(gpu::download_texture_u32(ids, 2));
+    else {
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, flags.id());  // as gpu/visibility.cpp reads the flags
+      glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(read.size() * sizeof(uint32_t)), read.data());
+    }
+    state.SetIterationTime(w.ms() * 1e-3);
+  }
+  ctx.check_errors("readback benchmark");
+  state.SetLabel(ctx.renderer());
 }
 
 void strokes_frame_reference(benchmark::State& state, const std::string& model) {
@@ -57,6 +93,12 @@ const bool registered = [] {
   register_per_model("BM_StrokeFeatureLines", feature_lines_cpu);
   register_per_model("BM_StrokeFrameGpu", strokes_frame_gpu);
   register_per_model("BM_StrokeFrameReference", strokes_frame_reference);
+  for (bool whole : {true, false})
+    benchmark::RegisterBenchmark(whole ? "BM_StrokeReadbackIdImage800" : "BM_StrokeReadbackFlags",
+                                 [whole](benchmark::State& s) { readback(s, whole); })
+        ->Arg(4096)
+        ->Unit(benchmark::kMillisecond)
+        ->UseManualTime();
   return true;
 }();
 

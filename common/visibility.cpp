@@ -15,6 +15,7 @@ constexpr int kFlagRow = 1024;
 struct PathPoint {
   glm::dvec2 window;
   size_t segment;  // from point `segment` to the next
+  double t;        // where along it, in the window
 };
 
 PathPoint point_at(const WindowPath& p, double s) {
@@ -26,10 +27,18 @@ PathPoint point_at(const WindowPath& p, double s) {
   size_t next = (k + 1) % n;
   double length = (k + 1 < n ? p.arc_px[k + 1] : p.length_px) - p.arc_px[k];
   double t = length > 0 ? std::clamp((s - p.arc_px[k]) / length, 0.0, 1.0) : 0.0;
-  return {p.window[k] + t * (p.window[next] - p.window[k]), k};
+  return {p.window[k] + t * (p.window[next] - p.window[k]), k, t};
 }
 
 }  // namespace
+
+glm::dvec3 world_at(const WindowPath& p, double s) {
+  PathPoint at = point_at(p, s);
+  size_t next = (at.segment + 1) % p.window.size();
+  // 1/d is affine in the window: weigh the ends perspective-correctly.
+  double wa = (1 - at.t) / p.depth[at.segment], wb = at.t / p.depth[next];
+  return (wa * p.world[at.segment] + wb * p.world[next]) / (wa + wb);
+}
 
 VisibilitySample sample_at(const WindowPath& p, double s) {
   PathPoint at = point_at(p, s);

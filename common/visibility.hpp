@@ -40,6 +40,9 @@ struct VisibilitySample {
   uint32_t byte_window;  // silhouette: ceil(2 max(2, 256 / L_px)), at most 255; bit 8: a closed path
 };
 
+// The world point of `path` at window arc length s (perspective-correct along its segment).
+glm::dvec3 world_at(const WindowPath& path, double s);
+
 // The sample of `path` at window arc length s.
 VisibilitySample sample_at(const WindowPath& path, double s);
 

@@ -1,6 +1,6 @@
 // The ID reference image on the GPU (SPEC 4.4), the twin of reference/id_image.cpp: the
 // triangles of common/id_image.hpp, pulled from a buffer, depth-tested GL_GREATER on
-// z = near / d.
+// z = near / d, written as the fragment's depth.
 #include "common/id_image.hpp"
 
 #include "gpu/stage.hpp"
@@ -35,7 +35,6 @@ class IdImagePass : public GpuPass {
   void draw(const std::vector<IdVertex>& triangles, const Texture& target) {
     Buffer vertices = make_buffer(triangles.data(), triangles.size() * sizeof(IdVertex));
     glViewport(0, 0, target.width, target.height);
-    glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);
     glUseProgram(program_.id());
@@ -45,7 +44,6 @@ class IdImagePass : public GpuPass {
     glDrawArrays(GL_TRIANGLES, 0, GLsizei(triangles.size()));
     glDepthFunc(GL_LESS);
     glDisable(GL_DEPTH_TEST);
-    glClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
   }
 
   Program program_;

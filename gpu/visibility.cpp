@@ -37,7 +37,9 @@ class VisibilityPass : public GpuPass {
     glDispatchCompute(GLuint((batch.size() + 63) / 64), 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     std::vector<uint32_t> read(batch.size());
-    glGetNamedBufferSubData(flags.id(), 0, GLsizeiptr(read.size() * sizeof(uint32_t)), read.data());
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, flags.id());  // not glGetNamedBufferSubData: OSMesa has no such entry
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(read.size() * sizeof(uint32_t)), read.data());
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     return std::vector<uint8_t>(read.begin(), read.end());
   }
 

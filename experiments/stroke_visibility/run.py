@@ -1,0 +1,120 @@
+#!/usr/bin/python3
+"""Stroke visibility: how right is the ID-image test (SPEC 4.5), and what does it cost?
+
+Kalnins et al. 2002 decide which parts of a feature line are visible from an ID reference
+image (SPEC 4.4): a sample is visible when its own key is found within a pixel of it. That
+is an approximation. Here every path of every object is also tested by Embree occlusion
+rays from the eye every 0.5 px of window arc length (`plumbago lines --truth`), and the
+visible runs the strokes draw are compared with them:
+  - false visible: the share of ray-hidden arc that a run covers;
+  - false hidden: the share of ray-visible arc that no run covers;
+against the sampling step (strokes.vis_step_px), the width of the ID image's line quads
+(strokes.id_silhouette_px and id_crease_px together) and the depth bias
+(strokes.id_depth_bias), one at a time around the defaults, with the time of the ID
+image and visibility passes (CPU reference, wall time; the flags are the same on the GPU,
+whose parity is exact).
+
+  /usr/bin/python3 experiments/stroke_visibility/run.py [--quick] [--out DIR] [--replot]
+"""
+import json
+import pathlib
+import sys
+import tempfile
+
+HERE = pathlib.Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent / "lib"))
+import plumbago_cli as pc  # noqa: E402
+
+SWEEPS = {
+    "vis_step_px": [0.5, 1, 2, 4, 8],
+    "id_width_px": [1, 2, 3, 5],
+    "id_depth_bias": [0.0, 0.001, 0.005, 0.02, 0.05],
+}
+DEFAULTS = {"vis_step_px": 2, "id_width_px": 3, "id_depth_bias": 0.005}
+
+
+def settings(name, value):
+    if name == "id_width_px":
+        return ["strokes.id_silhouette_px=%g" % value, "strokes.id_crease_px=%g" % max(value - 1, 1)]
+    return ["strokes.%s=%g" % (name, value)]
+
+
+def covered(runs, s, length, closed):
+    for s0, s1 in runs:
+        if s0 <= s <= s1 or (closed and s0 <= s + length <= s1):
+            return True
+    return False
+
+
+def rates(lines):
+    """False-visible and false-hidden shares over every path's truth samples."""
+    fv = hidden = fh = visible = 0
+    for p in lines["paths"]:
+        length = p["arc_px"][-1] if p["arc_px"] else 0
+        if p["closed"] and len(p["screen"]) > 1:
+            a, b = p["screen"][-1], p["screen"][0]
+            length += ((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2) ** 0.5
+        step = p["truth"]["step_px"]
+        for k, seen in enumerate(p["truth"]["visible"]):
+            drawn = covered(p["runs"], k * step, length, p["closed"])
+            if seen:
+                visible += 1
+                fh += not drawn
+            else:
+                hidden += 1
+                fv += drawn
+    return fv / max(hidden, 1), fh / max(visible, 1), visible, hidden
+
+
+def sweep(a):
+    size = "320x240" if a.quick else "800x600"
+    scenes = ["builtin:cad", "scenes/two_objects.json"] + ([] if a.quick else ["builtin:torus", "scenes/fandisk_strokes.json"])
+    rows, info = [], None
+    with tempfile.TemporaryDirectory(prefix="plumbago-vis-") as work:
+        out = pathlib.Path(work) / "lines.json"
+        for scene in scenes:
+            if "fandisk" in scene and not (pc.ROOT.parent / "shared/models/fandisk.obj").exists():
+                continue
+            for name, values in SWEEPS.items():
+                for value in values:
+                    sets = sum((settings(n, value if n == name else DEFAULTS[n]) for n in SWEEPS), [])
+                    args = ["lines", scene, "--truth", "--backend", "reference", "--size", size, "-o", out]
+                    for s in sets:
+                        args += ["--set", s]
+                    pc.run(args)
+                    lines = json.loads(out.read_text())
+                    fv, fh, visible, hidden = rates(lines)
+                    ms = {t["name"]: t["ms"] for t in lines["ran"]}
+                    info = info or pc.machine("CPU reference (Embree)")
+                    row = dict(scene=pathlib.Path(scene).stem.replace("builtin:", ""), swept=name, value=value,
+                               size=size, paths=len(lines["paths"]), truth_visible=visible, truth_hidden=hidden,
+                               false_visible=fv, false_hidden=fh, id_image_ms=ms.get("id_image"),
+                               visibility_ms=ms.get("visibility"))
+                    rows.append(row)
+                    pc.log("%-14s %-13s %-6g false visible %6.2f%%  false hidden %6.2f%%  id %6.1f ms  vis %6.1f ms" %
+                           (row["scene"], name, value, 100 * fv, 100 * fh, row["id_image_ms"], row["visibility_ms"]))
+    return rows, info
+
+
+def plot(rows, out):
+    plt = pc.pyplot()
+    fig, axes = plt.subplots(1, len(SWEEPS), figsize=(5 * len(SWEEPS), 4.2))
+    for ax, name in zip(axes, SWEEPS):
+        for i, scene in enumerate(dict.fromkeys(r["scene"] for r in rows)):
+            pts = [r for r in rows if r["scene"] == scene and r["swept"] == name]
+            xs = [r["value"] for r in pts]
+            ax.plot(xs, [100 * r["false_visible"] for r in pts], "o-", color="C%d" % i, label=scene + " false visible")
+            ax.plot(xs, [100 * r["false_hidden"] for r in pts], "s--", color="C%d" % i, label=scene + " false hidden")
+            for r in pts:
+                ax.annotate("%.0f ms" % (r["id_image_ms"] + r["visibility_ms"]), (r["value"], 100 * r["false_hidden"]),
+                            fontsize=6, xytext=(3, 3), textcoords="offset points")
+        ax.set_xlabel("strokes." + name + " (default %g)" % DEFAULTS[name])
+        ax.set_ylabel("% of the arc (rays decide)")
+        ax.grid(alpha=0.3)
+    axes[0].legend(fontsize=6)
+    fig.suptitle("ID-image visibility against Embree rays (labels: ID image + visibility ms, CPU reference)", fontsize=10)
+    pc.save_figure(fig, out, "visibility_error.png")
+
+
+if __name__ == "__main__":
+    pc.study_main(__doc__, HERE, sweep, plot)
