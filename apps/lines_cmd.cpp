@@ -6,10 +6,12 @@
 //          With --truth also, per path, its window arc length at each point ("arc_px"),
 //          the visible runs the strokes would draw ("runs": [[s0, s1], ...], arc px), and
 //          what rays say ("truth": an Embree occlusion ray to the path every 0.5 px of
-//          arc, reference/ray_visibility.hpp), and the frame's passes with their times
+//          arc, reference/ray_visibility.hpp, passing over hits within two of the point's
+//          face's longest edges: its own facets), and the frame's passes with their times
 //          ("ran"): the accuracy study of experiments/stroke_visibility compares them;
 //   .svg:  the visible runs as the strokes draw them: one <path> per run, the outline of
 //          its variable-width ribbon (SPEC 4.6), filled with its style's color and alpha.
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -115,16 +117,27 @@ std::string svg(const Scene& scene, const WindowLines& lines, const Visibility& 
   return out + "</svg>\n";
 }
 
+// The longest edge of face f of an object, in world space.
+double longest_edge(const SceneObject& o, uint32_t f) {
+  glm::dvec3 p[3];
+  for (int k = 0; k < 3; ++k) p[k] = glm::dvec3(o.transform * glm::vec4(o.mesh->positions[o.mesh->triangles[f][k]], 1.0f));
+  return std::max({glm::distance(p[0], p[1]), glm::distance(p[1], p[2]), glm::distance(p[2], p[0])});
+}
+
 // Adds "arc_px", "runs" and "truth" to each path's JSON.
 void add_truth(const Scene& scene, const WindowLines& lines, const Visibility& v, nlohmann::json& paths) {
   std::vector<glm::dvec3> points;
+  std::vector<double> own;  // the surface a point lies on: two edges of its face
   std::vector<size_t> first;
   for (const WindowPath& p : lines.paths) {
     first.push_back(points.size());
-    for (double s = 0; s <= p.length_px; s += kTruthStepPx) points.push_back(world_at(p, s));
+    for (double s = 0; s <= p.length_px; s += kTruthStepPx) {
+      points.push_back(world_at(p, s));
+      own.push_back(2 * longest_edge(scene.objects[p.object], p.surface[segment_at(p, s)].face));
+    }
   }
   first.push_back(points.size());
-  std::vector<uint8_t> seen = reference::visible_by_rays(scene, points);
+  std::vector<uint8_t> seen = reference::visible_by_rays(scene, points, own);
   for (size_t i = 0; i < lines.paths.size(); ++i) {
     paths[i]["arc_px"] = lines.paths[i].arc_px;
     paths[i]["runs"] = nlohmann::json::array();

@@ -32,6 +32,8 @@ PathPoint point_at(const WindowPath& p, double s) {
 
 }  // namespace
 
+size_t segment_at(const WindowPath& p, double s) { return point_at(p, s).segment; }
+
 glm::dvec3 world_at(const WindowPath& p, double s) {
   PathPoint at = point_at(p, s);
   size_t next = (at.segment + 1) % p.window.size();

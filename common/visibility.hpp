@@ -40,6 +40,9 @@ struct VisibilitySample {
   uint32_t byte_window;  // silhouette: ceil(2 max(2, 256 / L_px)), at most 255; bit 8: a closed path
 };
 
+// The segment of `path` (from point k to k + 1) at window arc length s.
+size_t segment_at(const WindowPath& path, double s);
+
 // The world point of `path` at window arc length s (perspective-correct along its segment).
 glm::dvec3 world_at(const WindowPath& path, double s);
 
