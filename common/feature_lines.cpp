@@ -252,8 +252,8 @@ double silhouette_test(glm::dvec3 normal, glm::dvec3 x, glm::dvec3 eye, bool nor
   return value == 0 || !std::isfinite(value) ? kZeroG : value;
 }
 
-std::vector<double> corner_silhouette_values(const Geometry& g, glm::dvec3 eye, bool normalized) {
-  auto normals = crease_aware_corner_normals(g);
+std::vector<double> corner_silhouette_values(const Geometry& g, const std::vector<glm::dvec3>& normals, glm::dvec3 eye,
+                                            bool normalized) {
   std::vector<double> values(normals.size());
   for (uint32_t c = 0; c < normals.size(); ++c)
     values[c] = silhouette_test(normals[c], g.corner(c / 3, int(c % 3)), eye, normalized);
@@ -435,8 +435,9 @@ LabeledPath chain_points(const Geometry& g, const std::vector<double>& values,
   return path;
 }
 
-void add_silhouettes(const Geometry& g, glm::dvec3 eye, const FeatureLineOptions& options, FeatureLines& out) {
-  auto values = corner_silhouette_values(g, eye, options.silhouette_normalized);
+void add_silhouettes(const Geometry& g, const std::vector<glm::dvec3>& normals, glm::dvec3 eye,
+                     const FeatureLineOptions& options, FeatureLines& out) {
+  auto values = corner_silhouette_values(g, normals, eye, options.silhouette_normalized);
   std::vector<FaceSegment> segments(g.mesh.triangles.size());
   for (uint32_t f = 0; f < segments.size(); ++f) segments[f] = face_segment(g, values, eye, f);
   for (const auto& chain : trace_silhouettes(g, values, segments))
@@ -453,19 +454,35 @@ glm::dvec3 eye_in_object_space(const glm::dmat4& object_to_world, glm::dvec3 eye
 
 }  // namespace
 
+// The view-independent part: adjacency, crease-aware normals, creases and borders.
+struct FeatureLineMesh::Impl {
+  Impl(const Mesh& mesh, double crease_deg) : g(build_geometry(mesh, crease_deg)), normals(crease_aware_corner_normals(g)) {
+    add_creases_and_borders(g, fixed);
+  }
+  Geometry g;
+  std::vector<glm::dvec3> normals;
+  FeatureLines fixed;  // creases and borders
+};
+
+FeatureLineMesh::FeatureLineMesh(const Mesh& mesh, double crease_deg)
+    : impl_(mesh.triangles.empty() ? nullptr : std::make_shared<const Impl>(mesh, crease_deg)) {}
+
+FeatureLines FeatureLineMesh::lines(const glm::dmat4& object_to_world, glm::dvec3 eye_world,
+                                    const FeatureLineOptions& options) const {
+  if (!impl_) return {};
+  FeatureLines out = impl_->fixed;
+  add_silhouettes(impl_->g, impl_->normals, eye_in_object_space(object_to_world, eye_world), options, out);
+  return out;
+}
+
 std::vector<double> silhouette_function(const Mesh& mesh, glm::dvec3 eye_object, const FeatureLineOptions& options) {
   Geometry g = build_geometry(mesh, options.crease_deg);
-  return corner_silhouette_values(g, eye_object, options.silhouette_normalized);
+  return corner_silhouette_values(g, crease_aware_corner_normals(g), eye_object, options.silhouette_normalized);
 }
 
 FeatureLines feature_lines(const Mesh& mesh, const glm::dmat4& object_to_world, glm::dvec3 eye_world,
                            const FeatureLineOptions& options) {
-  FeatureLines out;
-  if (mesh.triangles.empty()) return out;
-  Geometry g = build_geometry(mesh, options.crease_deg);
-  add_creases_and_borders(g, out);
-  add_silhouettes(g, eye_in_object_space(object_to_world, eye_world), options, out);
-  return out;
+  return FeatureLineMesh(mesh, options.crease_deg).lines(object_to_world, eye_world, options);
 }
 
 }  // namespace plumbago

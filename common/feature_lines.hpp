@@ -54,6 +54,7 @@
 
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <memory>
 #include <vector>
 
 #include "common/mesh.hpp"
@@ -80,6 +81,20 @@ struct FeatureLineOptions {
   double crease_deg = 60.0;          // strokes.crease_deg
   bool keep_back_facing = false;     // hidden-line mode: keep back-facing silhouettes
   bool silhouette_normalized = true; // strokes.silhouette_normalized
+};
+
+// What does not depend on the eye, made once per mesh and crease angle (adjacency,
+// crease-aware normals, the creases and borders); `lines` adds the silhouettes for an eye.
+// The mesh must outlive it; copies share the data.
+class FeatureLineMesh {
+ public:
+  FeatureLineMesh(const Mesh& mesh, double crease_deg);
+  // feature_lines(mesh, ...) below; options.crease_deg is the constructor's.
+  FeatureLines lines(const glm::dmat4& object_to_world, glm::dvec3 eye_world, const FeatureLineOptions& options) const;
+
+ private:
+  struct Impl;
+  std::shared_ptr<const Impl> impl_;
 };
 
 // All three kinds of SPEC 4.3 for one mesh and one eye (see above for the frames).

@@ -2,6 +2,7 @@
 #include "common/strokes.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -50,6 +51,15 @@ bool faces_eye(const Mesh& mesh, const glm::dmat4& m, uint32_t f, glm::dvec3 eye
   for (int k = 0; k < 3; ++k) p[k] = glm::dvec3(m * glm::dvec4(glm::dvec3(mesh.positions[mesh.triangles[f][k]]), 1.0));
   return glm::dot(glm::cross(p[1] - p[0], p[2] - p[0]), eye - p[0]) > 0;
 }
+
+}  // namespace
+
+struct LineMeshes {
+  std::vector<std::optional<FeatureLineMesh>> lines;  // per scene object; none where not drawn
+  std::vector<std::shared_ptr<const EdgeFaces>> edges;
+};
+
+namespace {
 
 class PathBuilder {
  public:
@@ -154,7 +164,19 @@ glm::dvec3 WindowProjection::operator()(glm::dvec3 world) const {
   return {(c.x / c.w * 0.5 + 0.5) * width, (c.y / c.w * 0.5 + 0.5) * height, d};
 }
 
-WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which) {
+std::shared_ptr<const LineMeshes> line_meshes(const Scene& scene, const StrokesParams& p, LineObjects which) {
+  auto out = std::make_shared<LineMeshes>();
+  for (const SceneObject& o : scene.objects) {
+    bool drawn_here = drawn(o, which);
+    out->lines.push_back(drawn_here ? std::optional(FeatureLineMesh(*o.mesh, p.crease_deg)) : std::nullopt);
+    out->edges.push_back(drawn_here ? std::make_shared<const EdgeFaces>(*o.mesh) : nullptr);
+  }
+  return out;
+}
+
+WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which, const LineMeshes* prepared) {
+  std::shared_ptr<const LineMeshes> made;
+  if (!prepared) made = line_meshes(scene, p, which), prepared = made.get();
   WindowLines out;
   out.width = scene.width, out.height = scene.height;
   for (const SceneObject& o : scene.objects) {
@@ -165,19 +187,22 @@ WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects
   PathBuilder builder(scene, project, out);
   for (uint32_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
-    if (!drawn(o, which)) continue;
-    FeatureLines lines = feature_lines(*o.mesh, glm::dmat4(o.transform), glm::dvec3(scene.camera.eye), line_options(p));
-    EdgeFaces edges(*o.mesh);
-    for (const FeaturePath& path : lines.creases) builder.add(path, LineKind::Crease, i, &edges);
-    for (const FeaturePath& path : lines.borders) builder.add(path, LineKind::Border, i, &edges);
+    if (!prepared->lines[i]) continue;
+    FeatureLines lines = prepared->lines[i]->lines(glm::dmat4(o.transform), glm::dvec3(scene.camera.eye), line_options(p));
+    const EdgeFaces* edges = prepared->edges[i].get();
+    for (const FeaturePath& path : lines.creases) builder.add(path, LineKind::Crease, i, edges);
+    for (const FeaturePath& path : lines.borders) builder.add(path, LineKind::Border, i, edges);
     for (const FeaturePath& path : lines.silhouettes) builder.add(path, LineKind::Silhouette, i, nullptr);
   }
   assign_keys(out);
   return out;
 }
 
-const WindowLines& frame_lines(HostData& host, const Scene& scene) {
-  return host.get<WindowLines>("strokes.lines", [&] { return window_lines(scene, scene.params.get<StrokesParams>()); });
+const WindowLines& frame_lines(HostData& frame, HostData& kept, const Scene& scene) {
+  auto p = scene.params.get<StrokesParams>();
+  using Meshes = std::shared_ptr<const LineMeshes>;
+  const Meshes& meshes = kept.get<Meshes>("strokes.meshes", [&] { return line_meshes(scene, p, LineObjects::Strokes); });
+  return frame.get<WindowLines>("strokes.lines", [&] { return window_lines(scene, p, LineObjects::Strokes, meshes.get()); });
 }
 
 }  // namespace plumbago

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -76,11 +77,20 @@ struct WindowLines {
 // (the `lines` command: pencil objects too).
 enum class LineObjects { Strokes, AllButSketchy };
 
-WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which = LineObjects::Strokes);
+// What window_lines needs of each drawn object that does not depend on the view: the
+// feature lines' mesh data (common/feature_lines.hpp FeatureLineMesh) and the faces
+// around each edge. A renderer makes it once and keeps it across its frames.
+struct LineMeshes;
+std::shared_ptr<const LineMeshes> line_meshes(const Scene& scene, const StrokesParams& p, LineObjects which);
+
+// `prepared` (from line_meshes with the same scene, parameters and `which`) or none.
+WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which = LineObjects::Strokes,
+                         const LineMeshes* prepared = nullptr);
 
 class HostData;
-// The frame's window lines of stroke objects, made once per frame into `host`.
-const WindowLines& frame_lines(HostData& host, const Scene& scene);
+// The frame's window lines of stroke objects, made once per frame into `frame`, from the
+// mesh data made once into `kept` (a renderer's store across frames; may be `frame`).
+const WindowLines& frame_lines(HostData& frame, HostData& kept, const Scene& scene);
 
 // The window position and linear depth of a world point (SPEC 0), in double.
 struct WindowProjection {

@@ -37,7 +37,8 @@ class GpuFrame {
   const Preprocessed& pre;
   const std::vector<std::string> stages;  // the frame stages that run
   bool dump = false;  // a dump writes every output, the skipped ones too, in the whole window
-  HostData host;     // CPU data the stages share (common/host_data.hpp)
+  HostData host;     // CPU data the stages share this frame (common/host_data.hpp)
+  HostData kept;     // CPU data kept across the renderer's frames (what does not depend on the view)
 
   template <class P>
   P params() const {

@@ -16,7 +16,7 @@ class VisibilityPass : public GpuPass {
   void run(GpuFrame& f) override {
     const Texture& ids = f.input("id_image.ids");
     auto test = [&](const std::vector<VisibilitySample>& batch) { return flags(ids, batch); };
-    Visibility v = visible_runs(frame_lines(f.host, f.scene), f.params<StrokesParams>(), test);
+    Visibility v = visible_runs(frame_lines(f.host, f.kept, f.scene), f.params<StrokesParams>(), test);
     if (f.dump) f.set_output("visibility.flags", upload_texture(flags_image(v.flags), GL_RGBA8));
     f.host.put("visibility", std::move(v));
   }

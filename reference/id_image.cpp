@@ -70,7 +70,7 @@ IdRaster id_raster(const std::vector<IdVertex>& v, int width, int height) {
 
 PLUMBAGO_REFERENCE_STAGE(id_image, [](ReferenceFrame& f) {
   auto p = f.params<StrokesParams>();
-  IdRaster r = id_raster(id_triangles(f.scene, frame_lines(f.host, f.scene), p), f.scene.width, f.scene.height);
+  IdRaster r = id_raster(id_triangles(f.scene, frame_lines(f.host, f.host, f.scene), p), f.scene.width, f.scene.height);
   f.put("id_image.ids", key_channels(r.key));
   Image ties(r.key.width, r.key.height, 1);
   for (size_t i = 0; i < ties.data.size(); ++i)

@@ -16,7 +16,7 @@ PLUMBAGO_REFERENCE_STAGE(visibility, [](ReferenceFrame& f) {
     tbb::parallel_for(size_t(0), batch.size(), [&](size_t k) { flags[k] = sample_visible(keys, batch[k]); });
     return flags;
   };
-  Visibility v = visible_runs(frame_lines(f.host, f.scene), f.params<StrokesParams>(), test);
+  Visibility v = visible_runs(frame_lines(f.host, f.host, f.scene), f.params<StrokesParams>(), test);
   f.put("visibility.flags", flags_image(v.flags));
   f.host.put("visibility", std::move(v));
 });
