@@ -73,18 +73,26 @@ TEST_F(StrokeVisibility, ACubeShowsNineOfItsTwelveEdges) {
   }
 }
 
-// A sphere behind a plane that covers the lower half of the window: its silhouette's
-// samples are visible above the plane's top edge and hidden below it.
-TEST_F(StrokeVisibility, AHiddenHalfOfASilhouette) {
-  Scene scene = parse_scene(R"({"objects": [
+// A sphere behind a plane that covers the lower half of the window.
+Scene sphere_behind_a_plane() {
+  return parse_scene(R"({"objects": [
       {"mesh": {"procedural": "sphere"}, "style": "strokes"},
       {"mesh": {"procedural": "plane"}, "transform": [2, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 1.5, 1]}],
       "resolution": [320, 240], "effects": ["strokes"],
       "camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0], "fov_deg": 40}})", "sphere behind", ".");
+}
+
+// The plane's top edge in the window (y = 0 at z = 1.5).
+double plane_edge_y(const Scene& scene) {
+  return WindowProjection(scene.camera, scene.width, scene.height)(glm::dvec3(0, 0, 1.5)).y;
+}
+
+// The sphere's silhouette samples are visible above the plane's top edge and hidden below.
+TEST_F(StrokeVisibility, AHiddenHalfOfASilhouette) {
+  Scene scene = sphere_behind_a_plane();
   WindowLines lines = window_lines(scene, scene.params.get<StrokesParams>());
   ASSERT_EQ(lines.paths.size(), 1u);
-  WindowProjection project(scene.camera, scene.width, scene.height);
-  double edge_y = project(glm::dvec3(0, 0, 1.5)).y;  // the plane's top edge (y = 0 at z = 1.5)
+  double edge_y = plane_edge_y(scene);
   FrameOptions keep{true};
   for (const Frame& f : {reference::render(scene, keep), gpu::Renderer(scene).render(keep)}) {
     ImageU32 keys = keys_from_channels(f.buffers.at("id_image.ids"));
@@ -103,15 +111,10 @@ TEST_F(StrokeVisibility, AHiddenHalfOfASilhouette) {
 // The runs end where the silhouette goes behind the plane, within the 1 px of the bisection
 // (SPEC 4.6), and those ends are occlusion ends (they get the halo).
 TEST_F(StrokeVisibility, RunsEndAtTheOccluderWithinAPixel) {
-  Scene scene = parse_scene(R"({"objects": [
-      {"mesh": {"procedural": "sphere"}, "style": "strokes"},
-      {"mesh": {"procedural": "plane"}, "transform": [2, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 1.5, 1]}],
-      "resolution": [320, 240], "effects": ["strokes"],
-      "camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0], "fov_deg": 40}})", "sphere behind", ".");
+  Scene scene = sphere_behind_a_plane();
   auto p = scene.params.get<StrokesParams>();
   WindowLines lines = window_lines(scene, p);
-  WindowProjection project(scene.camera, scene.width, scene.height);
-  double edge_y = project(glm::dvec3(0, 0, 1.5)).y;
+  double edge_y = plane_edge_y(scene);
   FrameOptions keep{true};
   ImageU32 keys = keys_from_channels(reference::render(scene, keep).buffers.at("id_image.ids"));
   auto test = [&](const std::vector<VisibilitySample>& batch) {
