@@ -34,12 +34,13 @@ class StrokePaperPass : public GpuPass {
     glProgramUniform1i(program_.id(), program_.uniform("has_sprite"), sprite);
     program_.set_params(f.params<StrokePaperParams>());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, strokes_.id());
-    pass_.draw(program_,
-               {{"ids", &f.shared<GBufferTargets>("gbuffer").ids},
-                {"coat", coat ? &f.input("basecoat.coat") : &none_},
-                {"sprite_depth", sprite ? &f.input("sketchy_composite.depth") : &none_},
-                {"paper_height", &height_}},
-               target);
+    // Only where the G-buffer's objects can be: elsewhere every pixel keeps what is under.
+    pass_.draw_inside(program_,
+                      {{"ids", &f.shared<GBufferTargets>("gbuffer").ids},
+                       {"coat", coat ? &f.input("basecoat.coat") : &none_},
+                       {"sprite_depth", sprite ? &f.input("sketchy_composite.depth") : &none_},
+                       {"paper_height", &height_}},
+                      {&target}, filter_rect(f.ordinary, 0), {});
   }
 
  private:
