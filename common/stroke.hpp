@@ -45,8 +45,9 @@ struct StrokeStage {
                 {{"visibility.flags", nullptr, false}, {"stroke_paper.color"}, {"paper.height"}},
                 {{"color", 3, Texel::Unorm8, "the strokes over the page", tolerance::kByte,
                   "fed the same page, visible runs and paper; the same triangles; the GPU filters the stroke texture with "
-                  "8-bit weights and blends each fragment into an 8-bit target: a derived bound allows half a step per "
-                  "fragment after the first (measured max 0.0082 where ribbons overlap)"}},
+                  "8-bit weights and blends each fragment into an 8-bit target: a derived bound allows 4.5/255 per "
+                  "fragment less the tolerance, and anything in the 1-px band where a ribbon's edge passes within a "
+                  "subpixel of the pixel center (measured max 0.0128 on the teapot where ribbons overlap)"}},
                 {"strokes"}};
     d.outputs[0].frame_color = true;
     d.outputs[0].draws_over = {"stroke_paper.color"};

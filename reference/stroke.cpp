@@ -22,16 +22,25 @@ T interpolated(const StrokeVertex* t, glm::dvec3 w, T StrokeVertex::*field) {
   return T(float(w[0]) * t[0].*field + float(w[1]) * t[1].*field + float(w[2]) * t[2].*field);
 }
 
-// One triangle of a ribbon over `out`, rows [y0, y1); counts the fragments per pixel.
-void draw(const StrokeVertex* t, const StrokeInputs& in, Image& out, Image& fragments, int y0, int y1) {
+// Per pixel: the fragments blended there, and 1 where a triangle's edge passes within a
+// subpixel of its center (another rasterizer's rounding may decide its coverage).
+struct FragmentCounts {
+  Image fragments, edge;
+};
+
+// One triangle of a ribbon over `out`, rows [y0, y1).
+void draw(const StrokeVertex* t, const StrokeInputs& in, Image& out, FragmentCounts& counts, int y0, int y1) {
   const SamplerState along{Filter::Linear, Wrap::Repeat, Wrap::ClampToEdge};
   const Image& texture = in.textures[size_t(t[0].layer)];
-  rasterize_triangle(t[0].position, t[1].position, t[2].position, {0, y0, out.width, y1}, 0.0, [&](int x, int y, glm::dvec3 w, bool) {
+  const double subpixel = 1.0 / double(1 << kSubpixelBits);
+  rasterize_triangle(t[0].position, t[1].position, t[2].position, {0, y0, out.width, y1}, subpixel, [&](int x, int y, glm::dvec3 w, bool edge) {
+    if (edge) counts.edge.at(x, y) = 1;
+    if (!(w[0] >= 0 && w[1] >= 0 && w[2] >= 0)) return;  // just outside: only the edge's mark
     float a = interpolated(t, w, &StrokeVertex::alpha) * sample(texture, interpolated(t, w, &StrokeVertex::uv), along).x;
     glm::vec3 under(out.at(x, y, 0), out.at(x, y, 1), out.at(x, y, 2));
     glm::vec3 c = over_paper(glm::vec4(t[0].color, a), under, in.height.at(x % in.height.width, y % in.height.height), in.paper);
     for (int ch = 0; ch < 3; ++ch) out.at(x, y, ch) = c[ch];
-    fragments.at(x, y) += 1;
+    counts.fragments.at(x, y) += 1;
   });
 }
 
@@ -41,18 +50,28 @@ PLUMBAGO_REFERENCE_STAGE(stroke, [](ReferenceFrame& f) {
   std::vector<StrokeVertex> v = stroke_triangles(frame_lines(f.host, f.host, f.scene), *f.host.find<Visibility>("visibility"), f.scene.strokes);
   std::vector<Image> textures = stroke_texture_layers(f.scene.seed);
   StrokeInputs in{textures, f.pre.paper.height, f.params<StrokePaperParams>()};
-  Image out = f.image("stroke_paper.color"), fragments(out.width, out.height, 1);
+  Image out = f.image("stroke_paper.color");
+  FragmentCounts counts{Image(out.width, out.height, 1), Image(out.width, out.height, 1)};
   draw_in_bands(v, out.height, [](const StrokeVertex& x) { return x.position; },
-                [&](const StrokeVertex* t, int y0, int y1) { draw(t, in, out, fragments, y0, y1); });
+                [&](const StrokeVertex* t, int y0, int y1) { draw(t, in, out, counts, y0, y1); });
   f.put("stroke.color", std::move(out));
-  f.put("stroke.fragments", std::move(fragments));  // not an output: what the bound below reads
+  f.put("stroke.fragments", std::move(counts.fragments));  // not outputs: what the bound below reads
+  f.put("stroke.ribbon_edges", std::move(counts.edge));
 });
 
-// The GPU blends each fragment into its 8-bit target: every blend after the first may round
-// by half a step more than the one the declared tolerance covers.
+// What the GPU may add to each fragment (derived, not fitted): its alpha comes from a
+// bilinear lookup whose sample position llvmpipe quantizes to 1/256 of a texel (SPEC 5: 8-bit
+// weights), up to 1/256 of a [0, 1] texture's step in u and in v, doubled by the paper
+// transfer's slope: 4/256 of alpha, so of color; and its blend into the 8-bit target
+// rounds by up to half a step. 4.5/255 a fragment, less the declared tolerance. At the
+// pixels a ribbon's edge passes within a subpixel of (the 1-px band at ribbon edges),
+// rounding decides whether the fragment is drawn at all: anything goes there, and the note
+// counts them.
 PLUMBAGO_REFERENCE_BOUND(stroke_color, "stroke.color", [](const ReferenceFrame& f) {
   Image bound = f.image("stroke.fragments");
-  for (float& b : bound.data) b = std::max(0.0f, b - 1.0f) * 0.5f / 255.0f;
+  const Image& edges = f.image("stroke.ribbon_edges");
+  for (size_t i = 0; i < bound.data.size(); ++i)
+    bound.data[i] = edges.data[i] > 0 ? 1.0f : std::max(0.0f, bound.data[i] * 4.5f / 255.0f - float(tolerance::kByte));
   return bound;
 });
 

@@ -37,7 +37,9 @@ TEST_P(StrokeModelParity, SharedModels) {
   expect_stroke_parity(testing::model_scene(GetParam(), 400, 400), GetParam());
 }
 
-INSTANTIATE_TEST_SUITE_P(Models, StrokeModelParity, ::testing::Values("fandisk.obj", "ogre.obj"));
+INSTANTIATE_TEST_SUITE_P(Models, StrokeModelParity,
+                         ::testing::Values("fandisk.obj", "ogre.obj", "stanford-bunny.obj", "teapot.obj", "spot.obj",
+                                           "cow.obj", "rocker-arm.obj", "igea.ply"));
 
 // A unit cube seen from a generic direction near a corner: 12 crease paths (SPEC 5), of which
 // the 9 around the three faces that face the eye are visible and the 3 meeting at the far
