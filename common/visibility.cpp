@@ -44,8 +44,9 @@ glm::dvec3 world_at(const WindowPath& p, double s) {
 
 VisibilitySample sample_at(const WindowPath& p, double s) {
   PathPoint at = point_at(p, s);
-  VisibilitySample v{glm::vec2(at.window), p.kind == LineKind::Silhouette, p.key, {0, 0}, 0, 0};
-  if (v.silhouette) {
+  VisibilitySample v{glm::vec2(at.window), p.kind == LineKind::Silhouette ? kSilhouetteSample : kCreaseSample, p.key,
+                     {0, 0}, 0, 0};
+  if (v.kind == kSilhouetteSample) {
     double wrapped = p.closed && p.length_px > 0 ? std::fmod(s, p.length_px) : s;
     v.byte = p.length_px > 0 ? uint32_t(std::clamp(std::floor(255.0 * wrapped / p.length_px), 0.0, 255.0)) : 0;
     v.byte_window = uint32_t(std::min(255.0, std::ceil(2.0 * std::max(2.0, 256.0 / std::max(p.length_px, 1e-9)))));
@@ -185,7 +186,8 @@ class RunBuilder {
 
 bool holds(uint32_t value, const VisibilitySample& s) {
   if (value == 0) return false;
-  if (!s.silhouette) return value == s.key || value == s.faces[0] || value == s.faces[1];
+  if (s.kind == kDecalSample) return value == s.faces[0];
+  if (s.kind == kCreaseSample) return value == s.key || value == s.faces[0] || value == s.faces[1];
   if (value >> 8 != s.key) return false;
   int d = std::abs(int(value & 0xffu) - int(s.byte));
   if (s.byte_window & 0x100u) d = std::min(d, 256 - d);

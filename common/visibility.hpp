@@ -6,7 +6,10 @@
 //   - a silhouette: its path key, with an arc-length byte within
 //     ceil(2 max(2, 256 / L_px)) of its own floor(255 s / L) (around the seam of a
 //     closed path, the shorter way);
-//   - a crease or border: its path key, or the key of a front-facing face next to it.
+//   - a crease or border: its path key, or the key of a front-facing face next to it;
+//   - a decal (a stroke fixed on the surface, SPEC 4.9; its strokes come with the stroke
+//     files): its face's key. (Hatching samples, 2 px and a group of faces, come with
+//     the hatching groups of SPEC 4.10.)
 // Back-facing silhouettes are not in the ID image, so never visible.
 //
 // Where two neighbouring samples disagree, the change is bisected along the path (new
@@ -30,12 +33,14 @@
 
 namespace plumbago {
 
+enum SampleKind : uint32_t { kCreaseSample = 0, kSilhouetteSample = 1, kDecalSample = 2 };
+
 // One sample as both backends read it (std430 layout: 32 bytes).
 struct VisibilitySample {
   glm::vec2 window;
-  uint32_t silhouette;   // 1: a silhouette sample, 0: a crease or border
+  uint32_t kind;         // SampleKind
   uint32_t key;          // the path key
-  uint32_t faces[2];     // crease or border: front-facing adjacent faces (0: none)
+  uint32_t faces[2];     // crease or border: front-facing adjacent faces (0: none); decal: its face, 0
   uint32_t byte;         // silhouette: floor(255 s / L)
   uint32_t byte_window;  // silhouette: ceil(2 max(2, 256 / L_px)), at most 255; bit 8: a closed path
 };

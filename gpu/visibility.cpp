@@ -1,21 +1,40 @@
 // Visibility of stroke samples on the GPU (SPEC 4.5), the twin of reference/visibility.cpp:
 // a compute shader tests each batch of samples against the ID image where it lies, and
 // only the flags come back (Kalnins et al. read the whole ID image back every frame).
-#include "common/visibility.hpp"
+#include "gpu/visibility.hpp"
 
 #include "gpu/stage.hpp"
 
 namespace plumbago::gpu {
 
+SampleTest::SampleTest() : program_(Program::compute("visibility.comp")) {}
+
+std::vector<uint8_t> SampleTest::operator()(const Texture& ids, const std::vector<VisibilitySample>& batch) {
+  Buffer samples = make_buffer(batch.data(), batch.size() * sizeof(VisibilitySample));
+  Buffer flags = make_buffer(nullptr, batch.size() * sizeof(uint32_t));
+  glUseProgram(program_.id());
+  glProgramUniform1ui(program_.id(), program_.uniform("sample_count"), GLuint(batch.size()));
+  bind_textures(program_, {{"ids", &ids}});
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, samples.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, flags.id());
+  glDispatchCompute(GLuint((batch.size() + 63) / 64), 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<uint32_t> read(batch.size());
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, flags.id());  // not glGetNamedBufferSubData: OSMesa has no such entry
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(read.size() * sizeof(uint32_t)), read.data());
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  return std::vector<uint8_t>(read.begin(), read.end());
+}
+
 namespace {
 
 class VisibilityPass : public GpuPass {
  public:
-  explicit VisibilityPass(GpuFrame&) : program_(Program::compute("visibility.comp")) {}
+  explicit VisibilityPass(GpuFrame&) {}
 
   void run(GpuFrame& f) override {
     const Texture& ids = f.input("id_image.ids");
-    auto test = [&](const std::vector<VisibilitySample>& batch) { return flags(ids, batch); };
+    auto test = [&](const std::vector<VisibilitySample>& batch) { return test_(ids, batch); };
     Visibility v = visible_runs(frame_lines(f.host, f.kept, f.scene), f.params<StrokesParams>(), test);
     if (f.dump) f.set_output("visibility.flags", upload_texture(flags_image(v.flags), GL_RGBA8));
     f.host.put("visibility", std::move(v));
@@ -26,24 +45,7 @@ class VisibilityPass : public GpuPass {
   }
 
  private:
-  std::vector<uint8_t> flags(const Texture& ids, const std::vector<VisibilitySample>& batch) {
-    Buffer samples = make_buffer(batch.data(), batch.size() * sizeof(VisibilitySample));
-    Buffer flags = make_buffer(nullptr, batch.size() * sizeof(uint32_t));
-    glUseProgram(program_.id());
-    glProgramUniform1ui(program_.id(), program_.uniform("sample_count"), GLuint(batch.size()));
-    bind_textures(program_, {{"ids", &ids}});
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, samples.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, flags.id());
-    glDispatchCompute(GLuint((batch.size() + 63) / 64), 1, 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::vector<uint32_t> read(batch.size());
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, flags.id());  // not glGetNamedBufferSubData: OSMesa has no such entry
-    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(read.size() * sizeof(uint32_t)), read.data());
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-    return std::vector<uint8_t>(read.begin(), read.end());
-  }
-
-  Program program_;
+  SampleTest test_;
 };
 
 }  // namespace

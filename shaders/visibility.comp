@@ -5,7 +5,7 @@ layout(local_size_x = 64) in;
 
 struct Sample {
   vec2 window;
-  uint silhouette;
+  uint kind;  // 0 crease or border, 1 silhouette, 2 decal (common/visibility.hpp SampleKind)
   uint key;
   uint faces[2];
   uint byte_value;
@@ -18,7 +18,8 @@ uniform uint sample_count;
 
 bool holds(uint value, Sample s) {
   if (value == 0u) return false;
-  if (s.silhouette == 0u) return value == s.key || value == s.faces[0] || value == s.faces[1];
+  if (s.kind == 2u) return value == s.faces[0];
+  if (s.kind == 0u) return value == s.key || value == s.faces[0] || value == s.faces[1];
   if ((value >> 8) != s.key) return false;
   int d = abs(int(value & 0xffu) - int(s.byte_value));
   if ((s.byte_window & 0x100u) != 0u) d = min(d, 256 - d);
