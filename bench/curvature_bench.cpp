@@ -98,7 +98,8 @@ const bool registered = [] {
   const std::vector<std::pair<std::string, std::vector<std::string>>> variants = {
       {"tensor_1ring", {"curvature.radius=0"}},
       {"tensor_default", {}},
-      {"jet_default", {"curvature.method=jet"}}};
+      {"jet_default", {"curvature.method=jet"}},
+      {"jet_cgal", {"curvature.method=jet", "curvature.jet_solver=cgal"}}};
   for (const std::string model : {"fandisk.obj", "stanford-bunny.obj", "ogre.obj", "bunny-1M"})
     for (const auto& [name, assignments] : variants) {
       std::string stem = std::filesystem::path(model).stem().string();

@@ -29,9 +29,12 @@
 //    edges at v short of their far ends overestimates |k| by about (edge length / r).
 //    SPEC's literal ball is `false`.
 //
-// `jet`: CGAL's Monge_via_jet_fitting (Cazals & Pouget 2005) of degree `jet_degree` on
-// the `jet_rings`-ring of v (grown until it has twice as many points as the polynomial
-// has coefficients), with the Monge normal made to agree with the mesh's orientation.
+// `jet`: Monge jet fitting (Cazals & Pouget 2005) of degree `jet_degree` on the
+// `jet_rings`-ring of v (grown until it has twice as many points as the polynomial has
+// coefficients), with the Monge normal made to agree with the mesh's orientation.
+// `jet_solver = eigen` (default) fits it with Eigen (normal equations of the same
+// preconditioned least squares, common/curvature_jet_eigen.cpp); `cgal` runs CGAL's
+// Monge_via_jet_fitting (SVD), the checked reference (tests/curvature_jet_test.cpp).
 //
 // Umbilic and flat vertices (Lee §5.3): where |k_max - k_min| < umbilic_ratio
 // (|k_max| + |k_min|) + flat_curvature / bbox diagonal, d_min is propagated from the
@@ -49,6 +52,7 @@ namespace plumbago {
 
 enum class CurvatureMethod { Tensor, Jet };
 enum class CurvatureNormal { Ball, Tensor };
+enum class JetSolver { Eigen, Cgal };
 
 struct CurvatureParams {
   static constexpr const char* stage = "curvature";
@@ -57,6 +61,7 @@ struct CurvatureParams {
   CurvatureNormal normal;
   bool ring_fallback;
   int jet_degree, jet_rings;
+  JetSolver jet_solver;
   float umbilic_ratio, flat_curvature;
   template <class V>
   void visit(V& v) {
@@ -70,6 +75,8 @@ struct CurvatureParams {
               "tensor: the 1-ring where the ball misses some of v's neighbors (false: the literal ball)");
     v.integer(jet_degree, "jet_degree", 2, 2, 4, "jet: degree of the fitted polynomial");
     v.integer(jet_rings, "jet_rings", 2, 1, 8, "jet: rings of neighbors fitted (more if too few points)");
+    v.choice(jet_solver, "jet_solver", JetSolver::Eigen, {"eigen", "cgal"},
+             "jet: the least-squares fit by Eigen's normal equations, or CGAL's Monge_via_jet_fitting (the reference)");
     v.real(umbilic_ratio, "umbilic_ratio", 0.1, 0.0, 1.0,
            "directions propagated where |k_max - k_min| < this x (|k_max| + |k_min|) + flat");
     v.real(flat_curvature, "flat_curvature", 0.05, 0.0, 1.0,

@@ -61,6 +61,17 @@ void for_each_vertex_sums(const Mesh& mesh, const MeshTopology& topo, const Curv
 // Raw per-vertex estimates before propagation. A vertex a method cannot estimate (no
 // faces, too few neighbors for a jet) gets the mesh normal and k_min = k_max = 0.
 Curvature tensor_curvature(const Mesh& mesh, const MeshTopology& topo, const CurvatureParams& p, Progress& progress);
+// One vertex's jet fit: normal (agreeing with the mesh's), principal directions and
+// curvatures in our sign convention (a sphere with outward normals has k = +1/R).
+struct JetFit {
+  glm::dvec3 normal, d_min, d_max;
+  double k_min, k_max;
+};
+bool jet_fit_finite(const JetFit& f);
+// The fit of degree `degree` through `points` (the vertex first: the Monge form is at its
+// projection), oriented by `mesh_normal`; false where it is not finite.
+bool eigen_fit_vertex(const std::vector<glm::dvec3>& points, int degree, const glm::vec3& mesh_normal, JetFit& out);
+
 Curvature jet_curvature(const Mesh& mesh, const MeshTopology& topo, const CurvatureParams& p, Progress& progress);
 
 // SPEC §1.1's umbilic/flat test: the principal directions are undefined.

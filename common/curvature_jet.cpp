@@ -1,5 +1,6 @@
-// Jet fitting (Cazals & Pouget 2005) through CGAL 5.5's Monge_via_jet_fitting, SPEC §1.1:
-// the independent estimator the tensor is checked against.
+// Jet fitting (Cazals & Pouget 2005), SPEC §1.1: the independent estimator the tensor is
+// checked against. The neighborhoods are gathered here; the fit is Eigen's
+// (common/curvature_jet_eigen.cpp) or CGAL 5.5's Monge_via_jet_fitting, the reference.
 #ifndef CGAL_EIGEN3_ENABLED
 #define CGAL_EIGEN3_ENABLED 1  // CGAL's Eigen SVD; Eigen is a dependency of plumbago_common
 #endif
@@ -21,7 +22,7 @@ using JetFitting = CGAL::Monge_via_jet_fitting<Kernel>;
 // Rings of neighbors around v, first point v itself (the point the Monge form is at).
 struct RingGatherer {
   std::vector<uint32_t> mark, ring;
-  std::vector<Kernel::Point_3> points;
+  std::vector<glm::dvec3> points;
   uint32_t stamp = 0;
   explicit RingGatherer(size_t vertices) : mark(vertices, 0) {}
 
@@ -43,28 +44,24 @@ struct RingGatherer {
     }
   }
   void add_points(const Mesh& mesh) {
-    for (uint32_t u : ring) points.emplace_back(mesh.positions[u].x, mesh.positions[u].y, mesh.positions[u].z);
+    for (uint32_t u : ring) points.emplace_back(mesh.positions[u]);
   }
 };
 
 glm::dvec3 to_glm(const Kernel::Vector_3& v) { return {v.x(), v.y(), v.z()}; }
 
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 // CGAL's Monge form is z = 1/2 (k1 x^2 + k2 y^2) + ... along its normal, so a sphere
 // with outward normal has k = -1/R there: our k is -k_CGAL, and CGAL's maximal
 // direction d1 becomes our minimal one.
-bool fit_vertex(const RingGatherer& ring, int degree, const glm::vec3& mesh_normal, glm::dvec3& n, glm::dvec3& d_min,
-                glm::dvec3& d_max, double& k_min, double& k_max) {
+bool cgal_fit_vertex(const std::vector<glm::dvec3>& points, int degree, const glm::vec3& mesh_normal, JetFit& out) {
+  std::vector<Kernel::Point_3> cgal_points;
+  for (const glm::dvec3& p : points) cgal_points.emplace_back(p.x, p.y, p.z);
   JetFitting fitting;
-  JetFitting::Monge_form monge = fitting(ring.points.begin(), ring.points.end(), size_t(degree), 2);
+  JetFitting::Monge_form monge = fitting(cgal_points.begin(), cgal_points.end(), size_t(degree), 2);
   monge.comply_wrt_given_normal(Kernel::Vector_3(mesh_normal.x, mesh_normal.y, mesh_normal.z));
-  n = to_glm(monge.normal_direction());
-  d_min = to_glm(monge.maximal_principal_direction());
-  d_max = to_glm(monge.minimal_principal_direction());
-  k_min = -monge.principal_curvatures(0);
-  k_max = -monge.principal_curvatures(1);
-  return finite(n) && finite(d_min) && finite(d_max) && std::isfinite(k_min) && std::isfinite(k_max);
+  out = {to_glm(monge.normal_direction()), to_glm(monge.maximal_principal_direction()),
+         to_glm(monge.minimal_principal_direction()), -monge.principal_curvatures(0), -monge.principal_curvatures(1)};
+  return jet_fit_finite(out);
 }
 
 }  // namespace
@@ -82,12 +79,11 @@ Curvature jet_curvature(const Mesh& mesh, const MeshTopology& topo, const Curvat
     RingGatherer& ring = gatherers.local();
     for (uint32_t v = range.begin(); v != range.end(); ++v) {
       ring.gather(v, p.jet_rings, wanted, mesh, topo);
-      glm::dvec3 normal, d_min, d_max;
-      double k_min, k_max;
-      if (ring.points.size() < needed || !fit_vertex(ring, p.jet_degree, mesh.normals[v], normal, d_min, d_max, k_min, k_max))
-        continue;
-      c.normal[v] = normal, c.d_min[v] = d_min, c.d_max[v] = d_max;
-      c.k_min[v] = float(k_min), c.k_max[v] = float(k_max);
+      JetFit fit;
+      auto fit_vertex = p.jet_solver == JetSolver::Cgal ? cgal_fit_vertex : eigen_fit_vertex;
+      if (ring.points.size() < needed || !fit_vertex(ring.points, p.jet_degree, mesh.normals[v], fit)) continue;
+      c.normal[v] = fit.normal, c.d_min[v] = fit.d_min, c.d_max[v] = fit.d_max;
+      c.k_min[v] = float(fit.k_min), c.k_max[v] = float(fit.k_max);
     }
     progress.advance(range.size());
   });
