@@ -19,6 +19,7 @@
 #include "apps/command.hpp"
 #include "apps/scene_options.hpp"
 #include "common/base_stroke.hpp"
+#include "common/stroke.hpp"
 #include "common/id_image.hpp"
 #include "common/output_file.hpp"
 #include "common/visibility.hpp"
@@ -65,10 +66,6 @@ nlohmann::json path_json(const WindowPath& p, const ImageU32& keys) {
           {"points", points}, {"screen", screen}, {"visible", visible}};
 }
 
-const StrokeStyle& style_for(LineKind kind, const StrokeStyles& styles) {
-  return kind == LineKind::Crease ? styles.crease : kind == LineKind::Border ? styles.border : styles.silhouette;
-}
-
 // The outline of each strip of a ribbon (its triangles in GL strip order, R0 L0 R1 L1 ...):
 // the left side forwards, the right side back; a strip starts where a triangle shares no
 // vertex with the one before.
@@ -103,9 +100,11 @@ std::string svg(const Scene& scene, const WindowLines& lines, const Visibility& 
   std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(scene.width) + "\" height=\"" +
                     std::to_string(scene.height) + "\" viewBox=\"0 0 " + std::to_string(scene.width) + " " +
                     std::to_string(scene.height) + "\">\n";
-  for (const VisibleRun& run : v.runs) {
+  RunStyles run_styles(scene.strokes, scene.seed);
+  for (size_t i = 0; i < v.runs.size(); ++i) {
+    const VisibleRun& run = v.runs[i];
     const WindowPath& p = lines.paths[run.path];
-    const StrokeStyle& style = style_for(p.kind, scene.strokes);
+    StrokeStyle style = run_styles.of(p, run, i);
     std::string d = outline(base_stroke({run.window, run.closed, run.occluded_start, run.occluded_end}, style), scene.height);
     if (d.empty()) continue;
     char fill[160];

@@ -11,11 +11,13 @@
 // one draw call, the reference through its scalar rasterizer.
 #pragma once
 
+#include <map>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "common/base_stroke.hpp"
+#include "common/offset_synthesis.hpp"
 #include "common/stage.hpp"
 #include "common/visibility.hpp"
 
@@ -31,8 +33,24 @@ struct StrokeVertex {
 };
 static_assert(sizeof(StrokeVertex) == 9 * sizeof(float), "shaders/stroke.vert reads 9 packed floats");
 
-// The ribbons of every visible run, three vertices a triangle, in drawing order.
-std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles);
+// The style a run is drawn with: its line kind's, with the offsets example synthesized
+// over the run's length (SPEC 4.8) where the style asks for it, seeded by the scene seed
+// and the run's name (its path key and its index among the frame's runs).
+class RunStyles {
+ public:
+  RunStyles(const StrokeStyles& styles, uint32_t seed) : styles_(styles), seed_(seed) {}
+  StrokeStyle of(const WindowPath& path, const VisibleRun& run, size_t index);
+
+ private:
+  const StrokeStyles& styles_;
+  uint32_t seed_;
+  std::map<LineKind, OffsetSynthesizer> chains_;  // one chain per kind's example, made on first use
+};
+
+// The ribbons of every visible run, three vertices a triangle, in drawing order; `seed`
+// (the scene's) seeds the offsets a style synthesizes (SPEC 4.8).
+std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
+                                           uint32_t seed);
 
 // The stroke textures, one per StrokeTextureKind, from the scene seed.
 std::vector<Image> stroke_texture_layers(uint32_t seed);

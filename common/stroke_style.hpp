@@ -53,6 +53,8 @@ struct OffsetExample {
   std::vector<StrokeOffset> offsets;  // t not decreasing, at least one
 };
 
+enum class OffsetSynthesis { Stamp, Markov };
+
 struct StrokeStyle {
   std::string description;
   float width_px, taper_px, fade_px, halo_px, flare, alpha;
@@ -60,6 +62,7 @@ struct StrokeStyle {
   StrokeTextureKind texture;
   float texture_period_px, sample_px;
   bool pressure_width, pressure_alpha;
+  OffsetSynthesis synthesis;
   std::optional<OffsetExample> offsets;
 
   template <class V>
@@ -80,6 +83,9 @@ struct StrokeStyle {
     v.real(sample_px, "sample_px", 3.5, 0.25, 100.0, "resampling step along the spline, px (SPEC 4.6)");
     v.boolean(pressure_width, "pressure_width", true, "the offsets' pressure multiplies the width");
     v.boolean(pressure_alpha, "pressure_alpha", false, "the offsets' pressure multiplies alpha");
+    v.choice(synthesis, "synthesis", OffsetSynthesis::Stamp, {"stamp", "markov"},
+             "how the offsets example covers a run: repeated (rubber stamp, SPEC 4.11) or synthesized by the "
+             "Markov chain of SPEC 4.8");
   }
 };
 

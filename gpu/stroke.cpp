@@ -21,7 +21,7 @@ class StrokePass : public GpuPass {
   }
 
   void run(GpuFrame& f) override {
-    std::vector<StrokeVertex> v = stroke_triangles(frame_lines(f.host, f.kept, f.scene), *f.host.find<Visibility>("visibility"), f.scene.strokes);
+    std::vector<StrokeVertex> v = stroke_triangles(frame_lines(f.host, f.kept, f.scene), *f.host.find<Visibility>("visibility"), f.scene.strokes, f.scene.seed);
     Texture& target = f.output("stroke.color");
     if (drawn_over(find_output("stroke.color"), f.stages).empty()) copy_page(f.input("stroke_paper.color"), target);
     if (v.empty()) return;

@@ -47,7 +47,7 @@ void draw(const StrokeVertex* t, const StrokeInputs& in, Image& out, FragmentCou
 }  // namespace
 
 PLUMBAGO_REFERENCE_STAGE(stroke, [](ReferenceFrame& f) {
-  std::vector<StrokeVertex> v = stroke_triangles(frame_lines(f.host, f.host, f.scene), *f.host.find<Visibility>("visibility"), f.scene.strokes);
+  std::vector<StrokeVertex> v = stroke_triangles(frame_lines(f.host, f.host, f.scene), *f.host.find<Visibility>("visibility"), f.scene.strokes, f.scene.seed);
   std::vector<Image> textures = stroke_texture_layers(f.scene.seed);
   StrokeInputs in{textures, f.pre.paper.height, f.params<StrokePaperParams>()};
   Image out = f.image("stroke_paper.color");

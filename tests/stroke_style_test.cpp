@@ -56,6 +56,7 @@ TEST(StrokeStyle, DefaultsAreTheBriefs) {
   EXPECT_EQ(s.sample_px, 3.5f);
   EXPECT_TRUE(s.pressure_width);
   EXPECT_FALSE(s.pressure_alpha);
+  EXPECT_EQ(s.synthesis, OffsetSynthesis::Stamp);
   EXPECT_FALSE(s.offsets.has_value());
 }
 
@@ -63,7 +64,7 @@ TEST(StrokeStyle, DefaultsAreTheBriefs) {
 // an empty document gives exactly the defaults.
 TEST(StrokeStyle, SpecsAndEmptyDocumentAgreeWithTheDefaults) {
   auto specs = stroke_style_specs();
-  ASSERT_EQ(specs.size(), 14u);
+  ASSERT_EQ(specs.size(), 15u);
   EXPECT_EQ(specs[0].key, "width_px");
   EXPECT_EQ(specs[0].min, 0.1);
   EXPECT_EQ(specs[0].max, 200.0);
@@ -162,13 +163,17 @@ TEST(StrokeStyle, ValidationRefusesNaNAndOutOfRangeValuesFromCode) {
 }
 
 TEST(StrokeStyle, PresetsLoadByName) {
-  EXPECT_EQ(stroke_style_names(), (std::vector<std::string>{"charcoal", "ink", "pencil", "toon_silhouette"}));
+  EXPECT_EQ(stroke_style_names(),
+            (std::vector<std::string>{"charcoal", "ink", "pencil", "sketchy_pencil", "toon_silhouette"}));
   for (const std::string& name : stroke_style_names()) EXPECT_NO_THROW(load_stroke_style(name)) << name;
   EXPECT_EQ(load_stroke_style("charcoal").texture, StrokeTextureKind::Charcoal);
   EXPECT_EQ(load_stroke_style("ink").texture, StrokeTextureKind::Ink);
   StrokeStyle pencil = load_stroke_style("pencil");
   EXPECT_EQ(pencil.texture, StrokeTextureKind::Pencil);
   EXPECT_TRUE(pencil.offsets.has_value());
+  StrokeStyle sketchy = load_stroke_style("sketchy_pencil");  // offsets synthesized (SPEC 4.8)
+  EXPECT_EQ(sketchy.synthesis, OffsetSynthesis::Markov);
+  EXPECT_TRUE(sketchy.offsets.has_value());
   StrokeStyle toon = load_stroke_style("toon_silhouette");  // Kalnins Fig. 1/3: wide, dark, small halo
   EXPECT_GE(toon.width_px, 8.0f);
   EXPECT_LE(toon.halo_px, toon.width_px);
@@ -182,7 +187,7 @@ TEST(StrokeStyle, UnknownPresetListsTheKnownOnes) {
   } catch (const StrokeStyleError& e) {
     std::string what = e.what();
     EXPECT_EQ(what.rfind("stroke style 'crayon': no such preset in " + stroke_style_dir(), 0), 0u) << what;
-    EXPECT_NE(what.find("(known: charcoal, ink, pencil, toon_silhouette)"), std::string::npos) << what;
+    EXPECT_NE(what.find("(known: charcoal, ink, pencil, sketchy_pencil, toon_silhouette)"), std::string::npos) << what;
   }
 }
 
