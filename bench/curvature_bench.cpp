@@ -99,6 +99,7 @@ const bool registered = [] {
       {"tensor_1ring", {"curvature.radius=0"}},
       {"tensor_default", {}},
       {"jet_default", {"curvature.method=jet"}},
+      {"tensor_approximate_ball", {"curvature.ball_clip=approximate"}},
       {"jet_cgal", {"curvature.method=jet", "curvature.jet_solver=cgal"}}};
   for (const std::string model : {"fandisk.obj", "stanford-bunny.obj", "ogre.obj", "bunny-1M"})
     for (const auto& [name, assignments] : variants) {

@@ -53,6 +53,7 @@ namespace plumbago {
 enum class CurvatureMethod { Tensor, Jet };
 enum class CurvatureNormal { Ball, Tensor };
 enum class JetSolver { Eigen, Cgal };
+enum class BallClip { Exact, Approximate };
 
 struct CurvatureParams {
   static constexpr const char* stage = "curvature";
@@ -60,6 +61,7 @@ struct CurvatureParams {
   float radius;
   CurvatureNormal normal;
   bool ring_fallback;
+  BallClip ball_clip;
   int jet_degree, jet_rings;
   JetSolver jet_solver;
   float umbilic_ratio, flat_curvature;
@@ -73,6 +75,9 @@ struct CurvatureParams {
              "tensor: normal from the ball's faces, or the tensor's smallest eigenvector (SPEC literal)");
     v.boolean(ring_fallback, "ring_fallback", true,
               "tensor: the 1-ring where the ball misses some of v's neighbors (false: the literal ball)");
+    v.choice(ball_clip, "ball_clip", BallClip::Exact, {"exact", "approximate"},
+             "tensor: faces and edges cut by the ball clipped exactly, or weighted by (r - d_min) / (d_max - d_min) "
+             "over their corners and middle (CGAL 6's interpolated corrected curvatures)");
     v.integer(jet_degree, "jet_degree", 2, 2, 4, "jet: degree of the fitted polynomial");
     v.integer(jet_rings, "jet_rings", 2, 1, 8, "jet: rings of neighbors fitted (more if too few points)");
     v.choice(jet_solver, "jet_solver", JetSolver::Eigen, {"eigen", "cgal"},

@@ -144,10 +144,36 @@ BallSums one_ring_sums(uint32_t v, const Surface& g) {
   return sums;
 }
 
-// The face at queue position i, clipped exactly to the ball (c, r): its area, and the
-// sides it counts (see Scratch::counts_side) that reach into the ball; the faces
-// across those sides are queued.
-void add_face_in_ball(uint32_t i, const glm::dvec3& c, double r, const Surface& g, Scratch& s, BallSums& sums) {
+// The approximate ball's weight of a piece of surface whose points (corners and middle) lie
+// at distances d from the center: 1 when all are inside, 0 when the nearest is outside,
+// else (r - d_min) / (d_max - d_min) (issue 19: CGAL 6's interpolated corrected curvatures).
+double approximate_weight(std::initializer_list<double> d, double r) {
+  auto [lo, hi] = std::minmax(d);
+  if (hi <= r) return 1.0;
+  if (lo > r) return 0.0;
+  return (r - lo) / (hi - lo);
+}
+
+double distance(const glm::dvec3& a, const glm::dvec3& b) { return glm::length(a - b); }
+
+// The share of side a -> b inside the ball: exact, or approximate.
+double side_fraction(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, double r, bool exact) {
+  if (exact) return segment_fraction_in_ball(a, b, c, r);
+  return approximate_weight({distance(a, c), distance(b, c), distance(0.5 * (a + b), c)}, r);
+}
+
+// The face's area inside the ball: exact, or approximate.
+double area_in_ball(const BallFace& face, const glm::dvec3 (&p)[3], const glm::dvec3& c, double r, bool exact) {
+  if (exact) return triangle_area_in_ball(p[0], p[1], p[2], c, r, face.twice_area_normal, face.N_length);
+  glm::dvec3 centroid = (p[0] + p[1] + p[2]) / 3.0;
+  double w = approximate_weight({distance(p[0], c), distance(p[1], c), distance(p[2], c), distance(centroid, c)}, r);
+  return w * 0.5 * face.N_length;
+}
+
+// The face at queue position i, clipped to the ball (c, r), exactly or approximately: its
+// area, and the sides it counts (see Scratch::counts_side) that reach into the ball; the
+// faces across those sides are queued.
+void add_face_in_ball(uint32_t i, const glm::dvec3& c, double r, bool exact, const Surface& g, Scratch& s, BallSums& sums) {
   const BallFace& face = g.faces[s.queue[i]];
   const glm::dvec3 p[3] = {face.corner[0], face.corner[1], face.corner[2]};
   bool inside[3];
@@ -155,14 +181,13 @@ void add_face_in_ball(uint32_t i, const glm::dvec3& c, double r, const Surface& 
   if (inside[0] && inside[1] && inside[2])
     sums.add_whole_face(face.twice_area_normal, face.N_length);
   else
-    sums.add_face(triangle_area_in_ball(p[0], p[1], p[2], c, r, face.twice_area_normal, face.N_length),
-                  face.twice_area_normal, face.N_length);
+    sums.add_face(area_in_ball(face, p, c, r, exact), face.twice_area_normal, face.N_length);
   for (int k = 0; k < 3; ++k) {
     const int32_t other = face.neighbor[k];
     if (!s.counts_side(other, i)) continue;
     const glm::dvec3 side = p[(k + 1) % 3] - p[k];
     bool whole = inside[k] && inside[(k + 1) % 3] && side != glm::dvec3(0);
-    double fraction = whole ? 1.0 : segment_fraction_in_ball(p[k], p[(k + 1) % 3], c, r);
+    double fraction = whole ? 1.0 : side_fraction(p[k], p[(k + 1) % 3], c, r, exact);
     if (!(fraction > 0)) continue;
     sums.tensor.add(fraction * face.beta_per_length[k], side);
     if (other >= 0 && s.enqueue_face(uint32_t(other))) __builtin_prefetch(&g.faces[uint32_t(other)]);
@@ -170,12 +195,12 @@ void add_face_in_ball(uint32_t i, const glm::dvec3& c, double r, const Surface& 
 }
 
 // The connected part of the surface within distance r of v, grown face by face across
-// edges that reach into the ball; each edge and face clipped exactly.
-BallSums ball_sums(uint32_t v, double r, const Surface& g, Scratch& s) {
+// edges that reach into the ball; each edge and face clipped exactly or approximately.
+BallSums ball_sums(uint32_t v, double r, bool exact, const Surface& g, Scratch& s) {
   BallSums sums;
   const glm::dvec3 c = g.mesh.positions[v];
   for (uint32_t f : g.topo.faces_of(v)) s.enqueue_face(f);
-  for (uint32_t i = 0; i < s.queue.size(); ++i) add_face_in_ball(i, c, r, g, s, sums);
+  for (uint32_t i = 0; i < s.queue.size(); ++i) add_face_in_ball(i, c, r, exact, g, s, sums);
   return sums;
 }
 
@@ -201,7 +226,7 @@ void for_each_vertex_sums(const Mesh& mesh, const MeshTopology& topo, const Curv
     for (uint32_t v = range.begin(); v != range.end(); ++v) {
       s.next_vertex();
       bool ring = !ball || (p.ring_fallback && radius < ring_radius(v, mesh, topo));
-      f(v, ring ? one_ring_sums(v, g) : ball_sums(v, radius, g, s));
+      f(v, ring ? one_ring_sums(v, g) : ball_sums(v, radius, p.ball_clip == BallClip::Exact, g, s));
     }
     progress.advance(range.size());
   });

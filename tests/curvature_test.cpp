@@ -210,6 +210,25 @@ TEST(CurvatureAccuracy, TensorMeetsTheTargetsOnTorusAndEllipsoid) {
     }
 }
 
+// The approximate ball (issue 19: faces and edges cut by the ball weighted by the linear
+// ratio of distances) against the exact one, on the same meshes: what the cheaper
+// clipping costs in accuracy, printed next to the exact ball's, and bounded.
+TEST(CurvatureAccuracy, ApproximateBallAgainstTheExactOne) {
+  for (const char* name : {"torus", "ellipsoid", "sphere"})
+    for (Meshing m : {Meshing::Regular, Meshing::Irregular}) {
+      const SurfaceCase& sc = *std::find_if(std::begin(kSurfaces), std::end(kSurfaces),
+                                            [&](const SurfaceCase& s) { return std::string(s.name) == name; });
+      const AnalyticSurface& s = accuracy_surface(sc, m, 2.0);  // two edges per ball radius: coarse, quick
+      Accuracy exact = measure_accuracy(s, estimate_curvature(s.mesh, curvature_params()), 0);
+      Accuracy approx = measure_accuracy(s, estimate_curvature(s.mesh, curvature_params({"curvature.ball_clip=approximate"})), 0);
+      print_accuracy("exact ball", s, exact);
+      print_accuracy("approximate ball", s, approx);
+      for (auto [a, e] : {std::pair{approx.k_min_rel, exact.k_min_rel}, {approx.k_max_rel, exact.k_max_rel}})
+        EXPECT_LE(a, std::max(2.0 * e, e + 0.02)) << s.name;
+      EXPECT_LE(approx.direction_deg, std::max(2.0 * exact.direction_deg, exact.direction_deg + 1.0)) << s.name;
+    }
+}
+
 // Every surface, both meshings, both methods, on coarser meshes (two edges per ball
 // radius): printed, and bounded loosely enough for any correct estimator and tightly
 // enough to catch a swapped or mis-signed one.
