@@ -26,6 +26,7 @@
 #include "apps/scene_options.hpp"
 #include "bench/paper_claims.hpp"
 #include "common/image_compare.hpp"
+#include "common/output_file.hpp"
 #include "common/passes.hpp"
 #include "gpu/context.hpp"
 #include "gpu/pipeline.hpp"
@@ -106,14 +107,18 @@ BufferError buffer_error(const Image& a, const Image& b, double tolerance) {
   return e;
 }
 
-void save_and_compare(const BenchOptions& o, std::map<std::string, Image> buffers, BenchResult& r) {
+// --save: every target checked before the first is written, all committed by run().
+void save(const std::map<std::string, Image>& buffers, const fs::path& dir, OutputFiles& out) {
+  out.folder(dir.string());
+  ImageFiles files;
+  for (const auto& [name, img] : buffers) files.emplace_back((dir / (name + ".exr")).string(), [&img] { return img; });
+  write_images(files, out);
+}
+
+void save_and_compare(const BenchOptions& o, std::map<std::string, Image> buffers, BenchResult& r, OutputFiles& out) {
   for (auto it = buffers.begin(); it != buffers.end();)
     it = wanted(o, it->first) ? std::next(it) : buffers.erase(it);
-  if (!o.save_dir.empty()) {
-    fs::path dir = fs::path(o.save_dir) / r.backend;
-    fs::create_directories(dir);
-    for (const auto& [name, img] : buffers) write_image(img, (dir / (name + ".exr")).string());
-  }
+  if (!o.save_dir.empty()) save(buffers, fs::path(o.save_dir) / r.backend, out);
   if (!o.against_dir.empty()) {
     for (const auto& [name, img] : buffers) {
       fs::path p = fs::path(o.against_dir) / (name + ".exr");
@@ -142,7 +147,7 @@ int reference_frames(const BenchOptions& o) { return o.reference_frames ? o.refe
 
 bool keeps_buffers(const BenchOptions& o) { return !o.save_dir.empty() || !o.against_dir.empty(); }
 
-BenchResult bench_reference(const BenchOptions& o, const Scene& scene, int frames) {
+BenchResult bench_reference(const BenchOptions& o, const Scene& scene, int frames, OutputFiles& out) {
   BenchResult r = new_result(scene, "reference");
   std::vector<double> ms;
   for (int i = 0; i < frames; ++i) {
@@ -157,12 +162,12 @@ BenchResult bench_reference(const BenchOptions& o, const Scene& scene, int frame
   if (keeps_buffers(o)) {
     FrameOptions fo;
     fo.keep_buffers = true;
-    save_and_compare(o, kept_buffers(reference::render(scene, fo)), r);
+    save_and_compare(o, kept_buffers(reference::render(scene, fo)), r, out);
   }
   return r;
 }
 
-BenchResult bench_gpu(const BenchOptions& o, const Scene& scene, int frames) {
+BenchResult bench_gpu(const BenchOptions& o, const Scene& scene, int frames, OutputFiles& out) {
   BenchResult r = new_result(scene, "gpu");
   gpu::Renderer renderer(scene);
   for (const auto& p : renderer.render().ran)  // warm-up: shader compilation, first-use allocations
@@ -177,7 +182,7 @@ BenchResult bench_gpu(const BenchOptions& o, const Scene& scene, int frames) {
   if (keeps_buffers(o)) {
     FrameOptions fo;
     fo.keep_buffers = true;
-    save_and_compare(o, kept_buffers(renderer.render(fo)), r);
+    save_and_compare(o, kept_buffers(renderer.render(fo)), r, out);
   }
   return r;
 }
@@ -255,7 +260,7 @@ struct ClaimRun {
 };
 
 
-std::vector<ClaimRun> run_paper(const BenchOptions& o) {
+std::vector<ClaimRun> run_paper(const BenchOptions& o, OutputFiles& out) {
   std::vector<ClaimRun> runs;
   std::map<std::string, std::pair<std::optional<BenchResult>, std::optional<BenchResult>>> done;  // a scene is run once
   for (const auto& c : paper_claims()) {
@@ -267,8 +272,8 @@ std::vector<ClaimRun> run_paper(const BenchOptions& o) {
           SceneOptions so{(fs::path(PLUMBAGO_SOURCE_DIR) / c.plumbago_scene).string(), o.size, o.assignments};
           Scene scene = so.load();
           scene.source = c.plumbago_scene;
-          if (o.backend != "reference") g = bench_gpu(o, scene, o.frames);
-          if (o.backend != "gpu") r = bench_reference(o, scene, reference_frames(o));
+          if (o.backend != "reference") g = bench_gpu(o, scene, o.frames, out);
+          if (o.backend != "gpu") r = bench_reference(o, scene, reference_frames(o), out);
         } catch (const std::exception& e) {
           run.note = std::string("not run: ") + e.what();
         }
@@ -322,10 +327,21 @@ void print_paper(const BenchOptions& o, const std::vector<ClaimRun>& runs) {
   std::printf("\nTheir fps were measured on their hardware; ours on the machine and renderer above.\n");
 }
 
+// Output and comparison folders are checked before anything runs.
+void check_folders(const BenchOptions& o, OutputFiles& out) {
+  if (!o.against_dir.empty() && !fs::is_directory(o.against_dir))
+    throw std::invalid_argument("--against: folder '" + o.against_dir + "' does not exist");
+  if (!o.save_dir.empty()) out.folder(o.save_dir);
+}
+
 void run(const BenchOptions& o) {
+  OutputFiles out;
+  check_folders(o, out);
   if (o.paper) {
     if (!o.scenes.empty()) throw std::invalid_argument("--paper runs the scenes bench/paper_claims.hpp names; give no SCENE");
-    print_paper(o, run_paper(o));
+    auto runs = run_paper(o, out);
+    out.commit();
+    print_paper(o, runs);
     return;
   }
   std::vector<BenchResult> results;
@@ -333,9 +349,10 @@ void run(const BenchOptions& o) {
   for (const auto& name : scenes) {
     SceneOptions so{name, o.size, o.assignments};
     Scene scene = so.load();
-    if (o.backend != "reference") results.push_back(bench_gpu(o, scene, o.frames));
-    if (o.backend != "gpu") results.push_back(bench_reference(o, scene, reference_frames(o)));
+    if (o.backend != "reference") results.push_back(bench_gpu(o, scene, o.frames, out));
+    if (o.backend != "gpu") results.push_back(bench_reference(o, scene, reference_frames(o), out));
   }
+  out.commit();
   o.json ? print_json(o, results) : print_text(results);
 }
 

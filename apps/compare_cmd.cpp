@@ -20,14 +20,17 @@ struct CompareOptions {
   bool json = false;
 };
 
-void write_images(const std::vector<StageParity>& results, const std::string& dir) {
-  std::filesystem::create_directories(dir);
+// Every target is checked before the first is written; all are put in place together.
+void write_images(const std::vector<StageParity>& results, const std::string& dir, OutputFiles& out) {
+  ImageFiles files;
   for (const auto& s : results) {
     std::string base = (std::filesystem::path(dir) / s.name).string();
-    write_image(viewable(s.name, s.reference), base + ".reference.png");
-    write_image(viewable(s.name, s.gpu), base + ".gpu.png");
-    write_image(diff_heatmap(s.reference, s.gpu, s.diff.tolerance), base + ".diff.png");
+    files.emplace_back(base + ".reference.png", [&s] { return viewable(s.name, s.reference); });
+    files.emplace_back(base + ".gpu.png", [&s] { return viewable(s.name, s.gpu); });
+    files.emplace_back(base + ".diff.png", [&s] { return diff_heatmap(s.reference, s.gpu, s.diff.tolerance); });
   }
+  write_images(files, out);
+  out.commit();
 }
 
 void print(const std::vector<StageParity>& results, bool all_pass, bool json) {
@@ -47,11 +50,13 @@ void print(const std::vector<StageParity>& results, bool all_pass, bool json) {
 
 void run(const CompareOptions& o) {
   Scene scene = o.scene.load();
+  OutputFiles out;
+  if (!o.out_dir.empty()) out.folder(o.out_dir);
   std::vector<std::string> stages = o.stages;
   if (stages.size() == 1 && stages[0] == "all") stages.clear();
   auto results = run_parity(scene, stages);
   bool all_pass = std::all_of(results.begin(), results.end(), [](const StageParity& s) { return s.pass; });
-  if (!o.out_dir.empty()) write_images(results, o.out_dir);
+  if (!o.out_dir.empty()) write_images(results, o.out_dir, out);
   print(results, all_pass, o.json);
   if (!all_pass) throw CLI::RuntimeError(1);
 }

@@ -59,13 +59,20 @@ void print_stats(const RenderOptions& o, const Scene& scene, const Frame& frame)
   for (const auto& m : gl_messages) std::printf("GL: %s\n", m.c_str());
 }
 
+// Every output location is checked before rendering; the image and the dumps are
+// written under temporary names and put in place together, or not at all.
 void run(const RenderOptions& o) {
   Scene scene = o.scene.load();
+  check_image_extension(o.output);
+  OutputFiles out;
+  OutputFile& image = out.add(o.output);
   FrameOptions fo;
   fo.keep_buffers = !o.dump_dir.empty();
+  if (fo.keep_buffers) out.folder(o.dump_dir);
   Frame frame = render_frame(scene, o.backend, fo);
-  write_image(frame.color, o.output);
-  if (fo.keep_buffers) dump_buffers(frame.buffers, o.dump_dir, o.backend + ".");
+  if (fo.keep_buffers) dump_buffers(frame.buffers, o.dump_dir, o.backend + ".", out);
+  write_image(frame.color, image);
+  out.commit();
   if (o.stats) print_stats(o, scene, frame);
 }
 

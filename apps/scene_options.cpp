@@ -38,6 +38,8 @@ Scene SceneOptions::load() const {
   else
     s = load_scene(scene);
   if (!size.empty()) apply_size(size, s);
+  if (auto fault = camera_fault(s.camera, double(s.width) / s.height))  // the field of view across the new size
+    throw std::invalid_argument("--size " + size + ": " + s.source + ": /camera/" + fault->key + ": " + fault->what);
   for (const auto& a : assignments) {
     try {
       s.params.set_assignment(a);

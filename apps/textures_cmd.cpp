@@ -7,6 +7,7 @@
 #include "apps/command.hpp"
 #include "apps/scene_options.hpp"
 #include "common/frame.hpp"
+#include "common/output_file.hpp"
 #include "common/textures.hpp"
 
 namespace plumbago {
@@ -20,11 +21,16 @@ struct TexturesOptions {
 
 void run(const TexturesOptions& o) {
   Scene s = o.scene.load();
+  OutputFiles out;  // every target checked before the first is written; all put in place together
+  out.folder(o.out_dir);
   Stopwatch watch;
   auto gallery = texture_gallery(s.params, o.seed, s.width, s.height);
   double ms = watch.ms();
-  std::filesystem::create_directories(o.out_dir);
-  for (const auto& [name, img] : gallery) write_image(img, (std::filesystem::path(o.out_dir) / (name + ".png")).string());
+  ImageFiles files;
+  for (const auto& [name, img] : gallery)
+    files.emplace_back((std::filesystem::path(o.out_dir) / (name + ".png")).string(), [&img] { return img; });
+  write_images(files, out);
+  out.commit();
   std::printf("wrote %zu textures to %s (generated in %.0f ms)\n", gallery.size(), o.out_dir.c_str(), ms);
 }
 

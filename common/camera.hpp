@@ -3,6 +3,8 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <optional>
+#include <string>
 
 namespace plumbago {
 
@@ -31,6 +33,41 @@ class PrimaryRays {
   float tan_half_, aspect_;
   int width_, height_;
 };
+
+// What float buffers can render (docs/bad-input.md); scenes and --size are checked against
+// these when read.
+// |x|, |y|, |z| of any world-space point (the eye and every vertex): the ray-triangle test
+// and the face normals multiply up to four differences of coordinates, each at most
+// 2 sqrt(3) 1e9, and (3.5e9)^4 = 1.4e38 stays under float's 3.4e38.
+constexpr double kMaxCoordinate = 1e9;
+// Direction vectors (up, light and view directions) are normalized in float: their length
+// must lie in [1e-18, 1e18], so that its square is a normal float.
+constexpr double kMinDirectionLength = 1e-18, kMaxDirectionLength = 1e18;
+// The narrower field of view (vertical, or horizontal at the image's aspect), in degrees.
+// Measured: the backends' images agree down to 1e-5 degrees and differ at 1e-6, where
+// neighbouring pixels' rays are no longer apart in float; the bound leaves a factor 100.
+constexpr double kMinFovDeg = 1e-3;
+// far / near: the GPU's float depth test resolves a relative depth of about
+// 2^-24 far / near. Measured (torus, far 10): the backends' images agree at 5e6 and differ
+// on 31% of the pixels at 1e7; the bound leaves a factor 5.
+constexpr double kMaxFarOverNear = 1e6;
+// (far - near) / far: eye-space depth, a float of the size of far, has about 8000 steps
+// between the planes at 1e-3. Measured (fitted planes, a telephoto camera): the backends'
+// images differ at 1.25e-4 and agree at 2.5e-4.
+constexpr double kMinDepthExtent = 1e-3;
+// Sine of the angle between up and the viewing direction: below it the image's roll is
+// ill-defined.
+constexpr double kMinUpSine = 1e-3;
+
+// Why a camera cannot be rendered: the camera key at fault ("eye", "near", ...) and what.
+struct CameraFault {
+  std::string key, what;
+};
+// The first fault of `c` for an image of `aspect` = width / height; none when it renders.
+std::optional<CameraFault> camera_fault(const Camera& c, double aspect);
+// "1e+18", "(1, 2, 3)": numbers as the messages about cameras and scenes print them.
+std::string format_number(double v);
+std::string format_point(glm::dvec3 p);
 
 // A camera fitted to a bounding sphere: looks at its center from `direction`, with the
 // sphere filling the view and near/far planes bracketing it.

@@ -24,12 +24,16 @@ Image flipped(const Image& img) {
 
 }  // namespace
 
-void write_image(const Image& img, const std::string& path) {
+void check_image_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
-  bool is_float = ext == ".exr";
-  if (!is_float && ext != ".png")
+  if (ext != ".exr" && ext != ".png")
     throw std::runtime_error(path + ": unsupported image extension '" + ext + "' (use .png or .exr)");
-  OutputFile file(path);
+}
+
+void write_image(const Image& img, OutputFile& file) {
+  const std::string& path = file.path();
+  check_image_extension(path);
+  bool is_float = std::filesystem::path(path).extension() == ".exr";
   auto out = OIIO::ImageOutput::create(path);
   if (!out) throw std::runtime_error(path + ": " + OIIO::geterror());
   OIIO::ImageSpec spec(img.width, img.height, img.channels,
@@ -38,6 +42,21 @@ void write_image(const Image& img, const std::string& path) {
   if (!out->open(file.temporary_path(), spec) ||
       !out->write_image(OIIO::TypeDesc::FLOAT, top_first.data.data()) || !out->close())
     throw std::runtime_error(path + ": " + out->geterror());
+}
+
+void write_images(const ImageFiles& images, OutputFiles& out) {
+  std::vector<OutputFile*> files;
+  for (const auto& entry : images) {
+    check_image_extension(entry.first);
+    files.push_back(&out.add(entry.first));
+  }
+  for (size_t i = 0; i < images.size(); ++i) write_image(images[i].second(), *files[i]);
+}
+
+void write_image(const Image& img, const std::string& path) {
+  check_image_extension(path);
+  OutputFile file(path);
+  write_image(img, file);
   file.commit();
 }
 

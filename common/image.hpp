@@ -3,10 +3,15 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace plumbago {
+
+class OutputFile;
+class OutputFiles;
 
 // A window rectangle of pixels [x0, x1) x [y0, y1), rows from the bottom.
 struct PixelRect {
@@ -36,6 +41,16 @@ using ImageU32 = ImageT<uint32_t>;
 // OpenImageIO. Writes to a temporary name and renames when complete, so a failure leaves
 // no partial file. Throws std::runtime_error naming the path.
 void write_image(const Image& img, const std::string& path);
+// The same into `file`'s temporary name (common/output_file.hpp); the caller commits.
+void write_image(const Image& img, OutputFile& file);
+// Refuses a path whose extension is neither .png nor .exr, naming it.
+void check_image_extension(const std::string& path);
+// Image files to write: each path with the function that makes its image when its turn
+// comes (so that only one is held at a time).
+using ImageFiles = std::vector<std::pair<std::string, std::function<Image()>>>;
+// Writes them among `out`'s files (which the caller commits), every path checked before
+// the first is written.
+void write_images(const ImageFiles& images, OutputFiles& out);
 Image read_image(const std::string& path);  // float, bottom row first
 
 // Any NaN or Inf value?

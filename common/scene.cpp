@@ -23,6 +23,16 @@ namespace fs = std::filesystem;
 // Where a fitted camera looks from (world space, towards the camera).
 const glm::vec3 kViewDirection(1.0f, 0.7f, 1.6f);
 
+// Bounds of what float buffers can hold (docs/bad-input.md; the camera's in camera.hpp).
+// A light's intensity: the sum of 8 lights times any shading parameter stays finite.
+constexpr double kMaxLightIntensity = 1e6;
+// An object's transform: its linear part A, with condition number |A| |A^-1| (Frobenius
+// norms; 3 for a rotation and uniform scale) at most this, and a determinant inside this
+// range, so that the normal matrix, computed in float as adjugate / determinant, neither
+// overflows nor underflows.
+constexpr double kMaxTransformCondition = 1e6;
+constexpr double kMinTransformDeterminant = 1e-30, kMaxTransformDeterminant = 1e30;
+
 // Reads one scene document, naming the file and the JSON path in every refusal.
 class SceneReader {
  public:
@@ -42,16 +52,29 @@ class SceneReader {
       }
   }
 
-  double number(const json& j, const std::string& path) const {
+  // A number as the buffers hold it: a finite float.
+  float number(const json& j, const std::string& path) const {
     if (!j.is_number()) fail(path, "expected a number");
     double v = j.get<double>();
     if (!std::isfinite(v)) fail(path, "expected a finite number");
-    return v;
+    if (!std::isfinite(float(v))) fail(path, format_number(v) + " is beyond float range (±3.4e38)");
+    return float(v);
   }
 
   glm::vec3 vec3(const json& j, const std::string& path) const {
     if (!j.is_array() || j.size() != 3) fail(path, "expected an array of 3 numbers");
-    return {float(number(j[0], path + "/0")), float(number(j[1], path + "/1")), float(number(j[2], path + "/2"))};
+    return {number(j[0], path + "/0"), number(j[1], path + "/1"), number(j[2], path + "/2")};
+  }
+
+  // A vector that is normalized in float: its length within what that can take.
+  glm::vec3 direction(const json& j, const std::string& path) const {
+    glm::vec3 v = vec3(j, path);
+    double length = glm::length(glm::dvec3(v));
+    if (length == 0) fail(path, "must not be zero");
+    if (length < kMinDirectionLength || length > kMaxDirectionLength)
+      fail(path, "has length " + format_number(length) + ", outside [" + format_number(kMinDirectionLength) + ", " +
+                     format_number(kMaxDirectionLength) + "]");
+    return v;
   }
 
   std::shared_ptr<const Mesh> mesh(const json& j, const std::string& path) {
@@ -60,7 +83,7 @@ class SceneReader {
       if (!j.is_object()) fail(path, "expected a mesh file path or {\"procedural\": KIND}");
       only_keys(j, path, {"procedural", "resolution"});
       if (!j.contains("procedural") || !j["procedural"].is_string()) fail(path + "/procedural", "expected a name");
-      float res = j.contains("resolution") ? float(number(j["resolution"], path + "/resolution")) : 1.0f;
+      float res = j.contains("resolution") ? number(j["resolution"], path + "/resolution") : 1.0f;
       return std::make_shared<Mesh>(make_procedural(j["procedural"].get<std::string>(), res));
     } catch (const MeshError& e) {
       fail(path, e.what());
@@ -81,25 +104,52 @@ class SceneReader {
       if (!j["flat"].is_boolean()) fail(path + "/flat", "expected true or false");
       o.flat = j["flat"].get<bool>();
     }
+    check_extent(o, path);
     return o;
+  }
+
+  // Every vertex within ±kMaxCoordinate, in the mesh file and in the world. |A| |p| + |t|
+  // bounds each partial sum of the transform's products, so none overflows in float.
+  void check_extent(const SceneObject& o, const std::string& path) const {
+    glm::dmat4 t(o.transform), magnitude;
+    for (int c = 0; c < 4; ++c) magnitude[c] = glm::abs(t[c]);
+    auto beyond = [](glm::dvec3 p) { return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > kMaxCoordinate; };
+    const std::vector<glm::vec3>& positions = o.mesh->positions;
+    for (size_t i = 0; i < positions.size(); ++i) {
+      glm::dvec3 p = positions[i];
+      if (beyond(p)) fail(path + "/mesh", "vertex " + std::to_string(i) + " lies at " + format_point(p) + beyond_text());
+      if (beyond(glm::dvec3(magnitude * glm::dvec4(glm::abs(p), 1.0))))
+        fail(path + "/transform", "moves vertex " + std::to_string(i) + " to " +
+                                      format_point(glm::dvec3(t * glm::dvec4(p, 1.0))) + beyond_text());
+    }
   }
 
   Camera camera(const json& j, const std::string& path, const Scene& scene) const {
     only_keys(j, path, {"eye", "target", "up", "fov_deg", "near", "far", "view_direction"});
-    glm::vec3 direction = j.contains("view_direction") ? vec3(j["view_direction"], path + "/view_direction") : kViewDirection;
-    if (glm::length(direction) == 0) fail(path + "/view_direction", "must not be zero");
-    Camera c = fitted_camera(scene, j.contains("fov_deg") ? float(number(j["fov_deg"], path + "/fov_deg")) : 35.0f, direction);
-    if (c.fov_deg <= 0 || c.fov_deg >= 180) fail(path + "/fov_deg", "must be in (0, 180)");
+    glm::vec3 view = j.contains("view_direction") ? direction(j["view_direction"], path + "/view_direction") : kViewDirection;
+    Camera c = fitted_camera(scene, j.contains("fov_deg") ? number(j["fov_deg"], path + "/fov_deg") : 35.0f, view);
     if (j.contains("eye")) c.eye = vec3(j["eye"], path + "/eye");
     if (j.contains("target")) c.target = vec3(j["target"], path + "/target");
     if (j.contains("up")) c.up = vec3(j["up"], path + "/up");
     if (j.contains("eye") || j.contains("target")) fit_planes(scene, c);
-    if (j.contains("near")) c.near = float(number(j["near"], path + "/near"));
-    if (j.contains("far")) c.far = float(number(j["far"], path + "/far"));
-    if (!(c.near > 0 && c.far > c.near)) fail(path, "needs 0 < near < far");
-    if (glm::length(c.eye - c.target) == 0) fail(path, "eye and target coincide");
-    if (glm::length(glm::cross(c.up, c.target - c.eye)) == 0) fail(path + "/up", "is parallel to the view direction");
+    if (j.contains("near")) c.near = number(j["near"], path + "/near");
+    if (j.contains("far")) c.far = number(j["far"], path + "/far");
     return c;
+  }
+
+  // Refuses a camera that float buffers cannot render (camera_fault), naming the key and,
+  // for a value the scene does not give, where it came from.
+  void check_camera(const Camera& c, const json& j, const std::string& path, double aspect) const {
+    static const std::map<std::string, std::string> defaults = {
+        {"eye", "where the camera fitted to the scene stands: the scene is too large for the field of view"},
+        {"target", "the scene's center"},
+        {"up", "the default up"},
+        {"near", "fitted to the scene as seen from the eye: the scene is too far from the eye for its size"},
+        {"far", "fitted to the scene as seen from the eye: the scene is too far from the eye for its size"}};
+    auto fault = camera_fault(c, aspect);
+    if (!fault) return;
+    bool given = j.contains(fault->key) || !defaults.count(fault->key);
+    fail(path + "/" + fault->key, fault->what + (given ? "" : " (" + defaults.at(fault->key) + ")"));
   }
 
   std::vector<Light> lights(const json& j, const std::string& path) const {
@@ -109,10 +159,10 @@ class SceneReader {
       std::string p = path + "/" + std::to_string(i);
       only_keys(j[i], p, {"direction", "intensity"});
       if (!j[i].contains("direction")) fail(p + "/direction", "missing");
-      Light l{vec3(j[i]["direction"], p + "/direction"), 1.0f};
-      if (glm::length(l.direction) == 0) fail(p + "/direction", "must not be zero");
-      if (j[i].contains("intensity")) l.intensity = float(number(j[i]["intensity"], p + "/intensity"));
-      if (l.intensity < 0) fail(p + "/intensity", "must not be negative");
+      Light l{direction(j[i]["direction"], p + "/direction"), 1.0f};
+      if (j[i].contains("intensity")) l.intensity = number(j[i]["intensity"], p + "/intensity");
+      if (l.intensity < 0 || l.intensity > kMaxLightIntensity)
+        fail(p + "/intensity", "must be in [0, " + format_number(kMaxLightIntensity) + "]");
       out.push_back(l);
     }
     if (out.size() > 8) fail(path, "at most 8 lights");
@@ -185,6 +235,10 @@ class SceneReader {
   }
 
  private:
+  static std::string beyond_text() {
+    return ", beyond ±" + format_number(kMaxCoordinate) + " (the largest coordinate float buffers can hold)";
+  }
+
   static std::string join(const std::vector<std::string>& names) {
     std::string list;
     for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
@@ -202,9 +256,30 @@ class SceneReader {
   glm::mat4 transform(const json& j, const std::string& path) const {
     if (!j.is_array() || j.size() != 16) fail(path, "expected 16 numbers (a column-major 4x4 matrix)");
     glm::mat4 m;
-    for (int i = 0; i < 16; ++i) m[i / 4][i % 4] = float(number(j[size_t(i)], path + "/" + std::to_string(i)));
-    if (std::abs(glm::determinant(glm::mat3(m))) < 1e-12f) fail(path, "is singular");
+    for (int i = 0; i < 16; ++i) m[i / 4][i % 4] = number(j[size_t(i)], path + "/" + std::to_string(i));
+    for (int i : {3, 7, 11, 15})
+      if (m[i / 4][3] != (i == 15 ? 1.0f : 0.0f))
+        fail(path + "/" + std::to_string(i), std::string("must be ") + (i == 15 ? "1" : "0") +
+                                                 " (the last row of an affine transform is 0, 0, 0, 1)");
+    check_linear_part(glm::dmat3(glm::mat3(m)), path);
     return m;
+  }
+
+  // A relative test, so that a uniform scale of any size passes (kMaxTransformCondition).
+  void check_linear_part(const glm::dmat3& a, const std::string& path) const {
+    double det = glm::determinant(a);
+    if (det == 0) fail(path, "is singular (its linear part flattens the mesh)");
+    double condition = frobenius(a) * frobenius(glm::inverse(a));
+    if (!(condition <= kMaxTransformCondition))
+      fail(path, "is nearly singular: its linear part's condition number is " + format_number(condition) + ", over " +
+                     format_number(kMaxTransformCondition));
+    if (std::abs(det) < kMinTransformDeterminant || std::abs(det) > kMaxTransformDeterminant)
+      fail(path, "scales volumes by " + format_number(det) + ", outside ±[" + format_number(kMinTransformDeterminant) +
+                     ", " + format_number(kMaxTransformDeterminant) + "] (its normal matrix would not fit in float)");
+  }
+
+  static double frobenius(const glm::dmat3& a) {
+    return std::sqrt(glm::dot(a[0], a[0]) + glm::dot(a[1], a[1]) + glm::dot(a[2], a[2]));
   }
 
   glm::vec3 color(const json& j, const std::string& path) const {
@@ -242,6 +317,18 @@ std::vector<Light> default_lights(const Camera& c) {
   glm::vec3 up = glm::cross(right, c.forward());
   return {{glm::normalize(back + 0.6f * up - 0.5f * right), 1.0f}};
 }
+
+// nlohmann's DOM parser, remembering where it stopped: it reports a number beyond double
+// range (1e400) as out_of_range, an exception without the position.
+struct PositionedParser : nlohmann::detail::json_sax_dom_parser<json> {
+  using json_sax_dom_parser::json_sax_dom_parser;
+  template <class Exception>
+  bool parse_error(size_t position, const std::string& token, const Exception& e) {
+    byte = position;
+    return json_sax_dom_parser::parse_error(position, token, e);
+  }
+  size_t byte = 0;
+};
 
 std::string line_and_column(const std::string& text, size_t byte) {
   size_t line = 1, column = 1;
@@ -284,6 +371,7 @@ Scene read_scene(const json& j, SceneReader& r, const std::string& source) {
   if (j.contains("mesh")) {
     SceneObject o;
     o.mesh = r.mesh(j["mesh"], "/mesh");
+    r.check_extent(o, "");
     s.objects.push_back(o);
   } else {
     if (!j["objects"].is_array() || j["objects"].empty()) r.fail("/objects", "expected a non-empty array");
@@ -299,6 +387,7 @@ Scene read_scene(const json& j, SceneReader& r, const std::string& source) {
   if (j.contains("params")) r.params(j["params"], "/params", s.params);
   if (j.contains("strokes")) s.strokes = r.stroke_styles(j["strokes"], "/strokes");
   s.camera = j.contains("camera") ? r.camera(j["camera"], "/camera", s) : SceneReader::fitted_camera(s, 35.0f);
+  r.check_camera(s.camera, j.contains("camera") ? j["camera"] : json::object(), "/camera", double(s.width) / s.height);
   s.lights = j.contains("lights") ? r.lights(j["lights"], "/lights") : default_lights(s.camera);
   return s;
 }
@@ -343,10 +432,13 @@ void scene_bounds(const Scene& scene, glm::vec3& center, float& radius) {
 
 Scene parse_scene(const std::string& text, const std::string& source, const std::string& base_dir) {
   json j;
+  PositionedParser parser(j);
   try {
-    j = json::parse(text);
+    json::sax_parse(text, &parser);
   } catch (const json::parse_error& e) {
     throw SceneError(source + ": " + line_and_column(text, e.byte) + ": not valid JSON (" + e.what() + ")");
+  } catch (const json::exception& e) {  // a number beyond double range: no position of its own
+    throw SceneError(source + ": " + line_and_column(text, parser.byte) + ": cannot read the JSON (" + e.what() + ")");
   }
   SceneReader reader(source, base_dir);
   return read_scene(j, reader, source);

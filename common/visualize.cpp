@@ -34,13 +34,16 @@ Image viewable(const std::string& name, const Image& img) {
   return out;
 }
 
-void dump_buffers(const std::map<std::string, Image>& buffers, const std::string& dir, const std::string& prefix) {
-  std::filesystem::create_directories(dir);
+void dump_buffers(const std::map<std::string, Image>& buffers, const std::string& dir, const std::string& prefix,
+                  OutputFiles& out) {
+  out.folder(dir);
+  ImageFiles files;
   for (const auto& [name, img] : buffers) {
     std::string base = (std::filesystem::path(dir) / (prefix + name)).string();
-    write_image(viewable(name, img), base + ".png");
-    write_image(as_rgb(img), base + ".exr");
+    files.emplace_back(base + ".png", [&name, &img] { return viewable(name, img); });
+    files.emplace_back(base + ".exr", [&img] { return as_rgb(img); });
   }
+  write_images(files, out);
 }
 
 }  // namespace plumbago

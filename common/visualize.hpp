@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common/image.hpp"
+#include "common/output_file.hpp"
 
 namespace plumbago {
 
@@ -12,7 +13,9 @@ namespace plumbago {
 // zero blue channel; everything else is written as is (PNG clamps to [0,1]).
 Image viewable(const std::string& buffer_name, const Image& img);
 
-// Writes every buffer as DIR/<prefix><name>.png (viewable) and .exr (the raw floats).
-void dump_buffers(const std::map<std::string, Image>& buffers, const std::string& dir, const std::string& prefix);
+// Writes every buffer as DIR/<prefix><name>.png (viewable) and .exr (the raw floats)
+// among `out`'s files (which the caller commits), every location checked first.
+void dump_buffers(const std::map<std::string, Image>& buffers, const std::string& dir, const std::string& prefix,
+                  OutputFiles& out);
 
 }  // namespace plumbago

@@ -6,8 +6,10 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
+#include "common/image.hpp"
 #include "common/passes.hpp"
 #include "tests/cli_run.hpp"
 
@@ -25,14 +27,21 @@ class Cli : public ::testing::Test {
 
   // Exit code 2, the message contains each of `needles`, no output image, no partial file.
   void expect_refused(const std::string& args, std::initializer_list<std::string> needles) const {
-    CliRun r = run(args + " -o " + path("out.png"));
+    expect_refused_as_is(args + " -o " + path("out.png"), needles);
+  }
+
+  // The same for a command line given whole; `blockers` are what the test put in the way.
+  void expect_refused_as_is(const std::string& args, std::initializer_list<std::string> needles,
+                            const std::set<std::string>& blockers = {}) const {
+    CliRun r = run(args);
     EXPECT_EQ(r.code, 2) << r.err;
     for (const auto& n : needles) EXPECT_NE(r.err.find(n), std::string::npos) << "'" << n << "' not in: " << r.err;
-    for (const auto& e : fs::directory_iterator(tmp_.dir()))
-      EXPECT_TRUE(e.path().filename() == "stdout" || e.path().filename() == "stderr" ||
-                  e.path().extension() == ".json" || e.path().extension() == ".obj")
+    for (const auto& e : fs::recursive_directory_iterator(tmp_.dir())) {
+      std::string name = fs::relative(e.path(), tmp_.dir()).string();
+      EXPECT_TRUE(name == "stdout" || name == "stderr" || e.path().extension() == ".json" ||
+                  e.path().extension() == ".obj" || blockers.count(name))
           << "left behind: " << e.path();
-    EXPECT_FALSE(fs::exists(path("stages"))) << "a refused run dumped stages";
+    }
   }
 
   testing::TempDir tmp_;
@@ -92,6 +101,70 @@ TEST_F(Cli, NanCoordinatesNameTheMeshFileAndLine) {
 }
 
 TEST_F(Cli, BadSizeIsRefused) { expect_refused("render --size 0x10", {"--size"}); }
+
+// A camera beyond the largest coordinate is refused before any backend sees it: it made
+// Embree abort (SIGABRT) in render, compare and bench.
+TEST_F(Cli, FarAwayCameraIsRefusedOnEveryCommand) {
+  write("far.json", R"({"mesh": {"procedural": "torus"}, "camera": {"eye": [1e20, 0, 0]}})");
+  for (const char* command : {"render --backend reference -o " , "compare --out ", "bench --frames 1 --save "})
+    expect_refused_as_is(command + path("out") + " " + path("far.json"), {"far.json", "/camera/eye", "beyond"});
+}
+
+TEST_F(Cli, NumberBeyondDoubleRangeNamesTheLine) {
+  write("big.json", "{\"mesh\": {\"procedural\": \"torus\"},\n \"camera\": {\"far\": 1e400}}");
+  expect_refused("render " + path("big.json"), {"big.json", "line 2", "1e400"});
+}
+
+// --size changes the horizontal field of view: too narrow a window is refused.
+TEST_F(Cli, SizeThatNarrowsTheViewTooFarIsRefused) {
+  write("narrow.json", R"({"mesh": {"procedural": "torus"}, "camera": {"eye": [0, 0, 0.6], "target": [0, 1, 0.6],
+                           "up": [0, 0, 1], "fov_deg": 0.01, "near": 0.1, "far": 5}})");
+  ASSERT_EQ(run("render " + path("narrow.json") + " --size 16x16 -o " + path("ok.png")).code, 0);
+  fs::remove(path("ok.png"));
+  expect_refused("render " + path("narrow.json") + " --size 1x100", {"--size 1x100", "narrow.json", "/camera/fov_deg"});
+}
+
+// Every output location is checked before the first file is written: a dump folder that
+// is a file, or one dump target blocked by a folder, leaves neither the image nor a dump.
+TEST_F(Cli, BlockedDumpLeavesNoImage) {
+  write("blocker", "");
+  write("s.json", R"({"mesh": {"procedural": "torus"}, "resolution": [32, 24]})");
+  for (const char* backend : {"gpu", "reference"})
+    for (const char* dump : {"blocker", "blocker/stages"})
+      expect_refused_as_is("render " + path("s.json") + " --backend " + backend + " -o " + path("out.png") +
+                               " --dump-stages " + path(dump),
+                           {"blocker", "is a file, not a folder"}, {"blocker"});
+  fs::create_directories(path("stages/gpu.gbuffer.normal.png"));
+  expect_refused_as_is("render " + path("s.json") + " -o " + path("out.png") + " --dump-stages " + path("stages"),
+                       {"gpu.gbuffer.normal.png", "is a folder"}, {"blocker", "stages", "stages/gpu.gbuffer.normal.png"});
+}
+
+TEST_F(Cli, TexturesWithOneTargetBlockedWritesNone) {
+  fs::create_directories(path("textures/pencil_layer_03.png"));
+  expect_refused_as_is("textures --size 32x32 --set pencil_textures.layers=8 --set pencil_textures.size=32 --out " +
+                           path("textures"),
+                       {"pencil_layer_03.png"}, {"textures", "textures/pencil_layer_03.png"});
+  write("file", "");
+  expect_refused_as_is("textures --out " + path("file"), {"file", "not a folder"},
+                       {"file", "textures", "textures/pencil_layer_03.png"});
+}
+
+TEST_F(Cli, BenchAgainstAMissingFolderIsRefused) {
+  expect_refused_as_is("bench builtin:torus --frames 1 --size 32x32 --against " + path("nowhere"), {"--against", "nowhere"});
+}
+
+// An empty effect list draws the blank page at the scene's size on both backends.
+TEST_F(Cli, NoEffectDrawsABlankPageOfTheScenesSize) {
+  write("blank.json", R"({"mesh": {"procedural": "torus"}, "resolution": [40, 30], "effects": []})");
+  for (const char* backend : {"gpu", "reference"}) {
+    CliRun r = run(std::string("render ") + path("blank.json") + " --backend " + backend + " -o " + path("blank.png"));
+    ASSERT_EQ(r.code, 0) << r.err;
+    Image img = read_image(path("blank.png"));
+    EXPECT_EQ(img.width, 40);
+    EXPECT_EQ(img.height, 30);
+    for (float v : img.data) ASSERT_EQ(v, 1.0f) << backend;
+  }
+}
 
 // Every effect the stages declare, with the stages it runs.
 TEST_F(Cli, EffectsListsEveryEffectAndItsStages) {

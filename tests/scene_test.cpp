@@ -92,7 +92,7 @@ TEST(SceneFile, RefusalsNameTheFileAndJsonPath) {
       {R"({"mesh": {"procedural": "torus"}, "lights": [{"direction": [0, 0, 1], "power": 2}]})", "bad.json: /lights/0/power: unknown key"},
       {R"({"mesh": {"procedural": "torus"}, "lights": [{"direction": [0, 0, 0]}]})", "bad.json: /lights/0/direction:"},
       {R"({"mesh": {"procedural": "torus"}, "seed": -3})", "bad.json: /seed:"},
-      {R"({"mesh": {"procedural": "torus"}, "camera": {"near": 5, "far": 1}})", "bad.json: /camera: needs 0 < near < far"},
+      {R"({"mesh": {"procedural": "torus"}, "camera": {"near": 5, "far": 1}})", "bad.json: /camera/far: near 5 and far 1"},
       {R"({"mesh": {"procedural": "torus"}, "objects": []})", "bad.json: /: give either"},
       {R"({})", "bad.json: /: give either"},
       {"{\n  \"mesh\": 1,,\n}", "bad.json: line 2, column 13"},
@@ -100,6 +100,106 @@ TEST(SceneFile, RefusalsNameTheFileAndJsonPath) {
   for (const auto& [json, expected] : cases) {
     std::string m = refusal(json);
     EXPECT_NE(m.find(expected), std::string::npos) << "scene " << json << "\n gave: " << m;
+  }
+}
+
+// A camera that float buffers cannot render is refused with the key at fault, and one
+// the scene does not give with where it came from (docs/bad-input.md).
+TEST(SceneFile, CamerasFloatCannotRenderAreRefused) {
+  const std::string torus = R"({"mesh": {"procedural": "torus"}, "camera": )";
+  const std::map<std::string, std::string> cases = {
+      {R"({"near": 0, "far": 10})", "/camera/near: is 0: it must be greater than 0"},
+      {R"({"near": -1, "far": 10})", "/camera/near: is -1"},
+      {R"({"near": 2, "far": 2})", "/camera/far: near 2 and far 2: far must be greater than near"},
+      {R"({"near": 1e-7, "far": 10})", "/camera/near: near 1e-07 and far 10: far / near is over the 1e+06"},
+      {R"({"near": 1e-44, "far": 10})", "/camera/near:"},
+      {R"({"near": 100, "far": 100.01})", "/camera/far: near 100 and far 100.01: float depth cannot tell them apart"},
+      {R"({"fov_deg": 0})", "/camera/fov_deg: must be in (0, 180) degrees"},
+      {R"({"fov_deg": 180})", "/camera/fov_deg: must be in (0, 180) degrees"},
+      {R"({"fov_deg": -5})", "/camera/fov_deg: must be in (0, 180) degrees"},
+      {R"({"fov_deg": 1e-30})", "/camera/fov_deg: gives a field of view of 1e-30 degrees, under the 0.001"},
+      {R"({"eye": [1, 2, 3], "target": [1, 2, 3]})", "/camera/target: coincides with the eye"},
+      {R"({"eye": [0, 0, 0]})", "/camera/target: coincides with the eye (the scene's center)"},
+      {R"({"eye": [0, 5, 0], "target": [0, 0, 0], "up": [0, -2, 0]})", "/camera/up: is parallel"},
+      {R"({"eye": [0, 5, 0], "target": [0, 0, 0], "up": [1e-4, 1, 0]})", "/camera/up: is parallel"},
+      {R"({"eye": [0, 5, 0]})", "/camera/up: is parallel (or nearly) to the view direction, target - eye (the default up)"},
+      {R"({"eye": [0, 5, 0], "up": [0, 0, 0]})", "/camera/up: has length 0"},
+      {R"({"eye": [1e20, 0, 0]})", "/camera/eye: lies at (1e+20, 0, 0), beyond ±1e+09"},
+      {R"({"eye": [0, 0, 5], "target": [0, -2e9, 0]})", "/camera/target: lies at (0, -2e+09, 0), beyond ±1e+09"},
+      {R"({"eye": [1e8, 0, 0]})", "/camera/far: near 1e+08 and far 1e+08: far must be greater than near (fitted to the scene"},
+      {R"({"eye": [1e5, 0, 0]})", "/camera/far: near 99997 and far 100003: float depth cannot tell them apart"},
+      {R"({"fov_deg": 0.01})", "/camera/far: "},
+      {R"({"view_direction": [1e-30, 0, 0]})", "/camera/view_direction: has length 1e-30, outside [1e-18, 1e+18]"},
+      {R"({"eye": [1e39, 0, 0]})", "/camera/eye/0: 1e+39 is beyond float range"},
+      {R"({"fov_deg": 3e39})", "/camera/fov_deg: 3e+39 is beyond float range"},
+  };
+  for (const auto& [camera, expected] : cases) {
+    std::string m = refusal(torus + camera + "}");
+    EXPECT_NE(m.find("bad.json: " + expected), std::string::npos) << "camera " << camera << "\n gave: " << m;
+  }
+  // A camera fitted to a scene too large for its field of view would stand beyond the bound.
+  EXPECT_NE(refusal(R"({"objects": [{"mesh": {"procedural": "torus"},
+                       "transform": [4e8,0,0,0, 0,4e8,0,0, 0,0,4e8,0, 0,0,0,1]}]})")
+                .find("bad.json: /camera/eye: lies at"),
+            std::string::npos);
+}
+
+// Values beyond what float holds, or whose products overflow it, are refused with the key;
+// a number beyond double range with the line and column.
+TEST(SceneFile, ValuesBeyondFloatAreRefused) {
+  const std::map<std::string, std::string> cases = {
+      {R"({"mesh": {"procedural": "torus"}, "lights": [{"direction": [0, 0, 1], "intensity": 1e39}]})",
+       "/lights/0/intensity: 1e+39 is beyond float range"},
+      {R"({"mesh": {"procedural": "torus"}, "lights": [{"direction": [0, 0, 1], "intensity": 3e38}]})",
+       "/lights/0/intensity: must be in [0, 1e+06]"},
+      {R"({"mesh": {"procedural": "torus"}, "lights": [{"direction": [3e38, 0, 0]}]})",
+       "/lights/0/direction: has length 3e+38, outside"},
+      {R"({"objects": [{"mesh": {"procedural": "torus"}, "transform": [1,0,0,0, 0,1,0,0, 0,0,1,0, 3e38,0,0,1]}]})",
+       "/objects/0/transform: moves vertex 0 to (3e+38, "},
+      {R"({"objects": [{"mesh": {"procedural": "torus"}, "transform": [1,0,0,0, 0,1,0,0, 0,0,1,0, 1e39,0,0,1]}]})",
+       "/objects/0/transform/12: 1e+39 is beyond float range"},
+      {R"({"objects": [{"mesh": {"procedural": "torus"}, "transform": [1e9,0,0,0, 0,1e9,0,0, 0,0,1e9,0, 0,0,0,1]}]})",
+       "/objects/0/transform: moves vertex"},
+      {R"({"objects": [{"mesh": {"procedural": "torus"}, "transform": [1e12,0,0,0, 0,1e12,0,0, 0,0,1e12,0, 0,0,0,1]}]})",
+       "/objects/0/transform: scales volumes by 1e+36, outside"},
+      {R"({"objects": [{"mesh": {"procedural": "torus"}, "transform": [1e-12,0,0,0, 0,1e-12,0,0, 0,0,1e-12,0, 0,0,0,1]}]})",
+       "/objects/0/transform: scales volumes by 1e-36, outside"},
+      {"{\"mesh\": {\"procedural\": \"torus\"},\n \"seed\": 1,\n \"camera\": {\"far\": 1e400}}",
+       "bad.json: line 3, column 24: cannot read the JSON ([json.exception.out_of_range.406] number overflow"},
+  };
+  for (const auto& [json, expected] : cases) {
+    std::string m = refusal(json);
+    EXPECT_NE(m.find(expected), std::string::npos) << "scene " << json << "\n gave: " << m;
+  }
+}
+
+TEST(SceneFile, MeshCoordinatesBeyondTheBoundAreRefused) {
+  TempDir tmp;
+  tmp.write("far.obj", "v 0 0 0\nv 2e9 0 0\nv 0 1 0\nf 1 2 3\n");
+  EXPECT_NE(refusal(R"({"mesh": "far.obj"})", tmp.dir()).find("bad.json: /mesh: vertex 1 lies at (2e+09, 0, 0), beyond ±1e+09"),
+            std::string::npos);
+}
+
+// The singular test is relative: a uniform scale of any size within the bounds passes, a
+// transform that (nearly) flattens the mesh does not; the last row must be 0, 0, 0, 1.
+TEST(SceneFile, TransformsAreCheckedRelativeToTheirScale) {
+  for (const char* t : {"1e-4,0,0,0, 0,1e-4,0,0, 0,0,1e-4,0, 0,0,0,1", "1e4,0,0,0, 0,1e4,0,0, 0,0,1e4,0, 0,0,0,1",
+                        "0,1e-4,0,0, -1e-4,0,0,0, 0,0,1e-4,0, 5,5,5,1", "1e-9,0,0,0, 0,1e-9,0,0, 0,0,1e-9,0, 0,0,0,1",
+                        "1,0,0,0, 0,1,0,0, 0,0,1e-3,0, 0,0,0,1"}) {
+    std::string json = std::string(R"({"objects": [{"mesh": {"procedural": "torus"}, "transform": [)") + t + "]}]}";
+    EXPECT_EQ(refusal(json), "accepted") << t;
+  }
+  const std::map<std::string, std::string> cases = {
+      {"1,0,0,0, 0,1,0,0, 0,0,0,0, 0,0,0,1", "/objects/0/transform: is singular"},
+      {"1,0,0,0, 1,0,0,0, 0,0,1,0, 0,0,0,1", "/objects/0/transform: is singular"},
+      {"1,0,0,0, 0,1,0,0, 0,0,1e-7,0, 0,0,0,1", "/objects/0/transform: is nearly singular: its linear part's condition"},
+      {"1,0,0,0, 1,1e-7,0,0, 0,0,1,0, 0,0,0,1", "/objects/0/transform: is nearly singular"},
+      {"1,0,0,0.5, 0,1,0,0, 0,0,1,0, 0,0,0,1", "/objects/0/transform/3: must be 0 (the last row"},
+      {"1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,2", "/objects/0/transform/15: must be 1"},
+  };
+  for (const auto& [t, expected] : cases) {
+    std::string m = refusal(R"({"objects": [{"mesh": {"procedural": "torus"}, "transform": [)" + t + "]}]}");
+    EXPECT_NE(m.find("bad.json: " + expected), std::string::npos) << t << "\n gave: " << m;
   }
 }
 
