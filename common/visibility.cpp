@@ -59,10 +59,43 @@ VisibilitySample sample_at(const WindowPath& p, double s) {
 
 namespace {
 
-// Arc lengths of the first round of samples of a path.
-std::vector<double> sample_arcs(const WindowPath& p, double step) {
+constexpr double kWindowMargin = 4;  // px around the window where samples are taken (the test reaches 2)
+
+// The part [t0, t1] of segment a -> b inside the window grown by the margin (Liang-Barsky);
+// false when none is.
+bool clip_to_window(glm::dvec2 a, glm::dvec2 b, double width, double height, double& t0, double& t1) {
+  const glm::dvec2 d = b - a, lo(-kWindowMargin), hi(width + kWindowMargin, height + kWindowMargin);
+  t0 = 0, t1 = 1;
+  for (int c = 0; c < 2; ++c) {
+    if (d[c] == 0) {
+      if (a[c] < lo[c] || a[c] > hi[c]) return false;
+      continue;
+    }
+    double u = (lo[c] - a[c]) / d[c], v = (hi[c] - a[c]) / d[c];
+    t0 = std::max(t0, std::min(u, v)), t1 = std::min(t1, std::max(u, v));
+  }
+  return t0 <= t1;
+}
+
+// Arc lengths of the first round of samples of a path: every `step` px (multiples of it)
+// where the path runs within kWindowMargin of the window, and one sample where it leaves or
+// enters that, which tests hidden: no run spans a stretch off the window, and such a
+// stretch, however long, costs no samples.
+std::vector<double> sample_arcs(const WindowPath& p, double step, double width, double height) {
   std::vector<double> s;
-  for (double at = 0; at < p.length_px; at = double(s.size()) * step) s.push_back(at);
+  auto add = [&](double at) {
+    if (s.empty() || at > s.back()) s.push_back(at);
+  };
+  size_t n = p.window.size(), segments = p.closed ? n : n - 1;
+  for (size_t k = 0; k < segments; ++k) {
+    glm::dvec2 a = p.window[k], b = p.window[(k + 1) % n];
+    double s0 = p.arc_px[k], length = glm::distance(a, b), t0, t1;
+    if (!clip_to_window(a, b, width, height, t0, t1)) continue;
+    if (t0 > 0) add(s0 + t0 * length);  // enters: on the margin's edge
+    for (double i = std::ceil((s0 + t0 * length) / step); i * step <= s0 + t1 * length && i * step < p.length_px; ++i)
+      add(i * step);
+    if (t1 < 1) add(s0 + t1 * length);  // leaves
+  }
   if (s.empty()) s.push_back(0);
   if (!p.closed && s.back() < p.length_px) s.push_back(p.length_px);
   return s;
@@ -83,7 +116,7 @@ class RunBuilder {
  public:
   RunBuilder(const WindowLines& lines, const StrokesParams& p, const SampleTest& test) : lines_(lines), test_(test) {
     for (uint32_t i = 0; i < lines.paths.size(); ++i) {
-      std::vector<double> s = sample_arcs(lines.paths[i], p.vis_step_px);
+      std::vector<double> s = sample_arcs(lines.paths[i], p.vis_step_px, lines.width, lines.height);
       first_.push_back(tested_.size());
       for (double at : s) tested_.push_back({at, false}), batch_.push_back(sample_at(lines.paths[i], at));
     }

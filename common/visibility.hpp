@@ -1,7 +1,8 @@
 // Visibility of stroke samples (SPEC 4.5; Kalnins et al. 2002 §4.6), from the ID image.
 //
 // Each path of common/strokes.hpp is sampled every `strokes.vis_step_px` pixels of window
-// arc length from its start (an open path also at its end). A sample at window position
+// arc length from its start (an open path also at its end), where it runs within 4 px of
+// the window; where it leaves or enters that, one sample marks the edge (hidden). A sample at window position
 // p, in pixel floor(p), is visible when some pixel of the 3x3 box around it holds
 //   - a silhouette: its path key, with an arc-length byte within
 //     ceil(2 max(2, 256 / L_px)) of its own floor(255 s / L) (around the seam of a

@@ -3,6 +3,8 @@
 // only the flags come back (Kalnins et al. read the whole ID image back every frame).
 #include "gpu/visibility.hpp"
 
+#include <algorithm>
+
 #include "gpu/stage.hpp"
 
 namespace plumbago::gpu {
@@ -17,7 +19,11 @@ std::vector<uint8_t> SampleTest::operator()(const Texture& ids, const std::vecto
   bind_textures(program_, {{"ids", &ids}});
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, samples.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, flags.id());
-  glDispatchCompute(GLuint((batch.size() + 63) / 64), 1, 1);
+  const size_t per_dispatch = size_t(65535) * 64;  // GL's least maximum of work groups, 64 samples each
+  for (size_t first = 0; first < batch.size(); first += per_dispatch) {
+    glProgramUniform1ui(program_.id(), program_.uniform("first_sample"), GLuint(first));
+    glDispatchCompute(GLuint((std::min(per_dispatch, batch.size() - first) + 63) / 64), 1, 1);
+  }
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<uint32_t> read(batch.size());
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, flags.id());  // not glGetNamedBufferSubData: OSMesa has no such entry

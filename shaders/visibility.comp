@@ -15,6 +15,7 @@ layout(std430, binding = 0) readonly buffer Samples { Sample samples[]; };
 layout(std430, binding = 1) writeonly buffer Flags { uint flags[]; };
 uniform usampler2D ids;  // (key >> 16, key & 0xffff)
 uniform uint sample_count;
+uniform uint first_sample;  // of this dispatch (a batch may take several: 65535 groups at most each)
 
 bool holds(uint value, Sample s) {
   if (value == 0u) return false;
@@ -27,7 +28,7 @@ bool holds(uint value, Sample s) {
 }
 
 void main() {
-  uint k = gl_GlobalInvocationID.x;
+  uint k = first_sample + gl_GlobalInvocationID.x;
   if (k >= sample_count) return;
   Sample s = samples[k];
   ivec2 size = textureSize(ids, 0);
