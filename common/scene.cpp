@@ -390,7 +390,10 @@ bool has_style(const Scene& s, Style style) {
 }
 
 void match_effects_to_styles(Scene& s) {
-  std::erase_if(s.effects, [&](const std::string& e) { return style_effect(e) && !has_style(s, style_effect(e)->style); });
+  std::erase_if(s.effects, [&](const std::string& e) {
+    const StyleEffect* styled = style_effect(e);
+    return styled && !has_style(s, styled->style);
+  });
   for (const EffectDef& e : effect_table()) {
     const StyleEffect* styled = style_effect(e.name);
     bool listed = std::find(s.effects.begin(), s.effects.end(), e.name) != s.effects.end();

@@ -76,7 +76,8 @@ TEST(Orbit, FrameAndResetGoBack) {
   o.zoom(3);
   o.frame();
   EXPECT_NEAR(glm::length(o.camera().target - kCenter), 0, 1e-5f);
-  EXPECT_NEAR(glm::length(o.camera().eye - kCenter), glm::length(home.eye - kCenter), 1e-3f) << "as far as a fitted camera";
+  EXPECT_NEAR(glm::length(o.camera().eye - kCenter), glm::length(home.eye - kCenter), 1e-3f)
+      << "as far as a fitted camera";
   EXPECT_EQ(o.pivot(), kCenter);
   o.reset();
   EXPECT_EQ(o.camera().eye, home.eye);

@@ -43,7 +43,8 @@ class Viewer : public ::testing::Test {
 };
 
 TEST_F(Viewer, ScreenshotWithoutPanelEqualsRender) {
-  const std::string scene = std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/sketchy_mixed.json --size 320x240 --set contour.copies=2";
+  const std::string scene =
+      std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/sketchy_mixed.json --size 320x240 --set contour.copies=2";
   testing::CliRun v = view(scene + " --frames 3 --no-ui --screenshot " + path("view.png"));
   ASSERT_EQ(v.code, 0) << v.err;
   testing::CliRun r = run("render " + scene + " -o " + path("render.png"));

@@ -37,7 +37,9 @@ bool param_widget(const ParamSpec& spec, const char* label, double& value) {
   switch (spec.type) {
     case ParamType::Real:
       return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &spec.min, &spec.max, "%.4g", slider_flags(spec));
-    case ParamType::Integer: changed = ImGui::SliderInt(label, &i, int(spec.min), int(spec.max), "%d", slider_flags(spec)); break;
+    case ParamType::Integer:
+      changed = ImGui::SliderInt(label, &i, int(spec.min), int(spec.max), "%d", slider_flags(spec));
+      break;
     case ParamType::Choice: changed = combo(label, i, spec.choices); break;
     case ParamType::Boolean:
       changed = ImGui::Checkbox(label, &b);
@@ -64,7 +66,8 @@ bool listed(const Scene& scene, const std::string& effect) {
 void Panels::draw(Session& session, glm::ivec2 framebuffer, float width) {
   ImGui::SetNextWindowPos(ImVec2(float(framebuffer.x) - width, 0), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(width, float(framebuffer.y)), ImGuiCond_Always);
-  ImGui::Begin("plumbago view", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  const ImGuiWindowFlags pinned = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
+  ImGui::Begin("plumbago view", nullptr, pinned);
   ImGui::PushItemWidth(-ImGui::GetFontSize() * 12);  // room for the labels
   if (!session.error().empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", session.error().c_str());
   if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) scene_section(session);
@@ -87,7 +90,7 @@ void Panels::scene_section(Session& session) {
     int style = int(scene.objects[i].style);
     std::string label = "object " + std::to_string(i);
     if (combo(label.c_str(), style, style_names())) session.set_style(i, Style(style));
-    tooltip(scene.objects[i].mesh->name + ": the pipeline that draws it (pencil effects, sketchy drawing, shaded, strokes)");
+    tooltip(scene.objects[i].mesh->name + ": the pipeline that draws it (pencil, sketchy, shaded, strokes)");
   }
   for (const EffectDef& e : effect_table()) {
     const StyleEffect* styled = style_effect(e.name);
@@ -117,9 +120,8 @@ void Panels::params_section(Session& session) {
   auto prefix = [&](size_t i) { return specs[i].key.substr(0, specs[i].key.find('.')); };
   for (size_t first = 0, end = 0; first < specs.size(); first = end) {
     for (end = first; end < specs.size() && prefix(end) == prefix(first);) ++end;
-    bool unused = passes_reading(passes, prefix(first)).empty();
-    if (!ImGui::TreeNode(prefix(first).c_str(), "%s%s", prefix(first).c_str(), unused ? "  (no stage of this scene reads it)" : ""))
-      continue;
+    const char* unused = passes_reading(passes, prefix(first)).empty() ? "  (no stage of this scene reads it)" : "";
+    if (!ImGui::TreeNode(prefix(first).c_str(), "%s%s", prefix(first).c_str(), unused)) continue;
     for (size_t i = first; i < end; ++i) param_row(session, specs[i], preprocessing_reads(passes, specs[i].key));
     ImGui::TreePop();
   }
@@ -162,7 +164,8 @@ void Panels::save_section(Session& session) {
   tooltip("The scene with this camera, parameters, effects and styles: `plumbago render FILE` draws this frame");
   ImGui::InputText("##image", &image_path_);
   ImGui::SameLine();
-  if (ImGui::Button("Save frame")) attempt(image_path_, [&](const std::string& p) { write_image(session.frame().color, p); });
+  if (ImGui::Button("Save frame"))
+    attempt(image_path_, [&](const std::string& p) { write_image(session.frame().color, p); });
   tooltip("The rendered frame at the scene's resolution, as `plumbago render -o FILE` writes it");
   ImGui::InputText("##screenshot", &screenshot_path);
   ImGui::SameLine();
