@@ -48,3 +48,20 @@ else()
                         "'libosmesa6-dev'.")
   endif()
 endif()
+
+# Optional: the viewer (`plumbago view`) needs GLFW and Dear ImGui (Debian 1.86: its
+# libimgui.a holds the GLFW and OpenGL 3 backends) and the EGL build (the OSMesa build's
+# GL entry points would shadow the window's). Without them everything else builds.
+pkg_check_modules(GLFW IMPORTED_TARGET glfw3)
+pkg_check_modules(IMGUI IMPORTED_TARGET imgui)  # and stb, which its font atlas calls
+if(NOT PLUMBAGO_GL STREQUAL "egl")
+  set(PLUMBAGO_VIEWER OFF)
+  message(STATUS "Plumbago: not building the viewer (plumbago view): it needs the EGL build")
+elseif(GLFW_FOUND AND IMGUI_FOUND)
+  set(PLUMBAGO_VIEWER ON)
+  message(STATUS "Plumbago: building the viewer (plumbago view) with GLFW ${GLFW_VERSION} and Dear ImGui ${IMGUI_VERSION}")
+else()
+  set(PLUMBAGO_VIEWER OFF)
+  message(STATUS "Plumbago: not building the viewer (plumbago view): GLFW or Dear ImGui not found; "
+                 "install the Debian packages 'libglfw3-dev libimgui-dev' (or run scripts/install-deps.sh)")
+endif()

@@ -104,4 +104,10 @@ Camera fit_camera(glm::vec3 center, float radius, glm::vec3 direction, float fov
   return c;
 }
 
+void fit_planes(Camera& c, glm::vec3 center, float radius) {
+  float d = glm::dot(center - c.eye, c.forward());
+  c.far = std::max(d + radius * 1.5f, radius * 0.1f);
+  c.near = std::max(d - radius * 1.5f, c.far * 1e-3f);
+}
+
 }  // namespace plumbago

@@ -72,5 +72,7 @@ std::string format_point(glm::dvec3 p);
 // A camera fitted to a bounding sphere: looks at its center from `direction`, with the
 // sphere filling the view and near/far planes bracketing it.
 Camera fit_camera(glm::vec3 center, float radius, glm::vec3 direction, float fov_deg);
+// Sets the near and far planes to bracket a bounding sphere seen from the camera.
+void fit_planes(Camera& c, glm::vec3 center, float radius);
 
 }  // namespace plumbago

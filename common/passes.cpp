@@ -1,9 +1,9 @@
 #include "common/passes.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <set>
 #include <stdexcept>
-
 
 namespace plumbago {
 
@@ -52,6 +52,21 @@ std::vector<std::string> passes_for(const std::vector<std::string>& effects, con
 
 bool is_preprocessing(const std::string& pass) {
   return is_stage(pass) && find_stage(pass).kind == StageKind::Preprocessing;
+}
+
+std::vector<std::string> passes_reading(const std::vector<std::string>& passes, const std::string& key) {
+  std::string prefix = key.substr(0, key.find('.'));
+  std::vector<std::string> out;
+  std::copy_if(passes.begin(), passes.end(), std::back_inserter(out), [&](const std::string& p) {
+    const std::vector<std::string>& read = find_stage(p).params;
+    return std::find(read.begin(), read.end(), prefix) != read.end();
+  });
+  return out;
+}
+
+bool preprocessing_reads(const std::vector<std::string>& passes, const std::string& key) {
+  std::vector<std::string> reading = passes_reading(passes, key);
+  return std::any_of(reading.begin(), reading.end(), is_preprocessing);
 }
 
 std::vector<std::string> frame_stages(const std::vector<std::string>& passes) {

@@ -22,6 +22,11 @@ std::string effect_names();  // "contours, ..." for messages
 std::vector<std::string> passes_for(const std::vector<std::string>& effects, const ParamSet& params = {});
 
 bool is_preprocessing(const std::string& pass);
+// The passes among `passes` that read the parameters of `key` ("stage.name", or the
+// prefix "stage" alone): their descriptors name the prefix.
+std::vector<std::string> passes_reading(const std::vector<std::string>& passes, const std::string& key);
+// Whether a preprocessing step among `passes` reads the parameter `key`.
+bool preprocessing_reads(const std::vector<std::string>& passes, const std::string& key);
 
 // The per-frame stages among `passes` (preprocessing left out).
 std::vector<std::string> frame_stages(const std::vector<std::string>& passes);

@@ -290,10 +290,10 @@ class SceneReader {
   }
 
   Style style(const json& j, const std::string& path) const {
-    static const std::map<std::string, Style> styles = {
-        {"pencil", Style::Pencil}, {"sketchy", Style::Sketchy}, {"shaded", Style::Shaded}, {"strokes", Style::Strokes}};
-    if (!j.is_string() || !styles.count(j.get<std::string>())) fail(path, "expected pencil, sketchy, shaded or strokes");
-    return styles.at(j.get<std::string>());
+    const std::vector<std::string>& names = style_names();
+    auto it = j.is_string() ? std::find(names.begin(), names.end(), j.get<std::string>()) : names.end();
+    if (it == names.end()) fail(path, "expected " + join(names));
+    return Style(it - names.begin());
   }
 
   // Near and far planes bracketing the scene's bounding sphere from the camera.
@@ -301,22 +301,12 @@ class SceneReader {
     glm::vec3 center;
     float radius;
     scene_bounds(s, center, radius);
-    float d = glm::dot(center - c.eye, c.forward());
-    c.far = std::max(d + radius * 1.5f, radius * 0.1f);
-    c.near = std::max(d - radius * 1.5f, c.far * 1e-3f);
+    plumbago::fit_planes(c, center, radius);
   }
 
   std::string source_, base_;
   std::map<std::string, std::shared_ptr<const Mesh>> meshes_;
 };
-
-// Lights over the camera's left shoulder, in world space.
-std::vector<Light> default_lights(const Camera& c) {
-  glm::vec3 back = -c.forward();
-  glm::vec3 right = glm::normalize(glm::cross(c.forward(), c.up));
-  glm::vec3 up = glm::cross(right, c.forward());
-  return {{glm::normalize(back + 0.6f * up - 0.5f * right), 1.0f}};
-}
 
 // nlohmann's DOM parser, remembering where it stopped: it reports a number beyond double
 // range (1e400) as out_of_range, an exception without the position.
@@ -344,23 +334,17 @@ std::string line_and_column(const std::string& text, size_t byte) {
 // stroke objects. Without "effects": contours for the pencil objects, the base coat for
 // the stroke objects.
 void set_effects(const json& j, const SceneReader& r, Scene& s) {
-  auto any = [&](Style style) {
-    return std::any_of(s.objects.begin(), s.objects.end(), [&](const SceneObject& o) { return o.style == style; });
-  };
-  auto listed = [&](const char* effect) { return std::find(s.effects.begin(), s.effects.end(), effect) != s.effects.end(); };
   s.effects.clear();
   if (j.contains("effects")) s.effects = r.effects(j["effects"], "/effects");
   else {
-    if (any(Style::Pencil) || any(Style::Shaded)) s.effects.push_back("contours");
-    if (any(Style::Strokes)) s.effects.push_back("basecoat");
+    if (has_style(s, Style::Pencil) || has_style(s, Style::Shaded)) s.effects.push_back("contours");
+    if (has_style(s, Style::Strokes)) s.effects.push_back("basecoat");
   }
-  const std::pair<const char*, Style> styled[] = {{"sketchy", Style::Sketchy}, {"strokes", Style::Strokes}, {"basecoat", Style::Strokes}};
-  for (auto [effect, style] : styled) {
-    const char* name = style == Style::Sketchy ? "sketchy" : "strokes";
-    if (listed(effect) && !any(style))
-      r.fail("/effects", "'" + std::string(effect) + "' draws the objects whose style is " + name + ", and no object has it");
-    if (any(style) && !listed(name)) s.effects.push_back(name);
-  }
+  for (const std::string& effect : s.effects)
+    if (const StyleEffect* styled = style_effect(effect); styled && !has_style(s, styled->style))
+      r.fail("/effects", "'" + effect + "' draws the objects whose style is " + style_names()[size_t(styled->style)] +
+                             ", and no object has it");
+  match_effects_to_styles(s);
 }
 
 Scene read_scene(const json& j, SceneReader& r, const std::string& source) {
@@ -388,11 +372,19 @@ Scene read_scene(const json& j, SceneReader& r, const std::string& source) {
   if (j.contains("strokes")) s.strokes = r.stroke_styles(j["strokes"], "/strokes");
   s.camera = j.contains("camera") ? r.camera(j["camera"], "/camera", s) : SceneReader::fitted_camera(s, 35.0f);
   r.check_camera(s.camera, j.contains("camera") ? j["camera"] : json::object(), "/camera", double(s.width) / s.height);
-  s.lights = j.contains("lights") ? r.lights(j["lights"], "/lights") : default_lights(s.camera);
+  s.lights_follow_camera = !j.contains("lights");
+  s.lights = s.lights_follow_camera ? default_lights(s.camera) : r.lights(j["lights"], "/lights");
   return s;
 }
 
 }  // namespace
+
+std::vector<Light> default_lights(const Camera& c) {
+  glm::vec3 back = -c.forward();
+  glm::vec3 right = glm::normalize(glm::cross(c.forward(), c.up));
+  glm::vec3 up = glm::cross(right, c.forward());
+  return {{glm::normalize(back + 0.6f * up - 0.5f * right), 1.0f}};
+}
 
 PixelRect covered_rect(const Scene& scene, int width, int height, float margin) {
   const PixelRect window{0, 0, width, height};
@@ -444,25 +436,61 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
   return read_scene(j, reader, source);
 }
 
-Scene load_scene(const std::string& path) {
-  std::ifstream in(path);
-  if (!in || fs::is_directory(path)) throw SceneError(path + ": cannot read the scene file");
+std::string scene_text(const std::string& source) {
+  if (source.starts_with("builtin:")) {
+    std::string name = source.substr(8);
+    auto names = builtin_scene_names();
+    if (std::find(names.begin(), names.end(), name) == names.end()) {
+      std::string known;
+      for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
+      throw SceneError(source + ": no such built-in scene (" + known + ")");
+    }
+    return "{\"mesh\": {\"procedural\": \"" + name + "\"}}";
+  }
+  std::ifstream in(source);
+  if (!in || fs::is_directory(source)) throw SceneError(source + ": cannot read the scene file");
   std::stringstream ss;
   ss << in.rdbuf();
-  fs::path dir = fs::path(path).parent_path();
-  return parse_scene(ss.str(), path, dir.empty() ? "." : dir.string());
+  return ss.str();
 }
+
+std::string scene_folder(const std::string& source) {
+  fs::path dir = source.starts_with("builtin:") ? fs::path() : fs::path(source).parent_path();
+  return dir.empty() ? "." : dir.string();
+}
+
+Scene load_scene(const std::string& path) { return parse_scene(scene_text(path), path, scene_folder(path)); }
 
 std::vector<std::string> builtin_scene_names() { return {"torus", "sphere", "cad"}; }
 
-Scene builtin_scene(const std::string& name) {
-  auto names = builtin_scene_names();
-  if (std::find(names.begin(), names.end(), name) == names.end()) {
-    std::string known;
-    for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
-    throw SceneError("builtin:" + name + ": no such built-in scene (" + known + ")");
+Scene builtin_scene(const std::string& name) { return load_scene("builtin:" + name); }
+
+const std::vector<std::string>& style_names() {
+  static const std::vector<std::string> names = {"pencil", "sketchy", "shaded", "strokes"};
+  return names;
+}
+
+const StyleEffect* style_effect(const std::string& effect) {
+  static const std::map<std::string, StyleEffect> effects = {
+      {"sketchy", {Style::Sketchy, true}}, {"strokes", {Style::Strokes, true}}, {"basecoat", {Style::Strokes, false}}};
+  auto it = effects.find(effect);
+  return it == effects.end() ? nullptr : &it->second;
+}
+
+bool has_style(const Scene& s, Style style) {
+  return std::any_of(s.objects.begin(), s.objects.end(), [&](const SceneObject& o) { return o.style == style; });
+}
+
+void match_effects_to_styles(Scene& s) {
+  std::erase_if(s.effects, [&](const std::string& e) {
+    const StyleEffect* styled = style_effect(e);
+    return styled && !has_style(s, styled->style);
+  });
+  for (const EffectDef& e : effect_table()) {
+    const StyleEffect* styled = style_effect(e.name);
+    bool listed = std::find(s.effects.begin(), s.effects.end(), e.name) != s.effects.end();
+    if (styled && styled->automatic && has_style(s, styled->style) && !listed) s.effects.push_back(e.name);
   }
-  return parse_scene("{\"mesh\": {\"procedural\": \"" + name + "\"}}", "builtin:" + name, ".");
 }
 
 }  // namespace plumbago

@@ -20,6 +20,8 @@ namespace plumbago {
 // Which pipeline draws an object: the pencil effects (SPEC 2), sketchy drawing (SPEC 3),
 // or stroke-based rendering (SPEC 4). `Shaded` objects are drawn by the pencil effects.
 enum class Style { Pencil, Sketchy, Shaded, Strokes };
+// The scene file's names of the styles, in enum order: pencil, sketchy, shaded, strokes.
+const std::vector<std::string>& style_names();
 
 struct SceneObject {
   std::shared_ptr<const Mesh> mesh;
@@ -45,6 +47,7 @@ struct Scene {
   std::vector<SceneObject> objects;
   Camera camera;
   std::vector<Light> lights;
+  bool lights_follow_camera = false;  // the file gave no lights: default_lights(camera)
   int width = 800, height = 800;
   uint32_t seed = 1;
   std::vector<std::string> effects{"contours"};
@@ -57,14 +60,39 @@ struct SceneError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Loads a scene file; relative mesh paths resolve against the scene file's folder.
+// Loads a scene file (or a built-in scene, "builtin:NAME"); relative mesh paths resolve
+// against the scene file's folder.
 Scene load_scene(const std::string& path);
+// The JSON text a scene is read from: its file, or the document of a built-in scene
+// ("builtin:NAME"). Throws SceneError when the file cannot be read.
+std::string scene_text(const std::string& source);
+// The folder relative paths of `source`'s document resolve against.
+std::string scene_folder(const std::string& source);
+// Writes `scene` as a scene file that load_scene reads back to the same scene: the
+// document it was read from (scene_text) with its camera, lights, resolution, seed,
+// effects, parameters and object styles replaced by the scene's own and its relative
+// paths rebased on `path`'s folder. Leaves no partial file; throws SceneError.
+void save_scene(const Scene& scene, const std::string& path);
 // Parses scene JSON text; `source` names it in messages, `base_dir` resolves paths.
 Scene parse_scene(const std::string& json_text, const std::string& source, const std::string& base_dir);
 
 // Built-in procedural scenes (no files needed): "torus", "sphere", "cad".
 Scene builtin_scene(const std::string& name);
 std::vector<std::string> builtin_scene_names();
+
+// An effect that draws only the objects of one style (SPEC 3, 4; EffectDef::styled):
+// "sketchy" the sketchy objects, "strokes" and "basecoat" the stroke objects. A scene
+// lists one only when an object has its style; the `automatic` ones, without which those
+// objects are not drawn at all ("sketchy", "strokes"), are on by themselves then.
+struct StyleEffect {
+  Style style;
+  bool automatic;
+};
+const StyleEffect* style_effect(const std::string& effect);  // null for the other effects
+bool has_style(const Scene& scene, Style style);
+// Makes the effects agree with the objects' styles as a scene file must: drops the
+// effects whose style no object has, adds the automatic ones whose style one has.
+void match_effects_to_styles(Scene& scene);
 
 // The pixels that `scene`'s objects can cover (the bounding rectangle of their projected
 // vertices), grown by `margin` pixels and clipped to the window; the whole window when a
@@ -76,6 +104,9 @@ PixelRect covered_rect(const Scene& scene, int width, int height, float margin);
 // pixel to spare. The GPU runs such passes only there (edge detection and the sketchy
 // maps: radius 1; the pencil interior: 0) and clears the rest to the background value.
 PixelRect filter_rect(const Scene& scene, int radius);
+
+// The lights of a scene file without "lights": one over the camera's left shoulder.
+std::vector<Light> default_lights(const Camera& camera);
 
 // World-space bounding sphere of all objects.
 void scene_bounds(const Scene& scene, glm::vec3& center, float& radius);

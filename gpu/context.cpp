@@ -76,6 +76,14 @@ void Context::check_errors(const std::string& what) {
   throw std::runtime_error(text);
 }
 
+void Context::make_current() {
+  if (!impl_->make_current(true)) throw std::runtime_error("cannot make the " + platform_ + " GL context current again");
+}
+
+void Context::release() {
+  if (!impl_->make_current(false)) throw std::runtime_error("cannot release the " + platform_ + " GL context");
+}
+
 std::vector<std::string> Context::take_messages() {
   std::vector<std::string> out;
   out.swap(messages_);

@@ -28,6 +28,12 @@ class Context {
   // Debug messages of any severity collected since the last call.
   std::vector<std::string> take_messages();
 
+  // Makes the context current on the calling thread again, or leaves the thread with no
+  // current context (release), for a program that draws into a window's context too
+  // (plumbago view). Throws std::runtime_error when the platform refuses.
+  void make_current();
+  void release();
+
   ~Context();
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;

@@ -51,10 +51,13 @@ struct EglContext : Context::Impl {
   EGLContext context = EGL_NO_CONTEXT;
   ~EglContext() override {
     if (context != EGL_NO_CONTEXT) {
-      eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+      make_current(false);
       eglDestroyContext(display, context);
     }
     if (display != EGL_NO_DISPLAY) eglTerminate(display);
+  }
+  bool make_current(bool current) override {
+    return eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, current ? context : EGL_NO_CONTEXT);
   }
 };
 
@@ -87,7 +90,7 @@ std::unique_ptr<Context::Impl> create_platform_context(std::string& platform) {
   if (egl->context == EGL_NO_CONTEXT)
     throw std::runtime_error("EGL cannot create a GL 4.5 core context (EGL error 0x" +
                              std::to_string(eglGetError()) + "); Mesa's llvmpipe needs 'libgl1-mesa-dri'");
-  if (!eglMakeCurrent(egl->display, EGL_NO_SURFACE, EGL_NO_SURFACE, egl->context))
+  if (!egl->make_current(true))
     throw std::runtime_error("EGL cannot make the context current without a surface");
   return egl;
 }

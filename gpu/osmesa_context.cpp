@@ -15,6 +15,10 @@ struct OsMesaContext : Context::Impl {
   ~OsMesaContext() override {
     if (context) OSMesaDestroyContext(context);
   }
+  bool make_current(bool current) override {
+    return current ? OSMesaMakeCurrent(context, buffer.data(), GL_UNSIGNED_BYTE, 1, 1)
+                   : OSMesaMakeCurrent(nullptr, nullptr, GL_UNSIGNED_BYTE, 0, 0);
+  }
 };
 
 }  // namespace
@@ -26,7 +30,7 @@ std::unique_ptr<Context::Impl> create_platform_context(std::string& platform) {
                          OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
   os->context = OSMesaCreateContextAttribs(attribs, nullptr);
   if (!os->context) throw std::runtime_error("OSMesa cannot create a GL 4.5 core context");
-  if (!OSMesaMakeCurrent(os->context, os->buffer.data(), GL_UNSIGNED_BYTE, 1, 1))
+  if (!os->make_current(true))
     throw std::runtime_error("OSMesa cannot make the context current");
   return os;
 }

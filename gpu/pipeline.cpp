@@ -13,16 +13,16 @@ namespace plumbago::gpu {
 
 struct Renderer::State {
   std::vector<std::string> all;
-  Preprocessed pre;
+  std::shared_ptr<const Preprocessed> pre;
   GpuFrame frame;
   std::vector<const GpuPassDef*> plan;
   std::vector<std::unique_ptr<GpuPass>> passes;  // one per planned pass
   PassTimer timer;
 
-  explicit State(const Scene& scene)
+  State(const Scene& scene, std::shared_ptr<const Preprocessed> made)
       : all(passes_for(scene.effects, scene.params)),
-        pre(preprocess(ordinary_objects(scene), all)),
-        frame(scene, pre, frame_stages(all)),
+        pre(made ? std::move(made) : std::make_shared<const Preprocessed>(preprocess(ordinary_objects(scene), all))),
+        frame(scene, *pre, frame_stages(all)),
         plan(plan_passes(frame.stages, frame.config())) {
     for (const GpuPassDef* def : plan) passes.push_back(def->make(frame));
   }
@@ -52,9 +52,9 @@ struct Renderer::State {
   }
 };
 
-Renderer::Renderer(const Scene& scene) {
+Renderer::Renderer(const Scene& scene, std::shared_ptr<const Preprocessed> preprocessed) {
   Context& context = Context::get();  // before any GL call
-  state_ = std::make_unique<State>(scene);
+  state_ = std::make_unique<State>(scene, std::move(preprocessed));
   context.check_errors("setting up the GPU renderer");
 }
 
@@ -77,11 +77,13 @@ GBufferChannels Renderer::frame_channels(const std::string& stage) const {
   return c;
 }
 
+std::shared_ptr<const Preprocessed> Renderer::preprocessed() const { return state_->pre; }
+
 Frame Renderer::render(const FrameOptions& options) {
   Frame frame;
   state_->frame.dump = options.keep_buffers;
   state_->run_frame();
-  frame.ran = state_->pre.ran;  // once per Renderer, listed with every frame it renders
+  frame.ran = state_->pre->ran;  // made once, listed with every frame that uses it
   for (const PassTime& t : state_->timer.results()) frame.ran.push_back(t);
   Stopwatch readback;
   std::string color = frame_color_buffer(state_->frame.stages);  // none without effects: the blank page

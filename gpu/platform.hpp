@@ -11,6 +11,8 @@ namespace plumbago::gpu {
 
 struct Context::Impl {
   virtual ~Impl() = default;
+  // Makes the context current (true) or none current (false); false when refused.
+  virtual bool make_current(bool current) = 0;
 };
 
 // Creates a GL 4.5 core context and makes it current; sets `platform` to its name.

@@ -25,8 +25,9 @@ inline std::string slurp(const std::string& path) {
   return ss.str();
 }
 
-inline CliRun run_cli(const std::string& args, const TempDir& dir) {
-  std::string cmd = std::string(PLUMBAGO_CLI) + " " + args + " >" + dir.path("stdout") + " 2>" + dir.path("stderr");
+// `wrapper`, when given, runs the program (e.g. "xvfb-run -a ", "env -u DISPLAY ").
+inline CliRun run_cli(const std::string& args, const TempDir& dir, const std::string& wrapper = "") {
+  std::string cmd = wrapper + PLUMBAGO_CLI + " " + args + " >" + dir.path("stdout") + " 2>" + dir.path("stderr");
   int status = std::system(cmd.c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir.path("stdout")), slurp(dir.path("stderr"))};
 }

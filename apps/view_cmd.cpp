@@ -1,0 +1,34 @@
+// plumbago view [SCENE] [--size WxH] [--set k=v ...] [--frames N --screenshot FILE] [--no-ui]
+#include "apps/command.hpp"
+#include "apps/viewer/viewer.hpp"
+
+namespace plumbago {
+namespace {
+
+void run(const ViewerOptions& o) {
+#if PLUMBAGO_VIEWER
+  run_viewer(o);
+#else
+  (void)o;
+  throw std::runtime_error("view: this plumbago was built without the viewer, which needs GLFW and Dear ImGui "
+                           "(Debian packages 'libglfw3-dev libimgui-dev', scripts/install-deps.sh) and the EGL "
+                           "build; cmake says which was missing");
+#endif
+}
+
+void setup(CLI::App& app) {
+  auto o = std::make_shared<ViewerOptions>();
+  auto* cmd = app.add_subcommand("view", "Open a window on a scene (default: the built-in CAD part): "
+                                         "orbit, turn every parameter, time the passes");
+  o->scene.add_to(cmd, false);
+  auto* frames = cmd->add_option("--frames", o->frames, "Draw N frames, write --screenshot and exit")
+                     ->check(CLI::Range(1, 100000));
+  cmd->add_option("--screenshot", o->screenshot, "With --frames: PNG of what the window shows")->needs(frames);
+  cmd->add_flag("--no-ui", o->no_ui, "Show the frame alone, without the panels");
+  cmd->callback([o] { run(*o); });
+}
+
+PLUMBAGO_COMMAND(setup);
+
+}  // namespace
+}  // namespace plumbago

@@ -1,0 +1,177 @@
+#include "apps/viewer/panels.hpp"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cfloat>
+
+#include "common/passes.hpp"
+
+namespace plumbago {
+namespace {
+
+bool item_text(void* names, int i, const char** out) {
+  *out = (*static_cast<const std::vector<std::string>*>(names))[size_t(i)].c_str();
+  return true;
+}
+
+bool combo(const char* label, int& index, const std::vector<std::string>& names) {
+  return ImGui::Combo(label, &index, item_text, const_cast<std::vector<std::string>*>(&names), int(names.size()));
+}
+
+void tooltip(const std::string& text) {
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", text.c_str());
+}
+
+// Ranges over several decades (texture sizes, depth scales) slide logarithmically.
+ImGuiSliderFlags slider_flags(const ParamSpec& spec) {
+  bool decades = spec.max >= 100 && (spec.min == 0 || spec.max / spec.min >= 100);
+  return ImGuiSliderFlags_AlwaysClamp | (spec.min >= 0 && decades ? ImGuiSliderFlags_Logarithmic : 0);
+}
+
+// The widget of one parameter, by type; true when the user changed `value`.
+bool param_widget(const ParamSpec& spec, const char* label, double& value) {
+  int i = int(value);
+  bool b = value != 0, changed = false;
+  switch (spec.type) {
+    case ParamType::Real:
+      return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &spec.min, &spec.max, "%.4g", slider_flags(spec));
+    case ParamType::Integer:
+      changed = ImGui::SliderInt(label, &i, int(spec.min), int(spec.max), "%d", slider_flags(spec));
+      break;
+    case ParamType::Choice: changed = combo(label, i, spec.choices); break;
+    case ParamType::Boolean:
+      changed = ImGui::Checkbox(label, &b);
+      i = b;
+      break;
+  }
+  if (changed) value = i;
+  return changed;
+}
+
+std::string param_tooltip(const ParamSpec& spec) {
+  std::string range = spec.type == ParamType::Real || spec.type == ParamType::Integer
+                          ? ", range [" + format_value(spec, spec.min) + ", " + format_value(spec, spec.max) + "]"
+                          : "";
+  return spec.doc + "\n\n" + spec.key + ": default " + format_value(spec, spec.default_value) + range;
+}
+
+bool listed(const Scene& scene, const std::string& effect) {
+  return std::find(scene.effects.begin(), scene.effects.end(), effect) != scene.effects.end();
+}
+
+}  // namespace
+
+void Panels::draw(Session& session, glm::ivec2 framebuffer, float width) {
+  ImGui::SetNextWindowPos(ImVec2(float(framebuffer.x) - width, 0), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(width, float(framebuffer.y)), ImGuiCond_Always);
+  const ImGuiWindowFlags pinned = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
+  ImGui::Begin("plumbago view", nullptr, pinned);
+  ImGui::PushItemWidth(-ImGui::GetFontSize() * 12);  // room for the labels
+  if (!session.error().empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", session.error().c_str());
+  if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) scene_section(session);
+  if (ImGui::CollapsingHeader("Camera")) camera_section(session);
+  if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) params_section(session);
+  if (ImGui::CollapsingHeader("Timing", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ImGui::Checkbox("render continuously", &continuous);
+    tooltip("Render every frame, not only after a change: fps and the plots then follow the renderer");
+    timing.draw(session.setup_ms());
+  }
+  if (ImGui::CollapsingHeader("Save", ImGuiTreeNodeFlags_DefaultOpen)) save_section(session);
+  ImGui::PopItemWidth();
+  ImGui::End();
+}
+
+void Panels::scene_section(Session& session) {
+  const Scene& scene = session.scene();
+  ImGui::Text("%s, %dx%d", scene.source.c_str(), scene.width, scene.height);
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    int style = int(scene.objects[i].style);
+    std::string label = "object " + std::to_string(i);
+    if (combo(label.c_str(), style, style_names())) session.set_style(i, Style(style));
+    tooltip(scene.objects[i].mesh->name + ": the pipeline that draws it (pencil, sketchy, shaded, strokes)");
+  }
+  for (const EffectDef& e : effect_table()) {
+    const StyleEffect* styled = style_effect(e.name);
+    bool fixed = styled && (styled->automatic || !has_style(scene, styled->style));  // follows the objects' styles
+    bool on = listed(scene, e.name);
+    ImGui::BeginDisabled(fixed);
+    if (ImGui::Checkbox(e.name.c_str(), &on)) session.set_effect(e.name, on);
+    ImGui::EndDisabled();
+    tooltip(e.doc + (fixed ? "\n\n(follows the objects' styles)" : ""));
+  }
+}
+
+void Panels::camera_section(Session& session) {
+  const Camera& c = session.scene().camera;
+  ImGui::Text("eye    %8.3f %8.3f %8.3f", c.eye.x, c.eye.y, c.eye.z);
+  ImGui::Text("target %8.3f %8.3f %8.3f", c.target.x, c.target.y, c.target.z);
+  ImGui::Text("fov %.1f deg, near %.4g, far %.4g", c.fov_deg, c.near, c.far);
+  if (ImGui::Button("Scene's camera (R)")) session.move_camera([](OrbitCamera& o) { o.reset(); });
+  ImGui::SameLine();
+  if (ImGui::Button("Frame the scene (F)")) session.move_camera([](OrbitCamera& o) { o.frame(); });
+  ImGui::TextUnformatted("left drag: orbit; right or middle drag: pan; wheel: zoom");
+}
+
+void Panels::params_section(Session& session) {
+  const std::vector<ParamSpec>& specs = param_specs();
+  std::vector<std::string> passes = passes_for(session.scene().effects, session.scene().params);
+  auto prefix = [&](size_t i) { return specs[i].key.substr(0, specs[i].key.find('.')); };
+  for (size_t first = 0, end = 0; first < specs.size(); first = end) {
+    for (end = first; end < specs.size() && prefix(end) == prefix(first);) ++end;
+    const char* unused = passes_reading(passes, prefix(first)).empty() ? "  (no stage of this scene reads it)" : "";
+    if (!ImGui::TreeNode(prefix(first).c_str(), "%s%s", prefix(first).c_str(), unused)) continue;
+    for (size_t i = first; i < end; ++i) param_row(session, specs[i], preprocessing_reads(passes, specs[i].key));
+    ImGui::TreePop();
+  }
+}
+
+void Panels::param_row(Session& session, const ParamSpec& spec, bool slow) {
+  ImGui::PushID(spec.key.c_str());
+  double value = session.scene().params.value(spec.key);
+  ImGui::BeginDisabled(value == spec.default_value);
+  if (ImGui::SmallButton("reset")) {
+    session.set_param(spec.key, spec.default_value);
+    pending_.erase(spec.key);
+  }
+  ImGui::EndDisabled();
+  tooltip("back to the default, " + format_value(spec, spec.default_value));
+  ImGui::SameLine();
+  auto it = pending_.find(spec.key);
+  double shown = it != pending_.end() ? it->second : value;
+  if (param_widget(spec, spec.key.c_str() + spec.key.find('.') + 1, shown)) pending_[spec.key] = shown;
+  tooltip(param_tooltip(spec) + (slow ? "\n(preprocessing reads it: applied when released)" : ""));
+  if (pending_.count(spec.key) && (!slow || !ImGui::IsItemActive())) {
+    session.set_param(spec.key, pending_[spec.key]);
+    pending_.erase(spec.key);
+  }
+  ImGui::PopID();
+}
+
+void Panels::save_section(Session& session) {
+  auto attempt = [&](const std::string& path, auto&& write) {
+    try {
+      write(path);
+      status_ = "wrote " + path;
+    } catch (const std::exception& e) {
+      status_ = e.what();
+    }
+  };
+  ImGui::InputText("##scene", &scene_path_);
+  ImGui::SameLine();
+  if (ImGui::Button("Save scene")) attempt(scene_path_, [&](const std::string& p) { save_scene(session.scene(), p); });
+  tooltip("The scene with this camera, parameters, effects and styles: `plumbago render FILE` draws this frame");
+  ImGui::InputText("##image", &image_path_);
+  ImGui::SameLine();
+  if (ImGui::Button("Save frame"))
+    attempt(image_path_, [&](const std::string& p) { write_image(session.frame().color, p); });
+  tooltip("The rendered frame at the scene's resolution, as `plumbago render -o FILE` writes it");
+  ImGui::InputText("##screenshot", &screenshot_path);
+  ImGui::SameLine();
+  if (ImGui::Button("Screenshot (P)")) screenshot_wanted = true;
+  tooltip("What the window shows, panel included");
+  ImGui::TextWrapped("%s", status_.c_str());
+}
+
+}  // namespace plumbago

@@ -1,0 +1,39 @@
+// The viewer's panel (Dear ImGui). Every widget comes from a registry, none is written
+// for one parameter: the parameters from param_specs() (grouped by stage prefix, range,
+// default, doc as tooltip, reset), the effects from effect_table(), the styles from
+// style_names().
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "apps/viewer/session.hpp"
+#include "apps/viewer/timing.hpp"
+
+namespace plumbago {
+
+class Panels {
+ public:
+  // Draws the panel in the framebuffer's right `width` pixels.
+  void draw(Session& session, glm::ivec2 framebuffer, float width);
+
+  Timing timing;
+  bool continuous = false;        // render every frame (for timing), not only after a change
+  bool screenshot_wanted = false;  // the viewer writes `screenshot_path` after drawing
+  std::string screenshot_path = "plumbago-view.png";
+
+ private:
+  void scene_section(Session& session);
+  void camera_section(Session& session);
+  void params_section(Session& session);
+  // `slow`: preprocessing reads the parameter.
+  void param_row(Session& session, const ParamSpec& spec, bool slow);
+  void save_section(Session& session);
+  // Values being dragged of parameters that preprocessing reads: applied on release,
+  // so a drag does not remake the textures at every step.
+  std::map<std::string, double> pending_;
+  std::string scene_path_ = "plumbago-view.json", image_path_ = "plumbago-frame.png";
+  std::string status_;
+};
+
+}  // namespace plumbago
