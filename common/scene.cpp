@@ -1,4 +1,5 @@
 // Scene files (docs/scene-format.md, scenes/scene.schema.json) and the built-in scenes.
+#include "common/json_position.hpp"
 #include "common/scene.hpp"
 
 #include <algorithm>
@@ -224,9 +225,9 @@ class SceneReader {
       const json& v = j[key];
       if (!v.is_string()) fail(path + "/" + key, "expected a style name (" + join(stroke_style_names()) + ") or a style file");
       std::string name = v.get<std::string>();
-      bool file = name.find('/') != std::string::npos || name.ends_with(".json");
+      bool relative_file = !is_stroke_style_preset(name) && !fs::path(name).is_absolute();
       try {
-        *style = load_stroke_style(file && !fs::path(name).is_absolute() ? (fs::path(base_) / name).string() : name);
+        *style = load_stroke_style(relative_file ? (fs::path(base_) / name).string() : name);
       } catch (const StrokeStyleError& e) {
         fail(path + "/" + key, e.what());
       }
@@ -319,15 +320,6 @@ struct PositionedParser : nlohmann::detail::json_sax_dom_parser<json> {
   }
   size_t byte = 0;
 };
-
-std::string line_and_column(const std::string& text, size_t byte) {
-  size_t line = 1, column = 1;
-  for (size_t i = 0; i + 1 < byte && i < text.size(); ++i) {
-    if (text[i] == '\n') ++line, column = 1;
-    else ++column;
-  }
-  return "line " + std::to_string(line) + ", column " + std::to_string(column);
-}
 
 // The scene's effects. "sketchy" and "strokes" go with objects of those styles (SPEC 3, 4):
 // on by themselves when one is, refused when none is; so is "basecoat", which coats the

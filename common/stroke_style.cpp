@@ -1,3 +1,4 @@
+#include "common/json_position.hpp"
 #include "common/stroke_style.hpp"
 
 #include <algorithm>
@@ -185,19 +186,14 @@ StrokeStyle read_style(const json& j, const Refuser& r) {
   return s;
 }
 
-std::string line_and_column(const std::string& text, size_t byte) {
-  size_t line = 1, column = 1;
-  for (size_t i = 0; i + 1 < byte && i < text.size(); ++i) {
-    if (text[i] == '\n') ++line, column = 1;
-    else ++column;
-  }
-  return "line " + std::to_string(line) + ", column " + std::to_string(column);
-}
+}  // namespace
 
-bool is_preset_name(const std::string& s) {
+bool is_stroke_style_preset(const std::string& s) {
   bool json_suffix = s.size() >= 5 && s.compare(s.size() - 5, 5, ".json") == 0;
   return s.find('/') == std::string::npos && !json_suffix;
 }
+
+namespace {
 
 std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -259,7 +255,7 @@ std::vector<std::string> stroke_style_names() {
 
 StrokeStyle load_stroke_style(const std::string& name_or_path) {
   std::string path = name_or_path;
-  if (is_preset_name(name_or_path)) {
+  if (is_stroke_style_preset(name_or_path)) {
     path = (fs::path(stroke_style_dir()) / (name_or_path + ".json")).string();
     if (!fs::is_regular_file(path))
       throw StrokeStyleError("stroke style '" + name_or_path + "': no such preset in " + stroke_style_dir() +

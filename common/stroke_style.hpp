@@ -103,6 +103,9 @@ std::vector<ParamSpec> stroke_style_specs();
 // Parses a style document; keys left out take their defaults. `source` names it in messages.
 StrokeStyle parse_stroke_style(const std::string& json_text, const std::string& source);
 
+// Whether `name_or_path` names a preset (no '/', not ending in ".json") rather than a file.
+bool is_stroke_style_preset(const std::string& name_or_path);
+
 // A name without '/' and not ending in ".json" is a preset: <stroke_style_dir()>/<name>.json;
 // anything else is a file path.
 StrokeStyle load_stroke_style(const std::string& name_or_path);
