@@ -23,6 +23,7 @@
 #include <thread>
 
 #include "apps/command.hpp"
+#include "apps/path_frames.hpp"
 #include "apps/scene_options.hpp"
 #include "bench/paper_claims.hpp"
 #include "common/image_compare.hpp"
@@ -63,6 +64,10 @@ struct BenchResult {
   std::map<std::string, double> preprocessing;  // once per scene, not part of a frame
   std::map<std::string, BufferError> errors;    // --against
   std::vector<std::string> missing;             // --against: buffers with no saved counterpart
+  // A camera path (Scene::animation): each of its frames timed once, in order.
+  int path_frames = 0;
+  double path_ms = 0, slowest_ms = 0;  // the frames' sum and the slowest
+  double setup_ms = 0;                 // median per frame: making its renderer (GPU)
 };
 
 double median(std::vector<double> v) {
@@ -187,6 +192,30 @@ BenchResult bench_gpu(const BenchOptions& o, const Scene& scene, int frames, Out
   return r;
 }
 
+// A scene with a camera path: every frame of the path timed once (frame_ms their median),
+// after one untimed frame that runs the preprocessing and compiles the shaders.
+BenchResult bench_path(const BenchOptions& o, const Scene& scene, const std::string& backend, OutputFiles& out) {
+  BenchResult r = new_result(scene, backend);
+  PathFrames path(scene, backend);
+  for (const auto& p : path.render(0).ran)
+    if (is_preprocessing(p.name)) r.preprocessing[p.name] = p.ms;
+  std::vector<double> ms, setup;
+  r.path_frames = path.count();
+  for (int i = 0; i < path.count(); ++i) {
+    Frame f;
+    double setup_ms = 0;
+    ms.push_back(path.timed(i, f, setup_ms));
+    setup.push_back(setup_ms);
+    add_pass_times(f, path.count(), r);
+    r.path_ms += ms.back();
+    r.slowest_ms = std::max(r.slowest_ms, ms.back());
+  }
+  r.frame_ms = median(ms);
+  r.setup_ms = median(setup);
+  if (keeps_buffers(o)) save_and_compare(o, kept_buffers(path.render(0, FrameOptions{true})), r, out);
+  return r;
+}
+
 // "AMD EPYC 7B13 (2 threads)": the first model name in /proc/cpuinfo and the hardware threads.
 std::string machine_name() {
   std::ifstream in("/proc/cpuinfo");
@@ -211,6 +240,9 @@ void print_text(const std::vector<BenchResult>& results) {
   std::printf("renderer: %s\n", gpu::Context::get().renderer().c_str());
   for (const auto& r : results) {
     std::printf("%s [%s]: %.2f ms/frame = %.1f fps\n", r.scene.c_str(), r.backend.c_str(), r.frame_ms, 1000 / r.frame_ms);
+    if (r.path_frames)
+      std::printf("  camera path: %d frames in %.1f ms, slowest %.2f ms; making a frame's renderer %.2f ms (not in "
+                  "the frame)\n", r.path_frames, r.path_ms, r.slowest_ms, r.setup_ms);
     for (const auto& [name, ms] : r.stages) std::printf("  %-24s %9.3f ms\n", name.c_str(), ms);
     for (const auto& [name, ms] : r.preprocessing) std::printf("  preprocessing %-10s %9.3f ms (once, not in the frame)\n", name.c_str(), ms);
     for (const auto& [name, e] : r.errors)
@@ -232,6 +264,8 @@ nlohmann::json result_json(const BenchResult& r) {
   nlohmann::json j{{"scene", r.scene}, {"backend", r.backend}, {"faces", r.faces}, {"size", {r.width, r.height}},
                    {"fps", 1000 / r.frame_ms}, {"frame_ms", r.frame_ms}, {"stages", r.stages},
                    {"preprocessing", r.preprocessing}};
+  if (r.path_frames)
+    j["path"] = {{"frames", r.path_frames}, {"ms", r.path_ms}, {"slowest_ms", r.slowest_ms}, {"setup_ms", r.setup_ms}};
   if (!r.errors.empty() || !r.missing.empty()) {
     nlohmann::json e = nlohmann::json::object();
     for (const auto& [name, x] : r.errors)
@@ -349,8 +383,13 @@ void run(const BenchOptions& o) {
   for (const auto& name : scenes) {
     SceneOptions so{name, o.size, o.assignments};
     Scene scene = so.load();
-    if (o.backend != "reference") results.push_back(bench_gpu(o, scene, o.frames, out));
-    if (o.backend != "gpu") results.push_back(bench_reference(o, scene, reference_frames(o), out));
+    for (const char* backend : {"gpu", "reference"}) {
+      if (o.backend != "both" && o.backend != backend) continue;
+      bool gpu = backend == std::string("gpu");
+      results.push_back(scene.animation ? bench_path(o, scene, backend, out)
+                        : gpu           ? bench_gpu(o, scene, o.frames, out)
+                                        : bench_reference(o, scene, reference_frames(o), out));
+    }
   }
   out.commit();
   o.json ? print_json(o, results) : print_text(results);
@@ -359,8 +398,10 @@ void run(const BenchOptions& o) {
 void setup(CLI::App& app) {
   auto o = std::make_shared<BenchOptions>();
   auto* cmd = app.add_subcommand("bench", "Frame rate and per-pass times on both backends, next to the papers' claims");
-  cmd->add_option("scenes", o->scenes, "Scene files or builtin:NAME (default: the built-in CAD part)");
-  cmd->add_option("--frames", o->frames, "Frames to time on the GPU (the reference times a tenth)")
+  cmd->add_option("scenes", o->scenes,
+                  "Scene files or builtin:NAME (default: builtin:pencil, the CAD part with every pencil effect)");
+  cmd->add_option("--frames", o->frames,
+                  "Frames to time on the GPU (the reference times a tenth); a scene's camera path times its own")
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
   cmd->add_option("--reference-frames", o->reference_frames, "Frames to time on the reference (default: a tenth of --frames)")

@@ -55,10 +55,12 @@ Frame strokes_frame(const Scene& scene, const std::string& backend) {
   return backend == "reference" ? reference::render(scene, keep) : gpu::Renderer(scene).render(keep);
 }
 
-nlohmann::json path_json(const WindowPath& p, const ImageU32& keys) {
+// `origin`: the scene's (p.world is relative to it); the file has world space.
+nlohmann::json path_json(const WindowPath& p, const ImageU32& keys, glm::dvec3 origin) {
   nlohmann::json points = nlohmann::json::array(), screen = nlohmann::json::array(), visible = nlohmann::json::array();
   for (size_t k = 0; k < p.window.size(); ++k) {
-    points.push_back({p.world[k].x, p.world[k].y, p.world[k].z});
+    glm::dvec3 world = glm::dvec3(p.world[k]) + origin;
+    points.push_back({world.x, world.y, world.z});
     screen.push_back({p.window[k].x, p.window[k].y});
     visible.push_back(p.front_facing && sample_visible(keys, sample_at(p, p.arc_px[k])));
   }
@@ -163,7 +165,7 @@ void run(const LinesOptions& o) {
     text = svg(scene, lines, visible_runs(lines, p, test));
   } else {
     nlohmann::json paths = nlohmann::json::array();
-    for (const WindowPath& path : lines.paths) paths.push_back(path_json(path, keys));
+    for (const WindowPath& path : lines.paths) paths.push_back(path_json(path, keys, scene.origin));
     nlohmann::json j{{"paths", paths}};
     if (o.truth) {
       add_truth(scene, lines, visible_runs(lines, p, test), j["paths"]);

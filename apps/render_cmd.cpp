@@ -1,9 +1,12 @@
-// plumbago render [SCENE] [-o out.png] [--backend gpu|reference] [--size WxH]
-//                 [--set k=v ...] [--stats] [--json] [--dump-stages DIR]
+// plumbago render [SCENE] [-o out.png | -o DIR] [--frame I] [--backend gpu|reference]
+//                 [--size WxH] [--set k=v ...] [--stats] [--json] [--dump-stages DIR]
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
+
 #include "apps/command.hpp"
+#include "apps/path_frames.hpp"
 #include "apps/scene_options.hpp"
 #include "common/visualize.hpp"
 #include "gpu/context.hpp"
@@ -18,14 +21,9 @@ struct RenderOptions {
   std::string output = "plumbago.png";
   std::string backend = "gpu";
   std::string dump_dir;
+  int frame = 0;  // of the scene's camera path
   bool stats = false, json = false;
 };
-
-Frame render_frame(const Scene& scene, const std::string& backend, const FrameOptions& fo) {
-  if (backend == "reference") return reference::render(scene, fo);
-  gpu::Renderer renderer(scene);
-  return renderer.render(fo);
-}
 
 void print_stats(const RenderOptions& o, const Scene& scene, const Frame& frame) {
   std::string renderer = o.backend == "gpu" ? gpu::Context::get().renderer() : "CPU reference (Embree)";
@@ -59,17 +57,37 @@ void print_stats(const RenderOptions& o, const Scene& scene, const Frame& frame)
   for (const auto& m : gl_messages) std::printf("GL: %s\n", m.c_str());
 }
 
+// `-o DIR` for a scene with a camera path: every frame as DIR/frame_0000.png, ...
+void write_path(const RenderOptions& o, const Scene& scene) {
+  if (o.frame != 0 || !o.dump_dir.empty())
+    throw std::invalid_argument("-o " + o.output + ": a folder takes every frame; --frame and --dump-stages take an image file");
+  OutputFiles out;
+  out.folder(o.output);
+  PathFrames path(scene, o.backend);
+  char name[32];
+  for (int i = 0; i < path.count(); ++i) {
+    std::snprintf(name, sizeof name, "frame_%04d.png", i);
+    write_image(path.render(i).color, out.add((std::filesystem::path(o.output) / name).string()));
+  }
+  out.commit();
+}
+
 // Every output location is checked before rendering; the image and the dumps are
 // written under temporary names and put in place together, or not at all.
 void run(const RenderOptions& o) {
   Scene scene = o.scene.load();
+  int frames = scene.animation ? scene.animation->frames : 1;
+  if (o.frame < 0 || o.frame >= frames)
+    throw std::invalid_argument("--frame " + std::to_string(o.frame) + ": the scene has " + std::to_string(frames) +
+                                " frame" + (frames > 1 ? "s (0.." + std::to_string(frames - 1) + ")" : " (0)"));
+  if (scene.animation && std::filesystem::path(o.output).extension().empty()) return write_path(o, scene);
   check_image_extension(o.output);
   OutputFiles out;
   OutputFile& image = out.add(o.output);
   FrameOptions fo;
   fo.keep_buffers = !o.dump_dir.empty();
   if (fo.keep_buffers) out.folder(o.dump_dir);
-  Frame frame = render_frame(scene, o.backend, fo);
+  Frame frame = PathFrames(scene, o.backend).render(o.frame, fo);
   if (fo.keep_buffers) dump_buffers(frame.buffers, o.dump_dir, o.backend + ".", out);
   write_image(frame.color, image);
   out.commit();
@@ -78,9 +96,13 @@ void run(const RenderOptions& o) {
 
 void setup(CLI::App& app) {
   auto o = std::make_shared<RenderOptions>();
-  auto* cmd = app.add_subcommand("render", "Render a scene (default: the built-in CAD part) to an image");
+  auto* cmd = app.add_subcommand(
+      "render", "Render a scene (default: builtin:pencil, the CAD part with every pencil effect) to an image");
   o->scene.add_to(cmd, false);
-  cmd->add_option("-o,--output", o->output, "Output image (.png or .exr)")->capture_default_str();
+  cmd->add_option("-o,--output", o->output,
+                  "Output image (.png or .exr), or a folder for every frame of the scene's animation")
+      ->capture_default_str();
+  cmd->add_option("--frame", o->frame, "The frame of the scene's animation to render into the image (0: its camera)");
   cmd->add_option("--backend", o->backend, "gpu (GLSL) or reference (CPU)")
       ->check(CLI::IsMember({"gpu", "reference"}))
       ->capture_default_str();

@@ -5,10 +5,12 @@
 
 namespace plumbago {
 
-const char* const kDefaultBuiltinScene = "cad";
+const char* const kDefaultBuiltinScene = "pencil";
 
 void SceneOptions::add_to(CLI::App* cmd, bool scene_required) {
-  auto* opt = cmd->add_option("scene", scene, "Scene file (JSON), or builtin:NAME (torus, sphere, cad)");
+  std::string builtins;
+  for (const std::string& name : builtin_scene_names()) builtins += (builtins.empty() ? "" : ", ") + name;
+  auto* opt = cmd->add_option("scene", scene, "Scene file (JSON), or builtin:NAME (" + builtins + ")");
   if (scene_required) opt->required();
   cmd->add_option("--size", size, "Image size WxH (overrides the scene's resolution)");
   cmd->add_option("--set", assignments, "Override a parameter: stage.name=value (see `plumbago params`)");
@@ -38,7 +40,7 @@ Scene SceneOptions::load() const {
   else
     s = load_scene(scene);
   if (!size.empty()) apply_size(size, s);
-  if (auto fault = camera_fault(s.camera, double(s.width) / s.height))  // the field of view across the new size
+  if (auto fault = camera_fault(s.camera, double(s.width) / s.height, s.origin))  // the field of view across the new size
     throw std::invalid_argument("--size " + size + ": " + s.source + ": /camera/" + fault->key + ": " + fault->what);
   for (const auto& a : assignments) {
     try {

@@ -18,8 +18,9 @@ void run(const ViewerOptions& o) {
 
 void setup(CLI::App& app) {
   auto o = std::make_shared<ViewerOptions>();
-  auto* cmd = app.add_subcommand("view", "Open a window on a scene (default: the built-in CAD part): "
-                                         "orbit, turn every parameter, time the passes");
+  auto* cmd = app.add_subcommand("view",
+                                 "Open a window on a scene (default: builtin:pencil, the CAD part with every pencil "
+                                 "effect): orbit, turn every parameter, time the passes");
   o->scene.add_to(cmd, false);
   auto* frames = cmd->add_option("--frames", o->frames, "Draw N frames, write --screenshot and exit")
                      ->check(CLI::Range(1, 100000));

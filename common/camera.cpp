@@ -53,9 +53,9 @@ std::optional<CameraFault> fov_fault(const Camera& c, double aspect) {
   return std::nullopt;
 }
 
-std::optional<CameraFault> position_fault(const Camera& c) {
-  for (auto [key, p] : {std::pair{"eye", c.eye}, {"target", c.target}})
-    if (!glm::all(glm::lessThanEqual(glm::abs(glm::dvec3(p)), glm::dvec3(kMaxCoordinate))))
+std::optional<CameraFault> position_fault(const Camera& c, glm::dvec3 origin) {
+  for (auto [key, p] : {std::pair{"eye", glm::dvec3(c.eye) + origin}, {"target", glm::dvec3(c.target) + origin}})
+    if (!glm::all(glm::lessThanEqual(glm::abs(p), glm::dvec3(kMaxCoordinate))))
       return CameraFault{key, "lies at " + format_point(p) + ", beyond ±" + format_number(kMaxCoordinate) +
                                   " (the largest coordinate float buffers can hold)"};
   glm::dvec3 view = glm::dvec3(c.target) - glm::dvec3(c.eye), up = c.up;
@@ -85,9 +85,9 @@ std::optional<CameraFault> planes_fault(const Camera& c) {
 
 }  // namespace
 
-std::optional<CameraFault> camera_fault(const Camera& c, double aspect) {
+std::optional<CameraFault> camera_fault(const Camera& c, double aspect, glm::dvec3 origin) {
   if (auto f = fov_fault(c, aspect)) return f;
-  if (auto f = position_fault(c)) return f;
+  if (auto f = position_fault(c, origin)) return f;
   return planes_fault(c);
 }
 

@@ -64,7 +64,8 @@ struct CameraFault {
   std::string key, what;
 };
 // The first fault of `c` for an image of `aspect` = width / height; none when it renders.
-std::optional<CameraFault> camera_fault(const Camera& c, double aspect);
+// `c` is relative to `origin` (Scene::origin): the world-space bounds apply to c + origin.
+std::optional<CameraFault> camera_fault(const Camera& c, double aspect, glm::dvec3 origin = glm::dvec3(0.0));
 // "1e+18", "(1, 2, 3)": numbers as the messages about cameras and scenes print them.
 std::string format_number(double v);
 std::string format_point(glm::dvec3 p);

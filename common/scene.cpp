@@ -33,6 +33,25 @@ constexpr double kMaxLightIntensity = 1e6;
 // overflows nor underflows.
 constexpr double kMaxTransformCondition = 1e6;
 constexpr double kMinTransformDeterminant = 1e-30, kMaxTransformDeterminant = 1e30;
+// A camera path: at most ten turns, 100000 frames, 1000 frames a second.
+constexpr double kMaxOrbitDeg = 3600, kMaxFps = 1000;
+constexpr int64_t kMaxFrames = 100000;
+
+// The built-in scenes' documents ("builtin:NAME"): one procedural mesh each, in the
+// default style and effects, and "pencil", the CAD part with every pencil effect (what
+// `plumbago render` draws without a scene).
+const std::map<std::string, std::string> kBuiltinScenes = {
+    {"torus", R"({"mesh": {"procedural": "torus"}})"},
+    {"sphere", R"({"mesh": {"procedural": "sphere"}})"},
+    {"cad", R"({"mesh": {"procedural": "cad"}})"},
+    {"pencil", R"({"mesh": {"procedural": "cad"}, "effects": ["contours", "interior", "crosshatch", "paper"]})"}};
+
+// "a, b, c": the names a refusal offers.
+std::string join(const std::vector<std::string>& names) {
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+  return list;
+}
 
 // Reads one scene document, naming the file and the JSON path in every refusal.
 class SceneReader {
@@ -53,19 +72,25 @@ class SceneReader {
       }
   }
 
-  // A number as the buffers hold it: a finite float.
-  float number(const json& j, const std::string& path) const {
+  // A number that float buffers can hold, kept in double: world-space positions are made
+  // relative to the scene's origin before they become float.
+  double exact_number(const json& j, const std::string& path) const {
     if (!j.is_number()) fail(path, "expected a number");
     double v = j.get<double>();
     if (!std::isfinite(v)) fail(path, "expected a finite number");
     if (!std::isfinite(float(v))) fail(path, format_number(v) + " is beyond float range (±3.4e38)");
-    return float(v);
+    return v;
   }
 
-  glm::vec3 vec3(const json& j, const std::string& path) const {
+  // A number as the buffers hold it: a finite float.
+  float number(const json& j, const std::string& path) const { return float(exact_number(j, path)); }
+
+  glm::dvec3 point(const json& j, const std::string& path) const {
     if (!j.is_array() || j.size() != 3) fail(path, "expected an array of 3 numbers");
-    return {number(j[0], path + "/0"), number(j[1], path + "/1"), number(j[2], path + "/2")};
+    return {exact_number(j[0], path + "/0"), exact_number(j[1], path + "/1"), exact_number(j[2], path + "/2")};
   }
+
+  glm::vec3 vec3(const json& j, const std::string& path) const { return glm::vec3(point(j, path)); }
 
   // A vector that is normalized in float: its length within what that can take.
   glm::vec3 direction(const json& j, const std::string& path) const {
@@ -78,14 +103,22 @@ class SceneReader {
     return v;
   }
 
-  std::shared_ptr<const Mesh> mesh(const json& j, const std::string& path) {
+  // A mesh as the scene holds it: moved so that its bounding box is centered on 0, so that
+  // normals and curvature are computed at the mesh's own scale wherever its file puts it,
+  // and `center`, where that center lies in the file's coordinates (in double).
+  struct PlacedMesh {
+    std::shared_ptr<const Mesh> mesh;
+    glm::dvec3 center{0.0};
+  };
+
+  PlacedMesh mesh(const json& j, const std::string& path) {
     try {
       if (j.is_string()) return mesh_file(j.get<std::string>());
       if (!j.is_object()) fail(path, "expected a mesh file path or {\"procedural\": KIND}");
       only_keys(j, path, {"procedural", "resolution"});
       if (!j.contains("procedural") || !j["procedural"].is_string()) fail(path + "/procedural", "expected a name");
       float res = j.contains("resolution") ? number(j["resolution"], path + "/resolution") : 1.0f;
-      return std::make_shared<Mesh>(make_procedural(j["procedural"].get<std::string>(), res));
+      return centered(make_procedural(j["procedural"].get<std::string>(), res));
     } catch (const MeshError& e) {
       fail(path, e.what());
     } catch (const std::invalid_argument& e) {
@@ -93,35 +126,55 @@ class SceneReader {
     }
   }
 
-  SceneObject object(const json& j, const std::string& path) {
+  // An object as its file gives it: the transform in double, world space (not yet relative
+  // to the scene's origin).
+  struct FileObject {
+    SceneObject object;
+    glm::dmat4 transform{1.0};
+    glm::dvec3 mesh_center{0.0};  // PlacedMesh::center
+    // Where vertex p of the (centered) mesh lies in the file's coordinates.
+    glm::dvec3 file_position(glm::vec3 p) const { return glm::dvec3(p) + mesh_center; }
+    glm::dvec3 world_position(glm::vec3 p) const { return glm::dvec3(transform * glm::dvec4(file_position(p), 1.0)); }
+  };
+
+  FileObject placed(const json& j, const std::string& path) {
+    PlacedMesh m = mesh(j, path);
+    FileObject f;
+    f.object.mesh = m.mesh;
+    f.mesh_center = m.center;
+    return f;
+  }
+
+  FileObject object(const json& j, const std::string& path) {
     only_keys(j, path, {"mesh", "transform", "style", "color", "flat"});
     if (!j.contains("mesh")) fail(path + "/mesh", "missing (a file path or {\"procedural\": ...})");
-    SceneObject o;
-    o.mesh = mesh(j["mesh"], path + "/mesh");
-    if (j.contains("transform")) o.transform = transform(j["transform"], path + "/transform");
+    FileObject f = placed(j["mesh"], path + "/mesh");
+    SceneObject& o = f.object;
+    if (j.contains("transform")) f.transform = transform(j["transform"], path + "/transform");
     if (j.contains("style")) o.style = style(j["style"], path + "/style");
     if (j.contains("color")) o.color = color(j["color"], path + "/color");
     if (j.contains("flat")) {
       if (!j["flat"].is_boolean()) fail(path + "/flat", "expected true or false");
       o.flat = j["flat"].get<bool>();
     }
-    check_extent(o, path);
-    return o;
+    check_extent(f, path);
+    return f;
   }
 
   // Every vertex within ±kMaxCoordinate, in the mesh file and in the world. |A| |p| + |t|
   // bounds each partial sum of the transform's products, so none overflows in float.
-  void check_extent(const SceneObject& o, const std::string& path) const {
-    glm::dmat4 t(o.transform), magnitude;
+  void check_extent(const FileObject& f, const std::string& path) const {
+    const glm::dmat4& t = f.transform;
+    glm::dmat4 magnitude;
     for (int c = 0; c < 4; ++c) magnitude[c] = glm::abs(t[c]);
     auto beyond = [](glm::dvec3 p) { return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > kMaxCoordinate; };
-    const std::vector<glm::vec3>& positions = o.mesh->positions;
+    const std::vector<glm::vec3>& positions = f.object.mesh->positions;
     for (size_t i = 0; i < positions.size(); ++i) {
-      glm::dvec3 p = positions[i];
+      glm::dvec3 p = f.file_position(positions[i]);
       if (beyond(p)) fail(path + "/mesh", "vertex " + std::to_string(i) + " lies at " + format_point(p) + beyond_text());
       if (beyond(glm::dvec3(magnitude * glm::dvec4(glm::abs(p), 1.0))))
         fail(path + "/transform", "moves vertex " + std::to_string(i) + " to " +
-                                      format_point(glm::dvec3(t * glm::dvec4(p, 1.0))) + beyond_text());
+                                      format_point(f.world_position(positions[i])) + beyond_text());
     }
   }
 
@@ -129,8 +182,8 @@ class SceneReader {
     only_keys(j, path, {"eye", "target", "up", "fov_deg", "near", "far", "view_direction"});
     glm::vec3 view = j.contains("view_direction") ? direction(j["view_direction"], path + "/view_direction") : kViewDirection;
     Camera c = fitted_camera(scene, j.contains("fov_deg") ? number(j["fov_deg"], path + "/fov_deg") : 35.0f, view);
-    if (j.contains("eye")) c.eye = vec3(j["eye"], path + "/eye");
-    if (j.contains("target")) c.target = vec3(j["target"], path + "/target");
+    if (j.contains("eye")) c.eye = glm::vec3(point(j["eye"], path + "/eye") - scene.origin);
+    if (j.contains("target")) c.target = glm::vec3(point(j["target"], path + "/target") - scene.origin);
     if (j.contains("up")) c.up = vec3(j["up"], path + "/up");
     if (j.contains("eye") || j.contains("target")) fit_planes(scene, c);
     if (j.contains("near")) c.near = number(j["near"], path + "/near");
@@ -140,17 +193,43 @@ class SceneReader {
 
   // Refuses a camera that float buffers cannot render (camera_fault), naming the key and,
   // for a value the scene does not give, where it came from.
-  void check_camera(const Camera& c, const json& j, const std::string& path, double aspect) const {
+  void check_camera(const Scene& s, const json& j, const std::string& path) const {
     static const std::map<std::string, std::string> defaults = {
         {"eye", "where the camera fitted to the scene stands: the scene is too large for the field of view"},
         {"target", "the scene's center"},
         {"up", "the default up"},
         {"near", "fitted to the scene as seen from the eye: the scene is too far from the eye for its size"},
         {"far", "fitted to the scene as seen from the eye: the scene is too far from the eye for its size"}};
-    auto fault = camera_fault(c, aspect);
+    auto fault = camera_fault(s.camera, double(s.width) / s.height, s.origin);
     if (!fault) return;
     bool given = j.contains(fault->key) || !defaults.count(fault->key);
     fail(path + "/" + fault->key, fault->what + (given ? "" : " (" + defaults.at(fault->key) + ")"));
+  }
+
+  // "animation": {"orbit_deg": D or "dolly": L, "frames": N, "fps": F}. Every frame's
+  // camera is checked as the scene's own is.
+  Animation animation(const json& j, const std::string& path, const Scene& s) const {
+    only_keys(j, path, {"orbit_deg", "dolly", "frames", "fps"});
+    if (j.contains("orbit_deg") == j.contains("dolly")) fail(path, "give either \"orbit_deg\" or \"dolly\"");
+    Animation a;
+    std::string key = j.contains("orbit_deg") ? "orbit_deg" : "dolly";
+    a.kind = key == "orbit_deg" ? Animation::Kind::Orbit : Animation::Kind::Dolly;
+    a.amount = exact_number(j[key], path + "/" + key);
+    if (a.kind == Animation::Kind::Orbit && std::abs(a.amount) > kMaxOrbitDeg)
+      fail(path + "/orbit_deg", "must be within ±" + format_number(kMaxOrbitDeg) + " degrees");
+    if (!j.contains("frames") || !j["frames"].is_number_integer() || j["frames"].get<int64_t>() < 1 ||
+        j["frames"].get<int64_t>() > kMaxFrames)
+      fail(path + "/frames", "expected a whole number of frames in 1.." + std::to_string(kMaxFrames));
+    a.frames = int(j["frames"].get<int64_t>());
+    if (j.contains("fps")) a.fps = exact_number(j["fps"], path + "/fps");
+    if (!(a.fps > 0 && a.fps <= kMaxFps)) fail(path + "/fps", "must be in (0, " + format_number(kMaxFps) + "]");
+    glm::vec3 center;
+    float radius;
+    scene_bounds(s, center, radius);
+    for (int i = 1; i < a.frames; ++i)
+      if (auto fault = camera_fault(camera_at(s.camera, a, i, center, radius), double(s.width) / s.height, s.origin))
+        fail(path + "/" + key, "frame " + std::to_string(i) + "'s camera: " + fault->key + " " + fault->what);
+    return a;
   }
 
   std::vector<Light> lights(const json& j, const std::string& path) const {
@@ -240,29 +319,34 @@ class SceneReader {
     return ", beyond ±" + format_number(kMaxCoordinate) + " (the largest coordinate float buffers can hold)";
   }
 
-  static std::string join(const std::vector<std::string>& names) {
-    std::string list;
-    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-    return list;
+  static PlacedMesh centered(Mesh m) {
+    glm::dvec3 lo(INFINITY), hi(-INFINITY);
+    for (const glm::vec3& p : m.positions) {
+      lo = glm::min(lo, glm::dvec3(p));
+      hi = glm::max(hi, glm::dvec3(p));
+    }
+    glm::dvec3 center = m.positions.empty() ? glm::dvec3(0.0) : (lo + hi) * 0.5;
+    for (glm::vec3& p : m.positions) p = glm::vec3(glm::dvec3(p) - center);
+    return {std::make_shared<Mesh>(std::move(m)), center};
   }
 
-  std::shared_ptr<const Mesh> mesh_file(const std::string& relative) {
+  PlacedMesh mesh_file(const std::string& relative) {
     fs::path p = fs::path(relative).is_absolute() ? fs::path(relative) : fs::path(base_) / relative;
     std::string key = p.lexically_normal().string();
     auto it = meshes_.find(key);
     if (it != meshes_.end()) return it->second;
-    return meshes_[key] = std::make_shared<Mesh>(load_mesh(key));
+    return meshes_[key] = centered(load_mesh(key));
   }
 
-  glm::mat4 transform(const json& j, const std::string& path) const {
+  glm::dmat4 transform(const json& j, const std::string& path) const {
     if (!j.is_array() || j.size() != 16) fail(path, "expected 16 numbers (a column-major 4x4 matrix)");
-    glm::mat4 m;
-    for (int i = 0; i < 16; ++i) m[i / 4][i % 4] = number(j[size_t(i)], path + "/" + std::to_string(i));
+    glm::dmat4 m;
+    for (int i = 0; i < 16; ++i) m[i / 4][i % 4] = exact_number(j[size_t(i)], path + "/" + std::to_string(i));
     for (int i : {3, 7, 11, 15})
-      if (m[i / 4][3] != (i == 15 ? 1.0f : 0.0f))
+      if (m[i / 4][3] != (i == 15 ? 1.0 : 0.0))
         fail(path + "/" + std::to_string(i), std::string("must be ") + (i == 15 ? "1" : "0") +
                                                  " (the last row of an affine transform is 0, 0, 0, 1)");
-    check_linear_part(glm::dmat3(glm::mat3(m)), path);
+    check_linear_part(glm::dmat3(m), path);
     return m;
   }
 
@@ -306,7 +390,7 @@ class SceneReader {
   }
 
   std::string source_, base_;
-  std::map<std::string, std::shared_ptr<const Mesh>> meshes_;
+  std::map<std::string, PlacedMesh> meshes_;
 };
 
 // nlohmann's DOM parser, remembering where it stopped: it reports a number beyond double
@@ -339,20 +423,38 @@ void set_effects(const json& j, const SceneReader& r, Scene& s) {
   match_effects_to_styles(s);
 }
 
+// The center of the objects' world-space bounding box, in double: the scene's origin.
+glm::dvec3 world_center(const std::vector<SceneReader::FileObject>& objects) {
+  glm::dvec3 lo(INFINITY), hi(-INFINITY);
+  for (const SceneReader::FileObject& f : objects)
+    for (const glm::vec3& p : f.object.mesh->positions) {
+      glm::dvec3 w = f.world_position(p);
+      lo = glm::min(lo, w);
+      hi = glm::max(hi, w);
+    }
+  return lo.x <= hi.x ? (lo + hi) * 0.5 : glm::dvec3(0.0);
+}
+
 Scene read_scene(const json& j, SceneReader& r, const std::string& source) {
-  r.only_keys(j, "", {"mesh", "objects", "camera", "lights", "resolution", "seed", "effects", "params", "strokes"});
+  r.only_keys(j, "",
+              {"mesh", "objects", "camera", "lights", "resolution", "seed", "effects", "params", "strokes", "animation"});
   Scene s;
   s.source = source;
   if (j.contains("mesh") == j.contains("objects")) r.fail("", "give either \"mesh\" (one object) or \"objects\"");
+  std::vector<SceneReader::FileObject> objects;
   if (j.contains("mesh")) {
-    SceneObject o;
-    o.mesh = r.mesh(j["mesh"], "/mesh");
-    r.check_extent(o, "");
-    s.objects.push_back(o);
+    objects.push_back(r.placed(j["mesh"], "/mesh"));
+    r.check_extent(objects.back(), "");
   } else {
     if (!j["objects"].is_array() || j["objects"].empty()) r.fail("/objects", "expected a non-empty array");
-    for (size_t i = 0; i < j["objects"].size(); ++i)
-      s.objects.push_back(r.object(j["objects"][i], "/objects/" + std::to_string(i)));
+    for (size_t i = 0; i < j["objects"].size(); ++i) objects.push_back(r.object(j["objects"][i], "/objects/" + std::to_string(i)));
+  }
+  s.origin = world_center(objects);
+  for (SceneReader::FileObject& f : objects) {  // T relative to the origin, in double, then float
+    glm::dmat4 relative = f.transform;
+    relative[3] = f.transform * glm::dvec4(f.mesh_center, 1.0) - glm::dvec4(s.origin, 0.0);  // T translate(c) - origin
+    f.object.transform = glm::mat4(relative);
+    s.objects.push_back(f.object);
   }
   if (j.contains("resolution")) r.resolution(j["resolution"], "/resolution", s);
   if (j.contains("seed")) {
@@ -363,9 +465,10 @@ Scene read_scene(const json& j, SceneReader& r, const std::string& source) {
   if (j.contains("params")) r.params(j["params"], "/params", s.params);
   if (j.contains("strokes")) s.strokes = r.stroke_styles(j["strokes"], "/strokes");
   s.camera = j.contains("camera") ? r.camera(j["camera"], "/camera", s) : SceneReader::fitted_camera(s, 35.0f);
-  r.check_camera(s.camera, j.contains("camera") ? j["camera"] : json::object(), "/camera", double(s.width) / s.height);
+  r.check_camera(s, j.contains("camera") ? j["camera"] : json::object(), "/camera");
   s.lights_follow_camera = !j.contains("lights");
   s.lights = s.lights_follow_camera ? default_lights(s.camera) : r.lights(j["lights"], "/lights");
+  if (j.contains("animation")) s.animation = r.animation(j["animation"], "/animation", s);
   return s;
 }
 
@@ -430,14 +533,9 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
 
 std::string scene_text(const std::string& source) {
   if (source.starts_with("builtin:")) {
-    std::string name = source.substr(8);
-    auto names = builtin_scene_names();
-    if (std::find(names.begin(), names.end(), name) == names.end()) {
-      std::string known;
-      for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
-      throw SceneError(source + ": no such built-in scene (" + known + ")");
-    }
-    return "{\"mesh\": {\"procedural\": \"" + name + "\"}}";
+    auto it = kBuiltinScenes.find(source.substr(8));
+    if (it == kBuiltinScenes.end()) throw SceneError(source + ": no such built-in scene (" + join(builtin_scene_names()) + ")");
+    return it->second;
   }
   std::ifstream in(source);
   if (!in || fs::is_directory(source)) throw SceneError(source + ": cannot read the scene file");
@@ -453,7 +551,11 @@ std::string scene_folder(const std::string& source) {
 
 Scene load_scene(const std::string& path) { return parse_scene(scene_text(path), path, scene_folder(path)); }
 
-std::vector<std::string> builtin_scene_names() { return {"torus", "sphere", "cad"}; }
+std::vector<std::string> builtin_scene_names() {
+  std::vector<std::string> names;
+  for (const auto& [name, text] : kBuiltinScenes) names.push_back(name);
+  return names;
+}
 
 Scene builtin_scene(const std::string& name) { return load_scene("builtin:" + name); }
 

@@ -5,10 +5,12 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "common/animation.hpp"
 #include "common/camera.hpp"
 #include "common/image.hpp"
 #include "common/mesh.hpp"
@@ -25,7 +27,7 @@ const std::vector<std::string>& style_names();
 
 struct SceneObject {
   std::shared_ptr<const Mesh> mesh;
-  glm::mat4 transform{1.0f};  // object to world
+  glm::mat4 transform{1.0f};  // object to world, relative to Scene::origin
   Style style = Style::Pencil;
   glm::vec3 color{1.0f};
   bool flat = false;          // shading normals = face normals
@@ -42,9 +44,15 @@ struct Light {
   float intensity = 1.0f;
 };
 
+// Every position in a Scene (object transforms, camera) is relative to `origin`, the world
+// point at the center of the objects' bounding box: both backends render in these
+// coordinates, so that a scene's image and parity do not depend on where it sits in the
+// world (float at 1e6 resolves 0.06). The file's world coordinates are read in double and
+// made relative before they become float.
 struct Scene {
   std::string source;  // scene file path or "builtin:<name>"
   std::vector<SceneObject> objects;
+  glm::dvec3 origin{0.0};  // world space
   Camera camera;
   std::vector<Light> lights;
   bool lights_follow_camera = false;  // the file gave no lights: default_lights(camera)
@@ -53,6 +61,7 @@ struct Scene {
   std::vector<std::string> effects{"contours"};
   ParamSet params;
   StrokeStyles strokes;
+  std::optional<Animation> animation;  // a camera path; none: one frame
 };
 
 // A scene refused: the message names the file and the JSON path of the offending key.

@@ -13,10 +13,11 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-json vec3(glm::vec3 v) { return json::array({v.x, v.y, v.z}); }
+json vec3(glm::dvec3 v) { return json::array({v.x, v.y, v.z}); }
 
-json camera_json(const Camera& c) {
-  return {{"eye", vec3(c.eye)}, {"target", vec3(c.target)}, {"up", vec3(c.up)},
+// The camera in world space: `c` is relative to the scene's origin.
+json camera_json(const Camera& c, glm::dvec3 origin) {
+  return {{"eye", vec3(glm::dvec3(c.eye) + origin)}, {"target", vec3(glm::dvec3(c.target) + origin)}, {"up", vec3(c.up)},
           {"fov_deg", c.fov_deg}, {"near", c.near}, {"far", c.far}};
 }
 
@@ -89,7 +90,7 @@ void save_scene(const Scene& scene, const std::string& path) {
   Rebase rebase(scene_folder(scene.source), folder.empty() ? "." : folder.string());
   set_objects(doc, scene, rebase);
   rebase_stroke_styles(doc, rebase);
-  doc["camera"] = camera_json(scene.camera);
+  doc["camera"] = camera_json(scene.camera, scene.origin);
   doc["lights"] = lights_json(scene.lights);
   doc["resolution"] = {scene.width, scene.height};
   doc["seed"] = scene.seed;

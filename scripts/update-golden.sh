@@ -12,6 +12,7 @@ if [[ -f "$build_dir/build.ninja" ]]; then
 else
   BUILD_DIR="$build_dir" scripts/build.sh
 fi
-PLUMBAGO_UPDATE_GOLDEN=1 "$build_dir/plumbago_tests" --gtest_filter='Golden/GoldenImage.*' "$@"
+# From the build folder, as ctest runs it: the test finds the sources relative to it.
+(cd "$build_dir" && PLUMBAGO_UPDATE_GOLDEN=1 ./plumbago_tests --gtest_filter='Golden/GoldenImage.*' "$@")
 echo "git status --short tests/golden:"
 git status --short tests/golden

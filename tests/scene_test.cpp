@@ -33,12 +33,20 @@ TEST(SceneFile, ReadsEveryKey) {
   Scene s = load_scene(path);
   ASSERT_EQ(s.objects.size(), 2u);
   EXPECT_EQ(s.objects[0].mesh, s.objects[1].mesh) << "a file named twice is loaded once";
-  EXPECT_EQ(s.objects[0].transform[3][0], 1.0f);  // column-major: translation in elements 12..14
-  EXPECT_EQ(s.objects[0].transform[3][2], 3.0f);
+  // Column-major: the translation is elements 12..14. Positions are relative to the
+  // scene's origin (and the mesh is centered), so compare world positions.
+  auto world = [&](const SceneObject& o, size_t v) {
+    return glm::dvec3(o.transform * glm::vec4(o.mesh->positions[v], 1.0f)) + s.origin;
+  };
+  const glm::dvec3 expected[3] = {{1, 2, 3}, {3, 2, 3}, {1, 4, 3}};  // 2 (0 0 0), 2 (1 0 0), 2 (0 1 0), + (1 2 3)
+  for (size_t v = 0; v < 3; ++v) {
+    EXPECT_NEAR(glm::distance(world(s.objects[0], v), expected[v]), 0.0, 1e-6) << v;
+    EXPECT_NEAR(glm::distance(2.0 * world(s.objects[1], v), expected[v] - glm::dvec3(1, 2, 3)), 0.0, 1e-6) << v;
+  }
   EXPECT_EQ(s.objects[0].style, Style::Sketchy);
   EXPECT_EQ(s.objects[0].color, glm::vec3(0.5f, 0.25f, 1.0f));
   EXPECT_TRUE(s.objects[0].flat);
-  EXPECT_EQ(s.camera.eye, glm::vec3(0, 0, 9));
+  EXPECT_EQ(glm::dvec3(s.camera.eye) + s.origin, glm::dvec3(0, 0, 9));
   EXPECT_FLOAT_EQ(s.camera.fov_deg, 50);
   EXPECT_FLOAT_EQ(s.camera.near, 0.5f);
   EXPECT_FLOAT_EQ(s.camera.far, 30);

@@ -84,9 +84,10 @@ Scene sphere_behind_a_plane() {
       "camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0], "fov_deg": 40}})", "sphere behind", ".");
 }
 
-// The plane's top edge in the window (y = 0 at z = 1.5).
+// The plane's top edge in the window (y = 0 at z = 1.5; the camera is relative to the
+// scene's origin).
 double plane_edge_y(const Scene& scene) {
-  return WindowProjection(scene.camera, scene.width, scene.height)(glm::dvec3(0, 0, 1.5)).y;
+  return WindowProjection(scene.camera, scene.width, scene.height)(glm::dvec3(0, 0, 1.5) - scene.origin).y;
 }
 
 // The sphere's silhouette samples are visible above the plane's top edge and hidden below.
