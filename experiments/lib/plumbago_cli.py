@@ -196,3 +196,10 @@ def scene_inputs(scenes):
         if not s.startswith("builtin:"):
             out += [str(ROOT / s)] + [m for m in scene_models(s) if pathlib.Path(m).is_file()]
     return out
+
+
+if __name__ == "__main__":  # run-info OUT RENDERER: run_info.json for a study that is not in Python
+    import sys
+    if len(sys.argv) != 4 or sys.argv[1] != "run-info":
+        sys.exit("usage: plumbago_cli.py run-info OUT RENDERER")
+    write_run_info(sys.argv[2], machine(sys.argv[3]))

@@ -42,13 +42,14 @@ AB = re.compile(r"^(\S+)\s+old median\s+([\d.]+) ms \(min\s+([\d.]+)\)\s+new med
 
 def ab(c, file):
     """The file's last same-sitting A/B section: old against new per scene."""
-    text, section, rows = lines(c, file), "", []
-    for line in text:
-        if line.startswith("## ") and "A/B" in line:
-            section, rows = line[3:], []
+    sections = []
+    for line in lines(c, file):
+        if line.startswith("## "):
+            sections.append((line[3:], []))
         m = AB.match(line)
-        if m and section:
-            rows.append(m.groups())
+        if m and sections:
+            sections[-1][1].append(m.groups())
+    section, rows = [s for s in sections if "A/B" in s[0]][-1]
     body = [[scene, "%s (%s)" % (o, omin), "%s (%s)" % (n, nmin), "%.1f" % (1000 / float(n)),
              "%.2fx" % (float(o) / float(n))] for scene, o, omin, n, nmin in rows]
     return source(file, header(c, file) + " Section: " + section + ".") + \
@@ -59,8 +60,11 @@ GBENCH = re.compile(r"^(BM_\S+)\s+([\d.]+) (\w+)\s+([\d.]+) (\w+)\s+(\d+)\s*(.*)
 
 
 def gbench(c, file, pattern="."):
-    """A Google Benchmark console output: each benchmark matching `pattern`."""
+    """A Google Benchmark console output (its first run, where the file holds several):
+    each benchmark matching `pattern`."""
     text = lines(c, file)
+    first = next(i for i, x in enumerate(text) if GBENCH.match(x))
+    text = text[:next((i for i in range(first, len(text)) if text[i].startswith("## ")), len(text))]
     date = next((x for x in text if re.match(r"^\d{4}-\d\d-\d\dT", x)), "no date in the file")
     run_on = next((x for x in text if x.startswith("Run on")), "machine not recorded")
     load = next((x for x in text if x.startswith("Load Average")), "")
@@ -71,6 +75,7 @@ def gbench(c, file, pattern="."):
 
 
 BENCH_TEXT = re.compile(r"^(\S+) \[(\w+)\]: ([\d.]+) ms/frame = ([\d.]+) fps")
+STAGE = re.compile(r"^  (\S+)\s+([\d.]+) ms$")
 
 
 def bench_text(c, file):
@@ -81,9 +86,8 @@ def bench_text(c, file):
         m = BENCH_TEXT.match(line)
         if m:
             body.append([m.group(1), m.group(2), m.group(3), m.group(4), ""])
-        elif body and line.startswith("  ") and "preprocessing" not in line:
-            stage, value = line.split()[0], line.split()[1]
-            body[-1][4] += ("%s%s %s" % (", " if body[-1][4] else "", stage, value))
+        elif body and STAGE.match(line):
+            body[-1][4] += ("%s%s %s" % ((", " if body[-1][4] else "",) + STAGE.match(line).groups()))
     return source(file, "`plumbago bench` text output, GL renderer %s; the date is in the file's name." % renderer) + \
         markdown(["scene", "backend", "ms a frame", "fps", "passes (ms, GL timer)"], body)
 

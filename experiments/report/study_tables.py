@@ -187,3 +187,14 @@ def paper_claims(c):
 
 KINDS = {"study": lambda c, name: study(c, name), "headline": lambda c: headline(c),
          "figure": figure, "paper_claims": lambda c: paper_claims(c)}
+
+
+def study_rows(c, name, *conditions):
+    """The rows of a study whose columns have the given values (`key=value`)."""
+    spec, wanted = STUDIES[name], [x.split("=", 1) for x in conditions]
+    rs = [r for r in rows(c, name) if all(val(r[k]) == v for k, v in wanted)]
+    return ["From " + run_of(c, name) + ", rows with %s." % ", ".join(conditions), ""] + \
+        markdown([h for h, _ in spec["columns"]], [[f(r) for _, f in spec["columns"]] for r in rs])
+
+
+KINDS["study_rows"] = study_rows
