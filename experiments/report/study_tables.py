@@ -80,7 +80,7 @@ STUDIES = {
                  col("darkness mean abs", "darkness_mean_abs", pct)],
         time=("ratio_to_default", ratio, "frame / default"), error=("darkness_mean_abs", pct, "darkness")),
     "scaling": dict(
-        question="faces 10K to 1M, pixels 512x512 to 4K",
+        question="mesh size (faces) and image size (pixels)",
         columns=[col("sweep", "sweep"), col("backend", "backend"), col("faces", "faces"), ("size", size),
                  col("frame ms", "frame_ms", ms), col("/ smallest", "ratio_to_smallest", ratio)],
         time=("ratio_to_smallest", ratio, "frame / smallest of its sweep"), error=None),
