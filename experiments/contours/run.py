@@ -16,26 +16,38 @@ import tempfile
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "lib"))
 import plumbago_cli as pc  # noqa: E402
+import study_cli  # noqa: E402
 
-SCENE = "scenes/fandisk_contours.json"
-TOLERANCE = 0.05
+FIGURES = ["difference_vs_time.png"]
+SWEPT = {"copies": "copies", "grid_cell": "cells", "shake": "shakes"}  # sweep -> its settings key
 
 
-def settings(quick):
-    cells = [4, 16, 64] if quick else [2, 4, 8, 16, 32, 64]
-    copies = [1, 3, 5] if quick else [1, 2, 3, 4, 5]
-    shakes = [0, 2, 8] if quick else [0, 1, 2, 4, 8]
-    finest, most = min(cells), max(copies)
+def points(s):
+    """The default, then one point per swept value; each measures the default too, so its
+    ratio compares two runs of one job."""
+    return ["default"] + ["%s-%g" % (name, v) for name, key in SWEPT.items() for v in s[key]]
+
+
+def scenes(s):
+    return [s["scene"]]
+
+
+def setting(s, point):
+    """The point's setting and the reference: the most copies on the finest grid of the sweep."""
+    finest, most = min(s["cells"]), max(s["copies"])
     lo, hi = pc.param_range("contour.grid_cell")
-    assert lo <= finest and max(cells) <= hi, "grid cells outside the parameter's range"
+    assert lo <= finest and max(s["cells"]) <= hi, "grid cells outside the parameter's range"
     default = dict(copies=pc.param_default("contour.copies"), grid_cell=pc.param_default("contour.grid_cell"),
                    shake=pc.param_default("contour.shake_amplitude"))
-    runs = [("default", default)]
-    runs += [("copies", dict(default, copies=c, grid_cell=finest)) for c in copies]
-    runs += [("grid_cell", dict(default, copies=most, grid_cell=g)) for g in cells]
-    runs += [("shake", dict(default, copies=most, grid_cell=finest, shake=s)) for s in shakes]
     reference = dict(default, copies=most, grid_cell=finest)
-    return runs, reference
+    if point == "default":
+        return "default", default, default, reference
+    name, value = point.rsplit("-", 1)
+    value = float(value)
+    point_setting = {"copies": dict(default, copies=int(value), grid_cell=finest),
+                     "grid_cell": dict(default, copies=most, grid_cell=int(value)),
+                     "shake": dict(default, copies=most, grid_cell=finest, shake=value)}[name]
+    return name, point_setting, default, reference
 
 
 def sets(s):
@@ -48,34 +60,31 @@ def contour_pass_ms(stages):
     return next((ms for name, ms in stages.items() if "multi_contour" in name.split("+")), float("nan"))
 
 
-def sweep(a):
-    size, frames = ("400x400", 3) if a.quick else (None, 10)
-    runs, reference = settings(a.quick)
-    rows = []
+def measure(s, point):
+    sweep_name, setting_, default, reference = setting(s, point)
+    tolerance = s["tolerance"]
     with tempfile.TemporaryDirectory(prefix="plumbago-contours-") as work:
-        ref = pc.bench(SCENE, sets(reference), size=size, frames=frames, save=work, buffers=["compose.color"])
-        info = pc.machine(ref["renderer"])
-        default_ms = None
-        for sweep_name, s in runs:
-            j = pc.bench(SCENE, sets(s), size=size, frames=frames, against=pathlib.Path(work) / "gpu",
-                         buffers=["compose.color"], tolerance=TOLERANCE)
-            g = pc.result(j, "gpu")
-            if sweep_name == "default":
-                default_ms = g["frame_ms"]
-            e = g["errors"]["compose.color"]
-            row = dict(sweep=sweep_name, copies=s["copies"], grid_cell=s["grid_cell"], shake_amplitude=s["shake"],
-                       width=g["size"][0], height=g["size"][1], frame_ms=g["frame_ms"],
-                       ratio_to_default=g["frame_ms"] / default_ms,
-                       multi_contour_gpu_ms=contour_pass_ms(g["stages"]),
-                       distortion_ms=g["preprocessing"].get("distortion", float("nan")),
-                       mean_abs=e["mean_abs"], rmse=e["rmse"], share_over_tolerance=e["over_tolerance"], tolerance=TOLERANCE,
-                       reference="copies=%d grid_cell=%d shake=%g" % (reference["copies"], reference["grid_cell"],
-                                                                       reference["shake"]))
-            rows.append(row)
-            pc.log("%-9s copies %d cell %3d shake %4g: %7.1f ms (%.2fx default)  mean |diff| %.4f  over %.2f: %.2f%%" %
-                   (sweep_name, s["copies"], s["grid_cell"], s["shake"], row["frame_ms"], row["ratio_to_default"],
-                    row["mean_abs"], TOLERANCE, 100 * row["share_over_tolerance"]))
-    return rows, info
+        ref = pc.bench(s["scene"], sets(reference), size=s["size"], frames=1, save=work, buffers=["compose.color"])
+
+        def run(x):
+            return pc.result(pc.bench(s["scene"], sets(x), size=s["size"], frames=s["frames"],
+                                      against=pathlib.Path(work) / "gpu", buffers=["compose.color"],
+                                      tolerance=tolerance), "gpu")
+        base = run(default)
+        g = base if setting_ is default else run(setting_)
+    e = g["errors"]["compose.color"]
+    row = dict(scene=pc.stem(s["scene"]), sweep=sweep_name, copies=setting_["copies"], grid_cell=setting_["grid_cell"],
+               shake_amplitude=setting_["shake"], width=g["size"][0], height=g["size"][1], frame_ms=g["frame_ms"],
+               ratio_to_default=g["frame_ms"] / base["frame_ms"],
+               multi_contour_gpu_ms=contour_pass_ms(g["stages"]),
+               distortion_ms=g["preprocessing"].get("distortion", float("nan")),
+               mean_abs=e["mean_abs"], rmse=e["rmse"], share_over_tolerance=e["over_tolerance"], tolerance=tolerance,
+               reference="copies=%d grid_cell=%d shake=%g" % (reference["copies"], reference["grid_cell"],
+                                                               reference["shake"]))
+    pc.log("%-9s copies %d cell %3d shake %4g: %7.1f ms (%.2fx default)  mean |diff| %.4f  over %.2f: %.2f%%" %
+           (sweep_name, setting_["copies"], setting_["grid_cell"], setting_["shake"], row["frame_ms"],
+            row["ratio_to_default"], row["mean_abs"], tolerance, 100 * row["share_over_tolerance"]))
+    return [row], pc.machine(ref["renderer"])
 
 
 def plot(rows, out):
@@ -101,9 +110,10 @@ def plot(rows, out):
         ax.grid(alpha=0.3)
     axes[0].set_ylabel("mean |image - reference| (% of full scale)")
     fig.suptitle("contours, %s at %dx%d: difference from %s, against frame time" %
-                 (pathlib.Path(SCENE).stem, rows[0]["width"], rows[0]["height"], rows[0]["reference"]), fontsize=11)
+                 (rows[0].get("scene", "the scene"), rows[0]["width"], rows[0]["height"], rows[0]["reference"]),
+                 fontsize=11)
     pc.save_figure(fig, out, "difference_vs_time.png")
 
 
 if __name__ == "__main__":
-    pc.study_main(__doc__, HERE, sweep, plot)
+    study_cli.main(__doc__, sys.modules[__name__])

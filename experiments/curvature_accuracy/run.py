@@ -4,17 +4,14 @@ the jet on analytic surfaces, regular and irregular meshes (see README.md).
 
 Drives `plumbago curvature` (no cache) on meshes written by surfaces.py, reads the
 computation time from its summary line, and compares the CSV with the exact curvature.
-Writes results.csv and two plots into --out (default: this folder).
 
-Run with the Debian interpreter, which has numpy and matplotlib:
-  /usr/bin/python3 experiments/curvature_accuracy/run.py [--plumbago build/plumbago]
+Settings (experiments/config/*.yaml, curvature_accuracy): surfaces, radii, degrees. One
+point per surface and meshing. Run through experiments/Snakefile (lib/study_cli.py).
 """
-import argparse
-import csv
-import os
 import pathlib
 import re
 import subprocess
+import sys
 import tempfile
 
 import numpy as np
@@ -22,10 +19,11 @@ import numpy as np
 import surfaces
 
 HERE = pathlib.Path(__file__).resolve().parent
-ROOT = HERE.parent.parent
+sys.path.insert(0, str(HERE.parent / "lib"))
+import plumbago_cli as pc  # noqa: E402
+import study_cli  # noqa: E402
 
-TENSOR_RADII = [0.0, 0.005, 0.01, 0.02, 0.03, 0.05]
-JET_DEGREES = [2, 3, 4]
+FIGURES = ["k_error_vs_time.png", "direction_error_vs_time.png"]
 DEFAULT_RADIUS = 0.01        # only to size the meshes; the sweep sets the radius explicitly
 EDGES_PER_DEFAULT_RADIUS = 2.0
 UMBILIC_RATIO = 0.1          # directions are compared where the exact ones are defined
@@ -76,37 +74,40 @@ def errors(table, truth, keep):
     return (np.median(direction) if direction.size else np.nan), np.median(e_min), np.median(e_max)
 
 
-QUICK_SURFACES = ["torus", "ellipsoid"]   # --quick: fewer surfaces and settings, for run_all --quick
-QUICK_RADII = [0.0, 0.01, 0.02]
-QUICK_DEGREES = [2]
+def points(s):
+    return ["%s-%s" % (name, meshing) for name in s["surfaces"] for meshing in ("regular", "irregular")]
 
 
-def sweep(plumbago, work, quick=False):
+def scenes(s):
+    return []
+
+
+def measure(s, point):
+    name, meshing = point.rsplit("-", 1)
+    make = surfaces.SURFACES[name]
     rows = []
-    for name, make in surfaces.SURFACES.items():
-        if quick and name not in QUICK_SURFACES:
-            continue
-        for meshing in ("regular", "irregular"):
-            rng = np.random.default_rng(1)
-            coarse, _, _ = make(0.2, False, rng)
-            diagonal = np.linalg.norm(coarse.max(0) - coarse.min(0))
-            edge = DEFAULT_RADIUS * diagonal / EDGES_PER_DEFAULT_RADIUS
-            positions, triangles, truth = make(edge, meshing == "irregular", rng)
-            mesh = work / f"{name}-{meshing}.obj"
-            write_obj(mesh, positions, triangles)
-            keep = boundary_distance(positions, triangles) >= 0.1 * diagonal
-            radii, degrees = (QUICK_RADII, QUICK_DEGREES) if quick else (TENSOR_RADII, JET_DEGREES)
-            runs = [("tensor", r, ["--method", "tensor", "--radius", str(r)]) for r in radii]
-            runs += [("jet", d, ["--method", "jet", "--set", f"curvature.jet_degree={d}"]) for d in degrees]
-            for method, setting, args in runs:
-                ms, table = run_plumbago(plumbago, mesh, work / "out.csv", args)
-                direction, e_min, e_max = errors(table, truth, keep)
-                rows.append(dict(surface=name, meshing=meshing, vertices=len(positions), method=method,
-                                 setting=setting, ms=ms, direction_deg=direction, k_min_rel=e_min, k_max_rel=e_max,
-                                 edges_per_radius=setting * diagonal / edge if method == "tensor" else np.nan))
-                print("%-9s %-9s %-6s %5g  %8.1f ms  direction %6.2f deg  k_min %6.2f%%  k_max %6.2f%%" %
-                      (name, meshing, method, setting, ms, direction, 100 * e_min, 100 * e_max), flush=True)
-    return rows
+    with tempfile.TemporaryDirectory(prefix="plumbago-curvature-") as folder:
+        work = pathlib.Path(folder)
+        rng = np.random.default_rng(1)
+        coarse, _, _ = make(0.2, False, rng)
+        diagonal = np.linalg.norm(coarse.max(0) - coarse.min(0))
+        edge = DEFAULT_RADIUS * diagonal / EDGES_PER_DEFAULT_RADIUS
+        positions, triangles, truth = make(edge, meshing == "irregular", rng)
+        mesh = work / f"{name}-{meshing}.obj"
+        write_obj(mesh, positions, triangles)
+        keep = boundary_distance(positions, triangles) >= 0.1 * diagonal
+        runs = [("tensor", r, ["--method", "tensor", "--radius", str(r)]) for r in s["radii"]]
+        runs += [("jet", d, ["--method", "jet", "--set", f"curvature.jet_degree={d}"]) for d in s["degrees"]]
+        for method, setting, args in runs:
+            ms, table = run_plumbago(pc.plumbago(), mesh, work / "out.csv", args)
+            direction, e_min, e_max = errors(table, truth, keep)
+            rows.append(dict(surface=name, meshing=meshing, vertices=len(positions), method=method,
+                             setting=setting, ms=ms, direction_deg=direction, k_min_rel=e_min, k_max_rel=e_max,
+                             edges_per_radius=setting * diagonal / edge if method == "tensor" else np.nan))
+            print("%-9s %-9s %-6s %5g  %8.1f ms  direction %6.2f deg  k_min %6.2f%%  k_max %6.2f%%" %
+                  (name, meshing, method, setting, ms, direction, 100 * e_min, 100 * e_max), flush=True)
+    return [{k: (float(v) if isinstance(v, np.floating) else v) for k, v in r.items()} for r in rows], \
+        pc.machine("CPU (oneTBB), no GL")
 
 
 ERROR_FLOOR = {"k_rel": 1e-4, "direction_deg": 1e-3}  # log axes: smaller errors are drawn at the floor
@@ -122,7 +123,8 @@ def plot(rows, out):
                                      "k_error_vs_time.png"),
                                     ("direction_deg", "median direction error (degrees)",
                                      "direction_error_vs_time.png")]:
-        fig, axes = plt.subplots(1, len(names), figsize=(4 * len(names), 4), sharey=False)
+        fig, axes = plt.subplots(1, len(names), figsize=(4 * len(names), 4), sharey=False, squeeze=False)
+        axes = axes[0]
         for ax, name in zip(axes, names):
             for method, marker in (("tensor", "o"), ("jet", "s")):
                 for meshing, style in (("regular", "-"), ("irregular", "--")):
@@ -151,40 +153,5 @@ def plot(rows, out):
         plt.close(fig)
 
 
-def read_results(path):
-    with open(path) as f:
-        rows = list(csv.DictReader(f))
-    for r in rows:
-        for key in ("vertices", "setting", "ms", "direction_deg", "k_min_rel", "k_max_rel", "edges_per_radius"):
-            r[key] = float(r[key])
-    return rows
-
-
-def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--plumbago", default=os.environ.get("PLUMBAGO", str(ROOT / "build" / "plumbago")),
-                        help="the plumbago program (default: $PLUMBAGO, or build/plumbago)")
-    parser.add_argument("--out", help="folder for results.csv and the plots (default: this folder; --quick: a "
-                        "temporary folder, so the recorded results are kept)")
-    parser.add_argument("--quick", action="store_true", help="torus and ellipsoid only, 3 radii and jet degree 2")
-    parser.add_argument("--replot", action="store_true", help="only redraw the plots from --out/results.csv")
-    args = parser.parse_args()
-    if args.out is None:
-        args.out = str(pathlib.Path(tempfile.gettempdir()) / "plumbago-experiments-quick" / HERE.name) if args.quick \
-            else str(HERE)
-    out = pathlib.Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-    if args.replot:
-        plot(read_results(out / "results.csv"), out)
-        return
-    with tempfile.TemporaryDirectory(prefix="plumbago-curvature-") as work:
-        rows = sweep(args.plumbago, pathlib.Path(work), args.quick)
-    with open(out / "results.csv", "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
-        writer.writeheader()
-        writer.writerows(rows)
-    plot(rows, out)
-
-
 if __name__ == "__main__":
-    main()
+    study_cli.main(__doc__, sys.modules[__name__])

@@ -6,9 +6,10 @@ interpolated), against frame time.
 Error of the edge map (edge_detect.contour_darkness) against two stated references, both
 rendered in the same run: the most accurate setting of the same stage (RGBA32F, same
 normal mode), and the CPU reference backend (Embree G-buffer in float, same normal mode).
-Time: the frame and the G-buffer pass, in ms and as a ratio to RGBA32F in the same run.
+Time: the frame and the G-buffer pass, in ms and as a ratio to RGBA32F in the same job.
 
-  /usr/bin/python3 experiments/gbuffer_precision/run.py [--quick] [--out DIR] [--replot]
+Settings (experiments/config/*.yaml, gbuffer_precision): scenes, normals, size, frames,
+tolerance. Run through experiments/Snakefile (lib/study_cli.py).
 """
 import pathlib
 import sys
@@ -17,54 +18,61 @@ import tempfile
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "lib"))
 import plumbago_cli as pc  # noqa: E402
+import study_cli  # noqa: E402
 
-TOLERANCE = 0.05
 EDGE = "edge_detect.contour_darkness"
 
 
-def sweep(a):
-    size, frames = ("400x400", 3) if a.quick else (None, 10)
-    scenes = ["scenes/fandisk_contours.json"] + ([] if a.quick else ["scenes/bunny_contours.json"])
+FIGURES = ["edge_error_vs_time.png"]
+
+
+def points(s):
+    """One point per scene and normal mode: its ratios compare the formats with RGBA32F."""
+    return ["%s-%s" % (pc.stem(f), mode) for f in s["scenes"] for mode in s["normals"]]
+
+
+def scenes(s):
+    return s["scenes"]
+
+
+def measure(s, point):
+    stem, mode = point.rsplit("-", 1)
+    scene = next(f for f in s["scenes"] if pc.stem(f) == stem)
+    size, frames, tolerance = s["size"], s["frames"], s["tolerance"]
     formats = pc.params()["gbuffer.normal_format"]["range"].split("|")  # most precise first
-    modes = pc.params()["edge.normals"]["range"].split("|")
     most = "rgba32f"
     assert most in formats
-    rows, info = [], None
+    rows = []
     with tempfile.TemporaryDirectory(prefix="plumbago-gbuf-") as work:
-        for scene in scenes:
-            stem = pathlib.Path(scene).stem
-            for mode in modes:
-                saved = pathlib.Path(work) / stem / mode
-                base = ["edge.normals=" + mode]
-                both = pc.bench(scene, base + ["gbuffer.normal_format=" + most], size=size, frames=1, backend="both",
-                                save=saved, buffers=[EDGE])
-                info = info or pc.machine(both["renderer"])
-                ref32 = None
-                for fmt in formats:
-                    sets = base + ["gbuffer.normal_format=" + fmt]
-                    g = pc.result(pc.bench(scene, sets, size=size, frames=frames, against=saved / "gpu", buffers=[EDGE],
-                                           tolerance=TOLERANCE), "gpu")
-                    c = pc.result(pc.bench(scene, sets, size=size, frames=1, against=saved / "reference", buffers=[EDGE],
-                                           tolerance=TOLERANCE), "gpu")
-                    if fmt == most:
-                        ref32 = g
-                    e, ec = g["errors"][EDGE], c["errors"][EDGE]
-                    row = dict(scene=stem, normals=mode, normal_format=fmt, width=g["size"][0], height=g["size"][1],
-                               frame_ms=g["frame_ms"], gbuffer_gpu_ms=g["stages"].get("gbuffer", float("nan")),
-                               edge_mean_abs_vs_rgba32f=e["mean_abs"], edge_max_abs_vs_rgba32f=e["max_abs"],
-                               edge_over_tolerance_vs_rgba32f=e["over_tolerance"],
-                               edge_mean_abs_vs_cpu=ec["mean_abs"], edge_max_abs_vs_cpu=ec["max_abs"],
-                               edge_over_tolerance_vs_cpu=ec["over_tolerance"], tolerance=TOLERANCE)
-                    rows.append(row)
-                for r in rows[-len(formats):]:
-                    r["frame_ratio_to_rgba32f"] = r["frame_ms"] / ref32["frame_ms"]
-                    r["gbuffer_ratio_to_rgba32f"] = r["gbuffer_gpu_ms"] / ref32["stages"]["gbuffer"]
-                    pc.log("%-15s %-12s %-7s %7.1f ms (%.2fx rgba32f)  edge mean |diff| vs rgba32f %.2e  vs CPU %.2e"
-                           "  pixels over %.2f vs CPU %.3f%%" %
-                           (stem, mode, r["normal_format"], r["frame_ms"], r["frame_ratio_to_rgba32f"],
-                            r["edge_mean_abs_vs_rgba32f"], r["edge_mean_abs_vs_cpu"], TOLERANCE,
-                            100 * r["edge_over_tolerance_vs_cpu"]))
-    return rows, info
+        saved = pathlib.Path(work) / stem / mode
+        base = ["edge.normals=" + mode]
+        both = pc.bench(scene, base + ["gbuffer.normal_format=" + most], size=size, frames=1, backend="both",
+                        save=saved, buffers=[EDGE])
+        ref32 = None
+        for fmt in formats:
+            sets = base + ["gbuffer.normal_format=" + fmt]
+            g = pc.result(pc.bench(scene, sets, size=size, frames=frames, against=saved / "gpu", buffers=[EDGE],
+                                   tolerance=tolerance), "gpu")
+            c = pc.result(pc.bench(scene, sets, size=size, frames=1, against=saved / "reference", buffers=[EDGE],
+                                   tolerance=tolerance), "gpu")
+            if fmt == most:
+                ref32 = g
+            e, ec = g["errors"][EDGE], c["errors"][EDGE]
+            rows.append(dict(scene=stem, normals=mode, normal_format=fmt, width=g["size"][0], height=g["size"][1],
+                             frame_ms=g["frame_ms"], gbuffer_gpu_ms=g["stages"].get("gbuffer", float("nan")),
+                             edge_mean_abs_vs_rgba32f=e["mean_abs"], edge_max_abs_vs_rgba32f=e["max_abs"],
+                             edge_over_tolerance_vs_rgba32f=e["over_tolerance"],
+                             edge_mean_abs_vs_cpu=ec["mean_abs"], edge_max_abs_vs_cpu=ec["max_abs"],
+                             edge_over_tolerance_vs_cpu=ec["over_tolerance"], tolerance=tolerance))
+    for r in rows:
+        r["frame_ratio_to_rgba32f"] = r["frame_ms"] / ref32["frame_ms"]
+        r["gbuffer_ratio_to_rgba32f"] = r["gbuffer_gpu_ms"] / ref32["stages"]["gbuffer"]
+        pc.log("%-15s %-12s %-7s %7.1f ms (%.2fx rgba32f)  edge mean |diff| vs rgba32f %.2e  vs CPU %.2e"
+               "  pixels over %.2f vs CPU %.3f%%" %
+               (stem, mode, r["normal_format"], r["frame_ms"], r["frame_ratio_to_rgba32f"],
+                r["edge_mean_abs_vs_rgba32f"], r["edge_mean_abs_vs_cpu"], tolerance,
+                100 * r["edge_over_tolerance_vs_cpu"]))
+    return rows, pc.machine(both["renderer"])
 
 
 def plot(rows, out):
@@ -96,4 +104,4 @@ def plot(rows, out):
 
 
 if __name__ == "__main__":
-    pc.study_main(__doc__, HERE, sweep, plot)
+    study_cli.main(__doc__, sys.modules[__name__])

@@ -10,7 +10,8 @@ final image and of the interior's buffers (intensity, darkness) from it, by
 `plumbago bench --against`. The scenes' paper effect is left out so the interior is all
 that changes.
 
-  /usr/bin/python3 experiments/interior/run.py [--quick] [--out DIR] [--replot]
+Settings (experiments/config/*.yaml, interior): scenes, size, frames, tolerance. Run
+through experiments/Snakefile (lib/study_cli.py).
 """
 import pathlib
 import sys
@@ -19,8 +20,8 @@ import tempfile
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "lib"))
 import plumbago_cli as pc  # noqa: E402
+import study_cli  # noqa: E402
 
-TOLERANCE = 0.05
 BUFFERS = ["compose.color", "interior_intensity.intensity", "pencil_interior.interior_darkness"]
 VARIANTS = [("contours only", ["contours"], []),
             ("1-way", ["contours", "interior"], ["interior.blend=nearest_corner"]),
@@ -28,41 +29,50 @@ VARIANTS = [("contours only", ["contours"], []),
             ("3-way + hatching", ["contours", "interior", "crosshatch"], [])]
 
 
-def sweep(a):
-    size, frames = ("400x400", 3) if a.quick else (None, 10)
-    scenes = ["scenes/fandisk_pencil.json"] + ([] if a.quick else ["scenes/sphere_interior.json"])
+FIGURES = ["difference_vs_time.png"]
+
+
+def points(s):
+    """One point a scene: every variant's ratio compares it with that scene's contours-only frame."""
+    return [pc.stem(f) for f in s["scenes"]]
+
+
+def scenes(s):
+    return s["scenes"]
+
+
+def measure(s, point):
+    base = next(f for f in s["scenes"] if pc.stem(f) == point)
+    size, frames, tolerance = s["size"], s["frames"], s["tolerance"]
     shadings = pc.params()["interior.shading"]["range"].split("|")  # gouraud|phong
-    rows, info = [], None
+    rows = []
     with tempfile.TemporaryDirectory(prefix="plumbago-interior-") as work:
-        for base in scenes:
-            stem = pathlib.Path(base).stem
-            files = {name: pc.derive_scene(base, work, "%s-%d" % (stem, i), effects=effects)
-                     for i, (name, effects, _) in enumerate(VARIANTS)}
-            saved = pathlib.Path(work) / (stem + "-reference")
-            ref = pc.bench(files["3-way + hatching"], ["interior.shading=phong"], size=size, frames=frames, save=saved,
-                           buffers=BUFFERS)
-            info = info or pc.machine(ref["renderer"])
-            baseline = None
-            for name, _, sets in VARIANTS:
-                for shading in shadings:
-                    j = pc.bench(files[name], sets + ["interior.shading=" + shading], size=size, frames=frames,
-                                 against=saved / "gpu", buffers=BUFFERS, tolerance=TOLERANCE)
-                    g = pc.result(j, "gpu")
-                    baseline = baseline or g["frame_ms"]  # contours only, first shading
-                    row = dict(scene=stem, variant=name, shading=shading, width=g["size"][0], height=g["size"][1],
-                               frame_ms=g["frame_ms"], ratio_to_contours_only=g["frame_ms"] / baseline,
-                               interior_gpu_ms=sum(v for k, v in g["stages"].items() if "interior" in k),
-                               reference="3-way + hatching, phong")
-                    for b in BUFFERS:
-                        e = g["errors"].get(b)
-                        short = b.split(".")[1]
-                        row[short + "_mean_abs"] = e["mean_abs"] if e else float("nan")
-                        row[short + "_over_tolerance"] = e["over_tolerance"] if e else float("nan")
-                    rows.append(row)
-                    pc.log("%-16s %-17s %-8s %7.1f ms (%.2fx contours only)  image mean |diff| %.4f  intensity %.4f" %
-                           (stem, name, shading, row["frame_ms"], row["ratio_to_contours_only"], row["color_mean_abs"],
-                            row["intensity_mean_abs"]))
-    return rows, info
+        files = {name: pc.derive_scene(base, work, "%s-%d" % (point, i), effects=effects)
+                 for i, (name, effects, _) in enumerate(VARIANTS)}
+        saved = pathlib.Path(work) / (point + "-reference")
+        ref = pc.bench(files["3-way + hatching"], ["interior.shading=phong"], size=size, frames=frames, save=saved,
+                       buffers=BUFFERS)
+        baseline = None
+        for name, _, sets in VARIANTS:
+            for shading in shadings:
+                j = pc.bench(files[name], sets + ["interior.shading=" + shading], size=size, frames=frames,
+                             against=saved / "gpu", buffers=BUFFERS, tolerance=tolerance)
+                g = pc.result(j, "gpu")
+                baseline = baseline or g["frame_ms"]  # contours only, first shading
+                row = dict(scene=point, variant=name, shading=shading, width=g["size"][0], height=g["size"][1],
+                           frame_ms=g["frame_ms"], ratio_to_contours_only=g["frame_ms"] / baseline,
+                           interior_gpu_ms=sum(v for k, v in g["stages"].items() if "interior" in k),
+                           reference="3-way + hatching, phong")
+                for b in BUFFERS:
+                    e = g["errors"].get(b)
+                    short = b.split(".")[1]
+                    row[short + "_mean_abs"] = e["mean_abs"] if e else float("nan")
+                    row[short + "_over_tolerance"] = e["over_tolerance"] if e else float("nan")
+                rows.append(row)
+                pc.log("%-16s %-17s %-8s %7.1f ms (%.2fx contours only)  image mean |diff| %.4f  intensity %.4f" %
+                       (point, name, shading, row["frame_ms"], row["ratio_to_contours_only"], row["color_mean_abs"],
+                        row["intensity_mean_abs"]))
+    return rows, pc.machine(ref["renderer"])
 
 
 def plot(rows, out):
@@ -90,4 +100,4 @@ def plot(rows, out):
 
 
 if __name__ == "__main__":
-    pc.study_main(__doc__, HERE, sweep, plot)
+    study_cli.main(__doc__, sys.modules[__name__])

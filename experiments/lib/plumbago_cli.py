@@ -1,20 +1,20 @@
 """Shared helpers of the experiments: run `plumbago bench` through the command line and
-read its JSON, derive scene files, name the machine, write CSV.
+read its JSON, derive scene files, name the machine, write CSV; the scenes and models a
+study reads (experiments/Snakefile names them as inputs). The command line every study
+shares is study_cli.py.
 
 The program is $PLUMBAGO, or build/plumbago under the repository root.
 """
-import argparse
 import csv
+import glob
 import json
 import os
 import pathlib
 import platform
 import subprocess
-import tempfile
 import time
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-QUICK_OUT = pathlib.Path(tempfile.gettempdir()) / "plumbago-experiments-quick"
 
 
 def plumbago():
@@ -138,20 +138,6 @@ def read_csv(path):
     return rows
 
 
-def arguments(doc, here):
-    """--quick, --out, --replot; the output folder defaults to the study's own folder
-    (full runs) or a temporary folder (quick runs, so they never overwrite the recorded ones)."""
-    p = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--quick", action="store_true", help="fewer settings, smaller images, fewer frames")
-    p.add_argument("--out", help="folder for results.csv and the plots (default: this folder; --quick: %s/NAME)" % QUICK_OUT)
-    p.add_argument("--replot", action="store_true", help="only redraw the plots from --out/results.csv")
-    a = p.parse_args()
-    if a.out is None:
-        a.out = str(QUICK_OUT / here.name) if a.quick else str(here)
-    pathlib.Path(a.out).mkdir(parents=True, exist_ok=True)
-    return a
-
-
 def pyplot():
     import matplotlib
     matplotlib.use("Agg")
@@ -163,22 +149,57 @@ def log(*a):
     print(*a, flush=True)
 
 
-def study_main(doc, here, sweep, plot):
-    """The command line every study shares: sweep (or --replot the recorded CSV), write
-    results.csv and run_info.json into --out, draw the plots."""
-    a = arguments(doc, here)
-    if a.replot:
-        plot(read_csv(pathlib.Path(a.out) / "results.csv"), a.out)
-        return
-    rows, info = sweep(a)
-    write_csv(pathlib.Path(a.out) / "results.csv", rows)
-    write_run_info(a.out, info)
-    plot(rows, a.out)
-    log("wrote", a.out)
-
-
 def save_figure(fig, out, name):
     """Lays out `fig`, writes it as out/name at the studies' resolution and closes it."""
     fig.tight_layout()
     fig.savefig(pathlib.Path(out) / name, dpi=110)
     pyplot().close(fig)
+
+
+def scene_files(patterns):
+    """Scene files named by `patterns` (paths or globs under the repository root; builtin:NAME
+    kept as is), each once, in order; the schema is not a scene."""
+    out = []
+    for p in patterns:
+        found = [p] if p.startswith("builtin:") else sorted(
+            str(pathlib.Path(f).relative_to(ROOT)) if pathlib.Path(f).is_relative_to(ROOT) else f
+            for f in glob.glob(str(ROOT / p)))
+        if not found:
+            raise SystemExit("no scene file matches %s" % p)
+        out += [f for f in found if not f.endswith("scene.schema.json") and f not in out]
+    return out
+
+
+def stem(scene):
+    return pathlib.Path(scene.replace("builtin:", "builtin_")).stem
+
+
+def scene_models(scene):
+    """The mesh files `scene` reads (absolute; procedural meshes and builtins read none)."""
+    if scene.startswith("builtin:"):
+        return []
+    path = ROOT / scene
+    j = json.loads(path.read_text())
+    meshes = [j.get("mesh")] + [o.get("mesh") for o in j.get("objects", [])]
+    return [str((path.parent / m).resolve()) for m in meshes if isinstance(m, str)]
+
+
+def missing_models(scene):
+    return [m for m in scene_models(scene) if not pathlib.Path(m).is_file()]
+
+
+def scene_inputs(scenes):
+    """What a study reads for `scenes`: the scene files and the models that are there (a scene
+    whose models are missing is skipped by the study, as the log says)."""
+    out = []
+    for s in scenes:
+        if not s.startswith("builtin:"):
+            out += [str(ROOT / s)] + [m for m in scene_models(s) if pathlib.Path(m).is_file()]
+    return out
+
+
+if __name__ == "__main__":  # run-info OUT RENDERER: run_info.json for a study that is not in Python
+    import sys
+    if len(sys.argv) != 4 or sys.argv[1] != "run-info":
+        sys.exit("usage: plumbago_cli.py run-info OUT RENDERER")
+    write_run_info(sys.argv[2], machine(sys.argv[3]))

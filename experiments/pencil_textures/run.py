@@ -4,13 +4,14 @@
 memory.
 
 Reference: the most accurate setting of the sweep, the most layers at the largest tile
-(64 at 1024; --quick: 64 at 512), rendered in the same run. Each setting's final image
+(full config: 64 at 1024), rendered in the same job. Each setting's final image
 and pencil-interior darkness are compared with it by `plumbago bench --against`. The
 contour texture's layer (contour.texture_layer) is scaled with the layer count so it keeps
 its tone. Memory is the stack as the GPU allocates it (one R32F texture array,
 layers x size^2 x 4 bytes), computed from the parameters, not measured.
 
-  /usr/bin/python3 experiments/pencil_textures/run.py [--quick] [--out DIR] [--replot]
+Settings (experiments/config/*.yaml, pencil_textures): scene, layers, tiles, size,
+frames, tolerance. Run through experiments/Snakefile (lib/study_cli.py).
 """
 import pathlib
 import sys
@@ -19,9 +20,8 @@ import tempfile
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "lib"))
 import plumbago_cli as pc  # noqa: E402
+import study_cli  # noqa: E402
 
-SCENE = "scenes/fandisk_pencil.json"
-TOLERANCE = 0.05
 BUFFERS = ["compose.color", "pencil_interior.interior_darkness"]
 BYTES_PER_TEXEL = 4  # GL_R32F (gpu/pipeline.cpp uploads the stack as R32F)
 
@@ -31,38 +31,55 @@ def sets(layers, size, default_layers, default_layer):
             "contour.texture_layer=%d" % min(layers - 1, round(default_layer * layers / default_layers))]
 
 
-def sweep(a):
-    size, frames = ("400x400", 3) if a.quick else (None, 8)
-    layers = [8, 32, 64] if a.quick else [8, 16, 32, 64]
-    tiles = [128, 512] if a.quick else [128, 256, 512, 1024]
+FIGURES = ["difference_vs_time_and_memory.png"]
+
+
+def points(s):
+    """The default setting, then one point per layers x tile; each measures the default too,
+    so its ratios compare two runs of one job."""
+    return ["default"] + ["%dx%d" % (n, t) for n in s["layers"] for t in s["tiles"]]
+
+
+def scenes(s):
+    return [s["scene"]]
+
+
+def measure(s, point):
     default_layers, default_tile = pc.param_default("pencil_textures.layers"), pc.param_default("pencil_textures.size")
     default_layer = pc.param_default("contour.texture_layer")
-    rows = []
+    n, t = (default_layers, default_tile) if point == "default" else map(int, point.split("x"))
+    if point != "default" and (n, t) == (default_layers, default_tile):
+        pc.log("%s is the default setting: its row is the default point's" % point)
+        return [], None
+    size, tolerance = s["size"], s["tolerance"]
+    most, largest = max(s["layers"]), max(s["tiles"])
     with tempfile.TemporaryDirectory(prefix="plumbago-pencil-") as work:
-        ref = pc.bench(SCENE, sets(max(layers), max(tiles), default_layers, default_layer), size=size, frames=1,
+        ref = pc.bench(s["scene"], sets(most, largest, default_layers, default_layer), size=size, frames=1,
                        save=work, buffers=BUFFERS)
-        info = pc.machine(ref["renderer"])
-        configs = [(default_layers, default_tile)] + [(n, t) for n in layers for t in tiles if (n, t) != (default_layers, default_tile)]
-        base = None
-        for n, t in configs:
-            g = pc.result(pc.bench(SCENE, sets(n, t, default_layers, default_layer), size=size, frames=frames,
-                                   against=pathlib.Path(work) / "gpu", buffers=BUFFERS, tolerance=TOLERANCE), "gpu")
-            base = base or g
-            e, d = g["errors"]["compose.color"], g["errors"]["pencil_interior.interior_darkness"]
-            row = dict(layers=n, tile=t, width=g["size"][0], height=g["size"][1], frame_ms=g["frame_ms"],
-                       ratio_to_default=g["frame_ms"] / base["frame_ms"],
-                       generation_ms=g["preprocessing"].get("pencil_textures", float("nan")),
-                       generation_ratio_to_default=g["preprocessing"].get("pencil_textures", float("nan")) /
-                       base["preprocessing"]["pencil_textures"],
-                       stack_mib=n * t * t * BYTES_PER_TEXEL / 2 ** 20, color_mean_abs=e["mean_abs"],
-                       color_over_tolerance=e["over_tolerance"], darkness_mean_abs=d["mean_abs"],
-                       reference="%d layers at %d" % (max(layers), max(tiles)), tolerance=TOLERANCE)
-            rows.append(row)
-            pc.log("%2d layers x %4d: %7.1f ms (%.2fx default)  generation %8.0f ms  %6.1f MiB  image mean |diff| %.4f"
-                   "  darkness %.4f" % (n, t, row["frame_ms"], row["ratio_to_default"], row["generation_ms"],
-                                        row["stack_mib"], row["color_mean_abs"], row["darkness_mean_abs"]))
-    rows.sort(key=lambda r: (r["layers"], r["tile"]))
-    return rows, info
+
+        def run(layers, tile):
+            return pc.result(pc.bench(s["scene"], sets(layers, tile, default_layers, default_layer), size=size,
+                                      frames=s["frames"], against=pathlib.Path(work) / "gpu", buffers=BUFFERS,
+                                      tolerance=tolerance), "gpu")
+        base = run(default_layers, default_tile)
+        g = base if point == "default" else run(n, t)
+    e, d = g["errors"]["compose.color"], g["errors"]["pencil_interior.interior_darkness"]
+    row = dict(layers=n, tile=t, width=g["size"][0], height=g["size"][1], frame_ms=g["frame_ms"],
+               ratio_to_default=g["frame_ms"] / base["frame_ms"],
+               generation_ms=g["preprocessing"].get("pencil_textures", float("nan")),
+               generation_ratio_to_default=g["preprocessing"].get("pencil_textures", float("nan")) /
+               base["preprocessing"]["pencil_textures"],
+               stack_mib=n * t * t * BYTES_PER_TEXEL / 2 ** 20, color_mean_abs=e["mean_abs"],
+               color_over_tolerance=e["over_tolerance"], darkness_mean_abs=d["mean_abs"],
+               reference="%d layers at %d" % (most, largest), tolerance=tolerance, scene=pc.stem(s["scene"]))
+    pc.log("%2d layers x %4d: %7.1f ms (%.2fx default)  generation %8.0f ms  %6.1f MiB  image mean |diff| %.4f"
+           "  darkness %.4f" % (n, t, row["frame_ms"], row["ratio_to_default"], row["generation_ms"],
+                                row["stack_mib"], row["color_mean_abs"], row["darkness_mean_abs"]))
+    return [row], pc.machine(ref["renderer"])
+
+
+def finish(rows, out):
+    return sorted(rows, key=lambda r: (r["layers"], r["tile"]))
 
 
 def plot(rows, out):
@@ -92,9 +109,9 @@ def plot(rows, out):
     axes[1].set_ylabel("mean |interior darkness - reference| (%)")
     axes[0].legend(fontsize=8)
     fig.suptitle("pencil textures: difference from %s, against time and memory (%s at %dx%d)" %
-                 (rows[0]["reference"], pathlib.Path(SCENE).stem, rows[0]["width"], rows[0]["height"]), fontsize=11)
+                 (rows[0]["reference"], rows[0].get("scene", "the scene"), rows[0]["width"], rows[0]["height"]), fontsize=11)
     pc.save_figure(fig, out, "difference_vs_time_and_memory.png")
 
 
 if __name__ == "__main__":
-    pc.study_main(__doc__, HERE, sweep, plot)
+    study_cli.main(__doc__, sys.modules[__name__])

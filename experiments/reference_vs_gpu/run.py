@@ -3,7 +3,8 @@
 (measured in the same `plumbago bench --backend both` process) and the end-to-end error
 of the GPU's final image against the reference's (`bench --against`).
 
-  /usr/bin/python3 experiments/reference_vs_gpu/run.py [--quick] [--out DIR] [--replot]
+Settings (experiments/config/*.yaml, reference_vs_gpu): scenes, size, frames,
+reference_frames, tolerance. Run through experiments/Snakefile (lib/study_cli.py).
 """
 import pathlib
 import sys
@@ -12,44 +13,45 @@ import tempfile
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "lib"))
 import plumbago_cli as pc  # noqa: E402
+import study_cli  # noqa: E402
 
-TOLERANCE = 0.05  # a pixel "differs" where a channel differs by more than this
-
-
-def scenes(quick):
-    if quick:
-        return ["scenes/fandisk_contours.json", "scenes/fandisk_pencil.json", "scenes/torus.json",
-                "scenes/sphere_interior.json", "scenes/ogre_sketchy.json"]
-    return sorted(str(p.relative_to(pc.ROOT)) for p in (pc.ROOT / "scenes").glob("*.json") if p.name != "scene.schema.json")
+FIGURES = ["time_and_error_per_scene.png"]
 
 
-def sweep(a):
-    size, frames, reference_frames = ("320x320", 5, 1) if a.quick else (None, 10, 3)
-    rows, info = [], None
+def points(s):
+    """One point a scene: the ratio it reports compares the two backends of one bench run."""
+    return [pc.stem(f) for f in pc.scene_files(s["scenes"])]
+
+
+def scenes(s):
+    return pc.scene_files(s["scenes"])
+
+
+def measure(s, point):
+    scene = next(f for f in pc.scene_files(s["scenes"]) if pc.stem(f) == point)
+    tolerance = s["tolerance"]  # a pixel "differs" where a channel differs by more than this
     with tempfile.TemporaryDirectory(prefix="plumbago-rvg-") as work:
-        for scene in scenes(a.quick):
-            saved = pathlib.Path(work) / pathlib.Path(scene).stem
-            try:
-                both = pc.bench(scene, size=size, frames=frames, backend="both", reference_frames=reference_frames, save=saved, buffers=["compose.color"])
-            except RuntimeError as e:
-                pc.log("skipped %s: %s" % (scene, str(e).splitlines()[-1]))
-                continue
-            info = info or pc.machine(both["renderer"])
-            g, r = pc.result(both, "gpu"), pc.result(both, "reference")
-            # The GPU frame saved above against the reference frame saved above: compared by
-            # the CLI, through a one-frame run whose time is not used.
-            err = pc.bench(scene, size=size, frames=1, backend="gpu", against=saved / "reference",
-                           buffers=["compose.color"], tolerance=TOLERANCE)
-            e = pc.result(err, "gpu")["errors"]["compose.color"]
-            row = dict(scene=pathlib.Path(scene).stem, faces=g["faces"], width=g["size"][0], height=g["size"][1],
-                       gpu_ms=g["frame_ms"], reference_ms=r["frame_ms"], gpu_over_reference=g["frame_ms"] / r["frame_ms"],
-                       mean_abs=e["mean_abs"], rmse=e["rmse"], max_abs=e["max_abs"], share_over_tolerance=e["over_tolerance"],
-                       tolerance=TOLERANCE)
-            rows.append(row)
-            pc.log("%-22s gpu %8.1f ms  reference %8.1f ms  ratio %5.2f  mean |diff| %.4f  over %.2f: %.2f%%" %
-                   (row["scene"], row["gpu_ms"], row["reference_ms"], row["gpu_over_reference"], row["mean_abs"],
-                    TOLERANCE, 100 * row["share_over_tolerance"]))
-    return rows, info
+        saved = pathlib.Path(work) / point
+        try:
+            both = pc.bench(scene, size=s["size"], frames=s["frames"], backend="both",
+                            reference_frames=s["reference_frames"], save=saved, buffers=["compose.color"])
+        except RuntimeError as e:
+            pc.log("skipped %s: %s" % (scene, str(e).splitlines()[-1]))
+            return [], None
+        g, r = pc.result(both, "gpu"), pc.result(both, "reference")
+        # The GPU frame saved above against the reference frame saved above: compared by
+        # the CLI, through a one-frame run whose time is not used.
+        err = pc.bench(scene, size=s["size"], frames=1, backend="gpu", against=saved / "reference",
+                       buffers=["compose.color"], tolerance=tolerance)
+    e = pc.result(err, "gpu")["errors"]["compose.color"]
+    row = dict(scene=point, faces=g["faces"], width=g["size"][0], height=g["size"][1],
+               gpu_ms=g["frame_ms"], reference_ms=r["frame_ms"], gpu_over_reference=g["frame_ms"] / r["frame_ms"],
+               mean_abs=e["mean_abs"], rmse=e["rmse"], max_abs=e["max_abs"], share_over_tolerance=e["over_tolerance"],
+               tolerance=tolerance)
+    pc.log("%-22s gpu %8.1f ms  reference %8.1f ms  ratio %5.2f  mean |diff| %.4f  over %.2f: %.2f%%" %
+           (row["scene"], row["gpu_ms"], row["reference_ms"], row["gpu_over_reference"], row["mean_abs"],
+            tolerance, 100 * row["share_over_tolerance"]))
+    return [row], pc.machine(both["renderer"])
 
 
 def plot(rows, out):
@@ -80,4 +82,4 @@ def plot(rows, out):
 
 
 if __name__ == "__main__":
-    pc.study_main(__doc__, HERE, sweep, plot)
+    study_cli.main(__doc__, sys.modules[__name__])

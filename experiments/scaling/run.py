@@ -3,11 +3,12 @@
 10K to 1M faces (the procedural torus tessellated finer: 9216 x resolution^2 faces) at a
 fixed image size, and as the image grows from 512^2 to 4K UHD (3840x2160) with a fixed
 mesh. Effects: contours and interior. Every point is one `plumbago bench --backend both`
-run; ratios are to the smallest point of the same sweep in the same run. The log-log
-slope of each stage's time against faces and against pixels says which grows with which
-(slopes.csv).
+run; ratios are to the smallest point of the same sweep, measured in the same job. The
+log-log slope of each stage's time against faces and against pixels says which grows
+with which (slopes.csv).
 
-  /usr/bin/python3 experiments/scaling/run.py [--quick] [--out DIR] [--replot]
+Settings (experiments/config/*.yaml, scaling): faces, sizes, fixed_faces, fixed_size,
+frames, reference_frames. Run through experiments/Snakefile (lib/study_cli.py).
 """
 import math
 import pathlib
@@ -19,6 +20,7 @@ import numpy as np
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "lib"))
 import plumbago_cli as pc  # noqa: E402
+import study_cli  # noqa: E402
 
 TORUS_FACES_AT_1 = 9216  # faces of the procedural torus at resolution 1 (checked against bench's count below)
 EFFECTS = ["contours", "interior"]
@@ -31,38 +33,50 @@ def scene(folder, resolution):
     return str(path)
 
 
-def sweep(a):
-    if a.quick:
-        faces, sizes, fixed_faces, fixed_size, frames = [1e4, 3e4, 1e5], [(256, 256), (512, 512), (1024, 1024)], 3e4, (400, 400), 3
-        reference_frames = 2
+FIGURES = ["stage_ms_vs_faces_and_pixels.png"]
+EXTRA = ["slopes.csv"]
+
+
+def points(s):
+    """One point a sweep: its ratios and log-log slopes compare every size of the sweep."""
+    return ["faces", "pixels"]
+
+
+def scenes(s):
+    return []
+
+
+def size(text):
+    w, h = text.split("x")
+    return int(w), int(h)
+
+
+def measure(s, point):
+    if point == "faces":
+        todo = [(f, size(s["fixed_size"])) for f in s["faces"]]
     else:
-        faces = [1e4, 3e4, 1e5, 3e5, 1e6]
-        sizes = [(512, 512), (1024, 1024), (2048, 2048), (3840, 2160)]
-        fixed_faces, fixed_size, frames = 1e5, (800, 800), 8
-        reference_frames = 3
+        todo = [(s["fixed_faces"], size(x)) for x in s["sizes"]]
     rows, info = [], None
     with tempfile.TemporaryDirectory(prefix="plumbago-scaling-") as work:
-        points = [("faces", f, fixed_size) for f in faces] + [("pixels", fixed_faces, s) for s in sizes]
-        for sweep_name, f, (w, h) in points:
+        for f, (w, h) in todo:
             resolution = math.sqrt(f / TORUS_FACES_AT_1)
-            j = pc.bench(scene(work, resolution), size="%dx%d" % (w, h), frames=frames, backend="both",
-                         reference_frames=reference_frames)
+            j = pc.bench(scene(work, resolution), size="%dx%d" % (w, h), frames=s["frames"], backend="both",
+                         reference_frames=s["reference_frames"])
             info = info or pc.machine(j["renderer"])
             for r in j["results"]:
-                row = dict(sweep=sweep_name, backend=r["backend"], faces=r["faces"], width=w, height=h, pixels=w * h,
+                row = dict(sweep=point, backend=r["backend"], faces=r["faces"], width=w, height=h, pixels=w * h,
                            frame_ms=r["frame_ms"])
                 for k, v in r["stages"].items():
                     row["stage:" + k] = v
                 for k, v in r["preprocessing"].items():
                     row["preprocessing:" + k] = v
                 rows.append(row)
-                pc.log("%-6s %-9s %8d faces %4dx%-4d  %9.1f ms  %s" % (sweep_name, r["backend"], r["faces"], w, h,
+                pc.log("%-6s %-9s %8d faces %4dx%-4d  %9.1f ms  %s" % (point, r["backend"], r["faces"], w, h,
                        r["frame_ms"], "  ".join("%s %.1f" % (k, v) for k, v in sorted(r["stages"].items()))))
-    for sweep_name in ("faces", "pixels"):
-        for backend in ("gpu", "reference"):
-            sel = [r for r in rows if r["sweep"] == sweep_name and r["backend"] == backend]
-            for r in sel:
-                r["ratio_to_smallest"] = r["frame_ms"] / sel[0]["frame_ms"]
+    for backend in ("gpu", "reference"):
+        sel = [r for r in rows if r["backend"] == backend]
+        for r in sel:
+            r["ratio_to_smallest"] = r["frame_ms"] / sel[0]["frame_ms"]
     return rows, info
 
 
@@ -108,23 +122,14 @@ def plot(rows, out):
     pc.save_figure(fig, out, "stage_ms_vs_faces_and_pixels.png")
 
 
-def main():
-    a = pc.arguments(__doc__, HERE)
-    out = pathlib.Path(a.out)
-    if a.replot:
-        plot(pc.read_csv(out / "results.csv"), a.out)
-        return
-    rows, info = sweep(a)
-    pc.write_csv(out / "results.csv", rows)
+def finish(rows, out):
+    """slopes.csv: the log-log slope of each stage over each sweep."""
     s = slopes(rows)
-    pc.write_csv(out / "slopes.csv", s)
+    pc.write_csv(pathlib.Path(out) / "slopes.csv", s)
     for r in s:
-        pc.log("%-9s %-36s slope vs faces %5.2f  vs pixels %5.2f" % (r["backend"], r["stage"], r.get("slope_vs_faces", float("nan")),
-                                                                   r.get("slope_vs_pixels", float("nan"))))
-    pc.write_run_info(a.out, info)
-    plot(rows, a.out)
-    pc.log("wrote", a.out)
+        pc.log("%-9s %-36s slope vs faces %5.2f  vs pixels %5.2f" % (r["backend"], r["stage"],
+               r.get("slope_vs_faces", float("nan")), r.get("slope_vs_pixels", float("nan"))))
 
 
 if __name__ == "__main__":
-    main()
+    study_cli.main(__doc__, sys.modules[__name__])

@@ -18,7 +18,8 @@ The rays pass over hits within two of the point's face's longest edges: a silhou
 point lies on the smooth (interpolated-normal) silhouette, which the mesh's own facets
 graze. So an occluder closer than that to the line is not seen by the rays either.
 
-  /usr/bin/python3 experiments/stroke_visibility/run.py [--quick] [--out DIR] [--replot]
+Settings (experiments/config/*.yaml, stroke_visibility): scenes, size, repeats, sweeps
+(parameter: values). Run through experiments/Snakefile (lib/study_cli.py).
 """
 import json
 import pathlib
@@ -28,13 +29,19 @@ import tempfile
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "lib"))
 import plumbago_cli as pc  # noqa: E402
+import study_cli  # noqa: E402
 
-SWEEPS = {
-    "vis_step_px": [0.5, 1, 2, 4, 8],
-    "id_width_px": [1, 2, 3, 5],
-    "id_depth_bias": [0.0, 0.001, 0.005, 0.02, 0.05],
-}
-DEFAULTS = {"vis_step_px": 2, "id_width_px": 3, "id_depth_bias": 0.005}
+DEFAULTS = {"vis_step_px": 2, "id_width_px": 3, "id_depth_bias": 0.005}  # the program's defaults
+FIGURES = ["visibility_error.png"]
+
+
+def points(s):
+    """One point per scene and swept parameter (the sweeps' values: settings' sweeps)."""
+    return ["%s-%s" % (pc.stem(f), name) for f in s["scenes"] for name in s["sweeps"]]
+
+
+def scenes(s):
+    return s["scenes"]
 
 
 def settings(name, value):
@@ -70,43 +77,43 @@ def rates(lines):
     return fv / max(hidden, 1), fh / max(visible, 1), visible, hidden
 
 
-def sweep(a):
-    size, repeats = ("320x240", 1) if a.quick else ("800x600", 3)
-    scenes = ["builtin:cad", "scenes/two_objects.json"] + ([] if a.quick else ["builtin:torus", "scenes/fandisk_strokes.json"])
-    rows, info = [], None
+def measure(s, point):
+    stem, name = point.rsplit("-", 1)
+    scene = next(f for f in s["scenes"] if pc.stem(f) == stem)
+    if pc.missing_models(scene):
+        pc.log("skipped %s: no %s" % (scene, ", ".join(pc.missing_models(scene))))
+        return [], None
+    rows = []
     with tempfile.TemporaryDirectory(prefix="plumbago-vis-") as work:
         out = pathlib.Path(work) / "lines.json"
-        for scene in scenes:
-            if "fandisk" in scene and not (pc.ROOT.parent / "shared/models/fandisk.obj").exists():
-                continue
-            for name, values in SWEEPS.items():
-                for value in values:
-                    sets = sum((settings(n, value if n == name else DEFAULTS[n]) for n in SWEEPS), [])
-                    args = ["lines", scene, "--truth", "--backend", "reference", "--size", size, "-o", out]
-                    for s in sets:
-                        args += ["--set", s]
-                    ms = {}
-                    for _ in range(repeats):  # the fastest of the runs: the least disturbed
-                        pc.run(args)
-                        lines = json.loads(out.read_text())
-                        for t in lines["ran"]:
-                            ms[t["name"]] = min(ms.get(t["name"], float("inf")), t["ms"])
-                    fv, fh, visible, hidden = rates(lines)
-                    info = info or pc.machine("CPU reference (Embree)")
-                    row = dict(scene=pathlib.Path(scene).stem.replace("builtin:", ""), swept=name, value=value,
-                               size=size, paths=len(lines["paths"]), truth_visible=visible, truth_hidden=hidden,
-                               false_visible=fv, false_hidden=fh, id_image_ms=ms.get("id_image"),
-                               visibility_ms=ms.get("visibility"))
-                    rows.append(row)
-                    pc.log("%-14s %-13s %-6g false visible %6.2f%%  false hidden %6.2f%%  id %6.1f ms  vis %6.1f ms" %
-                           (row["scene"], name, value, 100 * fv, 100 * fh, row["id_image_ms"], row["visibility_ms"]))
-    return rows, info
+        for value in s["sweeps"][name]:
+            sets = sum((settings(n, value if n == name else DEFAULTS[n]) for n in DEFAULTS), [])
+            args = ["lines", scene, "--truth", "--backend", "reference", "--size", s["size"], "-o", out]
+            for x in sets:
+                args += ["--set", x]
+            ms = {}
+            for _ in range(s["repeats"]):  # the fastest of the runs: the least disturbed
+                pc.run(args)
+                lines = json.loads(out.read_text())
+                for t in lines["ran"]:
+                    ms[t["name"]] = min(ms.get(t["name"], float("inf")), t["ms"])
+            fv, fh, visible, hidden = rates(lines)
+            row = dict(scene=stem.replace("builtin_", ""), swept=name, value=value,
+                       size=s["size"], paths=len(lines["paths"]), truth_visible=visible, truth_hidden=hidden,
+                       false_visible=fv, false_hidden=fh, id_image_ms=ms.get("id_image"),
+                       visibility_ms=ms.get("visibility"))
+            rows.append(row)
+            pc.log("%-14s %-13s %-6g false visible %6.2f%%  false hidden %6.2f%%  id %6.1f ms  vis %6.1f ms" %
+                   (row["scene"], name, value, 100 * fv, 100 * fh, row["id_image_ms"], row["visibility_ms"]))
+    return rows, pc.machine("CPU reference (Embree)")
 
 
 def plot(rows, out):
     plt = pc.pyplot()
-    fig, axes = plt.subplots(1, len(SWEEPS), figsize=(5 * len(SWEEPS), 4.2))
-    for ax, name in zip(axes, SWEEPS):
+    swept = list(dict.fromkeys(r["swept"] for r in rows))
+    fig, axes = plt.subplots(1, len(swept), figsize=(5 * len(swept), 4.2), squeeze=False)
+    axes = axes[0]
+    for ax, name in zip(axes, swept):
         for i, scene in enumerate(dict.fromkeys(r["scene"] for r in rows)):
             pts = [r for r in rows if r["scene"] == scene and r["swept"] == name]
             xs = [r["value"] for r in pts]
@@ -124,4 +131,4 @@ def plot(rows, out):
 
 
 if __name__ == "__main__":
-    pc.study_main(__doc__, HERE, sweep, plot)
+    study_cli.main(__doc__, sys.modules[__name__])
