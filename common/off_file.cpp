@@ -13,7 +13,7 @@ namespace {
 
 using mesh_text::words;
 
-// Shortest rows: "0 0 0\n" and "3 0 0 0\n".
+// Shortest rows: "0 0 0\n" and "3 0 0 0\n" (the last one may lack its newline).
 constexpr uint64_t kMinVertexRowBytes = 6, kMinFaceRowBytes = 8;
 
 class OffReader {
@@ -77,7 +77,7 @@ class OffReader {
     faces_ = count(w[1], "face count");
     if (w.size() > 2) count(w[2], "edge count");
     const uint64_t left = mesh_text::file_size(path_) - std::min<uint64_t>(bytes_read_, mesh_text::file_size(path_));
-    const double least = double(vertices_) * kMinVertexRowBytes + double(faces_) * kMinFaceRowBytes;
+    const double least = double(vertices_) * kMinVertexRowBytes + double(faces_) * kMinFaceRowBytes - 1;
     if (least > double(left))
       fail("the file ends early: " + std::to_string(vertices_) + " vertices and " + std::to_string(faces_) + " faces need at least " +
            std::to_string(uint64_t(least)) + " bytes, the file has " + std::to_string(left) + " after the counts");
