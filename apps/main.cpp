@@ -25,7 +25,8 @@ int main(int argc, char** argv) {
   app.fallthrough();  // the global options may also follow the command
   app.add_option_function<double>(
          "--memory-budget-gb", plumbago::set_memory_budget_gb,
-         "The memory a command may plan to use, in GB (default " + std::to_string(int(plumbago::kDefaultMemoryBudgetGb)) +
+         "The memory a command may plan to use, in GB (default " +
+             std::to_string(int(plumbago::kDefaultMemoryBudgetGb)) +
              "): larger meshes, images and textures are refused (docs/bad-input.md)");
   for (auto setup : plumbago::command_registry()) setup(app);
   try {

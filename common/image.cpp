@@ -33,7 +33,8 @@ std::string header_date() {
   char* end = nullptr;
   std::time_t t = std::time_t(std::strtoll(epoch, &end, 10));
   std::tm utc{};
-  if (*end != '\0' || !gmtime_r(&t, &utc)) throw std::runtime_error("SOURCE_DATE_EPOCH: '" + std::string(epoch) + "' is not a time in seconds");
+  if (*end != '\0' || !gmtime_r(&t, &utc))
+    throw std::runtime_error("SOURCE_DATE_EPOCH: '" + std::string(epoch) + "' is not a time in seconds");
   char text[32];
   std::strftime(text, sizeof text, "%Y:%m:%d %H:%M:%S", &utc);
   return text;

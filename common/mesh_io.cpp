@@ -49,27 +49,34 @@ bool is_data_line(const std::vector<std::string>& w) {
   return !w.empty() && (w[0] == "v" || w[0] == "vt" || w[0] == "vn" || w[0] == "f" || w[0] == "l" || w[0] == "p");
 }
 
-// OBJ text checked line by line before OpenMesh reads it, so that a bad coordinate or
-// index is reported with its line (OpenMesh skips such faces with a warning), a file cut
-// off inside a data line is refused, and the counts are held to the memory budget.
-void check_obj_lines(const std::string& path) {
+// Calls visit(line number, words) for each line of an OBJ file that has words; refuses
+// a last data line without its newline.
+template <class Visit>
+void for_each_obj_line(const std::string& path, Visit visit) {
   std::ifstream in(path, std::ios::binary);
-  std::string line;
-  size_t vertices = 0, triangles = 0, number = 0;
-  auto fail = [&](size_t at, const std::string& what) { throw MeshError(path + ":" + std::to_string(at) + ": " + what); };
-  struct FaceIndex {
-    size_t line;
-    long index;
-    size_t vertices_before;
-    std::string text;
-  };
-  std::vector<FaceIndex> face_indices;
-  while (std::getline(in, line)) {
+  size_t number = 0;
+  for (std::string line; std::getline(in, line);) {
     ++number;
     std::vector<std::string> w = mesh_text::words(line, true);
     if (in.eof() && is_data_line(w))
-      fail(number, "the file ends inside this line, without its newline: cut off? (a file ends with a newline after its last vertex or face)");
-    if (w.empty()) continue;
+      throw MeshError(path + ":" + std::to_string(number) +
+                      ": the file ends inside this line, without its newline: cut off? (a file ends with a "
+                      "newline after its last vertex or face)");
+    if (!w.empty()) visit(number, w);
+  }
+}
+
+// OBJ text checked before OpenMesh reads it, so that a bad coordinate or index is
+// reported with its line (OpenMesh skips such faces with a warning), a file cut off
+// inside a data line is refused, and the counts are held to the memory budget. Two
+// passes, nothing stored: the first counts the vertices (a positive index may name one
+// defined after its face), the second checks the indices.
+void check_obj_lines(const std::string& path) {
+  auto fail = [&](size_t at, const std::string& what) {
+    throw MeshError(path + ":" + std::to_string(at) + ": " + what);
+  };
+  size_t vertices = 0, triangles = 0;
+  for_each_obj_line(path, [&](size_t number, const std::vector<std::string>& w) {
     if (w[0] == "v") {
       ++vertices;
       for (size_t k = 1; k <= 3; ++k)
@@ -78,22 +85,26 @@ void check_obj_lines(const std::string& path) {
     } else if (w[0] == "f") {
       if (w.size() < 4) fail(number, "a face needs at least 3 corners, found " + std::to_string(w.size() - 1));
       triangles += w.size() - 3;
-      for (size_t k = 1; k < w.size(); ++k) {
-        std::optional<long> index = corner_index(w[k]);
-        if (!index) fail(number, "face corner '" + w[k] + "' does not begin with a vertex index (a whole number)");
-        face_indices.push_back({number, *index, vertices, w[k].substr(0, w[k].find('/'))});
-      }
+      for (size_t k = 1; k < w.size(); ++k)
+        if (!corner_index(w[k]))
+          fail(number, "face corner '" + w[k] + "' does not begin with a vertex index (a whole number)");
     }
-  }
+  });
   mesh_text::check_mesh_budget(path, 0, double(vertices), double(triangles));
   // Positive indices count from the file's first vertex, negative ones back from the
   // last vertex read before the face.
-  for (const FaceIndex& f : face_indices) {
-    if (f.index == 0 || (f.index > 0 && size_t(f.index) > vertices) || (f.index < 0 && uint64_t(-(f.index + 1)) >= f.vertices_before))
-      fail(f.line, "face index " + f.text + " is out of range (" +
-                       std::to_string(f.index > 0 ? vertices : f.vertices_before) + " vertices" +
-                       (f.index > 0 ? " in the file)" : " before it)"));
-  }
+  size_t before = 0;
+  for_each_obj_line(path, [&](size_t number, const std::vector<std::string>& w) {
+    before += w[0] == "v";
+    if (w[0] != "f") return;
+    for (size_t k = 1; k < w.size(); ++k) {
+      const long index = *corner_index(w[k]);
+      if (index == 0 || (index > 0 && size_t(index) > vertices) || (index < 0 && uint64_t(-(index + 1)) >= before))
+        fail(number, "face index " + w[k].substr(0, w[k].find('/')) + " is out of range (" +
+                         std::to_string(index > 0 ? vertices : before) + " vertices" +
+                         (index > 0 ? " in the file)" : " before it)"));
+    }
+  });
 }
 
 // OpenMesh's error stream captured and its log silenced while alive (OpenMesh would

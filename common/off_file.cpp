@@ -65,22 +65,25 @@ class OffReader {
   size_t count(const std::string& word, const char* what) const {
     char* end = nullptr;
     double v = std::strtod(word.c_str(), &end);
-    if (*end != '\0' || !(v >= 0) || v != std::floor(v) || v > 1e15) fail(std::string(what) + " '" + word + "' is not a count");
+    if (*end != '\0' || !(v >= 0) || v != std::floor(v) || v > 1e15)
+      fail(std::string(what) + " '" + word + "' is not a count");
     return size_t(v);
   }
 
   // "V F [E]", checked against what the rest of the file can hold and the memory budget.
   void read_counts(std::vector<std::string> w) {
     if (w.empty() && !next_line(w)) fail("the file ends before the counts (V F E)");
-    if (w.size() < 2 || w.size() > 3) fail("expected the counts 'V F [E]', found " + std::to_string(w.size()) + " words");
+    if (w.size() < 2 || w.size() > 3)
+      fail("expected the counts 'V F [E]', found " + std::to_string(w.size()) + " words");
     vertices_ = count(w[0], "vertex count");
     faces_ = count(w[1], "face count");
     if (w.size() > 2) count(w[2], "edge count");
     const uint64_t left = mesh_text::file_size(path_) - std::min<uint64_t>(bytes_read_, mesh_text::file_size(path_));
     const double least = double(vertices_) * kMinVertexRowBytes + double(faces_) * kMinFaceRowBytes - 1;
     if (least > double(left))
-      fail("the file ends early: " + std::to_string(vertices_) + " vertices and " + std::to_string(faces_) + " faces need at least " +
-           std::to_string(uint64_t(least)) + " bytes, the file has " + std::to_string(left) + " after the counts");
+      fail("the file ends early: " + std::to_string(vertices_) + " vertices and " + std::to_string(faces_) +
+           " faces need at least " + std::to_string(uint64_t(least)) + " bytes, the file has " + std::to_string(left) +
+           " after the counts");
     mesh_text::check_mesh_budget(path_, line_, double(vertices_), double(faces_));
     counts_line_ = line_;
   }

@@ -56,7 +56,8 @@ std::vector<Part> scene_parts(const Scene& scene) {
   std::set<const Mesh*> meshes;  // a file named twice is loaded once
   double mesh_total = 0;
   for (const SceneObject& o : scene.objects)
-    if (meshes.insert(o.mesh.get()).second) mesh_total += mesh_bytes(double(o.mesh->positions.size()), double(o.mesh->triangles.size()));
+    if (meshes.insert(o.mesh.get()).second)
+      mesh_total += mesh_bytes(double(o.mesh->positions.size()), double(o.mesh->triangles.size()));
   parts.push_back({"the meshes", mesh_total});
   return parts;
 }

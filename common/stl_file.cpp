@@ -97,7 +97,8 @@ class AsciiStlReader {
     if (w[0] != "vertex" || w.size() != 4) fail("expected 'vertex x y z'");
     glm::vec3 p;
     for (int c = 0; c < 3; ++c)
-      if (!mesh_text::is_finite_float(w[c + 1], &p[c])) fail("vertex coordinate '" + w[c + 1] + "' is not a finite number");
+      if (!mesh_text::is_finite_float(w[c + 1], &p[c]))
+        fail("vertex coordinate '" + w[c + 1] + "' is not a finite number");
     return p;
   }
 
@@ -119,9 +120,9 @@ Mesh read_stl(const std::string& path) {
     uint32_t n = binary_count(head);
     if (size == kBinaryHeader + kBinaryFacet * uint64_t(n)) return read_binary(path, in, n);
     if (!ascii)
-      throw MeshError(path + ": a binary STL of " + std::to_string(n) + " triangles takes 84 + 50 x " + std::to_string(n) +
-                      " = " + std::to_string(kBinaryHeader + kBinaryFacet * uint64_t(n)) + " bytes, the file has " +
-                      std::to_string(size) + " (truncated, or not an STL file)");
+      throw MeshError(path + ": a binary STL of " + std::to_string(n) + " triangles takes 84 + 50 x " +
+                      std::to_string(n) + " = " + std::to_string(kBinaryHeader + kBinaryFacet * uint64_t(n)) +
+                      " bytes, the file has " + std::to_string(size) + " (truncated, or not an STL file)");
   }
   if (!ascii) throw MeshError(path + ": not an STL file (no 'solid' line, and " + std::to_string(size) +
                               " bytes are too few for a binary STL's 84-byte header)");

@@ -55,7 +55,8 @@ class Corpus : public ::testing::Test {
   }
 
   ~Corpus() override {  // a read-only blocker would keep the folder from being removed
-    for (const auto& e : fs::recursive_directory_iterator(out_)) fs::permissions(e.path(), fs::perms::owner_all, fs::perm_options::add);
+    for (const auto& e : fs::recursive_directory_iterator(out_))
+      fs::permissions(e.path(), fs::perms::owner_all, fs::perm_options::add);
   }
 
   // The command line of `entry` for `backend` ("curvature" for a mesh's curvature run).
@@ -98,7 +99,8 @@ class Corpus : public ::testing::Test {
 
   // The outcome `entry` expects of this run ("curvature" may differ from the renders').
   static std::string expected(const json& entry, const std::string& backend) {
-    return (backend == "curvature" && entry.contains("curvature") ? entry["curvature"] : entry["expect"]).get<std::string>();
+    const bool own = backend == "curvature" && entry.contains("curvature");
+    return (own ? entry["curvature"] : entry["expect"]).get<std::string>();
   }
 
   void check(const json& entry, const std::string& backend) {
