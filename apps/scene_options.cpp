@@ -3,6 +3,8 @@
 #include <regex>
 #include <stdexcept>
 
+#include "common/memory_budget.hpp"
+
 namespace plumbago {
 
 const char* const kDefaultBuiltinScene = "pencil";
@@ -49,6 +51,7 @@ Scene SceneOptions::load() const {
       throw ParamError(std::string("--set: ") + e.what());
     }
   }
+  check_scene_memory(s);  // before any buffer is made
   return s;
 }
 

@@ -4,6 +4,8 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <stdexcept>
 
@@ -22,6 +24,22 @@ Image flipped(const Image& img) {
   return out;
 }
 
+// The date written into a file's header: OpenImageIO stamps the time of writing when
+// none is given (EXR capDate), so that two identical runs would give different bytes.
+// SOURCE_DATE_EPOCH (reproducible-builds.org), when set, gives the date; else it is empty.
+std::string header_date() {
+  const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
+  if (!epoch || !*epoch) return {};
+  char* end = nullptr;
+  std::time_t t = std::time_t(std::strtoll(epoch, &end, 10));
+  std::tm utc{};
+  if (*end != '\0' || !gmtime_r(&t, &utc))
+    throw std::runtime_error("SOURCE_DATE_EPOCH: '" + std::string(epoch) + "' is not a time in seconds");
+  char text[32];
+  std::strftime(text, sizeof text, "%Y:%m:%d %H:%M:%S", &utc);
+  return text;
+}
+
 }  // namespace
 
 void check_image_extension(const std::string& path) {
@@ -38,6 +56,7 @@ void write_image(const Image& img, OutputFile& file) {
   if (!out) throw std::runtime_error(path + ": " + OIIO::geterror());
   OIIO::ImageSpec spec(img.width, img.height, img.channels,
                        is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+  spec.attribute("DateTime", header_date());
   Image top_first = flipped(img);
   if (!out->open(file.temporary_path(), spec) ||
       !out->write_image(OIIO::TypeDesc::FLOAT, top_first.data.data()) || !out->close())

@@ -24,10 +24,12 @@ struct MeshError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Reads OBJ, OFF, PLY (including binary PLY tristrips) and STL through OpenMesh;
-// polygons are triangulated, vertices welded, normals computed. Refuses with MeshError:
-// a missing or unreadable file, an unknown format, no faces, NaN/Inf coordinates,
-// face indices out of range.
+// Reads OBJ, OFF, PLY (including binary PLY tristrips) and STL (OBJ and PLY through
+// OpenMesh once checked, ASCII OFF and STL by common/mesh_formats.hpp); polygons are
+// triangulated, vertices welded, normals computed. Refuses with MeshError: a missing or
+// unreadable file, an unknown format, no faces, NaN/Inf coordinates, face indices out of
+// range, a file cut short, counts over the file's size or the memory budget
+// (docs/bad-input.md).
 Mesh load_mesh(const std::string& path);
 
 // Area-weighted vertex normals; a vertex whose faces all have zero area gets (0,0,1)

@@ -1,6 +1,7 @@
-// Mesh files through OpenMesh (OBJ, OFF, PLY, STL), with the text formats checked first so
-// that a refusal names the line, and the PLY triangle strips OpenMesh cannot read
-// (../shared/models/igea.ply).
+// Mesh files: OBJ and PLY through OpenMesh, each checked first by the project's code so
+// that a refusal names the line (and PLY triangle strips, which OpenMesh cannot read,
+// ../shared/models/igea.ply, read by it); ASCII OFF and STL by the project's own readers
+// (common/mesh_formats.hpp).
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
@@ -9,10 +10,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 
 #include "common/mesh.hpp"
+#include "common/mesh_formats.hpp"
 #include "common/ply_file.hpp"
 
 namespace plumbago {
@@ -27,101 +31,80 @@ std::string lowercase_extension(const std::string& path) {
   return ext;
 }
 
-// A whole word that reads as a finite float (1e39 does not: it would be infinite).
-bool is_finite_number(const std::string& word) {
-  char* end = nullptr;
-  float v = std::strtof(word.c_str(), &end);
-  return !word.empty() && *end == '\0' && std::isfinite(v);
+// The vertex index of an OBJ face corner ("i", "i/t", "i//n", "i/t/n"): a whole number,
+// negative counting back; none when the word does not begin with one. Beyond 18 digits,
+// the largest long of its sign: out of range in any file.
+std::optional<long> corner_index(const std::string& corner) {
+  std::string index = corner.substr(0, corner.find('/'));
+  const bool negative = !index.empty() && index[0] == '-';
+  const size_t digits = index.size() - negative;
+  if (digits == 0 || index.find_first_not_of("0123456789", negative) != std::string::npos) return std::nullopt;
+  if (digits > 18) return negative ? std::numeric_limits<long>::min() : std::numeric_limits<long>::max();
+  return std::stol(index);
 }
 
-// OBJ text checked line by line before OpenMesh reads it, so that a bad coordinate or
-// index is reported with its line (OpenMesh skips such faces with a warning).
-void check_obj_lines(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  size_t vertices = 0, number = 0;
-  struct FaceIndex {
-    size_t line;
-    long index;
-    size_t vertices_before;
-  };
-  std::vector<FaceIndex> face_indices;
-  while (std::getline(in, line)) {
+// An OBJ statement that carries data: the file must not end inside one. A line cut
+// mid-way still parses (`f 1 2 3` from `f 1 2 34`), so its missing newline is the signal.
+bool is_data_line(const std::vector<std::string>& w) {
+  return !w.empty() && (w[0] == "v" || w[0] == "vt" || w[0] == "vn" || w[0] == "f" || w[0] == "l" || w[0] == "p");
+}
+
+// Calls visit(line number, words) for each line of an OBJ file that has words; refuses
+// a last data line without its newline.
+template <class Visit>
+void for_each_obj_line(const std::string& path, Visit visit) {
+  std::ifstream in(path, std::ios::binary);
+  size_t number = 0;
+  for (std::string line; std::getline(in, line);) {
     ++number;
-    std::istringstream ss(line);
-    std::string tag;
-    ss >> tag;
-    if (tag == "v") {
-      ++vertices;
-      for (int k = 0; k < 3; ++k) {
-        std::string word;
-        ss >> word;
-        if (!is_finite_number(word))
-          throw MeshError(path + ":" + std::to_string(number) + ": vertex coordinate '" + word +
-                          "' is not a finite number");
-      }
-    } else if (tag == "f") {
-      for (std::string corner; ss >> corner;) face_indices.push_back({number, std::atol(corner.c_str()), vertices});
-    }
+    std::vector<std::string> w = mesh_text::words(line, true);
+    if (in.eof() && is_data_line(w))
+      throw MeshError(path + ":" + std::to_string(number) +
+                      ": the file ends inside this line, without its newline: cut off? (a file ends with a "
+                      "newline after its last vertex or face)");
+    if (!w.empty()) visit(number, w);
   }
+}
+
+// OBJ text checked before OpenMesh reads it, so that a bad coordinate or index is
+// reported with its line (OpenMesh skips such faces with a warning), a file cut off
+// inside a data line is refused, and the counts are held to the memory budget. Two
+// passes, nothing stored: the first counts the vertices (a positive index may name one
+// defined after its face), the second checks the indices.
+void check_obj_lines(const std::string& path) {
+  auto fail = [&](size_t at, const std::string& what) {
+    throw MeshError(path + ":" + std::to_string(at) + ": " + what);
+  };
+  size_t vertices = 0, triangles = 0;
+  for_each_obj_line(path, [&](size_t number, const std::vector<std::string>& w) {
+    if (w[0] == "v") {
+      ++vertices;
+      for (size_t k = 1; k <= 3; ++k)
+        if (k >= w.size() || !mesh_text::is_finite_float(w[k]))
+          fail(number, "vertex coordinate '" + (k < w.size() ? w[k] : std::string()) + "' is not a finite number");
+    } else if (w[0] == "f") {
+      if (w.size() < 4) fail(number, "a face needs at least 3 corners, found " + std::to_string(w.size() - 1));
+      triangles += w.size() - 3;
+      for (size_t k = 1; k < w.size(); ++k)
+        if (!corner_index(w[k]))
+          fail(number, "face corner '" + w[k] + "' does not begin with a vertex index (a whole number)");
+    }
+  });
+  mesh_text::check_mesh_budget(path, 0, double(vertices), double(triangles));
   // Positive indices count from the file's first vertex, negative ones back from the
   // last vertex read before the face.
-  for (const FaceIndex& f : face_indices) {
-    if (f.index == 0 || (f.index > 0 && size_t(f.index) > vertices) || (f.index < 0 && size_t(-f.index) > f.vertices_before))
-      throw MeshError(path + ":" + std::to_string(f.line) + ": face index " + std::to_string(f.index) +
-                      " is out of range (" + std::to_string(f.index > 0 ? vertices : f.vertices_before) +
-                      " vertices" + (f.index > 0 ? " in the file)" : " before it)"));
-  }
-}
-
-// OFF text checked line by line: after the keyword (OFF, COFF, NOFF, ...) every value
-// must be a finite number, and each face's indices must name one of the V vertices.
-// OpenMesh would read "nan" as garbage and misread everything after it.
-void check_off_lines(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  size_t number = 0, vertices = 0, faces = 0, rows = 0;
-  bool counts_read = false;
-  // A count must be a whole number from 0 up: a negative one would otherwise become a
-  // huge size in OpenMesh's reader (it reserves room for V vertices and F faces).
-  auto count = [&](const std::string& word, const char* what) {
-    double v = std::stod(word);
-    if (v < 0 || v != std::floor(v))
-      throw MeshError(path + ":" + std::to_string(number) + ": " + what + " '" + word + "' is not a count");
-    return size_t(std::min(v, 1e15));
-  };
-  while (std::getline(in, line)) {
-    ++number;
-    std::istringstream ss(line.substr(0, line.find('#')));
-    std::vector<std::string> words;
-    for (std::string w; ss >> w;) words.push_back(w);
-    if (number == 1 && !words.empty() && words[0].find("OFF") != std::string::npos) {
-      if (line.find("BINARY") != std::string::npos) return;  // binary body: left to OpenMesh
-      words.erase(words.begin());
+  size_t before = 0;
+  for_each_obj_line(path, [&](size_t number, const std::vector<std::string>& w) {
+    before += w[0] == "v";
+    if (w[0] != "f") return;
+    for (size_t k = 1; k < w.size(); ++k) {
+      const long index = *corner_index(w[k]);
+      if (index == 0 || (index > 0 && size_t(index) > vertices) || (index < 0 && uint64_t(-(index + 1)) >= before))
+        fail(number, "face index " + w[k].substr(0, w[k].find('/')) + " is out of range (" +
+                         std::to_string(index > 0 ? vertices : before) + " vertices" +
+                         (index > 0 ? " in the file)" : " before it)"));
     }
-    if (words.empty()) continue;
-    for (const auto& w : words)
-      if (!is_finite_number(w))
-        throw MeshError(path + ":" + std::to_string(number) + ": '" + w + "' is not a finite number");
-    if (!counts_read) {  // "V F E"
-      vertices = count(words[0], "vertex count");
-      faces = words.size() > 1 ? count(words[1], "face count") : 0;
-      if (words.size() > 2) count(words[2], "edge count");
-      counts_read = true;
-    } else if (size_t row = rows++; row >= vertices && row < vertices + faces) {  // "n i1 ... in [color]"
-      size_t n = count(words[0], "face corner count");
-      if (n + 1 > words.size())
-        throw MeshError(path + ":" + std::to_string(number) + ": face with " + words[0] + " corners has only " +
-                        std::to_string(words.size() - 1) + " indices");
-      for (size_t k = 1; k <= n; ++k)
-        if (double i = std::stod(words[k]); i < 0 || i >= double(vertices) || i != std::floor(i))
-          throw MeshError(path + ":" + std::to_string(number) + ": face index " + words[k] +
-                          " is out of range (" + std::to_string(vertices) + " vertices, counted from 0)");
-    }
-  }
-  if (rows < vertices + faces)  // before OpenMesh reserves room for what the counts say
-    throw MeshError(path + ": the file ends early (" + std::to_string(vertices) + " vertices and " +
-                    std::to_string(faces) + " faces declared, " + std::to_string(rows) + " lines of them found)");
+  });
 }
 
 // OpenMesh's error stream captured and its log silenced while alive (OpenMesh would
@@ -179,6 +162,18 @@ Mesh flat_arrays(const OpenMeshTri& om, const std::string& path) {
   return m;
 }
 
+// OBJ through OpenMesh once every line is checked; PLY through OpenMesh once the
+// project's reader has read every value (it reads triangle strips itself); OFF and STL
+// with the project's own readers.
+Mesh read_by_format(const std::string& path, const std::string& ext) {
+  if (ext == ".off") return read_off(path);
+  if (ext == ".stl") return read_stl(path);
+  if (ext == ".obj") check_obj_lines(path);
+  bool has_strips = false;
+  Mesh strips = ext == ".ply" ? read_ply(path, has_strips) : Mesh{};
+  return has_strips ? std::move(strips) : flat_arrays(read_with_openmesh(path), path);
+}
+
 }  // namespace
 
 void validate_mesh(const Mesh& mesh) {
@@ -225,11 +220,7 @@ Mesh load_mesh(const std::string& path) {
   std::string ext = lowercase_extension(path);
   if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".stl")
     throw MeshError(path + ": unknown mesh format '" + ext + "' (OBJ, OFF, PLY or STL)");
-  if (ext == ".obj") check_obj_lines(path);
-  if (ext == ".off") check_off_lines(path);
-  bool has_strips = false;
-  Mesh strips = ext == ".ply" ? read_ply(path, has_strips) : Mesh{};  // checks every value
-  Mesh m = has_strips ? std::move(strips) : flat_arrays(read_with_openmesh(path), path);
+  Mesh m = read_by_format(path, ext);
   validate_mesh(m);
   weld_vertices(m);
   if (m.triangles.empty()) throw MeshError(path + ": every face is degenerate (no faces left after welding)");

@@ -1,5 +1,7 @@
 #include "common/ply_file.hpp"
 
+#include "common/mesh_formats.hpp"
+
 #include <algorithm>
 #include <bit>
 #include <charconv>
@@ -175,6 +177,13 @@ PlyHeader read_header(std::istream& in, const std::string& path) {
     }
     left -= ascii ? std::min<uint64_t>(left, 2 * e.count * least) : e.count * least;
   }
+  // The mesh the counts make, against the memory budget (a face is at least a triangle).
+  auto count_of = [&](const char* name) {
+    for (const PlyElement& e : h.elements)
+      if (e.name == name) return double(e.count);
+    return 0.0;
+  };
+  mesh_text::check_mesh_budget(path, 0, count_of("vertex"), count_of("face"));
   in.clear();
   in.seekg(std::streamoff(pos));
   return h;
@@ -254,10 +263,6 @@ void add_strip(const std::vector<unsigned>& strip, Mesh& m) {
   }
 }
 
-void add_fan(const std::vector<unsigned>& polygon, Mesh& m) {
-  for (size_t k = 1; k + 1 < polygon.size(); ++k) m.triangles.push_back({polygon[0], polygon[k], polygon[k + 1]});
-}
-
 // Instance i of element e.
 void read_instance(PlyValues& values, const PlyElement& e, size_t i, Mesh& m) {
   auto what = [&] { return e.name + " " + std::to_string(i); };
@@ -295,7 +300,7 @@ void read_instance(PlyValues& values, const PlyElement& e, size_t i, Mesh& m) {
       }
     }
     if (e.name == "tristrips") add_strip(corners, m);
-    if (e.name == "face") add_fan(corners, m);
+    if (e.name == "face") mesh_text::add_fan(corners, m);
   }
 }
 

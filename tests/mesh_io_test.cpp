@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 
+#include "common/memory_budget.hpp"
 #include "common/mesh.hpp"
 #include "tests/temp_dir.hpp"
 #include "tests/test_scenes.hpp"
@@ -210,6 +211,26 @@ TEST(MeshIo, ValidIndexFormsAreAccepted) {
   m = load_mesh(tmp.write("quad.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n"));
   EXPECT_EQ(m.triangles.size(), 2u);
   expect_unit_finite_normals(m);
+}
+
+// The memory budget for the duration of a test.
+class BudgetOf {
+ public:
+  explicit BudgetOf(double gb) { set_memory_budget_gb(gb); }
+  ~BudgetOf() { set_memory_budget_gb(kDefaultMemoryBudgetGb); }
+};
+
+// Every format's counts go through the budget before the mesh is made: a tetrahedron
+// (4 vertices, 4 triangles: about 6 kB by mesh_bytes) is refused under 1 kB.
+TEST(MeshIo, MeshesOverTheMemoryBudgetAreRefused) {
+  const std::string corpus = std::string(PLUMBAGO_SOURCE_DIR) + "/tests/corpus/mesh/";
+  const char* files[] = {"obj_ok_tetra.obj", "off_ok_tetra.off", "ply_ascii_ok.ply",
+                         "ply_binary_le_ok.ply", "stl_ascii_ok.stl", "stl_binary_ok.stl"};
+  {
+    BudgetOf tiny(1e-6);
+    for (const char* name : files) expect_refused(corpus + name, {name, "would need", "over the memory budget of"});
+  }
+  for (const char* name : files) EXPECT_EQ(load_mesh(corpus + name).triangles.size(), 4u) << name;
 }
 
 }  // namespace

@@ -142,7 +142,11 @@ TEST(PlyHeader, OffCountsAreCheckedBeforeOpenMesh) {
   expect_refused_quickly(tmp.write("fraction.off", "OFF\n2.5 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
                          {"fraction.off:2:", "not a count"});
   expect_refused_quickly(tmp.write("billions.off", "OFF\n4000000000 4000000000 0\n0 0 0\n"), {"billions.off", "ends early"});
-  expect_refused_quickly(tmp.write("fewer.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n"), {"fewer.off:6:", "only 2 indices"});
+  // Rows long enough for the counts (at least 6 bytes a vertex, 8 a face), one face short.
+  expect_refused_quickly(tmp.write("fewer.off", "OFF\n3 1 0\n0.0 0.0 0.0\n1.0 0.0 0.0\n0.0 1.0 0.0\n3 0 1\n"),
+                         {"fewer.off:6:", "only 2 indices"});
+  expect_refused_quickly(tmp.write("short.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n"),
+                         {"short.off:2:", "ends early", "at least 25 bytes, the file has 24"});
   expect_refused_quickly(tmp.write("fracindex.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1.5\n"),
                          {"fracindex.off:6:", "face index 1.5"});
 }
