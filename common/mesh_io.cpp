@@ -27,11 +27,12 @@ std::string lowercase_extension(const std::string& path) {
   return ext;
 }
 
-// A whole word that reads as a finite float (1e39 does not: it would be infinite).
+// A whole word that reads as a finite float (1e39 does not: it would be infinite). The
+// whole word, not up to a NUL byte within it: "\0\0032" is not a number.
 bool is_finite_number(const std::string& word) {
   char* end = nullptr;
   float v = std::strtof(word.c_str(), &end);
-  return !word.empty() && *end == '\0' && std::isfinite(v);
+  return !word.empty() && end == word.c_str() + word.size() && std::isfinite(v);
 }
 
 // OBJ text checked line by line before OpenMesh reads it, so that a bad coordinate or
@@ -85,7 +86,7 @@ void check_off_lines(const std::string& path) {
   // A count must be a whole number from 0 up: a negative one would otherwise become a
   // huge size in OpenMesh's reader (it reserves room for V vertices and F faces).
   auto count = [&](const std::string& word, const char* what) {
-    double v = std::stod(word);
+    double v = std::strtod(word.c_str(), nullptr);  // std::stod throws on 1e-400
     if (v < 0 || v != std::floor(v))
       throw MeshError(path + ":" + std::to_string(number) + ": " + what + " '" + word + "' is not a count");
     return size_t(std::min(v, 1e15));
@@ -114,7 +115,7 @@ void check_off_lines(const std::string& path) {
         throw MeshError(path + ":" + std::to_string(number) + ": face with " + words[0] + " corners has only " +
                         std::to_string(words.size() - 1) + " indices");
       for (size_t k = 1; k <= n; ++k)
-        if (double i = std::stod(words[k]); i < 0 || i >= double(vertices) || i != std::floor(i))
+        if (double i = std::strtod(words[k].c_str(), nullptr); i < 0 || i >= double(vertices) || i != std::floor(i))
           throw MeshError(path + ":" + std::to_string(number) + ": face index " + words[k] +
                           " is out of range (" + std::to_string(vertices) + " vertices, counted from 0)");
     }
