@@ -10,6 +10,7 @@ packages=(
   libegl-dev libopengl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
   python3-matplotlib python3-numpy
   libglfw3-dev libimgui-dev xvfb xauth
+  clang-14 libclang-rt-14-dev llvm-14  # scripts/sanitize.sh: ASan, UBSan, libFuzzer, llvm-symbolizer
 )
 
 sudo_cmd=()
