@@ -97,7 +97,12 @@ void check_off_lines(const std::string& path) {
     std::vector<std::string> words;
     for (std::string w; ss >> w;) words.push_back(w);
     if (number == 1 && !words.empty() && words[0].find("OFF") != std::string::npos) {
-      if (line.find("BINARY") != std::string::npos) return;  // binary body: left to OpenMesh
+      // OpenMesh's binary reader trusts the counts (a count of 4 billion in a small file
+      // read past its end for minutes); any BINARY on the line, not only where OpenMesh
+      // looks for it, or the body would go to its ASCII reader unchecked.
+      if (line.find("BINARY") != std::string::npos)
+        throw MeshError(path + ":1: binary OFF is not read (its counts cannot be checked): convert it to ASCII "
+                        "OFF, PLY or STL");
       words.erase(words.begin());
     }
     if (words.empty()) continue;
