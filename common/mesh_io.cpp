@@ -125,6 +125,8 @@ void check_off_lines(const std::string& path) {
                           " is out of range (" + std::to_string(vertices) + " vertices, counted from 0)");
     }
   }
+  if (!counts_read)  // OpenMesh would use its counts uninitialized
+    throw MeshError(path + ": no vertex and face counts after the OFF keyword");
   if (rows < vertices + faces)  // before OpenMesh reserves room for what the counts say
     throw MeshError(path + ": the file ends early (" + std::to_string(vertices) + " vertices and " +
                     std::to_string(faces) + " faces declared, " + std::to_string(rows) + " lines of them found)");
