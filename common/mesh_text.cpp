@@ -11,7 +11,8 @@ namespace plumbago::mesh_text {
 bool is_finite_float(const std::string& word, float* value) {
   char* end = nullptr;
   float v = std::strtof(word.c_str(), &end);
-  if (word.empty() || *end != '\0' || !std::isfinite(v)) return false;
+  // The whole word, not up to a NUL byte within it: "\0\0032" is not a number.
+  if (word.empty() || end != word.c_str() + word.size() || !std::isfinite(v)) return false;
   if (value) *value = v;
   return true;
 }

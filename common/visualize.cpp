@@ -38,10 +38,10 @@ void dump_buffers(const std::map<std::string, Image>& buffers, const std::string
                   OutputFiles& out) {
   out.folder(dir);
   ImageFiles files;
-  for (const auto& [name, img] : buffers) {
-    std::string base = (std::filesystem::path(dir) / (prefix + name)).string();
-    files.emplace_back(base + ".png", [&name, &img] { return viewable(name, img); });
-    files.emplace_back(base + ".exr", [&img] { return as_rgb(img); });
+  for (const auto& entry : buffers) {  // not a structured binding: clang 14 cannot capture one
+    std::string base = (std::filesystem::path(dir) / (prefix + entry.first)).string();
+    files.emplace_back(base + ".png", [&entry] { return viewable(entry.first, entry.second); });
+    files.emplace_back(base + ".exr", [&entry] { return as_rgb(entry.second); });
   }
   write_images(files, out);
 }

@@ -11,6 +11,7 @@ packages=(
   python3-matplotlib python3-numpy
   snakemake
   libglfw3-dev libimgui-dev xvfb xauth
+  clang-14 libclang-rt-14-dev llvm-14  # scripts/sanitize.sh: ASan, UBSan, libFuzzer, llvm-symbolizer
 )
 
 sudo_cmd=()
