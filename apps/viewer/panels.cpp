@@ -71,7 +71,8 @@ void select_stage(Inspection& in, const std::string& buffer) {
 void results_table(Inspection& in) {
   const std::vector<StageParity>& results = in.check.results();
   if (results.empty() || !ImGui::BeginTable("##parity", 5, ImGuiTableFlags_RowBg)) return;
-  for (const char* h : {"stage", "max abs", "RMSE", "over tol", ""}) ImGui::TableSetupColumn(h);
+  ImGui::TableSetupColumn("stage", ImGuiTableColumnFlags_WidthStretch);
+  for (const char* h : {"max abs", "RMSE", "over tol", ""}) ImGui::TableSetupColumn(h, ImGuiTableColumnFlags_WidthFixed);
   ImGui::TableHeadersRow();
   for (size_t i = 0; i < results.size(); ++i) {
     const StageParity& s = results[i];
@@ -113,10 +114,10 @@ void Panels::draw(Session& session, Inspection& inspection, glm::ivec2 framebuff
   if (session.preprocessing()) preprocessing_bar(session);
   if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) scene_section(session);
   if (ImGui::CollapsingHeader("Camera")) camera_section(session);
-  if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) params_section(session);
   if (ImGui::CollapsingHeader("Stage view", ImGuiTreeNodeFlags_DefaultOpen)) stage_section(session, inspection);
   if (ImGui::CollapsingHeader("Check against the reference", ImGuiTreeNodeFlags_DefaultOpen))
     reference_section(session, inspection);
+  if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) params_section(session);
   if (ImGui::CollapsingHeader("Timing", ImGuiTreeNodeFlags_DefaultOpen)) {
     ImGui::Checkbox("render continuously", &continuous);
     tooltip("Render every frame, not only after a change: fps and the plots then follow the renderer");
