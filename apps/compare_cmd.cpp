@@ -2,13 +2,11 @@
 // Exit code 0 when every stage passes, 1 when one fails, 2 on bad input.
 #include <cstdio>
 #include <filesystem>
-#include <nlohmann/json.hpp>
 
 #include "apps/command.hpp"
 #include "parity/parity.hpp"
 #include "apps/scene_options.hpp"
 #include "common/visualize.hpp"
-#include "gpu/context.hpp"
 
 namespace plumbago {
 namespace {
@@ -35,12 +33,7 @@ void write_images(const std::vector<StageParity>& results, const std::string& di
 
 void print(const std::vector<StageParity>& results, bool all_pass, bool json) {
   if (json) {
-    nlohmann::json j{{"pass", all_pass}, {"renderer", gpu::Context::get().renderer()}, {"stages", nlohmann::json::array()}};
-    for (const auto& s : results)
-      j["stages"].push_back({{"name", s.name}, {"pass", s.pass}, {"max_abs", s.diff.max_abs}, {"rmse", s.diff.rmse},
-                             {"over_tolerance", s.diff.over_tolerance}, {"tolerance", s.diff.tolerance},
-                             {"compared_pixels", s.diff.compared}, {"note", s.note}});
-    std::printf("%s\n", j.dump(2).c_str());
+    std::printf("%s\n", parity_report(results).dump(2).c_str());
     return;
   }
   for (const auto& s : results)

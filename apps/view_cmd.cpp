@@ -1,4 +1,4 @@
-// plumbago view [SCENE] [--size WxH] [--set k=v ...] [--frames N --screenshot FILE] [--no-ui]
+// plumbago view [SCENE] [--size WxH] [--set k=v ...] [--frames N --screenshot FILE] [--no-ui] [--script FILE]
 #include "apps/command.hpp"
 #include "apps/viewer/viewer.hpp"
 
@@ -26,6 +26,9 @@ void setup(CLI::App& app) {
                      ->check(CLI::Range(1, 100000));
   cmd->add_option("--screenshot", o->screenshot, "With --frames: PNG of what the window shows")->needs(frames);
   cmd->add_flag("--no-ui", o->no_ui, "Show the frame alone, without the panels");
+  cmd->add_option("--script", o->script,
+                  "JSON list of actions applied in order (set, effect, orbit, stage, check, heatmap, save, "
+                  "screenshot: docs/viewer.md); with --frames, the viewer exits when it ran to its end");
   cmd->callback([o] { run(*o); });
 }
 

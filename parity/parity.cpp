@@ -141,7 +141,8 @@ std::vector<std::string> fed_inputs(const gpu::GpuPassDef& pass, const StageConf
   return fed;
 }
 
-// Both backends' outputs of one GPU pass fed the same inputs.
+// Both backends' outputs of one GPU pass fed the same inputs: the reference's half when
+// made (CPU only), the GPU's and the comparison in compare().
 class PassParity {
  public:
   PassParity(const Scene& scene, const reference::ReferenceFrame& ref, const gpu::GpuPassDef& pass)
@@ -149,33 +150,40 @@ class PassParity {
     gf_.dump = true;  // every output, the skipped ones too, in the whole window
     rf_.host = gf_.host = ref.host;  // CPU data (the window lines, the visible runs) as it is
     for (const std::string& buffer : fed_inputs(pass, rf_.config())) feed(ref, buffer);
+    for (const std::string& stage : pass_.stages) reference::implementation(stage)(rf_);
+    ref_out_ = reference::dump(rf_);
   }
 
   std::vector<StageParity> compare() {
-    for (const std::string& stage : pass_.stages) reference::implementation(stage)(rf_);
+    for (const auto& [buffer, image] : fed_images_)
+      gf_.set_output(buffer, gpu::upload_texture(image, gpu::texture_format(find_output(buffer))));
+    for (const std::string& producer : fed_gbuffers_) {
+      const GBuffer& g = rf_.gbuffer(producer);
+      gf_.share(producer, uploaded_.emplace_back(gpu::upload_gbuffer(g)));
+      gf_.share(producer + ".triangle_angles", angles_.emplace_back(gpu::triangle_angles_from(g)));
+    }
     std::unique_ptr<gpu::GpuPass> gpu_pass = pass_.make(gf_);
     gpu_pass->run(gf_);
-    std::map<std::string, Image> gpu_out, ref_out = reference::dump(rf_);
+    std::map<std::string, Image> gpu_out;
     gpu_pass->dump(gf_, pass_.stages, gpu_out);
     gpu::Context::get().check_errors(pass_.name() + " parity");
     std::vector<StageParity> results;
     for (const std::string& name : dumped_buffers(pass_.stages, rf_.config()))
-      if (find_output(name).compared) results.push_back(compare_output(name, ref_out.at(name), gpu_out.at(name)));
+      if (find_output(name).compared) results.push_back(compare_output(name, ref_out_.at(name), gpu_out.at(name)));
     return results;
   }
 
  private:
-  // The reference's buffer, put in the reference frame and uploaded to the GPU frame.
+  // The reference's buffer, put in the reference frame (and kept to upload to the GPU).
   void feed(const reference::ReferenceFrame& ref, const std::string& buffer) {
     const std::string producer = stage_of(buffer).name;
     auto g = ref.gbuffers.find(producer);
     if (g == ref.gbuffers.end()) {
       rf_.put(buffer, ref.image(buffer));
-      gf_.set_output(buffer, gpu::upload_texture(ref.image(buffer), gpu::texture_format(find_output(buffer))));
+      fed_images_[buffer] = ref.image(buffer);
     } else if (!rf_.gbuffers.count(producer)) {
       rf_.gbuffers[producer] = g->second;
-      gf_.share(producer, uploaded_.emplace_back(gpu::upload_gbuffer(g->second)));
-      gf_.share(producer + ".triangle_angles", angles_.emplace_back(gpu::triangle_angles_from(g->second)));
+      fed_gbuffers_.push_back(producer);
     }
   }
 
@@ -224,6 +232,8 @@ class PassParity {
   const gpu::GpuPassDef& pass_;
   reference::ReferenceFrame rf_;
   gpu::GpuFrame gf_;
+  std::map<std::string, Image> fed_images_, ref_out_;
+  std::vector<std::string> fed_gbuffers_;
   std::deque<gpu::GBufferTargets> uploaded_;
   std::deque<gpu::TriangleAngles> angles_;
   std::map<std::string, RasterMasks> masks_;
@@ -244,8 +254,7 @@ std::vector<const gpu::GpuPassDef*> passes_computing(const std::string& stage) {
 // of the scene's effects. Pixels differ where the rasterizer and the tracer disagree on
 // coverage (the band along silhouettes) and wherever that moves a contour copy or a
 // stroke; the share of pixels within 2/255 is what is reported and bounded per scene.
-StageParity end_to_end_parity(const Scene& scene) {
-  Frame ref = reference::render(scene);
+StageParity end_to_end_parity(const Frame& ref, const Scene& scene) {
   Frame gpu_frame = gpu::Renderer(scene).render();
   StageParity s = compared("end_to_end", ref.color, gpu_frame.color, 2.0 / 255.0, nullptr,
                            "whole frames, each backend from its own G-buffer");
@@ -253,8 +262,10 @@ StageParity end_to_end_parity(const Scene& scene) {
   return s;
 }
 
+}  // namespace
+
 // The reference frames of the scenes parity runs, made once per set of effects.
-class ReferenceFrames {
+class ParityRun::References {
  public:
   const reference::ReferenceFrame& of(const Scene& scene) {
     auto it = frames_.find(scene.effects);
@@ -270,8 +281,6 @@ class ReferenceFrames {
   std::deque<Scene> scenes_;  // the frames refer to them
   std::map<std::vector<std::string>, reference::ReferenceFrame> frames_;
 };
-
-}  // namespace
 
 void check_stage_registry() {
   stage_table();
@@ -306,7 +315,15 @@ std::vector<std::string> parity_stages() {
   return names;
 }
 
-std::vector<StageParity> run_parity(const Scene& scene, const std::vector<std::string>& stages) {
+// One step: a GPU pass on the scene that runs it, or (no pass) the whole frames.
+struct ParityRun::Step {
+  Scene running;
+  const gpu::GpuPassDef* pass = nullptr;
+  std::unique_ptr<PassParity> parity;
+  Frame reference;  // end to end
+};
+
+ParityRun::ParityRun(const Scene& scene, const std::vector<std::string>& stages) {
   const std::vector<std::string> known = parity_stages();
   for (const auto& s : stages)
     if (!contains(known, s)) {
@@ -314,27 +331,64 @@ std::vector<StageParity> run_parity(const Scene& scene, const std::vector<std::s
       for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
       throw std::invalid_argument("unknown stage '" + s + "' (known: " + list + ")");
     }
-  gpu::Context::get();
   check_stage_registry();
-  ReferenceFrames references;
   std::vector<std::string> checked;  // GPU passes, each once
-  std::vector<StageParity> out;
   for (const std::string& stage : known) {
     if (!stages.empty() && !contains(stages, stage)) continue;
-    if (stage == "end_to_end") {
-      out.push_back(end_to_end_parity(scene));
-      continue;
-    }
     Scene running;
-    if (!scene_running(scene, stage, running)) continue;
-    const reference::ReferenceFrame& ref = references.of(running);
+    if (stage == "end_to_end") steps_.push_back(std::make_unique<Step>(Step{scene, nullptr, {}, {}}));
+    if (stage == "end_to_end" || !scene_running(scene, stage, running)) continue;
+    std::vector<std::string> runs = frame_stages(passes_for(running.effects, running.params));
     for (const gpu::GpuPassDef* pass : passes_computing(stage)) {
       bool all_run = std::all_of(pass->stages.begin(), pass->stages.end(),
-                                 [&](const std::string& s) { return contains(ref.stages, s); });
+                                 [&](const std::string& s) { return contains(runs, s); });
       if (!all_run || contains(checked, pass->name())) continue;
       checked.push_back(pass->name());
-      for (auto& s : PassParity(running, ref, *pass).compare()) out.push_back(std::move(s));
+      steps_.push_back(std::make_unique<Step>(Step{running, pass, {}, {}}));
     }
+  }
+}
+
+ParityRun::~ParityRun() = default;
+
+void ParityRun::reference(size_t i) {
+  Step& step = *steps_.at(i);
+  if (!step.pass) {
+    step.reference = reference::render(step.running);
+    return;
+  }
+  if (!references_) references_ = std::make_unique<References>();
+  const reference::ReferenceFrame& ref = references_->of(step.running);
+  step.parity = std::make_unique<PassParity>(ref.scene, ref, *step.pass);
+}
+
+std::vector<StageParity> ParityRun::gpu(size_t i) {
+  Step& step = *steps_.at(i);
+  gpu::Context::get();
+  std::vector<StageParity> out =
+      step.pass ? step.parity->compare() : std::vector<StageParity>{end_to_end_parity(step.reference, step.running)};
+  steps_[i].reset();
+  return out;
+}
+
+nlohmann::json parity_report(const std::vector<StageParity>& results) {
+  bool all_pass = std::all_of(results.begin(), results.end(), [](const StageParity& s) { return s.pass; });
+  nlohmann::json j{
+      {"pass", all_pass}, {"renderer", gpu::Context::get().renderer()}, {"stages", nlohmann::json::array()}};
+  for (const auto& s : results)
+    j["stages"].push_back({{"name", s.name}, {"pass", s.pass}, {"max_abs", s.diff.max_abs}, {"rmse", s.diff.rmse},
+                           {"over_tolerance", s.diff.over_tolerance}, {"tolerance", s.diff.tolerance},
+                           {"compared_pixels", s.diff.compared}, {"note", s.note}});
+  return j;
+}
+
+std::vector<StageParity> run_parity(const Scene& scene, const std::vector<std::string>& stages) {
+  gpu::Context::get();
+  ParityRun run(scene, stages);
+  std::vector<StageParity> out;
+  for (size_t i = 0; i < run.size(); ++i) {
+    run.reference(i);
+    for (auto& s : run.gpu(i)) out.push_back(std::move(s));
   }
   return out;
 }

@@ -7,6 +7,8 @@
 // whole frames, each backend from its own G-buffer.
 #pragma once
 
+#include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -39,6 +41,35 @@ std::vector<std::string> parity_stages();
 // run there (a sketchy stage without sketchy objects) gives nothing. Throws
 // std::invalid_argument naming an unknown stage.
 std::vector<StageParity> run_parity(const Scene& scene, const std::vector<std::string>& stages = {});
+
+// What `plumbago compare --json` prints of `results`: {pass (all passed), renderer (the
+// GPU's), stages: [{name, pass, max_abs, rmse, over_tolerance, tolerance,
+// compared_pixels, note}]}.
+nlohmann::json parity_report(const std::vector<StageParity>& results);
+
+// run_parity in steps, for a caller whose GL thread must stay free while the reference
+// computes (plumbago view): the reference half of each step runs on any thread (CPU
+// only), the GPU half and the comparison on the thread whose GPU context is current.
+// Each step gives what run_parity gives for it, in the same order.
+class ParityRun {
+ public:
+  // Checks the stage names (std::invalid_argument) and plans the steps; runs nothing.
+  explicit ParityRun(const Scene& scene, const std::vector<std::string>& stages = {});
+  ~ParityRun();
+  ParityRun(const ParityRun&) = delete;
+  ParityRun& operator=(const ParityRun&) = delete;
+
+  size_t size() const { return steps_.size(); }
+  void reference(size_t step);  // in order; one at a time
+  // After reference(step), on the GPU context's thread; frees the step's data.
+  std::vector<StageParity> gpu(size_t step);
+
+ private:
+  struct Step;
+  class References;
+  std::vector<std::unique_ptr<Step>> steps_;
+  std::unique_ptr<References> references_;
+};
 
 // Pixels where both G-buffers hit the same object and no pixel of the 3x3 neighborhood
 // (in either) lies across a depth discontinuity: another object, the background, or a

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <cstdio>
 
 #include "common/passes.hpp"
 
@@ -61,17 +62,61 @@ bool listed(const Scene& scene, const std::string& effect) {
   return std::find(scene.effects.begin(), scene.effects.end(), effect) != scene.effects.end();
 }
 
+void select_stage(Inspection& in, const std::string& buffer) {
+  in.stage.select(buffer);
+  in.heatmap = -1;
+}
+
+// The check's results, a row a stage; a click on one shows its heat map (again: the frame).
+void results_table(Inspection& in) {
+  const std::vector<StageParity>& results = in.check.results();
+  if (results.empty() || !ImGui::BeginTable("##parity", 5, ImGuiTableFlags_RowBg)) return;
+  ImGui::TableSetupColumn("stage", ImGuiTableColumnFlags_WidthStretch);
+  for (const char* h : {"max abs", "RMSE", "over tol", ""}) ImGui::TableSetupColumn(h, ImGuiTableColumnFlags_WidthFixed);
+  ImGui::TableHeadersRow();
+  for (size_t i = 0; i < results.size(); ++i) {
+    const StageParity& s = results[i];
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    if (ImGui::Selectable(s.name.c_str(), in.heatmap == int(i), ImGuiSelectableFlags_SpanAllColumns))
+      in.heatmap = in.heatmap == int(i) ? -1 : int(i);
+    tooltip(format_diff(s.name, s.diff) + "\n" + s.note + "\n(click: its heat map in place of the frame)");
+    ImGui::TableNextColumn();
+    ImGui::Text("%.3g", s.diff.max_abs);
+    ImGui::TableNextColumn();
+    ImGui::Text("%.3g", s.diff.rmse);
+    ImGui::TableNextColumn();
+    ImGui::Text("%.2f%%", 100 * s.diff.over_tolerance);
+    ImGui::TableNextColumn();
+    ImGui::TextColored(s.pass ? ImVec4(0.4f, 0.9f, 0.4f, 1) : ImVec4(1, 0.4f, 0.3f, 1), s.pass ? "pass" : "FAIL");
+  }
+  ImGui::EndTable();
+}
+
+// Preprocessing in the background: how long it has run against what the last one took.
+void preprocessing_bar(const Session& session) {
+  double s = session.preprocessing_s(), last = session.last_preprocessing_s();
+  char label[96];
+  std::snprintf(label, sizeof label, "preprocessing: %.1f s (the last took %.1f s)", s, last);
+  ImGui::ProgressBar(last > 0 ? float(std::min(s / last, 0.99)) : 0.0f, ImVec2(-FLT_MIN, 0), label);
+  tooltip("Textures, paper, curvature for the new values, made in the background; the frame shown is the last one");
+}
+
 }  // namespace
 
-void Panels::draw(Session& session, glm::ivec2 framebuffer, float width) {
+void Panels::draw(Session& session, Inspection& inspection, glm::ivec2 framebuffer, float width) {
   ImGui::SetNextWindowPos(ImVec2(float(framebuffer.x) - width, 0), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(width, float(framebuffer.y)), ImGuiCond_Always);
   const ImGuiWindowFlags pinned = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
   ImGui::Begin("plumbago view", nullptr, pinned);
   ImGui::PushItemWidth(-ImGui::GetFontSize() * 12);  // room for the labels
   if (!session.error().empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", session.error().c_str());
+  if (session.preprocessing()) preprocessing_bar(session);
   if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) scene_section(session);
   if (ImGui::CollapsingHeader("Camera")) camera_section(session);
+  if (ImGui::CollapsingHeader("Stage view", ImGuiTreeNodeFlags_DefaultOpen)) stage_section(session, inspection);
+  if (ImGui::CollapsingHeader("Check against the reference", ImGuiTreeNodeFlags_DefaultOpen))
+    reference_section(session, inspection);
   if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) params_section(session);
   if (ImGui::CollapsingHeader("Timing", ImGuiTreeNodeFlags_DefaultOpen)) {
     ImGui::Checkbox("render continuously", &continuous);
@@ -147,6 +192,35 @@ void Panels::param_row(Session& session, const ParamSpec& spec, bool slow) {
     pending_.erase(spec.key);
   }
   ImGui::PopID();
+}
+
+void Panels::stage_section(Session& session, Inspection& in) {
+  const std::string& shown = in.stage.buffer();
+  bool open = ImGui::BeginCombo("buffer", shown.empty() ? "final image" : shown.c_str());
+  if (open) {
+    if (ImGui::Selectable("final image", shown.empty())) select_stage(in, "");
+    for (const auto& [name, img] : session.frame().buffers)
+      if (ImGui::Selectable(name.c_str(), name == shown)) select_stage(in, name);
+    ImGui::EndCombo();
+  }
+  tooltip("Any intermediate buffer of this frame in place of the final image, as `render --dump-stages` writes its "
+          "PNG; the cursor over the frame shows the buffer's raw values");
+  session.keep_buffers(open || !in.stage.buffer().empty());  // an open list needs the names
+  if (in.heatmap >= 0 && ImGui::Button("Back to the frame (the heat map is shown)")) in.heatmap = -1;
+}
+
+void Panels::reference_section(const Session& session, Inspection& in) {
+  ImGui::BeginDisabled(in.check.running());
+  if (ImGui::Button("Check against the reference")) {
+    in.check.start(session.scene());
+    in.heatmap = -1;
+  }
+  ImGui::EndDisabled();
+  tooltip("`plumbago compare` of this view: every stage on both backends, fed the same inputs, and whole frames; the "
+          "CPU reference computes in the background");
+  if (in.check.running()) ImGui::ProgressBar(float(in.check.progress()));
+  if (!in.check.error().empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", in.check.error().c_str());
+  results_table(in);
 }
 
 void Panels::save_section(Session& session) {

@@ -7,6 +7,7 @@
 #include <map>
 #include <string>
 
+#include "apps/viewer/inspection.hpp"
 #include "apps/viewer/session.hpp"
 #include "apps/viewer/timing.hpp"
 
@@ -15,7 +16,7 @@ namespace plumbago {
 class Panels {
  public:
   // Draws the panel in the framebuffer's right `width` pixels.
-  void draw(Session& session, glm::ivec2 framebuffer, float width);
+  void draw(Session& session, Inspection& inspection, glm::ivec2 framebuffer, float width);
 
   Timing timing;
   bool continuous = false;        // render every frame (for timing), not only after a change
@@ -29,6 +30,8 @@ class Panels {
   // `slow`: preprocessing reads the parameter.
   void param_row(Session& session, const ParamSpec& spec, bool slow);
   void save_section(Session& session);
+  static void stage_section(Session& session, Inspection& inspection);
+  static void reference_section(const Session& session, Inspection& inspection);
   // Values being dragged of parameters that preprocessing reads: applied on release,
   // so a drag does not remake the textures at every step.
   std::map<std::string, double> pending_;

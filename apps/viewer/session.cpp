@@ -36,9 +36,18 @@ void Session::camera_moved() {
   stale_ = true;
 }
 
+void Session::replace(Scene scene, bool keep_camera) {
+  scene.width = scene_.width;
+  scene.height = scene_.height;
+  scene_ = std::move(scene);
+  if (!keep_camera) orbit_ = scene_orbit(scene_);
+  camera_moved();
+  restart();
+}
+
 void Session::set_param(const std::string& key, double value) {
   scene_.params.set(key, value);
-  if (preprocessing_reads(preprocessed_passes_, key)) preprocessed_.reset();
+  if (preprocessing_reads(preprocessed_passes_, key)) drop_preprocessed();
   stale_ = true;
 }
 
@@ -55,30 +64,61 @@ void Session::set_style(size_t object, Style style) {
   restart();
 }
 
+void Session::keep_buffers(bool on) {
+  if (on && !keep_buffers_) stale_ = true;
+  keep_buffers_ = on;
+}
+
 void Session::restart() {
-  preprocessed_.reset();
+  drop_preprocessed();
   stale_ = true;
+}
+
+void Session::drop_preprocessed() {
+  preprocessed_.reset();
+  ++generation_;
+}
+
+void Session::start_preprocessing() {
+  pending_passes_ = passes_for(scene_.effects, scene_.params);
+  pending_generation_ = generation_;
+  pending_since_ = Stopwatch();
+  pending_ = std::async(std::launch::async, [objects = ordinary_objects(scene_), passes = pending_passes_] {
+    return std::make_shared<const Preprocessed>(preprocess(objects, passes));
+  });
+}
+
+bool Session::preprocessed_ready() {
+  if (preprocessed_ && passes_for(scene_.effects, scene_.params) == preprocessed_passes_) return true;
+  if (!pending_.valid()) start_preprocessing();
+  if (pending_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return false;
+  last_preprocessing_s_ = preprocessing_s();
+  std::shared_ptr<const Preprocessed> made = pending_.get();
+  if (pending_generation_ != generation_ || pending_passes_ != passes_for(scene_.effects, scene_.params)) {
+    start_preprocessing();  // made for an earlier state of the scene
+    return false;
+  }
+  preprocessed_ = std::move(made);
+  preprocessed_passes_ = pending_passes_;
+  return true;
 }
 
 void Session::make_renderer() {
   Stopwatch watch;
   renderer_.reset();
-  std::vector<std::string> passes = passes_for(scene_.effects, scene_.params);
-  if (passes != preprocessed_passes_) preprocessed_.reset();
   renderer_ = std::make_unique<gpu::Renderer>(scene_, preprocessed_);
-  preprocessed_ = renderer_->preprocessed();
-  preprocessed_passes_ = passes;
   setup_ms_ = watch.ms();
 }
 
 bool Session::render() {
   std::optional<GpuScope> gpu;
   try {
+    if (stale_ && !preprocessed_ready()) return false;
     gpu.emplace(window_);
     if (std::exchange(stale_, false)) make_renderer();
     if (!renderer_) return false;
     Stopwatch watch;
-    frame_ = renderer_->render();
+    frame_ = renderer_->render(FrameOptions{keep_buffers_});
     render_ms_ = watch.ms();
     error_.clear();
     return true;

@@ -2,10 +2,12 @@
 //
 // gpu::Renderer reads a scene when it is made (the objects each pipeline draws, what the
 // passes set up), so every change makes a new renderer. Its preprocessing (pencil
-// textures, paper, curvature: most of the setup time on llvmpipe) is kept across a camera
-// move and a change to a parameter no preprocessing step reads.
+// textures, paper, curvature: most of the setup time on llvmpipe; CPU only) is kept
+// across a camera move and a change to a parameter no preprocessing step reads, and made
+// anew in a worker thread: the last frame stays until it is done.
 #pragma once
 
+#include <future>
 #include <memory>
 #include <string>
 
@@ -13,6 +15,7 @@
 #include "common/frame.hpp"
 #include "common/orbit.hpp"
 #include "common/scene.hpp"
+#include "common/preprocess.hpp"
 #include "gpu/pipeline.hpp"
 
 namespace plumbago {
@@ -30,13 +33,24 @@ class Session {
     move(orbit_);
     camera_moved();
   }
+  // Another scene in this one's size: with this camera (a file edited on disk) or its own.
+  void replace(Scene scene, bool keep_camera);
+  void fail(const std::string& why) { error_ = why; }  // shown as error() until a frame renders
   void set_param(const std::string& key, double value);
   void set_effect(const std::string& effect, bool on);
   void set_style(size_t object, Style style);
 
+  // Whether frames keep their intermediate buffers (Frame::buffers: the stage view).
+  void keep_buffers(bool on);
   bool stale() const { return stale_; }
+  // Whether preprocessing runs in the background; how long it has, and what the last one
+  // took (0 before the first).
+  bool preprocessing() const { return pending_.valid(); }
+  double preprocessing_s() const { return pending_since_.ms() / 1000; }
+  double last_preprocessing_s() const { return last_preprocessing_s_; }
   // Renders the current scene, making a new renderer first when it changed. False when
-  // that failed (error() says why; the last good frame stays) until the next change.
+  // that failed (error() says why; the last good frame stays) until the next change, or
+  // while preprocessing for it runs (stale() stays true).
   bool render();
   const Frame& frame() const { return frame_; }
   const std::string& error() const { return error_; }
@@ -48,6 +62,11 @@ class Session {
  private:
   void camera_moved();
   void restart();  // drops the preprocessing too
+  void drop_preprocessed();
+  // Whether preprocessed_ is there for the current scene; else starts making it (or
+  // takes what the worker made) and says false.
+  bool preprocessed_ready();
+  void start_preprocessing();
   void make_renderer();
   Window& window_;
   Scene scene_;
@@ -55,7 +74,14 @@ class Session {
   std::unique_ptr<gpu::Renderer> renderer_;
   std::shared_ptr<const Preprocessed> preprocessed_;
   std::vector<std::string> preprocessed_passes_;  // the passes preprocessed_ was made for
+  long generation_ = 0;                            // counts the drops of preprocessed_
+  std::future<std::shared_ptr<const Preprocessed>> pending_;  // made in the worker
+  std::vector<std::string> pending_passes_;
+  long pending_generation_ = 0;
+  Stopwatch pending_since_;
+  double last_preprocessing_s_ = 0;
   bool stale_ = true;
+  bool keep_buffers_ = false;
   Frame frame_;
   std::string error_;
   double setup_ms_ = 0, render_ms_ = 0;

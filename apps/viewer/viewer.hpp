@@ -14,6 +14,7 @@ struct ViewerOptions {
   int frames = 0;          // > 0: render this many frames, write the screenshot, exit
   std::string screenshot;  // PNG of what the window shows after `frames` frames
   bool no_ui = false;      // the frame alone, without the panels
+  std::string script;      // actions to apply (apps/viewer/script.hpp); with frames, run to its end
 };
 
 // Opens the window and runs until it is closed (or `frames` frames were drawn). Throws

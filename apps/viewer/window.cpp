@@ -38,11 +38,18 @@ GLFWwindow* open_window(int width, int height, const std::string& title) {
   return w;
 }
 
+void on_drop(GLFWwindow* window, int count, const char** paths) {
+  auto* dropped = static_cast<std::vector<std::string>*>(glfwGetWindowUserPointer(window));
+  dropped->insert(dropped->end(), paths, paths + count);
+}
+
 }  // namespace
 
 Window::Window(int width, int height, const std::string& title) : window_(open_window(width, height, title)) {
   glfwMakeContextCurrent(window_);
   glfwSwapInterval(1);
+  glfwSetWindowUserPointer(window_, &dropped_);
+  glfwSetDropCallback(window_, on_drop);
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working folder

@@ -14,6 +14,8 @@
 
 #include <glm/glm.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "common/image.hpp"
 
@@ -39,12 +41,15 @@ class Window {
   glm::ivec2 framebuffer_size() const;
   // What the window shows now (the back buffer before end_frame presents it), RGB.
   Image read_pixels() const;
+  // The files dropped on the window since the last call.
+  std::vector<std::string> take_dropped() { return std::exchange(dropped_, {}); }
   // Makes the window's context current on this thread, or none.
   void make_current();
   void release();
 
  private:
   GLFWwindow* window_ = nullptr;
+  std::vector<std::string> dropped_;
 };
 
 // While alive, the GPU pipeline's context is current instead of the window's.
