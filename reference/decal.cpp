@@ -9,8 +9,6 @@
 
 namespace plumbago::reference {
 
-namespace {
-
 DecalPoint first_surface_hit(RTCScene scene, const StrokeFile& file, const DrawnPoint& p) {
   DecalRay ray = decal_ray(file, p.window);
   RTCRayHit r{};
@@ -30,8 +28,6 @@ DecalPoint first_surface_hit(RTCScene scene, const StrokeFile& file, const Drawn
   out.bary = {1.0 - double(r.hit.u) - double(r.hit.v), double(r.hit.u), double(r.hit.v)};
   return out;
 }
-
-}  // namespace
 
 DecalSurface project_decals_by_rays(const Scene& scene) {
   RayScene rays(world_geometry(scene));

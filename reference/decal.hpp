@@ -2,9 +2,14 @@
 // each sample.
 #pragma once
 
+#include <embree3/rtcore.h>
+
 #include "common/decal.hpp"
 
 namespace plumbago::reference {
+
+// The first surface an Embree ray through window point p of `file`'s camera meets.
+DecalPoint first_surface_hit(RTCScene scene, const StrokeFile& file, const DrawnPoint& p);
 
 // Every decal stroke of `scene`'s stroke files projected onto its surface, in
 // decal_samples' order.
