@@ -68,6 +68,9 @@ ProjectionAgreement compare_projections(const DecalSurface& a, const DecalSurfac
         ++out.same_face;
         glm::dvec3 diff = glm::abs(p.bary - q.bary);
         out.max_bary_difference = std::max({out.max_bary_difference, diff.x, diff.y, diff.z});
+      } else if (p.object == q.object && std::min({p.bary.x, p.bary.y, p.bary.z}) < 1e-3 &&
+                 std::min({q.bary.x, q.bary.y, q.bary.z}) < 1e-3) {
+        ++out.differ_on_edge;
       } else if (out.points < near_silhouette.size() && near_silhouette[out.points]) {
         ++out.differ_near_silhouette;
       } else {

@@ -88,9 +88,10 @@ std::optional<RayTriangleHit> decal_ray_hit(const DecalRay& ray, glm::dvec3 a, g
 // How two projections of the same samples agree (tests/decal_test.cpp): points, those on
 // the same object and face, the largest barycentric difference among those, and the
 // points that differ, counted apart where `near_silhouette` (one flag per point, decal
-// after decal) says the point lies within a pixel of a silhouette.
+// after decal) says the point lies within a pixel of a silhouette, or on an edge or corner
+// of both faces (a barycentric under 1e-3 on each: which face holds it is rounding's call).
 struct ProjectionAgreement {
-  size_t points = 0, same_face = 0, differ_near_silhouette = 0, differ_elsewhere = 0;
+  size_t points = 0, same_face = 0, differ_on_edge = 0, differ_near_silhouette = 0, differ_elsewhere = 0;
   double max_bary_difference = 0;
 };
 ProjectionAgreement compare_projections(const DecalSurface& a, const DecalSurface& b,

@@ -32,11 +32,11 @@ double pressure_at(const WindowPath& path, double s) {
 
 // A decal's style over one run (common/decal.hpp 3.): an offsets example of zero
 // displacement carrying the path's pressure at the run's ends and at every path point
-// between. It spans the run and 1e-6 px more, so that the rubber stamp's period does not
-// wrap the run's end to its start.
+// between. It spans the run (at least 1 px, an example's least length) and 1e-6 px more,
+// so that the rubber stamp's period does not wrap the run's end to its start.
 StrokeStyle decal_style(const StrokeStyle& decal, const WindowPath& path, const VisibleRun& run) {
   StrokeStyle style = decal;
-  double length = run.s1 - run.s0 + 1e-6;
+  double length = std::max(run.s1 - run.s0, 1.0) + 1e-6;
   OffsetExample pressure{length, {{0.0, 0.0, pressure_at(path, run.s0), false}}};
   for (size_t k = 0; k < path.arc_px.size(); ++k)
     if (path.arc_px[k] > run.s0 && path.arc_px[k] < run.s1)
