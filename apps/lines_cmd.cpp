@@ -102,7 +102,7 @@ std::string svg(const Scene& scene, const WindowLines& lines, const Visibility& 
   std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(scene.width) + "\" height=\"" +
                     std::to_string(scene.height) + "\" viewBox=\"0 0 " + std::to_string(scene.width) + " " +
                     std::to_string(scene.height) + "\">\n";
-  RunStyles run_styles(scene.strokes, scene.seed);
+  RunStyles run_styles(scene.strokes, scene.seed, lines.decal_styles);
   for (size_t i = 0; i < v.runs.size(); ++i) {
     const VisibleRun& run = v.runs[i];
     const WindowPath& p = lines.paths[run.path];

@@ -72,6 +72,7 @@ uint32_t silhouette_value(const WindowPath& path, double s_mid) {
 }
 
 void add_path(const WindowPath& path, const StrokesParams& p, IdTriangles& tri) {
+  if (path.kind == LineKind::Decal) return;  // tested against its faces' keys (SPEC 4.9)
   bool silhouette = path.kind == LineKind::Silhouette;
   if (silhouette && !path.front_facing) return;
   double width = silhouette ? p.id_silhouette_px : p.id_crease_px;

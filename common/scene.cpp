@@ -314,6 +314,18 @@ class SceneReader {
     return out;
   }
 
+  // "stroke_files": [PATH, ...], relative to the scene's folder (common/stroke_file.hpp).
+  std::vector<StrokeFile> stroke_files(const json& j, const std::string& path, glm::dvec3 origin) const {
+    if (!j.is_array()) fail(path, "expected an array of stroke file paths");
+    std::vector<StrokeFile> out;
+    for (size_t i = 0; i < j.size(); ++i) {
+      if (!j[i].is_string()) fail(path + "/" + std::to_string(i), "expected a stroke file path");
+      fs::path file = j[i].get<std::string>();
+      out.push_back(load_stroke_file(file.is_absolute() ? file.string() : (fs::path(base_) / file).string(), origin));
+    }
+    return out;
+  }
+
  private:
   static std::string beyond_text() {
     return ", beyond ±" + format_number(kMaxCoordinate) + " (the largest coordinate float buffers can hold)";
@@ -437,7 +449,8 @@ glm::dvec3 world_center(const std::vector<SceneReader::FileObject>& objects) {
 
 Scene read_scene(const json& j, SceneReader& r, const std::string& source) {
   r.only_keys(j, "",
-              {"mesh", "objects", "camera", "lights", "resolution", "seed", "effects", "params", "strokes", "animation"});
+              {"mesh", "objects", "camera", "lights", "resolution", "seed", "effects", "params", "strokes", "animation",
+               "stroke_files"});
   Scene s;
   s.source = source;
   if (j.contains("mesh") == j.contains("objects")) r.fail("", "give either \"mesh\" (one object) or \"objects\"");
@@ -464,6 +477,7 @@ Scene read_scene(const json& j, SceneReader& r, const std::string& source) {
   set_effects(j, r, s);
   if (j.contains("params")) r.params(j["params"], "/params", s.params);
   if (j.contains("strokes")) s.strokes = r.stroke_styles(j["strokes"], "/strokes");
+  if (j.contains("stroke_files")) s.stroke_files = r.stroke_files(j["stroke_files"], "/stroke_files", s.origin);
   s.camera = j.contains("camera") ? r.camera(j["camera"], "/camera", s) : SceneReader::fitted_camera(s, 35.0f);
   r.check_camera(s, j.contains("camera") ? j["camera"] : json::object(), "/camera");
   s.lights_follow_camera = !j.contains("lights");

@@ -15,6 +15,7 @@
 #include "common/image.hpp"
 #include "common/mesh.hpp"
 #include "common/params.hpp"
+#include "common/stroke_file.hpp"
 #include "common/stroke_style.hpp"
 
 namespace plumbago {
@@ -62,6 +63,7 @@ struct Scene {
   ParamSet params;
   StrokeStyles strokes;
   std::optional<Animation> animation;  // a camera path; none: one frame
+  std::vector<StrokeFile> stroke_files;  // the artist's strokes (SPEC 4.9), key "stroke_files"
 };
 
 // A scene refused: the message names the file and the JSON path of the offending key.

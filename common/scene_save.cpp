@@ -81,6 +81,12 @@ void rebase_stroke_styles(json& doc, const Rebase& rebase) {
   }
 }
 
+// Stroke files (SPEC 4.9) are relative to the scene.
+void rebase_stroke_files(json& doc, const Rebase& rebase) {
+  if (!doc.contains("stroke_files") || !doc["stroke_files"].is_array()) return;
+  for (json& file : doc["stroke_files"]) rebase(file);
+}
+
 }  // namespace
 
 void save_scene(const Scene& scene, const std::string& path) {
@@ -90,6 +96,7 @@ void save_scene(const Scene& scene, const std::string& path) {
   Rebase rebase(scene_folder(scene.source), folder.empty() ? "." : folder.string());
   set_objects(doc, scene, rebase);
   rebase_stroke_styles(doc, rebase);
+  rebase_stroke_files(doc, rebase);
   doc["camera"] = camera_json(scene.camera, scene.origin);
   doc["lights"] = lights_json(scene.lights);
   doc["resolution"] = {scene.width, scene.height};

@@ -1,6 +1,7 @@
 // The stroke raster's triangles (SPEC 4.6-4.7): see common/stroke.hpp.
 #include "common/stroke.hpp"
 
+#include <algorithm>
 #include <map>
 #include <string>
 
@@ -16,13 +17,40 @@ const StrokeStyle& style_of(LineKind kind, const StrokeStyles& styles) {
     case LineKind::Crease: return styles.crease;
     case LineKind::Border: return styles.border;
     case LineKind::Silhouette: break;
+    case LineKind::Decal: break;  // its own style: RunStyles::of
   }
   return styles.silhouette;
+}
+
+// The drawn pressure of a decal path at window arc length s (linear between its points).
+double pressure_at(const WindowPath& path, double s) {
+  size_t k = segment_at(path, s), next = std::min(k + 1, path.window.size() - 1);
+  double length = path.arc_px[next] - path.arc_px[k];
+  double t = length > 0 ? std::clamp((s - path.arc_px[k]) / length, 0.0, 1.0) : 0.0;
+  return path.pressure[k] + t * (path.pressure[next] - path.pressure[k]);
+}
+
+// A decal's style over one run (common/decal.hpp 3.): an offsets example of zero
+// displacement carrying the path's pressure at the run's ends and at every path point
+// between. It spans the run (at least 1 px, an example's least length) and 1e-6 px more,
+// so that the rubber stamp's period does not wrap the run's end to its start.
+StrokeStyle decal_style(const StrokeStyle& decal, const WindowPath& path, const VisibleRun& run) {
+  StrokeStyle style = decal;
+  double length = std::max(run.s1 - run.s0, 1.0) + 1e-6;
+  OffsetExample pressure{length, {{0.0, 0.0, pressure_at(path, run.s0), false}}};
+  for (size_t k = 0; k < path.arc_px.size(); ++k)
+    if (path.arc_px[k] > run.s0 && path.arc_px[k] < run.s1)
+      pressure.offsets.push_back({(path.arc_px[k] - run.s0) / length, 0.0, path.pressure[k], false});
+  pressure.offsets.push_back({(run.s1 - run.s0) / length, 0.0, pressure_at(path, run.s1), false});
+  style.offsets = pressure;
+  style.synthesis = OffsetSynthesis::Stamp;
+  return style;
 }
 
 }  // namespace
 
 StrokeStyle RunStyles::of(const WindowPath& path, const VisibleRun& run, size_t index) {
+  if (path.kind == LineKind::Decal) return decal_style(decals_.at(path.decal), path, run);
   StrokeStyle style = style_of(path.kind, styles_);
   if (style.synthesis != OffsetSynthesis::Markov || !style.offsets) return style;
   auto it = chains_.find(path.kind);
@@ -35,7 +63,7 @@ StrokeStyle RunStyles::of(const WindowPath& path, const VisibleRun& run, size_t 
 std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
                                            uint32_t seed) {
   std::vector<StrokeVertex> out;
-  RunStyles run_styles(styles, seed);
+  RunStyles run_styles(styles, seed, lines.decal_styles);
   for (size_t i = 0; i < visibility.runs.size(); ++i) {
     const VisibleRun& run = visibility.runs[i];
     StrokeStyle style = run_styles.of(lines.paths[run.path], run, i);

@@ -7,7 +7,7 @@
 //   a = a_v T(u, v)
 //   out = color a' + out (1 - a'),  a' = the paper's alpha transfer of a (SPEC 4.2)
 // premultiplied "over", ribbon after ribbon in path order (creases and borders, then
-// silhouettes), triangle after triangle. Both backends draw the same triangles: the GPU as
+// silhouettes, then decals, SPEC 4.9), triangle after triangle. Both backends draw the same triangles: the GPU as
 // one draw call, the reference through its scalar rasterizer.
 #pragma once
 
@@ -35,15 +35,18 @@ static_assert(sizeof(StrokeVertex) == 9 * sizeof(float), "shaders/stroke.vert re
 
 // The style a run is drawn with: its line kind's, with the offsets example synthesized
 // over the run's length (SPEC 4.8) where the style asks for it, seeded by the scene seed
-// and the run's name (its path key and its index among the frame's runs).
+// and the run's name (its path key and its index among the frame's runs); a decal's
+// (SPEC 4.9), with its drawn pressure over the run (common/decal.hpp 3.).
 class RunStyles {
  public:
-  RunStyles(const StrokeStyles& styles, uint32_t seed) : styles_(styles), seed_(seed) {}
+  RunStyles(const StrokeStyles& styles, uint32_t seed, const std::vector<StrokeStyle>& decals)
+      : styles_(styles), seed_(seed), decals_(decals) {}
   StrokeStyle of(const WindowPath& path, const VisibleRun& run, size_t index);
 
  private:
   const StrokeStyles& styles_;
   uint32_t seed_;
+  const std::vector<StrokeStyle>& decals_;
   std::map<LineKind, OffsetSynthesizer> chains_;  // one chain per kind's example, made on first use
 };
 

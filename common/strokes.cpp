@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "common/decal.hpp"
 #include "common/host_data.hpp"
 
 namespace plumbago {
@@ -93,9 +94,34 @@ class PathBuilder {
     flush(piece);
   }
 
+  // Adds the pieces of decal `index` (SPEC 4.9): split where a point missed the surface,
+  // where the object changes and at the near plane.
+  void add_decal(const ProjectedDecal& decal, uint32_t index) {
+    WindowPath piece = decal_piece(kMissed, index);
+    for (const DecalPoint& d : decal.points) {
+      if (d.object != piece.object) flush_decal(piece), piece = decal_piece(d.object, index);
+      if (d.object == kMissed) continue;
+      const SceneObject& o = scene_.objects[d.object];
+      const glm::uvec3& t = o.mesh->triangles[d.face];
+      glm::dvec3 local = d.bary.x * glm::dvec3(o.mesh->positions[t[0]]) + d.bary.y * glm::dvec3(o.mesh->positions[t[1]]) +
+                         d.bary.z * glm::dvec3(o.mesh->positions[t[2]]);
+      glm::dvec3 w = glm::dvec3(glm::dmat4(o.transform) * glm::dvec4(local, 1.0)), win = project_(w);
+      if (win.z < double(scene_.camera.near)) {
+        flush_decal(piece), piece = decal_piece(d.object, index);
+        continue;
+      }
+      piece.surface.push_back({d.face, d.bary, local});
+      piece.world.push_back(w);
+      piece.window.push_back({win.x, win.y});
+      piece.depth.push_back(win.z);
+      piece.pressure.push_back(d.pressure);
+    }
+    flush_decal(piece);
+  }
+
  private:
   WindowPath empty(const FeaturePath& path, LineKind kind, uint32_t object) const {
-    return {kind, object, false, path.front_facing, 0, {}, {}, {}, {}, {}, {}, 0};
+    return {kind, object, false, path.front_facing, 0, {}, {}, {}, {}, {}, {}, 0, {}, 0};
   }
 
   glm::uvec2 front_faces(const Mesh& mesh, const glm::dmat4& m, const SurfacePoint& a, const SurfacePoint& b, uint32_t object,
@@ -105,6 +131,18 @@ class PathBuilder {
     for (uint32_t f : edges.of(vertex_of(mesh, a), vertex_of(mesh, b)))
       if (k < 2 && faces_eye(mesh, m, f, glm::dvec3(eye_))) keys[k++] = out_.face_key(object, f);
     return keys;
+  }
+
+  WindowPath decal_piece(uint32_t object, uint32_t index) const {
+    return {LineKind::Decal, object, false, true, 0, {}, {}, {}, {}, {}, {}, 0, {}, index};
+  }
+
+  // A decal's segments test the faces of their ends.
+  void flush_decal(WindowPath& piece) {
+    for (size_t k = 0; k + 1 < piece.surface.size(); ++k)
+      piece.front_faces.push_back({out_.face_key(piece.object, piece.surface[k].face),
+                                   out_.face_key(piece.object, piece.surface[k + 1].face)});
+    flush(piece);
   }
 
   // Keeps a piece of two points or more, with its window arc lengths.
@@ -149,9 +187,10 @@ const char* line_kind_name(LineKind kind) {
   switch (kind) {
     case LineKind::Crease: return "crease";
     case LineKind::Border: return "border";
-    case LineKind::Silhouette: break;
+    case LineKind::Silhouette: return "silhouette";
+    case LineKind::Decal: break;
   }
-  return "silhouette";
+  return "decal";
 }
 
 WindowProjection::WindowProjection(const Camera& camera, int width, int height)
@@ -174,7 +213,8 @@ std::shared_ptr<const LineMeshes> line_meshes(const Scene& scene, const StrokesP
   return out;
 }
 
-WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which, const LineMeshes* prepared) {
+WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which, const LineMeshes* prepared,
+                         const DecalSurface* decals) {
   std::shared_ptr<const LineMeshes> made;
   if (!prepared) made = line_meshes(scene, p, which), prepared = made.get();
   WindowLines out;
@@ -195,6 +235,11 @@ WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects
     for (const FeaturePath& path : lines.silhouettes) builder.add(path, LineKind::Silhouette, i, nullptr);
   }
   assign_keys(out);
+  if (decals)
+    for (uint32_t d = 0; d < decals->size(); ++d) {
+      out.decal_styles.push_back((*decals)[d].style);
+      builder.add_decal((*decals)[d], d);
+    }
   return out;
 }
 
@@ -202,7 +247,11 @@ const WindowLines& frame_lines(HostData& frame, HostData& kept, const Scene& sce
   auto p = scene.params.get<StrokesParams>();
   using Meshes = std::shared_ptr<const LineMeshes>;
   const Meshes& meshes = kept.get<Meshes>("strokes.meshes", [&] { return line_meshes(scene, p, LineObjects::Strokes); });
-  return frame.get<WindowLines>("strokes.lines", [&] { return window_lines(scene, p, LineObjects::Strokes, meshes.get()); });
+  return frame.get<WindowLines>("strokes.lines", [&] {
+    const DecalSurface* decals = kept.find<DecalSurface>(kDecalSurface);
+    if (!decals && has_decals(scene)) throw std::logic_error("strokes: the decals were not projected (kDecalSurface)");
+    return window_lines(scene, p, LineObjects::Strokes, meshes.get(), decals);
+  });
 }
 
 }  // namespace plumbago

@@ -7,7 +7,9 @@
 //   - face f of object o (every object of the scene, in order): first_face[o] + f + 1;
 //   - crease and border path i: face_count + 1 + i;
 //   - silhouette path j: silhouette_base + j, drawn as key << 8 | floor(255 s / L), with
-//     silhouette_base the smallest key whose shifted values lie above every other key.
+//     silhouette_base the smallest key whose shifted values lie above every other key;
+//   - decal paths (SPEC 4.9, common/decal.hpp) have none: they are not drawn in the ID
+//     image, their samples test their faces' keys.
 // A scene whose keys do not fit 32 bits is refused (std::length_error, with the counts).
 //
 // Window coordinates are SPEC 0's (pixels, origin bottom-left); depth is linear view depth
@@ -45,7 +47,7 @@ struct StrokesParams {
   }
 };
 
-enum class LineKind : uint8_t { Crease, Border, Silhouette };
+enum class LineKind : uint8_t { Crease, Border, Silhouette, Decal };
 const char* line_kind_name(LineKind kind);
 
 struct WindowPath {
@@ -58,17 +60,22 @@ struct WindowPath {
   std::vector<glm::dvec2> window;  // pixels, origin bottom-left
   std::vector<double> depth;       // linear view depth
   // Creases and borders: per segment (point k to k + 1, the closing one last), the keys
-  // of its adjacent faces that face the eye (0 where none).
+  // of its adjacent faces that face the eye (0 where none). Decals: the keys of the faces
+  // its two ends lie on.
   std::vector<glm::uvec2> front_faces;
   std::vector<double> arc_px;  // window arc length at each point (the closing point last)
   double length_px = 0;        // the whole window length (closed: around the loop)
+  // Decals: the drawn pressure at each point, and the decal's index in WindowLines::decal_styles.
+  std::vector<double> pressure;
+  uint32_t decal = 0;
 };
 
 struct WindowLines {
-  std::vector<WindowPath> paths;  // creases and borders first, then silhouettes
+  std::vector<WindowPath> paths;  // creases and borders first, then silhouettes, then decals
   std::vector<uint32_t> first_face;  // per scene object
   uint32_t face_count = 0, silhouette_base = 0;
   int width = 0, height = 0;
+  std::vector<StrokeStyle> decal_styles;  // per decal stroke (common/decal.hpp DecalSurface)
 
   uint32_t face_key(uint32_t object, uint32_t face) const { return first_face[object] + face + 1; }
 };
@@ -83,13 +90,19 @@ enum class LineObjects { Strokes, AllButSketchy };
 struct LineMeshes;
 std::shared_ptr<const LineMeshes> line_meshes(const Scene& scene, const StrokesParams& p, LineObjects which);
 
-// `prepared` (from line_meshes with the same scene, parameters and `which`) or none.
+// `prepared` (from line_meshes with the same scene, parameters and `which`) or none;
+// `decals`, the decals' surface points (SPEC 4.9, common/decal.hpp), placed after the
+// feature lines, or none.
+struct ProjectedDecal;
+using DecalSurface = std::vector<ProjectedDecal>;  // common/decal.hpp
 WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which = LineObjects::Strokes,
-                         const LineMeshes* prepared = nullptr);
+                         const LineMeshes* prepared = nullptr, const DecalSurface* decals = nullptr);
 
 class HostData;
 // The frame's window lines of stroke objects, made once per frame into `frame`, from the
-// mesh data made once into `kept` (a renderer's store across frames; may be `frame`).
+// mesh data made once into `kept` (a renderer's store across frames; may be `frame`), and
+// the decals of the scene's stroke files from the surface points a backend projected into
+// `kept` (kDecalSurface; std::logic_error when the scene has decals and it did not).
 const WindowLines& frame_lines(HostData& frame, HostData& kept, const Scene& scene);
 
 // The window position and linear depth of a world point (SPEC 0), in double.

@@ -46,7 +46,10 @@ VisibilitySample sample_at(const WindowPath& p, double s) {
   PathPoint at = point_at(p, s);
   VisibilitySample v{glm::vec2(at.window), p.kind == LineKind::Silhouette ? kSilhouetteSample : kCreaseSample, p.key,
                      {0, 0}, 0, 0};
-  if (v.kind == kSilhouetteSample) {
+  if (p.kind == LineKind::Decal) {  // SPEC 4.9: the face of the nearer end
+    v.kind = kDecalSample;
+    v.faces[0] = at.t < 0.5 ? p.front_faces[at.segment].x : p.front_faces[at.segment].y;
+  } else if (v.kind == kSilhouetteSample) {
     double wrapped = p.closed && p.length_px > 0 ? std::fmod(s, p.length_px) : s;
     v.byte = p.length_px > 0 ? uint32_t(std::clamp(std::floor(255.0 * wrapped / p.length_px), 0.0, 255.0)) : 0;
     v.byte_window = uint32_t(std::min(255.0, std::ceil(2.0 * std::max(2.0, 256.0 / std::max(p.length_px, 1e-9)))));

@@ -8,9 +8,9 @@
 //     ceil(2 max(2, 256 / L_px)) of its own floor(255 s / L) (around the seam of a
 //     closed path, the shorter way);
 //   - a crease or border: its path key, or the key of a front-facing face next to it;
-//   - a decal (a stroke fixed on the surface, SPEC 4.9; its strokes come with the stroke
-//     files): its face's key. (Hatching samples, 2 px and a group of faces, come with
-//     the hatching groups of SPEC 4.10.)
+//   - a decal (a stroke fixed on the surface, SPEC 4.9, common/decal.hpp): the key of the
+//     face of the nearer of its segment's two path points. (Hatching samples, 2 px and a
+//     group of faces, come with the hatching groups of SPEC 4.10.)
 // Back-facing silhouettes are not in the ID image, so never visible.
 //
 // Where two neighbouring samples disagree, the change is bisected along the path (new

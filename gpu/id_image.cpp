@@ -3,6 +3,7 @@
 // z = near / d, written as the fragment's depth.
 #include "common/id_image.hpp"
 
+#include "gpu/decal.hpp"
 #include "gpu/stage.hpp"
 
 namespace plumbago::gpu {
@@ -15,7 +16,10 @@ class IdImagePass : public GpuPass {
       : program_("id_image.vert", "id_image.frag"),
         fbo_(make_framebuffer()),
         empty_(make_vertex_array()),
-        depth_(make_renderbuffer(f.scene.width, f.scene.height, GL_DEPTH_COMPONENT32F)) {}
+        depth_(make_renderbuffer(f.scene.width, f.scene.height, GL_DEPTH_COMPONENT32F)) {
+    // The decals' surface points, projected once for the renderer's frames (SPEC 4.9).
+    if (has_decals(f.scene)) f.kept.put<DecalSurface>(kDecalSurface, project_decals_through_gbuffer(f.scene));
+  }
 
   void run(GpuFrame& f) override {
     std::vector<IdVertex> triangles = id_triangles(f.scene, frame_lines(f.host, f.kept, f.scene), f.params<StrokesParams>());

@@ -2,6 +2,7 @@
 // through the scalar rasterizer, each pixel keeping the nearest (largest z = near / d).
 #include "common/id_image.hpp"
 
+#include "reference/decal.hpp"
 #include "reference/raster.hpp"
 #include "reference/stage.hpp"
 
@@ -70,6 +71,8 @@ IdRaster id_raster(const std::vector<IdVertex>& v, int width, int height) {
 
 PLUMBAGO_REFERENCE_STAGE(id_image, [](ReferenceFrame& f) {
   auto p = f.params<StrokesParams>();
+  if (has_decals(f.scene) && !f.host.find<DecalSurface>(kDecalSurface))  // SPEC 4.9: by rays, once per frame's data
+    f.host.put<DecalSurface>(kDecalSurface, project_decals_by_rays(f.scene));
   IdRaster r = id_raster(id_triangles(f.scene, frame_lines(f.host, f.host, f.scene), p), f.scene.width, f.scene.height);
   f.put("id_image.ids", key_channels(r.key));
   Image ties(r.key.width, r.key.height, 1);

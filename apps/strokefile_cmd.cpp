@@ -1,0 +1,69 @@
+// `plumbago strokefile SCENE drawing.svg -o strokes.json`: a stroke file (SPEC 4.9,
+// common/stroke_file.hpp) from strokes drawn in SVG over `plumbago render SCENE`'s image,
+// with the scene's camera and resolution (common/svg_strokes.hpp says what is read).
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+#include "apps/command.hpp"
+#include "apps/scene_options.hpp"
+#include "common/output_file.hpp"
+#include "common/svg_strokes.hpp"
+
+namespace plumbago {
+namespace {
+
+struct StrokeFileOptions {
+  SceneOptions scene;
+  std::string svg, output = "strokes.json", role = "decal", style;
+  int group = 0;
+};
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  if (!in || std::filesystem::is_directory(path)) throw std::invalid_argument(path + ": cannot read the SVG file");
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void run(const StrokeFileOptions& o) {
+  Scene scene = o.scene.load();
+  const std::vector<std::string>& roles = stroke_role_names();
+  SvgStrokeDefaults defaults{StrokeRole(std::find(roles.begin(), roles.end(), o.role) - roles.begin()), o.style, o.group};
+  StrokeFile file;
+  file.source = o.output;
+  file.camera = scene.camera, file.width = scene.width, file.height = scene.height;
+  file.style = o.style;
+  file.strokes = svg_strokes(read_text(o.svg), o.svg, scene.width, scene.height, defaults);
+  if (file.strokes.empty()) throw std::invalid_argument(o.svg + ": no <polyline> or <path> to read");
+  std::string text = stroke_file_json(file, scene.origin);
+  std::filesystem::path folder = std::filesystem::path(o.output).parent_path();
+  parse_stroke_file(text, o.output, folder.empty() ? "." : folder.string(), scene.origin);  // refuses what a scene would
+  OutputFile out(o.output);
+  std::ofstream(out.temporary_path()) << text;
+  out.commit();
+  std::printf("%zu strokes -> %s\n", file.strokes.size(), o.output.c_str());
+}
+
+void setup(CLI::App& app) {
+  auto o = std::make_shared<StrokeFileOptions>();
+  auto* cmd = app.add_subcommand("strokefile", "Make a stroke file (SPEC 4.9) from an SVG drawn over the scene's render");
+  o->scene.add_to(cmd, true);
+  cmd->add_option("svg", o->svg, "the drawing: <polyline> and straight <path> elements over the rendered PNG")->required();
+  cmd->add_option("-o,--output", o->output, "the stroke file to write")->capture_default_str();
+  cmd->add_option("--role", o->role, "the strokes' role where an element has no data-role")
+      ->check(CLI::IsMember(stroke_role_names()))
+      ->capture_default_str();
+  cmd->add_option("--style", o->style, "the decals' stroke style (preset or file) where an element has no data-style");
+  cmd->add_option("--group", o->group, "hatching: the group where an element has no data-group")->capture_default_str();
+  cmd->callback([o] { run(*o); });
+}
+
+PLUMBAGO_COMMAND(setup);
+
+}  // namespace
+}  // namespace plumbago

@@ -1,0 +1,64 @@
+// Decals' projection on the GPU (SPEC 4.9, common/decal.hpp 1.): the G-buffer rendered
+// with the stroke file's camera says which faces are seen around each sample (its ids at
+// the 3x3 pixel centers around it); the ray through the sample picks the nearest of them
+// and gives the barycentrics where it meets it.
+#include "gpu/decal.hpp"
+
+#include <algorithm>
+#include <map>
+
+#include "common/gbuffer.hpp"
+#include "gpu/gbuffer.hpp"
+
+namespace plumbago::gpu {
+
+namespace {
+
+// The G-buffer's ids (object + 1, triangle) of `scene` seen through `file`'s camera.
+ImageU32 ids_seen_from(const Scene& scene, const StrokeFile& file) {
+  Scene view = scene;
+  view.camera = file.camera, view.width = file.width, view.height = file.height;
+  GBufferPass pass(view);
+  GBufferTargets targets = make_gbuffer_targets(file.width, file.height, GBufferFormat::RGBA32F);
+  pass.render(view, targets);
+  return download_gbuffer(targets).ids;
+}
+
+// The face of the 3x3 pixels around p that the ray through p meets first.
+DecalPoint surface_point(const ImageU32& ids, const std::vector<WorldObject>& world, const StrokeFile& file,
+                         const DrawnPoint& p) {
+  DecalRay ray = decal_ray(file, p.window);
+  DecalPoint best;
+  best.pressure = p.pressure;
+  double nearest = INFINITY;
+  int x = int(std::floor(p.window.x)), y = int(std::floor(p.window.y));
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      int px = x + dx, py = y + dy;
+      if (px < 0 || py < 0 || px >= ids.width || py >= ids.height || ids.at(px, py, 0) == 0) continue;
+      uint32_t object = ids.at(px, py, 0) - 1, face = ids.at(px, py, 1);
+      const glm::uvec3& t = world[object].triangles[face];
+      const std::vector<glm::vec3>& v = world[object].positions;
+      auto hit = decal_ray_hit(ray, glm::dvec3(v[t[0]]), glm::dvec3(v[t[1]]), glm::dvec3(v[t[2]]));
+      if (hit && hit->t < nearest) nearest = hit->t, best.object = object, best.face = face, best.bary = hit->bary;
+    }
+  return best;
+}
+
+}  // namespace
+
+DecalSurface project_decals_through_gbuffer(const Scene& scene) {
+  std::vector<WorldObject> world = world_geometry(scene);
+  std::map<const StrokeFile*, ImageU32> ids;
+  DecalSurface out;
+  for (const DecalSamples& d : decal_samples(scene)) {
+    auto it = ids.find(d.file);
+    if (it == ids.end()) it = ids.emplace(d.file, ids_seen_from(scene, *d.file)).first;
+    ProjectedDecal decal{*d.stroke->style, {}};
+    for (const DrawnPoint& p : d.samples) decal.points.push_back(surface_point(it->second, world, *d.file, p));
+    out.push_back(std::move(decal));
+  }
+  return out;
+}
+
+}  // namespace plumbago::gpu
