@@ -64,8 +64,13 @@ nlohmann::json path_json(const WindowPath& p, const ImageU32& keys, glm::dvec3 o
     screen.push_back({p.window[k].x, p.window[k].y});
     visible.push_back(p.front_facing && sample_visible(keys, sample_at(p, p.arc_px[k])));
   }
-  return {{"kind", line_kind_name(p.kind)}, {"object", p.object}, {"closed", p.closed}, {"front_facing", p.front_facing},
-          {"points", points}, {"screen", screen}, {"visible", visible}};
+  return {{"kind", line_kind_name(p.kind)},
+          {"object", p.object},
+          {"closed", p.closed},
+          {"front_facing", p.front_facing},
+          {"points", points},
+          {"screen", screen},
+          {"visible", visible}};
 }
 
 // The outline of each strip of a ribbon (its triangles in GL strip order, R0 L0 R1 L1 ...):
@@ -90,7 +95,8 @@ std::string outline(const Ribbon& r, int height) {
   };
   for (size_t t = 0; t + 2 < r.triangles.size(); t += 3) {
     const RibbonVertex* v = &r.triangles[t];
-    bool joined = t > 0 && (v[0].position == r.triangles[t - 1].position || v[1].position == r.triangles[t - 1].position);
+    bool joined =
+        t > 0 && (v[0].position == r.triangles[t - 1].position || v[1].position == r.triangles[t - 1].position);
     if (t > 0 && !joined) flush();
     for (int k = 0; k < 3; ++k) add(v[k]);
   }
@@ -99,21 +105,22 @@ std::string outline(const Ribbon& r, int height) {
 }
 
 std::string svg(const Scene& scene, const WindowLines& lines, const Visibility& v) {
-  std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(scene.width) + "\" height=\"" +
-                    std::to_string(scene.height) + "\" viewBox=\"0 0 " + std::to_string(scene.width) + " " +
-                    std::to_string(scene.height) + "\">\n";
+  std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(scene.width) +
+                    "\" height=\"" + std::to_string(scene.height) + "\" viewBox=\"0 0 " + std::to_string(scene.width) +
+                    " " + std::to_string(scene.height) + "\">\n";
   RunStyles run_styles(scene.strokes, scene.seed, lines.decal_styles);
   for (size_t i = 0; i < v.runs.size(); ++i) {
     const VisibleRun& run = v.runs[i];
     const WindowPath& p = lines.paths[run.path];
     StrokeStyle style = run_styles.of(p, run, i);
-    std::string d = outline(base_stroke({run.window, run.closed, run.occluded_start, run.occluded_end}, style), scene.height);
+    std::string d =
+        outline(base_stroke({run.window, run.closed, run.occluded_start, run.occluded_end}, style), scene.height);
     if (d.empty()) continue;
     char fill[160];
     std::snprintf(fill, sizeof fill, "fill=\"rgb(%d,%d,%d)\" fill-opacity=\"%.3f\"", int(style.color_r * 255 + 0.5f),
                   int(style.color_g * 255 + 0.5f), int(style.color_b * 255 + 0.5f), style.alpha);
-    out += "  <path class=\"" + std::string(line_kind_name(p.kind)) + "\" data-object=\"" + std::to_string(p.object) + "\" " +
-           fill + " d=\"" + d + "\"/>\n";
+    out += "  <path class=\"" + std::string(line_kind_name(p.kind)) + "\" data-object=\"" + std::to_string(p.object) +
+           "\" " + fill + " d=\"" + d + "\"/>\n";
   }
   return out + "</svg>\n";
 }
@@ -121,7 +128,8 @@ std::string svg(const Scene& scene, const WindowLines& lines, const Visibility& 
 // The longest edge of face f of an object, in world space.
 double longest_edge(const SceneObject& o, uint32_t f) {
   glm::dvec3 p[3];
-  for (int k = 0; k < 3; ++k) p[k] = glm::dvec3(o.transform * glm::vec4(o.mesh->positions[o.mesh->triangles[f][k]], 1.0f));
+  for (int k = 0; k < 3; ++k)
+    p[k] = glm::dvec3(o.transform * glm::vec4(o.mesh->positions[o.mesh->triangles[f][k]], 1.0f));
   return std::max({glm::distance(p[0], p[1]), glm::distance(p[1], p[2]), glm::distance(p[2], p[0])});
 }
 
@@ -142,14 +150,17 @@ void add_truth(const Scene& scene, const WindowLines& lines, const Visibility& v
   for (size_t i = 0; i < lines.paths.size(); ++i) {
     paths[i]["arc_px"] = lines.paths[i].arc_px;
     paths[i]["runs"] = nlohmann::json::array();
-    paths[i]["truth"] = {{"step_px", kTruthStepPx}, {"visible", std::vector<bool>(seen.begin() + long(first[i]), seen.begin() + long(first[i + 1]))}};
+    paths[i]["truth"] = {
+        {"step_px", kTruthStepPx},
+        {"visible", std::vector<bool>(seen.begin() + long(first[i]), seen.begin() + long(first[i + 1]))}};
   }
   for (const VisibleRun& run : v.runs) paths[run.path]["runs"].push_back({run.s0, run.s1});
 }
 
 void run(const LinesOptions& o) {
   bool as_svg = o.output.ends_with(".svg");
-  if (!as_svg && !o.output.ends_with(".json")) throw std::invalid_argument("lines: -o must end in .json or .svg, not '" + o.output + "'");
+  if (!as_svg && !o.output.ends_with(".json"))
+    throw std::invalid_argument("lines: -o must end in .json or .svg, not '" + o.output + "'");
   Scene scene = lines_scene(o.scene.load());
   auto p = scene.params.get<StrokesParams>();
   WindowLines lines = window_lines(scene, p);
@@ -183,11 +194,13 @@ void setup(CLI::App& app) {
   auto o = std::make_shared<LinesOptions>();
   auto* cmd = app.add_subcommand("lines", "Write the scene's feature lines (JSON) or its visible strokes (SVG)");
   o->scene.add_to(cmd, true);
-  cmd->add_option("-o,--output", o->output, "lines.json (every path) or lines.svg (the visible strokes)")->capture_default_str();
+  cmd->add_option("-o,--output", o->output, "lines.json (every path) or lines.svg (the visible strokes)")
+      ->capture_default_str();
   cmd->add_option("--backend", o->backend, "whose ID image decides visibility: gpu or reference")
       ->check(CLI::IsMember({"gpu", "reference"}))
       ->capture_default_str();
-  cmd->add_flag("--truth", o->truth, "JSON: add the visible runs and what Embree rays say every 0.5 px (accuracy studies)");
+  cmd->add_flag("--truth", o->truth,
+                "JSON: add the visible runs and what Embree rays say every 0.5 px (accuracy studies)");
   cmd->callback([o] { run(*o); });
 }
 

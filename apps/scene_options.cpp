@@ -42,7 +42,8 @@ Scene SceneOptions::load() const {
   else
     s = load_scene(scene);
   if (!size.empty()) apply_size(size, s);
-  if (auto fault = camera_fault(s.camera, double(s.width) / s.height, s.origin))  // the field of view across the new size
+  if (auto fault =
+          camera_fault(s.camera, double(s.width) / s.height, s.origin))  // the field of view across the new size
     throw std::invalid_argument("--size " + size + ": " + s.source + ": /camera/" + fault->key + ": " + fault->what);
   for (const auto& a : assignments) {
     try {

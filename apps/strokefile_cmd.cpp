@@ -33,7 +33,8 @@ std::string read_text(const std::string& path) {
 void run(const StrokeFileOptions& o) {
   Scene scene = o.scene.load();
   const std::vector<std::string>& roles = stroke_role_names();
-  SvgStrokeDefaults defaults{StrokeRole(std::find(roles.begin(), roles.end(), o.role) - roles.begin()), o.style, o.group};
+  SvgStrokeDefaults defaults{StrokeRole(std::find(roles.begin(), roles.end(), o.role) - roles.begin()), o.style,
+                             o.group};
   StrokeFile file;
   file.source = o.output;
   file.camera = scene.camera, file.width = scene.width, file.height = scene.height;
@@ -42,7 +43,8 @@ void run(const StrokeFileOptions& o) {
   if (file.strokes.empty()) throw std::invalid_argument(o.svg + ": no <polyline> or <path> to read");
   std::string text = stroke_file_json(file, scene.origin);
   std::filesystem::path folder = std::filesystem::path(o.output).parent_path();
-  parse_stroke_file(text, o.output, folder.empty() ? "." : folder.string(), scene.origin);  // refuses what a scene would
+  parse_stroke_file(text, o.output, folder.empty() ? "." : folder.string(),
+                    scene.origin);  // refuses what a scene would
   OutputFile out(o.output);
   std::ofstream(out.temporary_path()) << text;
   out.commit();
@@ -51,9 +53,11 @@ void run(const StrokeFileOptions& o) {
 
 void setup(CLI::App& app) {
   auto o = std::make_shared<StrokeFileOptions>();
-  auto* cmd = app.add_subcommand("strokefile", "Make a stroke file (SPEC 4.9) from an SVG drawn over the scene's render");
+  auto* cmd =
+      app.add_subcommand("strokefile", "Make a stroke file (SPEC 4.9) from an SVG drawn over the scene's render");
   o->scene.add_to(cmd, true);
-  cmd->add_option("svg", o->svg, "the drawing: <polyline> and straight <path> elements over the rendered PNG")->required();
+  cmd->add_option("svg", o->svg, "the drawing: <polyline> and straight <path> elements over the rendered PNG")
+      ->required();
   cmd->add_option("-o,--output", o->output, "the stroke file to write")->capture_default_str();
   cmd->add_option("--role", o->role, "the strokes' role where an element has no data-role")
       ->check(CLI::IsMember(stroke_role_names()))

@@ -11,7 +11,8 @@ namespace {
 // The polyline resampled every kDecalStepPx px of its length or a little less, ends kept.
 std::vector<DrawnPoint> resampled(const std::vector<DrawnPoint>& points) {
   std::vector<double> arc{0};
-  for (size_t k = 1; k < points.size(); ++k) arc.push_back(arc.back() + glm::distance(points[k - 1].window, points[k].window));
+  for (size_t k = 1; k < points.size(); ++k)
+    arc.push_back(arc.back() + glm::distance(points[k - 1].window, points[k].window));
   size_t n = std::max<size_t>(1, size_t(std::ceil(arc.back() / kDecalStepPx)));
   std::vector<DrawnPoint> out;
   size_t k = 0;

@@ -138,7 +138,9 @@ OpenMeshTri read_with_openmesh(const std::string& path) {
     ok = OpenMesh::IO::read_mesh(om, path, options);
     text = complaints.text();
   }
-  if (!ok) throw MeshError(path + ": OpenMesh cannot read it (unknown format or malformed)" + (text.empty() ? "" : ": " + text));
+  if (!ok)
+    throw MeshError(path + ": OpenMesh cannot read it (unknown format or malformed)" +
+                    (text.empty() ? "" : ": " + text));
   if (text.find("invalid vertex index") != std::string::npos)
     throw MeshError(path + ": a face has a vertex index out of range");
   return om;

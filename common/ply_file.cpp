@@ -121,7 +121,8 @@ PlyHeader read_header(std::istream& in, const std::string& path) {
       uint64_t count = 0;
       auto [ptr, ec] = std::from_chars(c.data(), c.data() + c.size(), count);
       if (ec == std::errc::result_out_of_range) fail("element '" + w[1] + "' count " + c + " is out of range");
-      if (ec != std::errc() || ptr != c.data() + c.size()) fail("element '" + w[1] + "' count '" + c + "' is not a count");
+      if (ec != std::errc() || ptr != c.data() + c.size())
+        fail("element '" + w[1] + "' count '" + c + "' is not a count");
       for (const PlyElement& e : h.elements)
         if (e.name == w[1]) fail("a second element '" + w[1] + "'");
       h.elements.push_back({w[1], size_t(count), {}});
@@ -277,11 +278,13 @@ void read_instance(PlyValues& values, const PlyElement& e, size_t i, Mesh& m) {
       continue;
     }
     double count = values.next(p.count_type);
-    if (!(count >= 0)) throw MeshError(values.where() + ": " + what() + " has list length " + number_text(count) + ", negative or NaN");
+    if (!(count >= 0))
+      throw MeshError(values.where() + ": " + what() + " has list length " + number_text(count) + ", negative or NaN");
     if (count != std::floor(count) || count > 4294967295.0)
       throw MeshError(values.where() + ": " + what() + " has list length " + number_text(count) + ", not a count");
     size_t n = size_t(count);
-    bool indices = (e.name == "face" || e.name == "tristrips") && (p.name == "vertex_indices" || p.name == "vertex_index");
+    bool indices =
+        (e.name == "face" || e.name == "tristrips") && (p.name == "vertex_indices" || p.name == "vertex_index");
     std::vector<unsigned> corners;
     for (size_t j = 0; j < n; ++j) {
       double index = values.next(p.type);

@@ -171,7 +171,8 @@ class SceneReader {
     const std::vector<glm::vec3>& positions = f.object.mesh->positions;
     for (size_t i = 0; i < positions.size(); ++i) {
       glm::dvec3 p = f.file_position(positions[i]);
-      if (beyond(p)) fail(path + "/mesh", "vertex " + std::to_string(i) + " lies at " + format_point(p) + beyond_text());
+      if (beyond(p))
+        fail(path + "/mesh", "vertex " + std::to_string(i) + " lies at " + format_point(p) + beyond_text());
       if (beyond(glm::dvec3(magnitude * glm::dvec4(glm::abs(p), 1.0))))
         fail(path + "/transform", "moves vertex " + std::to_string(i) + " to " +
                                       format_point(f.world_position(positions[i])) + beyond_text());
@@ -180,7 +181,8 @@ class SceneReader {
 
   Camera camera(const json& j, const std::string& path, const Scene& scene) const {
     only_keys(j, path, {"eye", "target", "up", "fov_deg", "near", "far", "view_direction"});
-    glm::vec3 view = j.contains("view_direction") ? direction(j["view_direction"], path + "/view_direction") : kViewDirection;
+    glm::vec3 view =
+        j.contains("view_direction") ? direction(j["view_direction"], path + "/view_direction") : kViewDirection;
     Camera c = fitted_camera(scene, j.contains("fov_deg") ? number(j["fov_deg"], path + "/fov_deg") : 35.0f, view);
     if (j.contains("eye")) c.eye = glm::vec3(point(j["eye"], path + "/eye") - scene.origin);
     if (j.contains("target")) c.target = glm::vec3(point(j["target"], path + "/target") - scene.origin);
@@ -253,7 +255,8 @@ class SceneReader {
     if (!j.is_array() || j.size() != 2 || !j[0].is_number_integer() || !j[1].is_number_integer())
       fail(path, "expected [width, height] in pixels");
     for (int k = 0; k < 2; ++k)
-      if (j[k].get<int64_t>() < 1 || j[k].get<int64_t>() > 16384) fail(path + "/" + std::to_string(k), "must be in 1..16384");
+      if (j[k].get<int64_t>() < 1 || j[k].get<int64_t>() > 16384)
+        fail(path + "/" + std::to_string(k), "must be in 1..16384");
     s.width = j[0].get<int>();
     s.height = j[1].get<int>();
   }
@@ -299,10 +302,12 @@ class SceneReader {
   StrokeStyles stroke_styles(const json& j, const std::string& path) const {
     only_keys(j, path, {"crease", "border", "silhouette"});
     StrokeStyles out;
-    for (auto [key, style] : {std::pair{"crease", &out.crease}, {"border", &out.border}, {"silhouette", &out.silhouette}}) {
+    for (auto [key, style] :
+         {std::pair{"crease", &out.crease}, {"border", &out.border}, {"silhouette", &out.silhouette}}) {
       if (!j.contains(key)) continue;
       const json& v = j[key];
-      if (!v.is_string()) fail(path + "/" + key, "expected a style name (" + join(stroke_style_names()) + ") or a style file");
+      if (!v.is_string())
+        fail(path + "/" + key, "expected a style name (" + join(stroke_style_names()) + ") or a style file");
       std::string name = v.get<std::string>();
       bool relative_file = !is_stroke_style_preset(name) && !fs::path(name).is_absolute();
       try {
@@ -460,7 +465,8 @@ Scene read_scene(const json& j, SceneReader& r, const std::string& source) {
     r.check_extent(objects.back(), "");
   } else {
     if (!j["objects"].is_array() || j["objects"].empty()) r.fail("/objects", "expected a non-empty array");
-    for (size_t i = 0; i < j["objects"].size(); ++i) objects.push_back(r.object(j["objects"][i], "/objects/" + std::to_string(i)));
+    for (size_t i = 0; i < j["objects"].size(); ++i)
+      objects.push_back(r.object(j["objects"][i], "/objects/" + std::to_string(i)));
   }
   s.origin = world_center(objects);
   for (SceneReader::FileObject& f : objects) {  // T relative to the origin, in double, then float
@@ -471,7 +477,8 @@ Scene read_scene(const json& j, SceneReader& r, const std::string& source) {
   }
   if (j.contains("resolution")) r.resolution(j["resolution"], "/resolution", s);
   if (j.contains("seed")) {
-    if (!j["seed"].is_number_unsigned() || j["seed"].get<uint64_t>() > 0xFFFFFFFFull) r.fail("/seed", "expected an integer in 0..4294967295");
+    if (!j["seed"].is_number_unsigned() || j["seed"].get<uint64_t>() > 0xFFFFFFFFull)
+      r.fail("/seed", "expected an integer in 0..4294967295");
     s.seed = uint32_t(j["seed"].get<uint64_t>());
   }
   set_effects(j, r, s);
@@ -548,7 +555,8 @@ Scene parse_scene(const std::string& text, const std::string& source, const std:
 std::string scene_text(const std::string& source) {
   if (source.starts_with("builtin:")) {
     auto it = kBuiltinScenes.find(source.substr(8));
-    if (it == kBuiltinScenes.end()) throw SceneError(source + ": no such built-in scene (" + join(builtin_scene_names()) + ")");
+    if (it == kBuiltinScenes.end())
+      throw SceneError(source + ": no such built-in scene (" + join(builtin_scene_names()) + ")");
     return it->second;
   }
   std::ifstream in(source);

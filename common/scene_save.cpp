@@ -17,8 +17,12 @@ json vec3(glm::dvec3 v) { return json::array({v.x, v.y, v.z}); }
 
 // The camera in world space: `c` is relative to the scene's origin.
 json camera_json(const Camera& c, glm::dvec3 origin) {
-  return {{"eye", vec3(glm::dvec3(c.eye) + origin)}, {"target", vec3(glm::dvec3(c.target) + origin)}, {"up", vec3(c.up)},
-          {"fov_deg", c.fov_deg}, {"near", c.near}, {"far", c.far}};
+  return {{"eye", vec3(glm::dvec3(c.eye) + origin)},
+          {"target", vec3(glm::dvec3(c.target) + origin)},
+          {"up", vec3(c.up)},
+          {"fov_deg", c.fov_deg},
+          {"near", c.near},
+          {"far", c.far}};
 }
 
 json lights_json(const std::vector<Light>& lights) {

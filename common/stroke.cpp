@@ -60,8 +60,8 @@ StrokeStyle RunStyles::of(const WindowPath& path, const VisibleRun& run, size_t 
   return style;
 }
 
-std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
-                                           uint32_t seed) {
+std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visibility& visibility,
+                                           const StrokeStyles& styles, uint32_t seed) {
   std::vector<StrokeVertex> out;
   RunStyles run_styles(styles, seed, lines.decal_styles);
   for (size_t i = 0; i < visibility.runs.size(); ++i) {
@@ -76,7 +76,8 @@ std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visib
 
 std::vector<Image> stroke_texture_layers(uint32_t seed) {
   std::vector<Image> layers;
-  for (size_t k = 0; k < stroke_texture_names().size(); ++k) layers.push_back(stroke_texture(StrokeTextureKind(k), seed));
+  for (size_t k = 0; k < stroke_texture_names().size(); ++k)
+    layers.push_back(stroke_texture(StrokeTextureKind(k), seed));
   return layers;
 }
 

@@ -52,8 +52,8 @@ class RunStyles {
 
 // The ribbons of every visible run, three vertices a triangle, in drawing order; `seed`
 // (the scene's) seeds the offsets a style synthesizes (SPEC 4.8).
-std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
-                                           uint32_t seed);
+std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visibility& visibility,
+                                           const StrokeStyles& styles, uint32_t seed);
 
 // The stroke textures, one per StrokeTextureKind, from the scene seed.
 std::vector<Image> stroke_texture_layers(uint32_t seed);
@@ -61,15 +61,18 @@ std::vector<Image> stroke_texture_layers(uint32_t seed);
 struct StrokeStage {
   using Params = TypeList<>;
   static StageDesc describe() {
-    StageDesc d{"stroke", StageKind::Frame, "stylized strokes of the visible feature lines (SPEC 4.6-4.7)",
-                {"stroke_paper"},
-                {{"visibility.flags", nullptr, false}, {"stroke_paper.color"}, {"paper.height"}},
-                {{"color", 3, Texel::Unorm8, "the strokes over the page", tolerance::kByte,
-                  "fed the same page, visible runs and paper; the same triangles; the GPU filters the stroke texture with "
-                  "8-bit weights and blends each fragment into an 8-bit target: a derived bound allows 4.5/255 per "
-                  "fragment less the tolerance, and anything in the 1-px band where a ribbon's edge passes within a "
-                  "subpixel of the pixel center (measured max 0.0128 on the teapot where ribbons overlap)"}},
-                {"strokes"}};
+    StageDesc d{
+        "stroke",
+        StageKind::Frame,
+        "stylized strokes of the visible feature lines (SPEC 4.6-4.7)",
+        {"stroke_paper"},
+        {{"visibility.flags", nullptr, false}, {"stroke_paper.color"}, {"paper.height"}},
+        {{"color", 3, Texel::Unorm8, "the strokes over the page", tolerance::kByte,
+          "fed the same page, visible runs and paper; the same triangles; the GPU filters the stroke texture with "
+          "8-bit weights and blends each fragment into an 8-bit target: a derived bound allows 4.5/255 per "
+          "fragment less the tolerance, and anything in the 1-px band where a ribbon's edge passes within a "
+          "subpixel of the pixel center (measured max 0.0128 on the teapot where ribbons overlap)"}},
+        {"strokes"}};
     d.outputs[0].frame_color = true;
     d.outputs[0].draws_over = {"stroke_paper.color"};
     return d;

@@ -101,9 +101,11 @@ class StrokeFileReader {
     s.role = role(j.contains("role") ? j["role"] : json(), path + "/role");
     if (!j.contains("points") || !j["points"].is_array() || j["points"].size() < 2)
       fail(path + "/points", "expected an array of 2 points or more, each [x, y, pressure]");
-    for (size_t k = 0; k < j["points"].size(); ++k) s.points.push_back(drawn_point(j["points"][k], path + "/points/" + std::to_string(k)));
+    for (size_t k = 0; k < j["points"].size(); ++k)
+      s.points.push_back(drawn_point(j["points"][k], path + "/points/" + std::to_string(k)));
     if (j.contains("group") != (s.role == StrokeRole::Hatching))
-      fail(path + "/group", s.role == StrokeRole::Hatching ? "missing (a hatching stroke's group)" : "only hatching strokes have a group");
+      fail(path + "/group", s.role == StrokeRole::Hatching ? "missing (a hatching stroke's group)"
+                                                           : "only hatching strokes have a group");
     if (j.contains("group")) {
       if (!j["group"].is_number_integer() || j["group"].get<int64_t>() < 0 || j["group"].get<int64_t>() > 1000000)
         fail(path + "/group", "expected a whole number in 0..1000000");

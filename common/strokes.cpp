@@ -87,10 +87,12 @@ class PathBuilder {
       piece.world.push_back(w);
       piece.window.push_back({win.x, win.y});
       piece.depth.push_back(win.z);
-      if (edges && i + 1 < n) piece.front_faces.push_back(front_faces(*o.mesh, m, path.points[i], path.points[i + 1], object, *edges));
+      if (edges && i + 1 < n)
+        piece.front_faces.push_back(front_faces(*o.mesh, m, path.points[i], path.points[i + 1], object, *edges));
     }
     piece.closed = path.closed && whole;
-    if (edges && piece.closed) piece.front_faces.push_back(front_faces(*o.mesh, m, path.points[n - 1], path.points[0], object, *edges));
+    if (edges && piece.closed)
+      piece.front_faces.push_back(front_faces(*o.mesh, m, path.points[n - 1], path.points[0], object, *edges));
     flush(piece);
   }
 
@@ -103,7 +105,8 @@ class PathBuilder {
       if (d.object == kMissed) continue;
       const SceneObject& o = scene_.objects[d.object];
       const glm::uvec3& t = o.mesh->triangles[d.face];
-      glm::dvec3 local = d.bary.x * glm::dvec3(o.mesh->positions[t[0]]) + d.bary.y * glm::dvec3(o.mesh->positions[t[1]]) +
+      glm::dvec3 local = d.bary.x * glm::dvec3(o.mesh->positions[t[0]]) +
+                         d.bary.y * glm::dvec3(o.mesh->positions[t[1]]) +
                          d.bary.z * glm::dvec3(o.mesh->positions[t[2]]);
       glm::dvec3 w = glm::dvec3(glm::dmat4(o.transform) * glm::dvec4(local, 1.0)), win = project_(w);
       if (win.z < double(scene_.camera.near)) {
@@ -124,8 +127,8 @@ class PathBuilder {
     return {kind, object, false, path.front_facing, 0, {}, {}, {}, {}, {}, {}, 0, {}, 0};
   }
 
-  glm::uvec2 front_faces(const Mesh& mesh, const glm::dmat4& m, const SurfacePoint& a, const SurfacePoint& b, uint32_t object,
-                         const EdgeFaces& edges) const {
+  glm::uvec2 front_faces(const Mesh& mesh, const glm::dmat4& m, const SurfacePoint& a, const SurfacePoint& b,
+                         uint32_t object, const EdgeFaces& edges) const {
     glm::uvec2 keys(0);
     int k = 0;
     for (uint32_t f : edges.of(vertex_of(mesh, a), vertex_of(mesh, b)))
@@ -165,7 +168,8 @@ class PathBuilder {
 
 // Numbers the paths (creases and borders first) and checks that the keys fit 32 bits.
 void assign_keys(WindowLines& lines) {
-  std::stable_partition(lines.paths.begin(), lines.paths.end(), [](const WindowPath& p) { return p.kind != LineKind::Silhouette; });
+  std::stable_partition(lines.paths.begin(), lines.paths.end(),
+                        [](const WindowPath& p) { return p.kind != LineKind::Silhouette; });
   uint64_t next = uint64_t(lines.face_count) + 1;
   size_t silhouettes = 0;
   for (WindowPath& p : lines.paths)
@@ -228,7 +232,8 @@ WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects
   for (uint32_t i = 0; i < scene.objects.size(); ++i) {
     const SceneObject& o = scene.objects[i];
     if (!prepared->lines[i]) continue;
-    FeatureLines lines = prepared->lines[i]->lines(glm::dmat4(o.transform), glm::dvec3(scene.camera.eye), line_options(p));
+    FeatureLines lines =
+        prepared->lines[i]->lines(glm::dmat4(o.transform), glm::dvec3(scene.camera.eye), line_options(p));
     const EdgeFaces* edges = prepared->edges[i].get();
     for (const FeaturePath& path : lines.creases) builder.add(path, LineKind::Crease, i, edges);
     for (const FeaturePath& path : lines.borders) builder.add(path, LineKind::Border, i, edges);
@@ -246,7 +251,8 @@ WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects
 const WindowLines& frame_lines(HostData& frame, HostData& kept, const Scene& scene) {
   auto p = scene.params.get<StrokesParams>();
   using Meshes = std::shared_ptr<const LineMeshes>;
-  const Meshes& meshes = kept.get<Meshes>("strokes.meshes", [&] { return line_meshes(scene, p, LineObjects::Strokes); });
+  const Meshes& meshes =
+      kept.get<Meshes>("strokes.meshes", [&] { return line_meshes(scene, p, LineObjects::Strokes); });
   return frame.get<WindowLines>("strokes.lines", [&] {
     const DecalSurface* decals = kept.find<DecalSurface>(kDecalSurface);
     if (!decals && has_decals(scene)) throw std::logic_error("strokes: the decals were not projected (kDecalSurface)");

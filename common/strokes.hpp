@@ -35,12 +35,14 @@ struct StrokesParams {
   float id_crease_px, id_silhouette_px, id_depth_bias, vis_step_px;
   template <class V>
   void visit(V& v) {
-    v.real(crease_deg, "crease_deg", 60.0, 0.0, 180.0, "an edge is a crease when its face normals differ by more (SPEC 4.3)");
+    v.real(crease_deg, "crease_deg", 60.0, 0.0, 180.0,
+           "an edge is a crease when its face normals differ by more (SPEC 4.3)");
     v.boolean(silhouette_normalized, "silhouette_normalized", true,
               "g = n.normalize(eye - x); false: the paper's literal n.(eye - x) (SPEC 4.3)");
     v.boolean(keep_back_facing, "keep_back_facing", false, "keep back-facing silhouettes (hidden-line mode, SPEC 4.3)");
     v.real(id_crease_px, "id_crease_px", 2.0, 0.5, 16.0, "width of crease and border quads in the ID image (SPEC 4.4)");
-    v.real(id_silhouette_px, "id_silhouette_px", 3.0, 0.5, 16.0, "width of silhouette quads in the ID image (SPEC 4.4)");
+    v.real(id_silhouette_px, "id_silhouette_px", 3.0, 0.5, 16.0,
+           "width of silhouette quads in the ID image (SPEC 4.4)");
     v.real(id_depth_bias, "id_depth_bias", 0.005, 0.0, 0.5,
            "lines are depth-tested at d (1 - bias) against the faces (SPEC 4.4; relative, linear view depth)");
     v.real(vis_step_px, "vis_step_px", 2.0, 0.25, 64.0, "visibility samples along a path, pixels apart (SPEC 4.5)");

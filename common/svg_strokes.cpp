@@ -90,7 +90,8 @@ class SvgReader {
       size_t arity = kind == 'M' || kind == 'L' ? 2 : kind == 'Z' ? 0 : 1;
       if (kind != 'M' && kind != 'L' && kind != 'H' && kind != 'V' && kind != 'Z')
         fail(e, std::string("path command '") + c + "' is not a straight segment: flatten curves first");
-      if (arity ? v.empty() || v.size() % arity : !v.empty()) fail(e, std::string("path command '") + c + "': wrong count of numbers");
+      if (arity ? v.empty() || v.size() % arity : !v.empty())
+        fail(e, std::string("path command '") + c + "': wrong count of numbers");
       if (kind == 'Z') {
         if (!out.empty()) out.back().push_back(start);
         at = start;

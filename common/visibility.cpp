@@ -150,7 +150,8 @@ class RunBuilder {
       const WindowPath& p = lines_.paths[i];
       size_t a = first_[i], n = first_[i + 1] - a;
       for (size_t k = 0; k + 1 < n; ++k)
-        if (tested_[a + k].visible != tested_[a + k + 1].visible) changes.push_back({i, tested_[a + k], tested_[a + k + 1]});
+        if (tested_[a + k].visible != tested_[a + k + 1].visible)
+          changes.push_back({i, tested_[a + k], tested_[a + k + 1]});
       Tested last = tested_[a + n - 1], wrap = {tested_[a].s + p.length_px, tested_[a].visible};
       if (p.closed && n > 1 && last.visible != wrap.visible) changes.push_back({i, last, wrap});
     }
@@ -161,7 +162,8 @@ class RunBuilder {
   bool bisect(std::vector<Change>& changes) {
     std::vector<Change*> open;
     for (Change& c : changes)
-      if (c.b.s - c.a.s > kLocatedPx) open.push_back(&c), batch_.push_back(sample_at(lines_.paths[c.path], (c.a.s + c.b.s) / 2));
+      if (c.b.s - c.a.s > kLocatedPx)
+        open.push_back(&c), batch_.push_back(sample_at(lines_.paths[c.path], (c.a.s + c.b.s) / 2));
     if (open.empty()) return false;
     std::vector<uint8_t> f = run_batch();
     for (size_t k = 0; k < open.size(); ++k) {
@@ -185,7 +187,9 @@ class RunBuilder {
     if (!p.closed) {
       if (starts_visible) add_run(i, 0, bounds.front().s, false, false, true);
       for (size_t k = 0; k < bounds.size(); ++k)
-        if (bounds[k].visible) add_run(i, bounds[k].s, k + 1 < bounds.size() ? bounds[k + 1].s : p.length_px, false, true, k + 1 < bounds.size());
+        if (bounds[k].visible)
+          add_run(i, bounds[k].s, k + 1 < bounds.size() ? bounds[k + 1].s : p.length_px, false, true,
+                  k + 1 < bounds.size());
       return;
     }
     for (size_t k = 0; k < bounds.size(); ++k) {  // closed: each run ends at the next change, around the seam

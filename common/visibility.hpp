@@ -83,7 +83,10 @@ Image flags_image(const std::vector<uint8_t>& flags);
 struct VisibilityStage {
   using Params = TypeList<>;  // reads strokes.*, which the ID image declares
   static StageDesc describe() {
-    StageDesc d{"visibility", StageKind::Frame, "visibility of stroke samples from the ID image (SPEC 4.5)", {"strokes"},
+    StageDesc d{"visibility",
+                StageKind::Frame,
+                "visibility of stroke samples from the ID image (SPEC 4.5)",
+                {"strokes"},
                 {{"id_image.ids"}},
                 {{"flags", 1, Texel::Unorm8, "1 where a sample is visible: one texel per sample, 1024 a row", 0.0,
                   "fed the same ID image: the same integer test on both"}},

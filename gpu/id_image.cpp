@@ -22,7 +22,8 @@ class IdImagePass : public GpuPass {
   }
 
   void run(GpuFrame& f) override {
-    std::vector<IdVertex> triangles = id_triangles(f.scene, frame_lines(f.host, f.kept, f.scene), f.params<StrokesParams>());
+    std::vector<IdVertex> triangles =
+        id_triangles(f.scene, frame_lines(f.host, f.kept, f.scene), f.params<StrokesParams>());
     Texture& target = f.output("id_image.ids");
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target.id(), 0);

@@ -115,7 +115,9 @@ RasterMasks raster_masks(const GBuffer& ref, const GBuffer& ras) {
 // no effect runs it there. An effect that goes with a style (EffectDef::styled) is never
 // added: the scene has it exactly when it has objects of that style.
 bool scene_running(const Scene& scene, const std::string& stage, Scene& out) {
-  auto runs = [&](const std::vector<std::string>& effects) { return contains(passes_for(effects, scene.params), stage); };
+  auto runs = [&](const std::vector<std::string>& effects) {
+    return contains(passes_for(effects, scene.params), stage);
+  };
   out = scene;
   if (runs(scene.effects)) return true;
   for (const EffectDef& e : effect_table()) {
@@ -191,7 +193,9 @@ class PassParity {
   const RasterMasks& masks(const std::string& stage) {
     auto it = masks_.find(stage);
     if (it == masks_.end())
-      it = masks_.emplace(stage, raster_masks(rf_.gbuffer(stage), gpu::download_gbuffer(gf_.shared<gpu::GBufferTargets>(stage))))
+      it = masks_
+               .emplace(stage,
+                        raster_masks(rf_.gbuffer(stage), gpu::download_gbuffer(gf_.shared<gpu::GBufferTargets>(stage))))
                .first;
     return it->second;
   }
@@ -290,7 +294,8 @@ void check_stage_registry() {
 }
 
 StageParity compared(std::string name, Image ref, Image gpu, double tol, const Image* mask, std::string note) {
-  StageParity s{std::move(name), compare_images(ref, gpu, tol, mask), false, std::move(ref), std::move(gpu), std::move(note)};
+  StageParity s{std::move(name), compare_images(ref, gpu, tol, mask), false, std::move(ref), std::move(gpu),
+                std::move(note)};
   s.pass = s.diff.over_tolerance == 0;
   return s;
 }

@@ -31,7 +31,8 @@ struct StageParity {
 void check_stage_registry();
 
 // One comparison; it passes when no pixel (within `mask`, if given) is over `tolerance`.
-StageParity compared(std::string name, Image reference, Image gpu, double tolerance, const Image* mask, std::string note);
+StageParity compared(std::string name, Image reference, Image gpu, double tolerance, const Image* mask,
+                     std::string note);
 
 // What `run_parity` knows: every frame stage, in registry order, then "end_to_end".
 std::vector<std::string> parity_stages();

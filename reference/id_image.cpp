@@ -63,7 +63,9 @@ bool ambiguous(const IdRaster& r, size_t i) {
 
 IdRaster id_raster(const std::vector<IdVertex>& v, int width, int height) {
   IdRaster r{ImageU32(width, height, 1), Image(width, height, 2), Image(width, height, 2), Image(width, height, 1)};
-  draw_in_bands(v, height, [](const IdVertex& x) { return x.window; }, [&](const IdVertex* t, int y0, int y1) { draw(t, r, y0, y1); });
+  draw_in_bands(
+      v, height, [](const IdVertex& x) { return x.window; },
+      [&](const IdVertex* t, int y0, int y1) { draw(t, r, y0, y1); });
   return r;
 }
 

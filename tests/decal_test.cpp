@@ -62,13 +62,16 @@ std::string refusal(const std::string& from, const std::string& to) {
 }
 
 TEST(StrokeFile, RefusalsNameTheFileAndThePath) {
-  EXPECT_EQ(refusal("[20, 20, 0.5]]},\n  {\"role\": \"decal\", \"style\"", "[20, 20, 1.5]]},\n  {\"role\": \"decal\", \"style\""),
+  EXPECT_EQ(refusal("[20, 20, 0.5]]},\n  {\"role\": \"decal\", \"style\"",
+                    "[20, 20, 1.5]]},\n  {\"role\": \"decal\", \"style\""),
             "bad.json: /strokes/0/points/1/2: pressure must be in [0, 1]");
   EXPECT_NE(refusal("\"crease\"", "\"outline\"").find("bad.json: /strokes/2/role: expected one of"), std::string::npos);
   EXPECT_EQ(refusal("\"group\": 3, ", ""), "bad.json: /strokes/4/group: missing (a hatching stroke's group)");
-  EXPECT_NE(refusal("\"style\": \"ink\"", "\"style\": \"no_such\"").find("bad.json: /strokes/1/style: "), std::string::npos);
+  EXPECT_NE(refusal("\"style\": \"ink\"", "\"style\": \"no_such\"").find("bad.json: /strokes/1/style: "),
+            std::string::npos);
   EXPECT_NE(refusal("\"near\": 1", "\"near\": 1,").find("bad.json: line 2, column"), std::string::npos);
-  EXPECT_EQ(refusal("\"resolution\": [320, 240]", "\"resolution\": [320]"), "bad.json: /resolution: expected [width, height] in pixels");
+  EXPECT_EQ(refusal("\"resolution\": [320, 240]", "\"resolution\": [320]"),
+            "bad.json: /resolution: expected [width, height] in pixels");
   EXPECT_NE(refusal("\"fov_deg\": 40,", "").find("bad.json: /camera/fov_deg: missing"), std::string::npos);
   EXPECT_NE(refusal("[[0, 0, 1], [5, 0, 1]]}]", "[[0, 0, 1]]}]").find("bad.json: /strokes/4/points: expected"),
             std::string::npos);
@@ -77,7 +80,8 @@ TEST(StrokeFile, RefusalsNameTheFileAndThePath) {
 TEST(StrokeFile, ScenesListThemRelativeToTheirFolder) {
   testing::TempDir dir;
   dir.write("s.strokes.json", kFile);
-  std::string scene = R"({"objects": [{"mesh": {"procedural": "sphere"}, "style": "strokes"}], "stroke_files": ["s.strokes.json"]})";
+  std::string scene =
+      R"({"objects": [{"mesh": {"procedural": "sphere"}, "style": "strokes"}], "stroke_files": ["s.strokes.json"]})";
   Scene s = load_scene(dir.write("scene.json", scene));
   ASSERT_EQ(s.stroke_files.size(), 1u);
   EXPECT_TRUE(has_decals(s));
@@ -115,7 +119,8 @@ std::vector<uint8_t> near_silhouette(const Scene& scene, const std::vector<Decal
   auto at = [&](const DecalPoint& d) {
     const WorldObject& o = world[d.object];
     const glm::uvec3& t = o.triangles[d.face];
-    return d.bary.x * glm::dvec3(o.positions[t[0]]) + d.bary.y * glm::dvec3(o.positions[t[1]]) + d.bary.z * glm::dvec3(o.positions[t[2]]);
+    return d.bary.x * glm::dvec3(o.positions[t[0]]) + d.bary.y * glm::dvec3(o.positions[t[1]]) +
+           d.bary.z * glm::dvec3(o.positions[t[2]]);
   };
   std::vector<uint8_t> out;
   for (const DecalSamples& d : samples)
@@ -142,7 +147,8 @@ class DecalProjection : public testing::GlTest, public ::testing::WithParamInter
 TEST_P(DecalProjection, BackendsAgree) {
   Scene scene = with_drawn_grid(GetParam() == "teapot" ? load_scene(PLUMBAGO_SOURCE_DIR "/scenes/teapot_decals.json")
                                                        : testing::builtin_at(GetParam(), 320, 240));
-  if (GetParam() == "teapot") scene.stroke_files.push_back(load_scene(PLUMBAGO_SOURCE_DIR "/scenes/teapot_decals.json").stroke_files[0]);
+  if (GetParam() == "teapot")
+    scene.stroke_files.push_back(load_scene(PLUMBAGO_SOURCE_DIR "/scenes/teapot_decals.json").stroke_files[0]);
   std::vector<DecalSamples> samples = decal_samples(scene);
   DecalSurface gpu = gpu::project_decals_through_gbuffer(scene), ref = reference::project_decals_by_rays(scene);
   ProjectionAgreement a = compare_projections(gpu, ref, near_silhouette(scene, samples));
@@ -176,7 +182,8 @@ TEST_F(DecalStrokes, Parity) {
     for (const WindowPath& p : lines.paths) decals += p.kind == LineKind::Decal;
     ASSERT_GT(decals, 5u) << name;
     auto results = run_parity(scene, {"id_image", "visibility", "stroke"});
-    ASSERT_EQ(testing::names_of(results), (std::vector<std::string>{"id_image.ids", "visibility.flags", "stroke.color"}));
+    ASSERT_EQ(testing::names_of(results),
+              (std::vector<std::string>{"id_image.ids", "visibility.flags", "stroke.color"}));
     for (const StageParity& r : results) {
       std::printf("[decals %s] %s  [%s]\n", name, format_diff(r.name, r.diff).c_str(), r.note.c_str());
       EXPECT_TRUE(r.pass) << name << " " << r.name << ": " << r.note;
@@ -239,7 +246,8 @@ TEST(StrokeFileCommand, SvgOverTheRenderBecomesAStrokeFile) {
   dir.write("curve.svg", R"(<svg width="800" height="600"><path d="M 0 0 C 10 10 20 20 30 0"/></svg>)");
   auto curve = testing::run_cli("strokefile builtin:torus " + dir.path("curve.svg") + " -o " + dir.path("c.json"), dir);
   EXPECT_EQ(curve.code, 2);
-  EXPECT_NE(curve.err.find("curve.svg: <path> #1: path command 'C' is not a straight segment"), std::string::npos) << curve.err;
+  EXPECT_NE(curve.err.find("curve.svg: <path> #1: path command 'C' is not a straight segment"), std::string::npos)
+      << curve.err;
 }
 
 }  // namespace

@@ -114,7 +114,8 @@ TEST(MeshIo, StlCubeIsWelded) {
   const float c[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
   const int f[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
                         {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
-  for (const auto& [name, text] : {std::pair{"ascii.stl", ascii_stl_cube(c, f)}, std::pair{"binary.stl", binary_stl_cube(c, f)}}) {
+  for (const auto& [name, text] :
+       {std::pair{"ascii.stl", ascii_stl_cube(c, f)}, std::pair{"binary.stl", binary_stl_cube(c, f)}}) {
     Mesh m = load_mesh(tmp.write(name, text));
     EXPECT_EQ(m.positions.size(), 8u) << name;
     EXPECT_EQ(m.triangles.size(), 12u) << name;
@@ -158,7 +159,8 @@ TEST(MeshIo, RefusalsNameTheFileAndLine) {
   expect_refused(tmp.write("range.ply", std::string(kPlyHeader) + "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"),
                  {"range.ply:13:", "face 0", "index 7"});
   expect_refused(tmp.write("short.ply", std::string(kPlyHeader) + "0 0 0\n1 0 0\n"), {"short.ply", "ends early"});
-  expect_refused(tmp.write("range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"), {"range.off:6:", "face index 7"});
+  expect_refused(tmp.write("range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"),
+                 {"range.off:6:", "face index 7"});
   expect_refused(tmp.write("short.off", "OFF\n99999999999 1 0\n0 0 0\n"), {"short.off", "ends early"});
   expect_refused(tmp.write("nan.off", "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n"), {"nan.off:4:", "'nan'"});
 }

@@ -55,8 +55,8 @@ TEST(PlyHeader, MalformedHeadersAreRefusedWithTheirLine) {
                                                   "property list uchar int vertex_indices\nend_header\n" +
                                                       kTriangle + "3 0 1 2\n"),
                          {"noprops.ply: line 3:", "element 'vertex' has no properties"});
-  expect_refused_quickly(tmp.write("noprops2.ply", "ply\nformat ascii 1.0\n" + kVertexFace + "element edge 0\nend_header\n" +
-                                                       kTriangle + "3 0 1 2\n"),
+  expect_refused_quickly(tmp.write("noprops2.ply", "ply\nformat ascii 1.0\n" + kVertexFace +
+                                                       "element edge 0\nend_header\n" + kTriangle + "3 0 1 2\n"),
                          {"noprops2.ply: line 9:", "element 'edge' has no properties"});
   expect_refused_quickly(tmp.write("keyword.ply", "ply\nformat ascii 1.0\n" + kVertexFace + "bogus 1\nend_header\n"),
                          {"keyword.ply: line 9:", "unknown header keyword 'bogus'"});
@@ -65,14 +65,16 @@ TEST(PlyHeader, MalformedHeadersAreRefusedWithTheirLine) {
   expect_refused_quickly(tmp.write("listcount.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
                                                     "element face 1\nproperty list float int vertex_indices\n"),
                          {"listcount.ply: line 6:", "not an integer type"});
-  expect_refused_quickly(tmp.write("format.ply", "ply\nformat binary_middle_endian 1.0\n" + kVertexFace + "end_header\n"),
-                         {"format.ply: line 2:", "binary_middle_endian"});
+  expect_refused_quickly(
+      tmp.write("format.ply", "ply\nformat binary_middle_endian 1.0\n" + kVertexFace + "end_header\n"),
+      {"format.ply: line 2:", "binary_middle_endian"});
   expect_refused_quickly(tmp.write("version.ply", "ply\nformat ascii 2.0\n" + kVertexFace + "end_header\n"),
                          {"version.ply: line 2:", "'2.0'"});
   expect_refused_quickly(tmp.write("noformat.ply", "ply\n" + kVertexFace + "end_header\n"),
                          {"noformat.ply: line 2:", "'format'"});
-  expect_refused_quickly(tmp.write("noface.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n"),
-                         {"noface.ply: line 5:", "no 'element face'"});
+  expect_refused_quickly(
+      tmp.write("noface.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n"),
+      {"noface.ply: line 5:", "no 'element face'"});
   expect_refused_quickly(tmp.write("novertex.ply", "ply\nformat ascii 1.0\nelement face 1\n"
                                                    "property list uchar int vertex_indices\nend_header\n3 0 1 2\n"),
                          {"novertex.ply: line 5:", "no 'element vertex'"});
@@ -82,7 +84,8 @@ TEST(PlyHeader, MalformedHeadersAreRefusedWithTheirLine) {
                          {"word.ply: line 3:", "'three' is not a count"});
   expect_refused_quickly(tmp.write("huge.ply", "ply\nformat ascii 1.0\nelement vertex 99999999999999999999999\n"),
                          {"huge.ply: line 3:", "out of range"});
-  expect_refused_quickly(tmp.write("binary-junk.ply", std::string(200000, '\x01')), {"binary-junk.ply", "not a PLY file"});
+  expect_refused_quickly(tmp.write("binary-junk.ply", std::string(200000, '\x01')),
+                         {"binary-junk.ply", "not a PLY file"});
 }
 
 TEST(PlyHeader, CountsTheFileCannotHoldAreRefusedBeforeAllocating) {
@@ -107,7 +110,8 @@ TEST(PlyHeader, CountsTheFileCannotHoldAreRefusedBeforeAllocating) {
                          {"vertices.ply: element vertex claims 4000000000 records of at least 12 bytes, "
                           "the file has 1024 bytes after the header"});
   // Just one record short, big-endian.
-  std::string short_one = "ply\nformat binary_big_endian 1.0\n" + kVertexFace + "end_header\n" + std::string(3 * 12, '\0');
+  std::string short_one =
+      "ply\nformat binary_big_endian 1.0\n" + kVertexFace + "end_header\n" + std::string(3 * 12, '\0');
   expect_refused_quickly(tmp.write("short.ply", short_one), {"short.ply: element face claims 1 records"});
 }
 
@@ -119,8 +123,10 @@ TEST(PlyHeader, BadFaceIndicesNeverReachAnUnsignedConversion) {
     expect_refused_quickly(tmp.write(name, kAscii + kTriangle + "3 0 1 " + index + "\n"),
                            {name + ":13:", "face 0", "vertex index"});
   }
-  expect_refused_quickly(tmp.write("nanlist.ply", kAscii + kTriangle + "nan 0 1 2\n"), {"nanlist.ply:13:", "face 0", "list length nan"});
-  expect_refused_quickly(tmp.write("hugelist.ply", kAscii + kTriangle + "1e300 0 1 2\n"), {"hugelist.ply:13:", "face 0", "not a count"});
+  expect_refused_quickly(tmp.write("nanlist.ply", kAscii + kTriangle + "nan 0 1 2\n"),
+                         {"nanlist.ply:13:", "face 0", "list length nan"});
+  expect_refused_quickly(tmp.write("hugelist.ply", kAscii + kTriangle + "1e300 0 1 2\n"),
+                         {"hugelist.ply:13:", "face 0", "not a count"});
   expect_refused_quickly(tmp.write("bigcoord.ply", kAscii + "0 0 0\n1e300 0 0\n0 1 0\n3 0 1 2\n"),
                          {"bigcoord.ply:11:", "vertex 1", "beyond float range"});
   // Binary: a float index that is NaN.
@@ -141,7 +147,8 @@ TEST(PlyHeader, OffCountsAreCheckedBeforeOpenMesh) {
                          {"negfaces.off:2:", "face count '-1'"});
   expect_refused_quickly(tmp.write("fraction.off", "OFF\n2.5 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
                          {"fraction.off:2:", "not a count"});
-  expect_refused_quickly(tmp.write("billions.off", "OFF\n4000000000 4000000000 0\n0 0 0\n"), {"billions.off", "ends early"});
+  expect_refused_quickly(tmp.write("billions.off", "OFF\n4000000000 4000000000 0\n0 0 0\n"),
+                         {"billions.off", "ends early"});
   // Rows long enough for the counts (at least 6 bytes a vertex, 8 a face), one face short.
   expect_refused_quickly(tmp.write("fewer.off", "OFF\n3 1 0\n0.0 0.0 0.0\n1.0 0.0 0.0\n0.0 1.0 0.0\n3 0 1\n"),
                          {"fewer.off:6:", "only 2 indices"});

@@ -72,7 +72,8 @@ void results_table(Inspection& in) {
   const std::vector<StageParity>& results = in.check.results();
   if (results.empty() || !ImGui::BeginTable("##parity", 5, ImGuiTableFlags_RowBg)) return;
   ImGui::TableSetupColumn("stage", ImGuiTableColumnFlags_WidthStretch);
-  for (const char* h : {"max abs", "RMSE", "over tol", ""}) ImGui::TableSetupColumn(h, ImGuiTableColumnFlags_WidthFixed);
+  for (const char* h : {"max abs", "RMSE", "over tol", ""})
+    ImGui::TableSetupColumn(h, ImGuiTableColumnFlags_WidthFixed);
   ImGui::TableHeadersRow();
   for (size_t i = 0; i < results.size(); ++i) {
     const StageParity& s = results[i];
