@@ -37,7 +37,8 @@ inline const std::vector<PaperClaim>& paper_claims() {
        "strokes", "scenes/statue_strokes.json", "the Ogre (124K faces): toon coat, silhouettes synthesized by the "
        "Markov chain, creases over 80 degrees; 120 of its feature lines visible at the scene's camera"},
       {"Kalnins et al. 2002", "building, 7000 strokes", 16000, "not stated", 3, 3, "GeForce3, Pentium IV 1.5 GHz",
-       "strokes", "", "its stand-in scene comes with synthesis, decals and hatching"},
+       "strokes", "scenes/storefront_strokes.json", "a procedural brick storefront: every brick a box of creases, "
+       "drawn with a Markov-synthesized graphite style; 4,902 of its 8,724 crease lines visible at the scene's camera"},
       {"Kalnins et al. 2002", "breakfast, 400 strokes", 25000, "not stated", 9, 9, "GeForce3, Pentium IV 1.5 GHz",
        "strokes", "", "its stand-in scene comes with synthesis, decals and hatching"},
       {"Kalnins et al. 2002", "snowman, 250 strokes", 10000, "not stated", 11, 11, "GeForce3, Pentium IV 1.5 GHz",

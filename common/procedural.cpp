@@ -125,13 +125,49 @@ Mesh cylinder(float res) {
   return m;
 }
 
-// The unit cube [-0.5, 0.5]^3 as a square wall with two capped fans: 12 crease edges (SPEC
-// 4.3); flat faces, so the resolution changes nothing.
+// The box [lo, hi] as a rectangular wall along z with two capped fans: 12 crease edges.
+void add_box(Mesh& m, glm::vec3 lo, glm::vec3 hi) {
+  auto rings = add_wall(m, {{lo.x, lo.y}, {hi.x, lo.y}, {hi.x, hi.y}, {lo.x, hi.y}}, lo.z, hi.z, 1);
+  glm::vec2 center = (glm::vec2(lo) + glm::vec2(hi)) * 0.5f;
+  add_fan(m, rings.front(), 4, {center, lo.z}, false);
+  add_fan(m, rings.back(), 4, {center, hi.z}, true);
+}
+
+// The unit cube [-0.5, 0.5]^3: 12 crease edges (SPEC 4.3); flat faces, so the resolution
+// changes nothing.
 Mesh cube(float) {
   Mesh m;
-  auto rings = add_wall(m, {{-0.5f, -0.5f}, {0.5f, -0.5f}, {0.5f, 0.5f}, {-0.5f, 0.5f}}, -0.5f, 0.5f, 1);
-  add_fan(m, rings.front(), 4, {0, 0, -0.5f}, false);
-  add_fan(m, rings.back(), 4, {0, 0, 0.5f}, true);
+  add_box(m, glm::vec3(-0.5f), glm::vec3(0.5f));
+  return m;
+}
+
+// A brick storefront, the stand-in for the building of Kalnins et al. 2002 (Fig. 6, Table 1:
+// 16K faces, 7,000 strokes): a wall 6 wide and 4 high (x in [-3, 3], y in [0, 4]) faced
+// with staggered bricks standing out of it toward +z, left open at a door, two shop
+// windows and three upper windows, where the wall behind shows. Every brick is a box of
+// 12 creases. `resolution` scales the number of bricks along each axis.
+Mesh storefront(float res) {
+  struct Opening {
+    float x0, x1, y0, y1;
+  };
+  const Opening openings[] = {{-0.6f, 0.6f, 0.0f, 2.2f},  {-2.6f, -1.0f, 0.8f, 2.4f}, {1.0f, 2.6f, 0.8f, 2.4f},
+                              {-2.4f, -1.2f, 2.9f, 3.7f}, {-0.6f, 0.6f, 2.9f, 3.7f},  {1.2f, 2.4f, 2.9f, 3.7f}};
+  const float mortar = 0.02f, brick_w = 0.16f / res, brick_h = 0.07f / res, depth = 0.06f;
+  Mesh m;
+  add_box(m, {-3.0f, 0.0f, -0.3f}, {3.0f, 4.0f, 0.0f});
+  auto in_opening = [&](float x0, float x1, float y0, float y1) {
+    for (const Opening& o : openings)
+      if (x1 > o.x0 && x0 < o.x1 && y1 > o.y0 && y0 < o.y1) return true;
+    return false;
+  };
+  const int rows = int(4.0f / (brick_h + mortar));
+  for (int r = 0; r < rows; ++r) {
+    float y0 = r * (brick_h + mortar) + mortar, y1 = y0 + brick_h;
+    for (float x0 = -3.0f + mortar - (r % 2) * 0.5f * (brick_w + mortar); x0 < 3.0f - mortar; x0 += brick_w + mortar) {
+      float a = std::max(x0, -3.0f + mortar), b = std::min(x0 + brick_w, 3.0f - mortar);
+      if (b - a > 0.25f * brick_w && !in_opening(a, b, y0, y1)) add_box(m, {a, y0, 0.0f}, {b, y1, depth});
+    }
+  }
   return m;
 }
 
@@ -177,7 +213,8 @@ using Maker = Mesh (*)(float resolution);
 
 const std::vector<std::pair<std::string, Maker>>& makers() {
   static const std::vector<std::pair<std::string, Maker>> table = {
-      {"torus", torus}, {"sphere", sphere}, {"cad", cad_part}, {"plane", plane}, {"cylinder", cylinder}, {"cube", cube}};
+      {"torus", torus}, {"sphere", sphere}, {"cad", cad_part}, {"plane", plane}, {"cylinder", cylinder}, {"cube", cube},
+      {"storefront", storefront}};
   return table;
 }
 

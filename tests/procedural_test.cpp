@@ -135,6 +135,16 @@ TEST(Procedural, ACubeIsTwelveCreaseEdgesAroundAUnitCube) {
   EXPECT_EQ(make_procedural("cube", 3).triangles.size(), m.triangles.size());
 }
 
+// Kalnins et al. 2002's building, Table 1: 16K faces; the stand-in within a factor 1.5.
+TEST(Procedural, AStorefrontIsBricksOnAWall) {
+  Mesh m = make_procedural("storefront", 1);
+  EXPECT_EQ(m.triangles.size() % 16, 0u);  // boxes only (16 triangles each): the wall and the bricks
+  EXPECT_GT(m.triangles.size(), 16000 / 1.5);
+  EXPECT_LT(m.triangles.size(), 16000 * 1.5);
+  EXPECT_EQ(m.bbox_min(), glm::vec3(-3.0f, 0.0f, -0.3f));
+  EXPECT_NEAR(m.bbox_max().y, 4.0f, 0.1f);
+}
+
 TEST(Procedural, ResolutionScalesTheTessellation) {
   for (const auto& kind : procedural_kinds())
     if (kind != "cube") {
