@@ -210,6 +210,56 @@ TEST(CurvatureAccuracy, TensorMeetsTheTargetsOnTorusAndEllipsoid) {
     }
 }
 
+// The share of vertices (away from open boundaries, as measure_accuracy) whose k_min or
+// k_max is more than 50% off, relative as in measure_accuracy.
+double share_far_off(const AnalyticSurface& s, const Curvature& c, double margin) {
+  MeshTopology topo = build_topology(s.mesh);
+  std::vector<glm::dvec3> boundary;
+  for (const auto& e : topo.edges)
+    if (e.face[1] < 0) boundary.push_back(s.mesh.positions[e.from]);
+  size_t counted = 0, off = 0;
+  for (size_t v = 0; v < c.size(); ++v) {
+    glm::dvec3 p = s.mesh.positions[v];
+    if (std::any_of(boundary.begin(), boundary.end(), [&](const glm::dvec3& b) { return glm::length(b - p) < margin; }))
+      continue;
+    SurfaceTruth t = s.truth(p);
+    double scale = 0.1 * std::max(std::abs(t.k_min), std::abs(t.k_max));
+    ++counted;
+    off += std::abs(c.k_min[v] - t.k_min) > 0.5 * std::max(std::abs(t.k_min), scale) ||
+           std::abs(c.k_max[v] - t.k_max) > 0.5 * std::max(std::abs(t.k_max), scale);
+  }
+  return counted ? double(off) / double(counted) : 0.0;
+}
+
+// Issue 19: on strongly jittered meshes about 1% of the triangles fold over, each adding
+// dihedral angles of about 180 degrees to the tensor, and a heavy tail of vertices is
+// more than 50% off. The default (method = auto) takes the jet there, and the tensor
+// everywhere else, bit for bit.
+TEST(CurvatureAccuracy, DefaultHasNoHeavyTailOnFoldedMeshes) {
+  CurvatureParams defaults = curvature_params(), tensor = curvature_params({"curvature.method=tensor"});
+  for (const char* name : {"torus", "sphere", "saddle"}) {
+    const SurfaceCase& sc = *std::find_if(std::begin(kSurfaces), std::end(kSurfaces),
+                                          [&](const SurfaceCase& s) { return std::string(s.name) == name; });
+    for (Meshing m : {Meshing::Regular, Meshing::Irregular, Meshing::Strong}) {
+      const AnalyticSurface& s = accuracy_surface(sc, m, 2.0);
+      double margin = 0.1 * s.mesh.bbox_diagonal(), folded = folded_face_share(s.mesh);
+      Curvature by_default = estimate_curvature(s.mesh, defaults), by_tensor = estimate_curvature(s.mesh, tensor);
+      double default_off = share_far_off(s, by_default, margin), tensor_off = share_far_off(s, by_tensor, margin);
+      std::printf("  %-18s folded faces %.3f%%: > 50%% off: tensor %.2f%%, default (%s) %.2f%%\n", s.name.c_str(),
+                  100 * folded, 100 * tensor_off, method_name(resolved_method(s.mesh, defaults)), 100 * default_off);
+      EXPECT_LE(default_off, 0.01) << s.name;
+      if (m == Meshing::Strong) {
+        EXPECT_GT(folded, double(defaults.auto_fold_share)) << s.name;
+        EXPECT_GT(tensor_off, 0.05) << s.name << ": the tail the default avoids";
+      } else {
+        EXPECT_EQ(folded, 0.0) << s.name;
+        EXPECT_EQ(by_default.k_min, by_tensor.k_min) << s.name;
+        EXPECT_EQ(by_default.d_min, by_tensor.d_min) << s.name;
+      }
+    }
+  }
+}
+
 // The approximate ball (issue 19: faces and edges cut by the ball weighted by the linear
 // ratio of distances) against the exact one, on the same meshes: what the cheaper
 // clipping costs in accuracy, printed next to the exact ball's, and bounded.
