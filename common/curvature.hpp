@@ -48,7 +48,13 @@
 //
 // Umbilic and flat vertices (Lee §5.3): where |k_max - k_min| < umbilic_ratio
 // (|k_max| + |k_min|) + flat_curvature / bbox diagonal, d_min is propagated from the
-// neighbors (curvature_directions.cpp).
+// neighbors (curvature_directions.cpp), then smoothed: `direction_smoothing` sweeps
+// replace each d_min not held fixed by the mean line of its own, its neighbors' and,
+// weighted by its firmness, its estimate. Firmness is 0 where the directions are
+// undefined and rises linearly to 1 (held fixed) where |k_max - k_min| reaches
+// `direction_firm` x the umbilic test's threshold, so weakly anisotropic vertices, whose
+// directions are mostly noise, follow their firmer neighbors. 0 sweeps: Lee's
+// propagation alone, where fronts from different sides meet in seams.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -76,6 +82,8 @@ struct CurvatureParams {
   int jet_degree, jet_rings;
   JetSolver jet_solver;
   float umbilic_ratio, flat_curvature;
+  int direction_smoothing;
+  float direction_firm;
   template <class V>
   void visit(V& v) {
     v.choice(method, "method", CurvatureMethod::Auto, {"auto", "tensor", "jet"},
@@ -100,6 +108,11 @@ struct CurvatureParams {
            "directions propagated where |k_max - k_min| < this x (|k_max| + |k_min|) + flat");
     v.real(flat_curvature, "flat_curvature", 0.05, 0.0, 1.0,
            "the + flat term of the umbilic test, x 1 / bbox diagonal");
+    v.integer(direction_smoothing, "direction_smoothing", 200, 0, 10000,
+              "sweeps smoothing the propagated and weakly defined directions (0: Lee's propagation only)");
+    v.real(direction_firm, "direction_firm", 3.0, 1.0, 100.0,
+           "directions are held fixed where |k_max - k_min| is this many times the umbilic threshold, "
+           "and held less firmly below");
   }
 };
 
