@@ -108,7 +108,7 @@ struct CurvatureParams {
            "directions propagated where |k_max - k_min| < this x (|k_max| + |k_min|) + flat");
     v.real(flat_curvature, "flat_curvature", 0.05, 0.0, 1.0,
            "the + flat term of the umbilic test, x 1 / bbox diagonal");
-    v.integer(direction_smoothing, "direction_smoothing", 200, 0, 10000,
+    v.integer(direction_smoothing, "direction_smoothing", 30, 0, 10000,
               "sweeps smoothing the propagated and weakly defined directions (0: Lee's propagation only)");
     v.real(direction_firm, "direction_firm", 3.0, 1.0, 100.0,
            "directions are held fixed where |k_max - k_min| is this many times the umbilic threshold, "

@@ -444,7 +444,7 @@ TEST(CurvatureDirections, FilledInDirectionsAreSmooth) {
                 name.c_str(), sa.edges, sb.mean_deg, sa.mean_deg, 100 * sb.share_over_20, 100 * sa.share_over_20);
     EXPECT_GT(sa.edges, 100u) << name;
     EXPECT_LT(sa.share_over_20, 0.5 * sb.share_over_20) << name;
-    EXPECT_LT(sa.share_over_20, 0.06) << name;  // measured 1.2% (bent square), 4.8% (fandisk)
+    EXPECT_LT(sa.share_over_20, 0.06) << name;  // measured 1.3% (bent square), 5.2% (fandisk)
     EXPECT_LT(sa.mean_deg, sb.mean_deg) << name;
     EXPECT_EQ(a.k_min, b.k_min) << name;  // only directions change
   }
