@@ -91,7 +91,8 @@ void setup(CLI::App& app) {
   auto o = std::make_shared<CurvatureCommandOptions>();
   auto* cmd = app.add_subcommand("curvature", "Principal curvature per vertex of a mesh, as CSV (SPEC 1.1)");
   cmd->add_option("mesh", o->mesh, "Mesh file (OBJ, OFF, PLY, STL)")->required();
-  cmd->add_option("--method", o->method, "auto (the default: tensor, or jet on folded meshes), tensor (Cohen-Steiner/Morvan, the paper's) or jet");
+  cmd->add_option("--method", o->method,
+                  "auto (the default: tensor, or jet on folded meshes), tensor (Cohen-Steiner/Morvan, the paper's) or jet");
   cmd->add_option("--radius", o->radius, "tensor ball radius x bbox diagonal; 0 = 1-ring (curvature.radius)");
   cmd->add_option("-o,--output", o->output, "CSV file to write (default: standard output)");
   cmd->add_option("--set", o->assignments, "Override a parameter: curvature.name=value (see `plumbago params curvature`)");

@@ -101,7 +101,8 @@ def measure(s, point):
         keep = boundary_distance(positions, triangles) >= 0.1 * diagonal
         runs = [("default", 0, [])]
         runs += [("tensor", r, ["--method", "tensor", "--radius", str(r)]) for r in s["radii"]]
-        runs += [("approximate", r, ["--method", "tensor", "--radius", str(r), "--set", "curvature.ball_clip=approximate"])
+        approximate = ["--set", "curvature.ball_clip=approximate"]
+        runs += [("approximate", r, ["--method", "tensor", "--radius", str(r)] + approximate)
                  for r in s["radii"] if r > 0 and "approximate" in s["ball_clips"]]
         runs += [("jet", d, ["--method", "jet", "--set", f"curvature.jet_degree={d}"]) for d in s["degrees"]]
         for method, setting, args in runs:
