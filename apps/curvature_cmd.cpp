@@ -1,4 +1,4 @@
-// plumbago curvature MESH [--method tensor|jet] [--radius R] [-o out.csv] [--quiet]
+// plumbago curvature MESH [--method auto|tensor|jet] [--radius R] [-o out.csv] [--quiet]
 //                         [--no-cache] [--set curvature.name=value ...]
 // Principal curvature per vertex (SPEC §1.1) as CSV, one row per vertex of the mesh as
 // loaded (after welding).
@@ -72,7 +72,7 @@ void run(const CurvatureCommandOptions& o) {
   std::chrono::duration<double, std::milli> ms = std::chrono::steady_clock::now() - start;
   if (!o.quiet)
     std::fprintf(stderr, "plumbago curvature: %s: %zu vertices, %s, %.1f ms\n", o.mesh.c_str(), c.size(),
-                 params.method == CurvatureMethod::Tensor ? "tensor" : "jet", ms.count());
+                 method_name(resolved_method(mesh, params)), ms.count());
   if (o.output.empty()) {
     write_csv(stdout, mesh, c);
     return;
@@ -91,7 +91,8 @@ void setup(CLI::App& app) {
   auto o = std::make_shared<CurvatureCommandOptions>();
   auto* cmd = app.add_subcommand("curvature", "Principal curvature per vertex of a mesh, as CSV (SPEC 1.1)");
   cmd->add_option("mesh", o->mesh, "Mesh file (OBJ, OFF, PLY, STL)")->required();
-  cmd->add_option("--method", o->method, "tensor (Cohen-Steiner/Morvan, the paper's) or jet (CGAL jet fitting)");
+  cmd->add_option("--method", o->method,
+                  "auto (the default: tensor, or jet on folded meshes), tensor (Cohen-Steiner/Morvan, the paper's) or jet");
   cmd->add_option("--radius", o->radius, "tensor ball radius x bbox diagonal; 0 = 1-ring (curvature.radius)");
   cmd->add_option("-o,--output", o->output, "CSV file to write (default: standard output)");
   cmd->add_option("--set", o->assignments, "Override a parameter: curvature.name=value (see `plumbago params curvature`)");

@@ -90,6 +90,39 @@ Curvature tensor_curvature(const Mesh& mesh, const MeshTopology& topo, const Cur
 
 }  // namespace curvature
 
+double folded_face_share(const Mesh& mesh) {
+  if (mesh.triangles.empty()) return 0.0;
+  std::vector<glm::dvec3> corner_normal(mesh.positions.size(), glm::dvec3(0)), face_normal(mesh.triangles.size());
+  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const auto& t = mesh.triangles[f];
+    glm::dvec3 a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
+    face_normal[f] = glm::cross(b - a, c - a);
+    for (int k = 0; k < 3; ++k) corner_normal[t[k]] += face_normal[f];
+  }
+  size_t folded = 0;
+  for (size_t f = 0; f < mesh.triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k)
+      if (glm::dot(face_normal[f], corner_normal[mesh.triangles[f][k]]) < 0) {
+        ++folded;
+        break;
+      }
+  return double(folded) / double(mesh.triangles.size());
+}
+
+CurvatureMethod resolved_method(const Mesh& mesh, const CurvatureParams& p) {
+  if (p.method != CurvatureMethod::Auto) return p.method;
+  return folded_face_share(mesh) > double(p.auto_fold_share) ? CurvatureMethod::Jet : CurvatureMethod::Tensor;
+}
+
+const char* method_name(CurvatureMethod method) {
+  switch (method) {
+    case CurvatureMethod::Auto: return "auto";
+    case CurvatureMethod::Tensor: return "tensor";
+    case CurvatureMethod::Jet: return "jet";
+  }
+  return "?";
+}
+
 Curvature estimate_curvature(const Mesh& input, const CurvatureParams& p, bool show_progress) {
   Mesh with_normals;
   const Mesh* mesh = &input;
@@ -99,7 +132,7 @@ Curvature estimate_curvature(const Mesh& input, const CurvatureParams& p, bool s
     mesh = &with_normals;
   }
   MeshTopology topo = build_topology(*mesh);
-  bool tensor = p.method == CurvatureMethod::Tensor;
+  bool tensor = resolved_method(*mesh, p) == CurvatureMethod::Tensor;
   Progress progress(tensor ? "curvature (tensor)" : "curvature (jet)", mesh->positions.size(), show_progress);
   Curvature c = tensor ? curvature::tensor_curvature(*mesh, topo, p, progress)
                        : curvature::jet_curvature(*mesh, topo, p, progress);

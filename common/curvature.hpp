@@ -36,9 +36,25 @@
 // preconditioned least squares, common/curvature_jet_eigen.cpp); `cgal` runs CGAL's
 // Monge_via_jet_fitting (SVD), the checked reference (tests/curvature_jet_test.cpp).
 //
+// `auto` (default): the tensor, unless more than `auto_fold_share` (0.03%) of the faces
+// are folded over (a face whose normal is more than 90 degrees from one of its corners'
+// area-weighted normals), then the jet. The tensor sums dihedral angles, which on a
+// smooth surface are about k x edge length (1 degree at the default density); a folded
+// face adds two of about 180 degrees, whatever the ball's size. On tori, spheres and
+// saddles jittered by up to 0.45 of a cell, the share of vertices more than 50% off
+// follows the share of folded faces: 1.1% folded faces, 24% vertices off (torus); 0.1%,
+// 2.5%; 0.02%, 0.3%. The jet reads only positions and stays within 0.2% off
+// (docs/curvature.md).
+//
 // Umbilic and flat vertices (Lee §5.3): where |k_max - k_min| < umbilic_ratio
 // (|k_max| + |k_min|) + flat_curvature / bbox diagonal, d_min is propagated from the
-// neighbors (curvature_directions.cpp).
+// neighbors (curvature_directions.cpp), then smoothed: `direction_smoothing` sweeps
+// replace each d_min not held fixed by the mean line of its own, its neighbors' and,
+// weighted by its firmness, its estimate. Firmness is 0 where the directions are
+// undefined and rises linearly to 1 (held fixed) where |k_max - k_min| reaches
+// `direction_firm` x the umbilic test's threshold, so weakly anisotropic vertices, whose
+// directions are mostly noise, follow their firmer neighbors. 0 sweeps: Lee's
+// propagation alone, where fronts from different sides meet in seams.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -50,7 +66,7 @@
 
 namespace plumbago {
 
-enum class CurvatureMethod { Tensor, Jet };
+enum class CurvatureMethod { Auto, Tensor, Jet };
 enum class CurvatureNormal { Ball, Tensor };
 enum class JetSolver { Eigen, Cgal };
 enum class BallClip { Exact, Approximate };
@@ -58,6 +74,7 @@ enum class BallClip { Exact, Approximate };
 struct CurvatureParams {
   static constexpr const char* stage = "curvature";
   CurvatureMethod method;
+  float auto_fold_share;
   float radius;
   CurvatureNormal normal;
   bool ring_fallback;
@@ -65,10 +82,15 @@ struct CurvatureParams {
   int jet_degree, jet_rings;
   JetSolver jet_solver;
   float umbilic_ratio, flat_curvature;
+  int direction_smoothing;
+  float direction_firm;
   template <class V>
   void visit(V& v) {
-    v.choice(method, "method", CurvatureMethod::Tensor, {"tensor", "jet"},
-             "estimator: Cohen-Steiner/Morvan tensor (the paper's) or CGAL jet fitting");
+    v.choice(method, "method", CurvatureMethod::Auto, {"auto", "tensor", "jet"},
+             "estimator: Cohen-Steiner/Morvan tensor (the paper's), jet fitting, or auto: the tensor unless more "
+             "than auto_fold_share of the faces are folded, then the jet");
+    v.real(auto_fold_share, "auto_fold_share", 0.0003, 0.0, 1.0,
+           "auto: the share of folded faces (normal > 90 deg from a corner's normal) above which the jet is used");
     v.real(radius, "radius", 0.01, 0.0, 0.5,
            "tensor: geodesic ball radius x bbox diagonal (Pacheco: 0.01); 0 = the 1-ring");
     v.choice(normal, "normal", CurvatureNormal::Ball, {"ball", "tensor"},
@@ -86,6 +108,11 @@ struct CurvatureParams {
            "directions propagated where |k_max - k_min| < this x (|k_max| + |k_min|) + flat");
     v.real(flat_curvature, "flat_curvature", 0.05, 0.0, 1.0,
            "the + flat term of the umbilic test, x 1 / bbox diagonal");
+    v.integer(direction_smoothing, "direction_smoothing", 30, 0, 10000,
+              "sweeps smoothing the propagated and weakly defined directions (0: Lee's propagation only)");
+    v.real(direction_firm, "direction_firm", 3.0, 1.0, 100.0,
+           "directions are held fixed where |k_max - k_min| is this many times the umbilic threshold, "
+           "and held less firmly below");
   }
 };
 
@@ -106,6 +133,14 @@ struct CurvatureOptions {
 // Cached: keyed by the mesh content, the method and every parameter. A stale or corrupt
 // cache file is reported on stderr (unless !progress) and recomputed.
 Curvature compute_curvature(const Mesh& mesh, const CurvatureParams& params, const CurvatureOptions& options = {});
+
+// The estimator `method = auto` picks for this mesh (tensor or jet); the others as given.
+CurvatureMethod resolved_method(const Mesh& mesh, const CurvatureParams& params);
+const char* method_name(CurvatureMethod method);
+
+// The share of faces folded over: whose normal is more than 90 degrees from the
+// area-weighted normal of one of their corners (0 for a mesh without faces).
+double folded_face_share(const Mesh& mesh);
 
 // The computation itself, no cache.
 Curvature estimate_curvature(const Mesh& mesh, const CurvatureParams& params, bool progress = false);

@@ -5,9 +5,12 @@
 // like the first of them. A connected piece with no defined direction at all (a plane,
 // a sphere) is seeded with the world axis that lies most in its tangent planes, where
 // that axis projects to at least half its length; a plane gets a constant field and a
-// sphere one along its great circles through the two poles of that axis.
+// sphere one along its great circles through the two poles of that axis. Fronts from
+// different sides meet in seams, so the propagated directions are then smoothed
+// (`curvature.direction_smoothing`, curvature.hpp).
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numeric>
@@ -142,12 +145,76 @@ void propagate_fronts(const MeshTopology& topo, Curvature& c, std::vector<uint8_
   }
 }
 
+// How firmly a vertex's estimated direction holds while the field is smoothed: 0 where
+// it is undefined (spread below the umbilic test's threshold), rising linearly to 1 at
+// `direction_firm` times the threshold, 1 beyond (held fixed).
+double firmness(float k_min, float k_max, const CurvatureParams& p, float bbox_diagonal) {
+  double flat = bbox_diagonal > 0 ? double(p.flat_curvature) / double(bbox_diagonal) : 0.0;
+  double threshold = double(p.umbilic_ratio) * (std::abs(double(k_max)) + std::abs(double(k_min))) + flat;
+  double spread = std::abs(double(k_max) - double(k_min));
+  if (!(spread >= threshold)) return 0.0;
+  if (!(threshold > 0) || !(p.direction_firm > 1)) return 1.0;
+  return std::clamp((spread / threshold - 1) / (double(p.direction_firm) - 1), 0.0, 1.0);
+}
+
+// The mean line in v's tangent plane of its own d_min, its neighbors' (as they are now)
+// and, with weight `hold` x (neighbors + 1), its estimated direction: the main axis of
+// sum w wᵀ, signed like its own. False where they cancel.
+bool mean_line(uint32_t v, const MeshTopology& topo, const Curvature& c, const glm::dvec3& estimate, double hold,
+               glm::vec3& out) {
+  glm::dvec3 t1, t2;
+  tangent_basis(c.normal[v], t1, t2);
+  const glm::dvec3 own = c.d_min[v];
+  double a = 0, b = 0, d = 0, count = 1;
+  auto add = [&](const glm::dvec3& line, double weight) {
+    glm::dvec2 w(glm::dot(line, t1), glm::dot(line, t2));
+    a += weight * w.x * w.x, b += weight * w.x * w.y, d += weight * w.y * w.y;
+  };
+  add(own, 1);
+  for (uint32_t u : topo.neighbors_of(v)) add(c.d_min[u], 1), ++count;
+  if (hold > 0) add(estimate, hold * count);
+  if (!(std::hypot(a - d, 2 * b) > 1e-12)) return false;
+  double theta = 0.5 * std::atan2(2 * b, a - d);
+  glm::dvec3 axis = std::cos(theta) * t1 + std::sin(theta) * t2;
+  out = glm::dot(axis, own) < 0 ? -axis : axis;
+  return true;
+}
+
+// Sweeps of mean_line over the vertices whose direction is not held fixed (propagated, or
+// estimated with firmness < 1), all of a sweep from the previous one (Jacobi: the same on
+// any number of threads), until no direction turns by more than 0.01 degree or after
+// `direction_smoothing` sweeps.
+void smooth_directions(const MeshTopology& topo, const CurvatureParams& p, float bbox_diagonal,
+                       const std::vector<uint8_t>& known, Curvature& c) {
+  std::vector<uint32_t> free;
+  std::vector<double> hold;
+  std::vector<glm::dvec3> estimate;
+  for (uint32_t v = 0; v < c.size(); ++v) {
+    double f = firmness(c.k_min[v], c.k_max[v], p, bbox_diagonal);
+    if (!known[v] || f >= 1) continue;
+    free.push_back(v), hold.push_back(f), estimate.push_back(c.d_min[v]);
+  }
+  std::vector<glm::vec3> next(free.size());
+  const double still = std::cos(0.01 * 3.14159265358979323846 / 180);
+  for (int sweep = 0; sweep < p.direction_smoothing && !free.empty(); ++sweep) {
+    std::vector<uint8_t> turned(free.size(), 0);
+    tbb::parallel_for(size_t(0), free.size(), [&](size_t i) {
+      next[i] = c.d_min[free[i]];
+      if (mean_line(free[i], topo, c, estimate[i], hold[i], next[i]))
+        turned[i] = glm::dot(glm::dvec3(next[i]), glm::dvec3(c.d_min[free[i]])) < still;
+    });
+    for (size_t i = 0; i < free.size(); ++i) c.d_min[free[i]] = next[i];
+    if (std::find(turned.begin(), turned.end(), 1) == turned.end()) break;
+  }
+}
+
 }  // namespace
 
 void propagate_directions(const MeshTopology& topo, const CurvatureParams& p, float bbox_diagonal, Curvature& c) {
   std::vector<uint8_t> known = defined_directions(p, bbox_diagonal, c);
   seed_components_without_directions(topo, c, known);
   propagate_fronts(topo, c, known);
+  smooth_directions(topo, p, bbox_diagonal, known, c);
   tbb::parallel_for(size_t(0), c.size(), [&](size_t v) {
     glm::dvec3 n = c.normal[v], t1, t2;
     tangent_basis(n, t1, t2);

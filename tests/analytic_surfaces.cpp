@@ -13,13 +13,18 @@ constexpr double kPi = 3.14159265358979323846;
 // Of a cell, per grid direction. A triangle of a jittered unit grid keeps at least
 // 1 - 6 kJitter of its doubled area, so below 1/6 none flips.
 constexpr double kJitter = 0.15;
+// Strongly irregular meshes (issue 19): a spread of 0.9 of a cell, so triangles fold.
+constexpr double kStrongJitter = 0.45;
 
-const char* meshing_name(Meshing m) { return m == Meshing::Regular ? "regular" : "irregular"; }
+const char* meshing_name(Meshing m) {
+  return m == Meshing::Regular ? "regular" : m == Meshing::Irregular ? "irregular" : "strong";
+}
+double jitter(Meshing m) { return m == Meshing::Strong ? kStrongJitter : kJitter; }
 
 // Quad (a, b, c, d), counter-clockwise seen from outside, as two triangles: diagonal a-c
 // on regular meshes, a random one on irregular meshes.
 void add_quad(Mesh& mesh, uint32_t a, uint32_t b, uint32_t c, uint32_t d, Meshing meshing, Rng& rng) {
-  if (meshing == Meshing::Irregular && rng.uniform() < 0.5) {
+  if (meshing != Meshing::Regular && rng.uniform() < 0.5) {
     mesh.triangles.push_back({a, b, d});
     mesh.triangles.push_back({b, c, d});
   } else {
@@ -38,8 +43,9 @@ Mesh grid_mesh(int nu, int nv, bool wrap_u, bool wrap_v, Map map, Meshing meshin
   for (int j = 0; j < cv; ++j)
     for (int i = 0; i < cu; ++i) {
       double u = double(i) / nu, v = double(j) / nv;
-      if (meshing == Meshing::Irregular) {
-        double du = rng.uniform(-kJitter, kJitter) / nu, dv = rng.uniform(-kJitter, kJitter) / nv;
+      if (meshing != Meshing::Regular) {
+        double du = rng.uniform(-jitter(meshing), jitter(meshing)) / nu;
+        double dv = rng.uniform(-jitter(meshing), jitter(meshing)) / nv;
         if (wrap_u || (i > 0 && i < nu)) u += du;
         if (wrap_v || (j > 0 && j < nv)) v += dv;
       }
@@ -89,8 +95,8 @@ glm::dvec3 spherified_cube(const glm::dvec3& q) {
 // scaled to +-1) before it goes to the sphere.
 Mesh unit_cube_sphere(int n, Meshing meshing, Rng& rng) {
   auto map = [&](glm::dvec3 q, Rng& r) {
-    if (meshing == Meshing::Irregular) {
-      q += (2.0 * kJitter / n) * glm::dvec3(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1));
+    if (meshing != Meshing::Regular) {
+      q += (2.0 * jitter(meshing) / n) * glm::dvec3(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1));
       q /= std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z)});
     }
     return spherified_cube(q);

@@ -1,7 +1,9 @@
 // Surfaces with known curvature, meshed regularly (a grid with one diagonal) or
 // irregularly (vertices jittered by up to 0.15 of a cell along each grid direction,
 // which keeps every triangle unflipped, and each quad's diagonal picked at random, so
-// valences run from 4 to 8), for the curvature accuracy tests. Every vertex lies exactly on the surface (up to float rounding) and
+// valences run from 4 to 8), or strongly irregularly (jittered by up to 0.45 of a cell:
+// a spread of 0.9 of a grid step, issue 19; about 1% of the triangles fold over), for
+// the curvature accuracy tests. Every vertex lies exactly on the surface (up to float rounding) and
 // triangles are counter-clockwise seen from outside. Sign convention as curvature.hpp:
 // k > 0 where the surface bends away from its normal.
 #pragma once
@@ -20,10 +22,10 @@ struct SurfaceTruth {
   glm::dvec3 d_min, d_max;
 };
 
-enum class Meshing { Regular, Irregular };
+enum class Meshing { Regular, Irregular, Strong };
 
 struct AnalyticSurface {
-  std::string name;  // e.g. "torus/irregular"
+  std::string name;  // e.g. "torus/irregular", "torus/strong"
   Mesh mesh;
   std::function<SurfaceTruth(const glm::dvec3&)> truth;  // at a point of the surface
 };

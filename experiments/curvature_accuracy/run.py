@@ -1,12 +1,14 @@
 #!/usr/bin/python3
-"""Curvature accuracy against time: a radius sweep of the tensor and a degree sweep of
-the jet on analytic surfaces, regular and irregular meshes (see README.md).
+"""Curvature accuracy against time: a radius sweep of the tensor (exact and approximate
+ball), a degree sweep of the jet and the default (method = auto) on analytic surfaces,
+regular, irregular and strongly irregular meshes (see README.md).
 
 Drives `plumbago curvature` (no cache) on meshes written by surfaces.py, reads the
 computation time from its summary line, and compares the CSV with the exact curvature.
 
-Settings (experiments/config/*.yaml, curvature_accuracy): surfaces, radii, degrees. One
-point per surface and meshing. Run through experiments/Snakefile (lib/study_cli.py).
+Settings (experiments/config/*.yaml, curvature_accuracy): surfaces, meshings (regular,
+irregular, strong), radii, ball_clips (exact, approximate: the approximate ball at each
+radius > 0), degrees. One point per surface and meshing. Run through experiments/Snakefile (lib/study_cli.py).
 """
 import pathlib
 import re
@@ -40,9 +42,9 @@ def write_obj(path, positions, triangles):
 def run_plumbago(plumbago, mesh_path, out_csv, args):
     result = subprocess.run([plumbago, "curvature", str(mesh_path), "-o", str(out_csv), "--no-cache"] + args,
                             capture_output=True, text=True, check=True)
-    ms = float(re.search(r"vertices, \w+, ([0-9.]+) ms", result.stderr).group(1))
+    summary = re.search(r"vertices, (\w+), ([0-9.]+) ms", result.stderr)
     table = np.loadtxt(out_csv, delimiter=",", skiprows=1, ndmin=2)
-    return ms, table
+    return float(summary.group(2)), table, summary.group(1)
 
 
 def boundary_distance(positions, triangles):
@@ -61,8 +63,8 @@ def boundary_distance(positions, triangles):
 
 
 def errors(table, truth, keep):
-    """Median direction error (degrees) and median relative errors of k_min and k_max,
-    as in tests/curvature_test.cpp."""
+    """Median direction error (degrees), median relative errors of k_min and k_max, as in
+    tests/curvature_test.cpp, and the share of vertices with either more than 50% off."""
     p = table[keep, 1:4]
     _, k_min, k_max, d_min = truth(p)
     scale = 0.1 * np.maximum(np.abs(k_min), np.abs(k_max))
@@ -71,11 +73,12 @@ def errors(table, truth, keep):
     defined = np.abs(k_max - k_min) >= UMBILIC_RATIO * (np.abs(k_max) + np.abs(k_min))
     cosine = np.abs(np.einsum("ij,ij->i", table[keep, 9:12], d_min))[defined]
     direction = np.degrees(np.arccos(np.minimum(cosine, 1.0)))
-    return (np.median(direction) if direction.size else np.nan), np.median(e_min), np.median(e_max)
+    far_off = np.mean((e_min > 0.5) | (e_max > 0.5))
+    return (np.median(direction) if direction.size else np.nan), np.median(e_min), np.median(e_max), far_off
 
 
 def points(s):
-    return ["%s-%s" % (name, meshing) for name in s["surfaces"] for meshing in ("regular", "irregular")]
+    return ["%s-%s" % (name, meshing) for name in s["surfaces"] for meshing in s["meshings"]]
 
 
 def scenes(s):
@@ -92,20 +95,26 @@ def measure(s, point):
         coarse, _, _ = make(0.2, False, rng)
         diagonal = np.linalg.norm(coarse.max(0) - coarse.min(0))
         edge = DEFAULT_RADIUS * diagonal / EDGES_PER_DEFAULT_RADIUS
-        positions, triangles, truth = make(edge, meshing == "irregular", rng)
+        positions, triangles, truth = make(edge, surfaces.JITTER[meshing], rng)
         mesh = work / f"{name}-{meshing}.obj"
         write_obj(mesh, positions, triangles)
         keep = boundary_distance(positions, triangles) >= 0.1 * diagonal
-        runs = [("tensor", r, ["--method", "tensor", "--radius", str(r)]) for r in s["radii"]]
+        runs = [("default", 0, [])]
+        runs += [("tensor", r, ["--method", "tensor", "--radius", str(r)]) for r in s["radii"]]
+        approximate = ["--set", "curvature.ball_clip=approximate"]
+        runs += [("approximate", r, ["--method", "tensor", "--radius", str(r)] + approximate)
+                 for r in s["radii"] if r > 0 and "approximate" in s["ball_clips"]]
         runs += [("jet", d, ["--method", "jet", "--set", f"curvature.jet_degree={d}"]) for d in s["degrees"]]
         for method, setting, args in runs:
-            ms, table = run_plumbago(pc.plumbago(), mesh, work / "out.csv", args)
-            direction, e_min, e_max = errors(table, truth, keep)
+            ms, table, used = run_plumbago(pc.plumbago(), mesh, work / "out.csv", args)
+            direction, e_min, e_max, far_off = errors(table, truth, keep)
             rows.append(dict(surface=name, meshing=meshing, vertices=len(positions), method=method,
                              setting=setting, ms=ms, direction_deg=direction, k_min_rel=e_min, k_max_rel=e_max,
-                             edges_per_radius=setting * diagonal / edge if method == "tensor" else np.nan))
-            print("%-9s %-9s %-6s %5g  %8.1f ms  direction %6.2f deg  k_min %6.2f%%  k_max %6.2f%%" %
-                  (name, meshing, method, setting, ms, direction, 100 * e_min, 100 * e_max), flush=True)
+                             far_off=far_off, used=used,
+                             edges_per_radius=setting * diagonal / edge if method != "jet" else np.nan))
+            print("%-9s %-9s %-11s %5g  %8.1f ms  direction %6.2f deg  k_min %6.2f%%  k_max %6.2f%%  > 50%% off "
+                  "%6.2f%% (%s)" % (name, meshing, method, setting, ms, direction, 100 * e_min, 100 * e_max,
+                                   100 * far_off, used), flush=True)
     return [{k: (float(v) if isinstance(v, np.floating) else v) for k, v in r.items()} for r in rows], \
         pc.machine("CPU (oneTBB), no GL")
 
@@ -126,18 +135,21 @@ def plot(rows, out):
         fig, axes = plt.subplots(1, len(names), figsize=(4 * len(names), 4), sharey=False, squeeze=False)
         axes = axes[0]
         for ax, name in zip(axes, names):
-            for method, marker in (("tensor", "o"), ("jet", "s")):
-                for meshing, style in (("regular", "-"), ("irregular", "--")):
+            for method, marker in (("tensor", "o"), ("approximate", "^"), ("jet", "s")):
+                for meshing, style in (("regular", "-"), ("irregular", "--"), ("strong", ":")):
                     sel = [r for r in rows if r["surface"] == name and r["method"] == method and r["meshing"] == meshing]
+                    if not sel:
+                        continue
                     x = [r["ms"] for r in sel]
                     y = [0.5 * (r["k_min_rel"] + r["k_max_rel"]) if metric == "k_rel" else r[metric] for r in sel]
                     y = [max(v, ERROR_FLOOR[metric]) for v in y]  # NaN (no defined directions) stays NaN
                     ax.plot(x, y, style, marker=marker, label=f"{method} {meshing}")
                     for r, xi, yi in zip(sel, x, y):
-                        text = ("1-ring" if r["setting"] == 0 else "r=%g" % r["setting"]) if method == "tensor" \
+                        text = ("1-ring" if r["setting"] == 0 else "r=%g" % r["setting"]) if method != "jet" \
                             else "d=%d" % r["setting"]
                         ax.annotate(text, (xi, yi), fontsize=6, xytext=(2, 2), textcoords="offset points")
-            ax.set_title(f"{name} ({int(sel[0]['vertices'])} vertices)")
+            count = sorted({int(r["vertices"]) for r in rows if r["surface"] == name})
+            ax.set_title(f"{name} ({'/'.join(map(str, count))} vertices)")
             ax.set_xscale("log")
             if all(np.isnan(line.get_ydata()).all() for line in ax.get_lines()):
                 ax.text(0.5, 0.5, "umbilic everywhere:\nno directions to compare", ha="center",

@@ -3,17 +3,19 @@
 The same surfaces and meshings as tests/analytic_surfaces.cpp, written independently in
 numpy so that the experiment checks the C++ estimators against formulas it does not
 share with them. Sign convention as common/curvature.hpp: k > 0 where the surface bends
-away from its normal. Meshes: regular (a grid with one diagonal) or irregular (vertices
-jittered by up to 0.15 of a cell per grid direction, each quad's diagonal random).
+away from its normal. Meshes: regular (a grid with one diagonal), irregular (vertices
+jittered by up to 0.15 of a cell per grid direction, each quad's diagonal random) or
+strong (jittered by up to 0.45 of a cell, a spread of 0.9: about 1% of the triangles fold
+over; issue 19). A surface function's `irregular` argument is the jitter (0: regular).
 """
 import numpy as np
 
-JITTER = 0.15
+JITTER = {"regular": 0.0, "irregular": 0.15, "strong": 0.45}
 
 
 def _quads_to_triangles(a, b, c, d, irregular, rng):
     """Quads (a, b, c, d) counter-clockwise from outside -> triangles."""
-    flip = rng.random(len(a)) < 0.5 if irregular else np.zeros(len(a), bool)
+    flip = rng.random(len(a)) < 0.5 if irregular > 0 else np.zeros(len(a), bool)
     t1 = np.where(flip[:, None], np.stack([a, b, d], 1), np.stack([a, b, c], 1))
     t2 = np.where(flip[:, None], np.stack([b, c, d], 1), np.stack([a, c, d], 1))
     return np.concatenate([t1, t2])
@@ -24,9 +26,9 @@ def grid_mesh(nu, nv, wrap_u, wrap_v, surface_map, irregular, rng):
     cu, cv = (nu if wrap_u else nu + 1), (nv if wrap_v else nv + 1)
     j, i = np.meshgrid(np.arange(cv), np.arange(cu), indexing="ij")
     u, v = (i / nu).ravel(), (j / nv).ravel()
-    if irregular:
-        du = rng.uniform(-JITTER, JITTER, u.size) / nu
-        dv = rng.uniform(-JITTER, JITTER, v.size) / nv
+    if irregular > 0:
+        du = rng.uniform(-irregular, irregular, u.size) / nu
+        dv = rng.uniform(-irregular, irregular, v.size) / nv
         ii, jj = i.ravel(), j.ravel()
         u = u + np.where(wrap_u | ((ii > 0) & (ii < nu)), du, 0)
         v = v + np.where(wrap_v | ((jj > 0) & (jj < nv)), dv, 0)
@@ -64,8 +66,8 @@ def unit_cube_sphere(n, irregular, rng):
             for s in range(n):
                 tris.append((vertex(f, s, t), vertex(f, s + 1, t), vertex(f, s + 1, t + 1), vertex(f, s, t + 1)))
     q = np.array(points)
-    if irregular:
-        q = q + (2.0 * JITTER / n) * rng.uniform(-1, 1, q.shape)
+    if irregular > 0:
+        q = q + (2.0 * irregular / n) * rng.uniform(-1, 1, q.shape)
         q = q / np.abs(q).max(axis=1, keepdims=True)
     s = q * q
     sphere = q * np.sqrt(np.stack([1 - s[:, 1] / 2 - s[:, 2] / 2 + s[:, 1] * s[:, 2] / 3,
