@@ -137,22 +137,30 @@ struct Accuracy {
   size_t vertices;
 };
 
-// Vertices within `margin` of an open boundary are left out (every estimator is biased
-// there). Direction errors are taken where the true directions are defined (SPEC's
-// umbilic test on the exact curvatures). The error of k is relative to |k|, or to a
-// tenth of the larger |k| where |k| is smaller than that (a cylinder's k_min = 0).
-Accuracy measure_accuracy(const AnalyticSurface& s, const Curvature& c, double margin) {
+// The vertices farther than `margin` from every open boundary (every estimator is biased
+// near one).
+std::vector<size_t> away_from_boundary(const AnalyticSurface& s, double margin) {
   MeshTopology topo = build_topology(s.mesh);
   std::vector<glm::dvec3> boundary;
   for (const auto& e : topo.edges)
     if (e.face[1] < 0) boundary.push_back(s.mesh.positions[e.from]);
+  std::vector<size_t> out;
+  for (size_t v = 0; v < s.mesh.positions.size(); ++v) {
+    glm::dvec3 p = s.mesh.positions[v];
+    auto near = [&](const glm::dvec3& b) { return glm::length(b - p) < margin; };
+    if (std::none_of(boundary.begin(), boundary.end(), near)) out.push_back(v);
+  }
+  return out;
+}
+
+// Vertices within `margin` of an open boundary are left out. Direction errors are taken
+// where the true directions are defined (SPEC's umbilic test on the exact curvatures). The error of k is relative to |k|, or to a
+// tenth of the larger |k| where |k| is smaller than that (a cylinder's k_min = 0).
+Accuracy measure_accuracy(const AnalyticSurface& s, const Curvature& c, double margin) {
   CurvatureParams defaults = curvature_params();
   std::vector<double> direction, k_min, k_max;
-  for (size_t v = 0; v < c.size(); ++v) {
-    glm::dvec3 p = s.mesh.positions[v];
-    if (std::any_of(boundary.begin(), boundary.end(), [&](const glm::dvec3& b) { return glm::length(b - p) < margin; }))
-      continue;
-    SurfaceTruth t = s.truth(p);
+  for (size_t v : away_from_boundary(s, margin)) {
+    SurfaceTruth t = s.truth(s.mesh.positions[v]);
     double scale = 0.1 * std::max(std::abs(t.k_min), std::abs(t.k_max));
     k_min.push_back(std::abs(c.k_min[v] - t.k_min) / std::max(std::abs(t.k_min), scale));
     k_max.push_back(std::abs(c.k_max[v] - t.k_max) / std::max(std::abs(t.k_max), scale));
@@ -214,16 +222,9 @@ TEST(CurvatureAccuracy, TensorMeetsTheTargetsOnTorusAndEllipsoid) {
 // The share of vertices (away from open boundaries, as measure_accuracy) whose k_min or
 // k_max is more than 50% off, relative as in measure_accuracy.
 double share_far_off(const AnalyticSurface& s, const Curvature& c, double margin) {
-  MeshTopology topo = build_topology(s.mesh);
-  std::vector<glm::dvec3> boundary;
-  for (const auto& e : topo.edges)
-    if (e.face[1] < 0) boundary.push_back(s.mesh.positions[e.from]);
   size_t counted = 0, off = 0;
-  for (size_t v = 0; v < c.size(); ++v) {
-    glm::dvec3 p = s.mesh.positions[v];
-    if (std::any_of(boundary.begin(), boundary.end(), [&](const glm::dvec3& b) { return glm::length(b - p) < margin; }))
-      continue;
-    SurfaceTruth t = s.truth(p);
+  for (size_t v : away_from_boundary(s, margin)) {
+    SurfaceTruth t = s.truth(s.mesh.positions[v]);
     double scale = 0.1 * std::max(std::abs(t.k_min), std::abs(t.k_max));
     ++counted;
     off += std::abs(c.k_min[v] - t.k_min) > 0.5 * std::max(std::abs(t.k_min), scale) ||
