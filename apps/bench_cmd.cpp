@@ -59,6 +59,7 @@ struct BufferError {
 struct BenchResult {
   std::string scene, backend;
   int faces = 0, width = 0, height = 0;
+  double strokes = 0;   // the strokes a frame draws (Frame::counts "strokes"; of a path, its first frame)
   double frame_ms = 0;  // median
   std::map<std::string, double> stages;         // mean ms per pass of a frame
   std::map<std::string, double> preprocessing;  // once per scene, not part of a frame
@@ -159,6 +160,7 @@ BenchResult bench_reference(const BenchOptions& o, const Scene& scene, int frame
     Stopwatch w;
     Frame f = reference::render(scene);
     double total = w.ms();
+    r.strokes = f.counts["strokes"];
     for (const auto& p : f.ran) total -= is_preprocessing(p.name) ? p.ms : 0.0;  // a frame excludes preprocessing
     ms.push_back(total);
     add_pass_times(f, frames, r);
@@ -175,8 +177,10 @@ BenchResult bench_reference(const BenchOptions& o, const Scene& scene, int frame
 BenchResult bench_gpu(const BenchOptions& o, const Scene& scene, int frames, OutputFiles& out) {
   BenchResult r = new_result(scene, "gpu");
   gpu::Renderer renderer(scene);
-  for (const auto& p : renderer.render().ran)  // warm-up: shader compilation, first-use allocations
+  Frame first = renderer.render();  // warm-up: shader compilation, first-use allocations
+  for (const auto& p : first.ran)
     if (is_preprocessing(p.name)) r.preprocessing[p.name] = p.ms;
+  r.strokes = first.counts["strokes"];
   std::vector<double> ms;
   for (int i = 0; i < frames; ++i) {
     Frame f;
@@ -197,8 +201,10 @@ BenchResult bench_gpu(const BenchOptions& o, const Scene& scene, int frames, Out
 BenchResult bench_path(const BenchOptions& o, const Scene& scene, const std::string& backend, OutputFiles& out) {
   BenchResult r = new_result(scene, backend);
   PathFrames path(scene, backend);
-  for (const auto& p : path.render(0).ran)
+  Frame first = path.render(0);
+  for (const auto& p : first.ran)
     if (is_preprocessing(p.name)) r.preprocessing[p.name] = p.ms;
+  r.strokes = first.counts["strokes"];
   std::vector<double> ms, setup;
   r.path_frames = path.count();
   for (int i = 0; i < path.count(); ++i) {
@@ -261,7 +267,8 @@ void print_text(const std::vector<BenchResult>& results) {
 }
 
 nlohmann::json result_json(const BenchResult& r) {
-  nlohmann::json j{{"scene", r.scene}, {"backend", r.backend}, {"faces", r.faces}, {"size", {r.width, r.height}},
+  nlohmann::json j{{"scene", r.scene}, {"backend", r.backend}, {"faces", r.faces}, {"strokes", r.strokes},
+                   {"size", {r.width, r.height}},
                    {"fps", 1000 / r.frame_ms}, {"frame_ms", r.frame_ms}, {"stages", r.stages},
                    {"preprocessing", r.preprocessing}};
   if (r.path_frames)
@@ -337,8 +344,8 @@ void print_paper(const BenchOptions& o, const std::vector<ClaimRun>& runs) {
     return;
   }
   std::printf("machine:     %s\nGL renderer: %s\n\n", machine.c_str(), renderer.c_str());
-  std::printf("%-25s %-29s %7s %-11s %-9s | %-28s %7s %-9s %8s %8s\n", "paper", "their scene", "faces", "resolution",
-              "their fps", "our closest configuration", "faces", "size", "GPU fps", "CPU fps");
+  std::printf("%-25s %-29s %7s %-11s %-9s | %-28s %7s %7s %-9s %8s %8s\n", "paper", "their scene", "faces",
+              "resolution", "their fps", "our closest configuration", "faces", "strokes", "size", "GPU fps", "CPU fps");
   for (const auto& r : runs) {
     const PaperClaim& c = *r.claim;
     std::string faces = c.faces ? std::to_string(c.faces) : "?";
@@ -355,7 +362,8 @@ void print_paper(const BenchOptions& o, const std::vector<ClaimRun>& runs) {
       std::snprintf(buf, sizeof buf, "%.1f", b ? 1000 / b->frame_ms : 0.0);
       return b ? std::string(buf) : std::string("-");
     };
-    std::printf("%-28s %7d %-9s %8s %8s", r.ours.c_str(), any->faces, size.c_str(), fps(r.gpu).c_str(), fps(r.ref).c_str());
+    std::printf("%-28s %7d %7.0f %-9s %8s %8s", r.ours.c_str(), any->faces, any->strokes, size.c_str(),
+                fps(r.gpu).c_str(), fps(r.ref).c_str());
     std::printf("%s\n", r.note.empty() ? "" : ("  (" + r.note + ")").c_str());
   }
   std::printf("\nTheir fps were measured on their hardware; ours on the machine and renderer above.\n");

@@ -48,12 +48,14 @@ void print_stats(const RenderOptions& o, const Scene& scene, const Frame& frame)
       j["ran"].push_back({{"name", p.name.substr(0, plus)}, {"ms", p.ms}, {"gpu_pass", p.name}});
       j["ran"].push_back({{"name", p.name.substr(plus + 1)}, {"ms", 0.0}, {"gpu_pass", p.name}});
     }
+    j["counts"] = frame.counts;
     std::printf("%s\n", j.dump(2).c_str());
     return;
   }
   std::printf("scene     %s (%dx%d)\nbackend   %s\nrenderer  %s\n", scene.source.c_str(), scene.width,
               scene.height, o.backend.c_str(), renderer.c_str());
   for (const auto& p : frame.ran) std::printf("  %-24s %10.3f ms\n", p.name.c_str(), p.ms);
+  for (const auto& [name, n] : frame.counts) std::printf("  %-24s %10.0f\n", name.c_str(), n);
   for (const auto& m : gl_messages) std::printf("GL: %s\n", m.c_str());
 }
 

@@ -20,6 +20,7 @@ struct StrokeFileOptions {
   SceneOptions scene;
   std::string svg, output = "strokes.json", role = "decal", style;
   int group = 0;
+  bool free = false;
 };
 
 std::string read_text(const std::string& path) {
@@ -34,7 +35,7 @@ void run(const StrokeFileOptions& o) {
   Scene scene = o.scene.load();
   const std::vector<std::string>& roles = stroke_role_names();
   SvgStrokeDefaults defaults{StrokeRole(std::find(roles.begin(), roles.end(), o.role) - roles.begin()), o.style,
-                             o.group};
+                             o.group, o.free};
   StrokeFile file;
   file.source = o.output;
   file.camera = scene.camera, file.width = scene.width, file.height = scene.height;
@@ -62,8 +63,10 @@ void setup(CLI::App& app) {
   cmd->add_option("--role", o->role, "the strokes' role where an element has no data-role")
       ->check(CLI::IsMember(stroke_role_names()))
       ->capture_default_str();
-  cmd->add_option("--style", o->style, "the decals' stroke style (preset or file) where an element has no data-style");
+  cmd->add_option("--style", o->style,
+                  "the stroke style (preset or file) of decals and hatching where an element has no data-style");
   cmd->add_option("--group", o->group, "hatching: the group where an element has no data-group")->capture_default_str();
+  cmd->add_flag("--free", o->free, "hatching: a free group (SPEC 4.10) where an element has no data-free");
   cmd->callback([o] { run(*o); });
 }
 

@@ -21,13 +21,43 @@ Camera camera_at(const Camera& c, const Animation& a, int frame, glm::vec3 cente
   return out;
 }
 
+namespace {
+
+// Frame 0's camera and the bounding sphere a dolly fits its planes to.
+struct PathStart {
+  Camera camera;
+  glm::vec3 center;
+  float radius;
+};
+PathStart path_start(const Scene& scene) {
+  PathStart out{scene.frame > 0 ? scene.path_start : scene.camera, {}, 0};
+  scene_bounds(scene, out.center, out.radius);
+  return out;
+}
+
+}  // namespace
+
+Camera frame_camera(const Scene& scene, int frame) {
+  if (!scene.animation) return scene.camera;
+  PathStart start = path_start(scene);
+  return camera_at(start.camera, *scene.animation, frame, start.center, start.radius);
+}
+
+std::vector<Camera> path_cameras(const Scene& scene) {
+  if (!scene.animation) return {scene.camera};
+  PathStart start = path_start(scene);
+  std::vector<Camera> out;
+  for (int k = 0; k <= scene.frame; ++k)
+    out.push_back(camera_at(start.camera, *scene.animation, k, start.center, start.radius));
+  return out;
+}
+
 Scene scene_at_frame(const Scene& scene, int frame) {
   Scene s = scene;
   if (!scene.animation) return s;
-  glm::vec3 center;
-  float radius;
-  scene_bounds(scene, center, radius);
-  s.camera = camera_at(scene.camera, *scene.animation, frame, center, radius);
+  s.path_start = scene.frame > 0 ? scene.path_start : scene.camera;
+  s.camera = frame_camera(scene, frame);
+  s.frame = frame;
   if (s.lights_follow_camera) s.lights = default_lights(s.camera);
   return s;
 }

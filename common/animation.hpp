@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "common/camera.hpp"
 
@@ -33,7 +34,14 @@ struct Animation {
 Camera camera_at(const Camera& c, const Animation& a, int frame, glm::vec3 center, float radius);
 
 // The scene at frame i of its animation: its camera, and its lights when they follow the
-// camera. The scene itself when it has no animation.
+// camera; Scene::frame says which frame it is. The scene itself when it has no animation.
+// `scene` may itself be a frame of the path.
 Scene scene_at_frame(const Scene& scene, int frame);
+
+// The camera of frame i of the path `scene` lies on (its own camera without an animation).
+Camera frame_camera(const Scene& scene, int frame);
+// The cameras of frames 0..scene.frame: what time-driven effects (SPEC 4.10's hatching
+// transitions) replay, so that a frame does not depend on the frames rendered before it.
+std::vector<Camera> path_cameras(const Scene& scene);
 
 }  // namespace plumbago

@@ -6,18 +6,20 @@
 
 namespace plumbago {
 
-namespace {
+double drawn_length(const std::vector<DrawnPoint>& points) {
+  double length = 0;
+  for (size_t k = 1; k < points.size(); ++k) length += glm::distance(points[k - 1].window, points[k].window);
+  return length;
+}
 
-// The polyline resampled every kDecalStepPx px of its length or a little less, ends kept.
-std::vector<DrawnPoint> resampled(const std::vector<DrawnPoint>& points) {
+std::vector<DrawnPoint> resampled_evenly(const std::vector<DrawnPoint>& points, size_t segments) {
   std::vector<double> arc{0};
   for (size_t k = 1; k < points.size(); ++k)
     arc.push_back(arc.back() + glm::distance(points[k - 1].window, points[k].window));
-  size_t n = std::max<size_t>(1, size_t(std::ceil(arc.back() / kDecalStepPx)));
   std::vector<DrawnPoint> out;
   size_t k = 0;
-  for (size_t i = 0; i <= n; ++i) {
-    double s = arc.back() * double(i) / double(n);
+  for (size_t i = 0; i <= segments; ++i) {
+    double s = arc.back() * double(i) / double(segments);
     while (k + 2 < points.size() && arc[k + 1] < s) ++k;
     double length = arc[k + 1] - arc[k], t = length > 0 ? std::clamp((s - arc[k]) / length, 0.0, 1.0) : 0.0;
     out.push_back({points[k].window + t * (points[k + 1].window - points[k].window),
@@ -26,21 +28,41 @@ std::vector<DrawnPoint> resampled(const std::vector<DrawnPoint>& points) {
   return out;
 }
 
+namespace {
+
+// The polyline resampled every kDecalStepPx px of its length or a little less, ends kept.
+std::vector<DrawnPoint> resampled(const std::vector<DrawnPoint>& points) {
+  return resampled_evenly(points, std::max<size_t>(1, size_t(std::ceil(drawn_length(points) / kDecalStepPx))));
+}
+
 }  // namespace
 
 std::vector<DecalSamples> decal_samples(const Scene& scene) {
   std::vector<DecalSamples> out;
   for (const StrokeFile& file : scene.stroke_files)
     for (const DrawnStroke& stroke : file.strokes)
-      if (stroke.role == StrokeRole::Decal) out.push_back({&file, &stroke, resampled(stroke.points)});
+      if (stroke.role == StrokeRole::Decal) out.push_back({&file, &*stroke.style, {}, resampled(stroke.points)});
+  for (const HatchPolyline& h : hatch_polylines(scene))
+    out.push_back({&scene.stroke_files[h.file], &*h.stroke->style, h.tag, resampled(h.points)});
   return out;
 }
 
 bool has_decals(const Scene& scene) {
   for (const StrokeFile& file : scene.stroke_files)
     for (const DrawnStroke& stroke : file.strokes)
-      if (stroke.role == StrokeRole::Decal) return true;
+      if (stroke.role == StrokeRole::Decal || stroke.role == StrokeRole::Hatching) return true;
   return false;
+}
+
+glm::dvec3 decal_point_local(const Scene& scene, const DecalPoint& d) {
+  const Mesh& mesh = *scene.objects[d.object].mesh;
+  const glm::uvec3& t = mesh.triangles[d.face];
+  return d.bary.x * glm::dvec3(mesh.positions[t[0]]) + d.bary.y * glm::dvec3(mesh.positions[t[1]]) +
+         d.bary.z * glm::dvec3(mesh.positions[t[2]]);
+}
+
+glm::dvec3 decal_point_world(const Scene& scene, const DecalPoint& d) {
+  return glm::dvec3(glm::dmat4(scene.objects[d.object].transform) * glm::dvec4(decal_point_local(scene, d), 1.0));
 }
 
 DecalRay decal_ray(const StrokeFile& file, glm::dvec2 p) {

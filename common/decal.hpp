@@ -37,6 +37,7 @@
 
 #include <glm/glm.hpp>
 
+#include "common/hatching.hpp"
 #include "common/scene.hpp"
 
 namespace plumbago {
@@ -44,16 +45,25 @@ namespace plumbago {
 constexpr double kDecalStepPx = 2.0;  // px of the drawing between projected samples
 constexpr uint32_t kMissed = std::numeric_limits<uint32_t>::max();
 
-// A decal stroke's samples in its file's window, before projection.
+// A surface stroke's samples in its file's window, before projection: a decal, or a hatch
+// of a hatching group (SPEC 4.10, common/hatching.hpp), which is projected the same way.
 struct DecalSamples {
   const StrokeFile* file;
-  const DrawnStroke* stroke;
+  const StrokeStyle* style;
+  HatchTag hatch;
   std::vector<DrawnPoint> samples;
 };
 
-// Every decal stroke of the scene's stroke files, file after file, resampled (1. above).
+// Every decal stroke of the scene's stroke files, file after file, then every hatch
+// (hatch_polylines), resampled (1. above).
 std::vector<DecalSamples> decal_samples(const Scene& scene);
+// Whether the scene has decals or hatching.
 bool has_decals(const Scene& scene);
+
+// The polyline's length in px of its window.
+double drawn_length(const std::vector<DrawnPoint>& points);
+// `points` at segments + 1 even arc-length fractions, pressure interpolated linearly.
+std::vector<DrawnPoint> resampled_evenly(const std::vector<DrawnPoint>& points, size_t segments);
 
 struct DecalPoint {
   uint32_t object = kMissed, face = 0;  // object: index in scene.objects; kMissed: the ray met nothing
@@ -64,7 +74,12 @@ struct DecalPoint {
 struct ProjectedDecal {
   StrokeStyle style;
   std::vector<DecalPoint> points;
+  HatchTag hatch;
 };
+
+// Where a surface point lies on its object (object space), and in the world.
+glm::dvec3 decal_point_local(const Scene& scene, const DecalPoint& p);
+glm::dvec3 decal_point_world(const Scene& scene, const DecalPoint& p);
 
 // One per decal stroke, in decal_samples' order: what a backend projects once and keeps
 // (HostData "decals.surface", kDecalSurface).

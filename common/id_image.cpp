@@ -72,7 +72,7 @@ uint32_t silhouette_value(const WindowPath& path, double s_mid) {
 }
 
 void add_path(const WindowPath& path, const StrokesParams& p, IdTriangles& tri) {
-  if (path.kind == LineKind::Decal) return;  // tested against its faces' keys (SPEC 4.9)
+  if (path.kind == LineKind::Decal || path.kind == LineKind::Hatching) return;  // tested against its faces' keys
   bool silhouette = path.kind == LineKind::Silhouette;
   if (silhouette && !path.front_facing) return;
   double width = silhouette ? p.id_silhouette_px : p.id_crease_px;

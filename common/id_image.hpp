@@ -30,6 +30,7 @@
 #include <glm/glm.hpp>
 
 #include "common/image.hpp"
+#include "common/hatching.hpp"
 #include "common/stage.hpp"
 #include "common/strokes.hpp"
 
@@ -55,7 +56,7 @@ ImageU32 keys_from_channels(const Image& channels);
 constexpr double kDepthTie = 1e-5;
 
 struct IdImageStage {
-  using Params = TypeList<StrokesParams>;
+  using Params = TypeList<StrokesParams, HatchingParams>;
   static StageDesc describe() {
     return {"id_image", StageKind::Frame, "ID reference image: faces, crease and silhouette quads (SPEC 4.4)", {"strokes"},
             {},

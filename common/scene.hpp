@@ -63,6 +63,8 @@ struct Scene {
   ParamSet params;
   StrokeStyles strokes;
   std::optional<Animation> animation;  // a camera path; none: one frame
+  int frame = 0;                       // the frame of `animation` this scene shows (scene_at_frame)
+  Camera path_start;                   // with frame > 0: the path's first camera (frame_camera)
   std::vector<StrokeFile> stroke_files;  // the artist's strokes (SPEC 4.9), key "stroke_files"
 };
 

@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 
+#include "common/host_data.hpp"
 #include "common/offset_synthesis.hpp"
 #include "common/stroke_textures.hpp"
 
@@ -18,6 +19,7 @@ const StrokeStyle& style_of(LineKind kind, const StrokeStyles& styles) {
     case LineKind::Border: return styles.border;
     case LineKind::Silhouette: break;
     case LineKind::Decal: break;  // its own style: RunStyles::of
+    case LineKind::Hatching: break;
   }
   return styles.silhouette;
 }
@@ -51,6 +53,12 @@ StrokeStyle decal_style(const StrokeStyle& decal, const WindowPath& path, const 
 
 StrokeStyle RunStyles::of(const WindowPath& path, const VisibleRun& run, size_t index) {
   if (path.kind == LineKind::Decal) return decal_style(decals_.at(path.decal), path, run);
+  if (path.kind == LineKind::Hatching) {  // SPEC 4.10: faded and thickened by its level of detail
+    StrokeStyle style = decal_style(decals_.at(path.decal), path, run);
+    style.alpha = float(style.alpha * path.alpha_scale);
+    style.width_px = float(style.width_px * path.width_scale);
+    return style;
+  }
   StrokeStyle style = style_of(path.kind, styles_);
   if (style.synthesis != OffsetSynthesis::Markov || !style.offsets) return style;
   auto it = chains_.find(path.kind);
@@ -71,6 +79,16 @@ std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visib
     for (const RibbonVertex& v : ribbon.triangles)
       out.push_back({v.position, v.uv, v.alpha, ribbon.color, float(int(style.texture))});
   }
+  return out;
+}
+
+std::map<std::string, double> stroke_counts(const HostData& host) {
+  const Visibility* v = host.find<Visibility>("visibility");
+  const WindowLines* lines = host.find<WindowLines>("strokes.lines");
+  std::map<std::string, double> out;
+  if (!v || !lines) return out;
+  out["strokes"] = double(v->runs.size());
+  for (const VisibleRun& run : v->runs) out[std::string("strokes.") + line_kind_name(lines->paths[run.path].kind)] += 1;
   return out;
 }
 

@@ -7,8 +7,9 @@
 //   a = a_v T(u, v)
 //   out = color a' + out (1 - a'),  a' = the paper's alpha transfer of a (SPEC 4.2)
 // premultiplied "over", ribbon after ribbon in path order (creases and borders, then
-// silhouettes, then decals, SPEC 4.9), triangle after triangle. Both backends draw the same triangles: the GPU as
-// one draw call, the reference through its scalar rasterizer.
+// silhouettes, then decals and hatches, SPEC 4.9-4.10), triangle after triangle. Both
+// backends draw the same triangles: the GPU as one draw call, the reference through its
+// scalar rasterizer.
 #pragma once
 
 #include <map>
@@ -36,7 +37,8 @@ static_assert(sizeof(StrokeVertex) == 9 * sizeof(float), "shaders/stroke.vert re
 // The style a run is drawn with: its line kind's, with the offsets example synthesized
 // over the run's length (SPEC 4.8) where the style asks for it, seeded by the scene seed
 // and the run's name (its path key and its index among the frame's runs); a decal's
-// (SPEC 4.9), with its drawn pressure over the run (common/decal.hpp 3.).
+// (SPEC 4.9), with its drawn pressure over the run (common/decal.hpp 3.); a hatch's the
+// same, its alpha and width times its level-of-detail factors (SPEC 4.10).
 class RunStyles {
  public:
   RunStyles(const StrokeStyles& styles, uint32_t seed, const std::vector<StrokeStyle>& decals)
@@ -54,6 +56,12 @@ class RunStyles {
 // (the scene's) seeds the offsets a style synthesizes (SPEC 4.8).
 std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visibility& visibility,
                                            const StrokeStyles& styles, uint32_t seed);
+
+// The strokes a frame draws: its visible runs per line kind, keyed "strokes.<kind>", and
+// their sum, "strokes" (what Kalnins et al.'s Table 1 counts); empty when the frame's
+// `host` data holds no visibility.
+class HostData;
+std::map<std::string, double> stroke_counts(const HostData& host);
 
 // The stroke textures, one per StrokeTextureKind, from the scene seed.
 std::vector<Image> stroke_texture_layers(uint32_t seed);

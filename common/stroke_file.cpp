@@ -96,7 +96,7 @@ class StrokeFileReader {
   }
 
   DrawnStroke stroke(const json& j, const std::string& path, const std::string& file_style) const {
-    only_keys(j, path, {"role", "points", "style", "group"});
+    only_keys(j, path, {"role", "points", "style", "group", "free"});
     DrawnStroke s;
     s.role = role(j.contains("role") ? j["role"] : json(), path + "/role");
     if (!j.contains("points") || !j["points"].is_array() || j["points"].size() < 2)
@@ -111,9 +111,15 @@ class StrokeFileReader {
         fail(path + "/group", "expected a whole number in 0..1000000");
       s.group = int(j["group"].get<int64_t>());
     }
-    if (j.contains("style") && s.role != StrokeRole::Decal) fail(path + "/style", "only decals name a style");
+    if (j.contains("free")) {
+      if (s.role != StrokeRole::Hatching) fail(path + "/free", "only hatching strokes are free or structured");
+      if (!j["free"].is_boolean()) fail(path + "/free", "expected true or false");
+      s.free = j["free"].get<bool>();
+    }
+    bool on_surface = s.role == StrokeRole::Decal || s.role == StrokeRole::Hatching;
+    if (j.contains("style") && !on_surface) fail(path + "/style", "only decals and hatching name a style");
     s.style_name = j.contains("style") ? text(j["style"], path + "/style") : file_style;
-    if (s.role == StrokeRole::Decal) s.style = style(s.style_name.empty() ? kDefaultDecalStyle : s.style_name,
+    if (on_surface) s.style = style(s.style_name.empty() ? kDefaultDecalStyle : s.style_name,
                                                      j.contains("style") ? path + "/style" : "/style");
     return s;
   }
@@ -186,8 +192,10 @@ std::string stroke_file_json(const StrokeFile& file, glm::dvec3 origin) {
     json points = json::array();
     for (const DrawnPoint& p : s.points) points.push_back({p.window.x, p.window.y, p.pressure});
     json one = {{"role", stroke_role_names()[size_t(s.role)]}, {"points", points}};
-    if (s.role == StrokeRole::Decal && !s.style_name.empty() && s.style_name != file.style) one["style"] = s.style_name;
+    bool on_surface = s.role == StrokeRole::Decal || s.role == StrokeRole::Hatching;
+    if (on_surface && !s.style_name.empty() && s.style_name != file.style) one["style"] = s.style_name;
     if (s.role == StrokeRole::Hatching) one["group"] = s.group;
+    if (s.free) one["free"] = true;
     strokes.push_back(one);
   }
   // One line a key, one line a stroke: a file a person can read and edit.

@@ -5,14 +5,17 @@
 //    "resolution": [W, H],                     the window the strokes were drawn in
 //    "style": PRESET_OR_FILE,                  optional: the decals' style where a stroke names none
 //    "strokes": [{"role": ROLE, "points": [[x, y, pressure], ...],
-//                 "style": PRESET_OR_FILE,     optional, decals only
-//                 "group": G}, ...]}           hatching only: the group's number (>= 0)
+//                 "style": PRESET_OR_FILE,     optional, decals and hatching
+//                 "group": G,                  hatching only: the group's number (>= 0)
+//                 "free": true}, ...]}         hatching only, optional: a free group (SPEC 4.10)
 // Points are window pixels of SPEC 0 (origin bottom-left), pressure in [0, 1]; a stroke
 // has 2 points or more. ROLE is
 //   - "decal": a stroke fixed on the surface where it was drawn (common/decal.hpp);
 //   - "crease", "silhouette": an offset example for that kind of line (SPEC 4.8);
-//   - "hatching": a stroke of hatching group G (SPEC 4.10).
-// Every role is read and kept; decals are drawn (the rest is for the stages that use them).
+//   - "hatching": a stroke of hatching group G (SPEC 4.10, common/hatching.hpp): structured
+//     unless "free" says otherwise; a group's strokes are all structured or all free.
+// Every role is read and kept; decals and hatching are drawn (crease and silhouette
+// examples are read and kept for the stages that will use them).
 // A scene lists its stroke files under "stroke_files" (docs/scene-format.md); a refusal
 // throws SceneError naming the stroke file and the JSON path, as scene files do.
 #pragma once
@@ -42,8 +45,9 @@ struct DrawnStroke {
   StrokeRole role = StrokeRole::Decal;
   std::vector<DrawnPoint> points;
   std::string style_name;            // as the file gives it (the stroke's, else the file's); may be empty
-  std::optional<StrokeStyle> style;  // decals: loaded from style_name (ink when neither names one)
+  std::optional<StrokeStyle> style;  // decals, hatching: loaded from style_name (ink when neither names one)
   int group = -1;                    // hatching: the group
+  bool free = false;                 // hatching: a free group's stroke (else structured)
 };
 
 struct StrokeFile {
@@ -54,7 +58,7 @@ struct StrokeFile {
   std::vector<DrawnStroke> strokes;
 };
 
-// The decals' style where neither the stroke nor the file names one.
+// The style of decals and hatching where neither the stroke nor the file names one.
 inline constexpr const char* kDefaultDecalStyle = "ink";
 
 // Reads a stroke file; `origin` is the scene's (Scene::origin), `base_dir` resolves style

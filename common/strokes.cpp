@@ -96,21 +96,24 @@ class PathBuilder {
     flush(piece);
   }
 
-  // Adds the pieces of decal `index` (SPEC 4.9): split where a point missed the surface,
-  // where the object changes and at the near plane.
-  void add_decal(const ProjectedDecal& decal, uint32_t index) {
-    WindowPath piece = decal_piece(kMissed, index);
+  // Adds the pieces of surface stroke `index` (SPEC 4.9-4.10), a decal or a hatch with its
+  // weight: split where a point missed the surface, where the object changes and at the
+  // near plane.
+  void add_decal(const ProjectedDecal& decal, uint32_t index, const HatchWeight& weight) {
+    WindowPath start = decal_piece(kMissed, index, decal.hatch.group >= 0, weight), piece = start;
+    auto restart = [&](uint32_t object) {
+      flush_decal(piece);
+      piece = start;
+      piece.object = object;
+    };
     for (const DecalPoint& d : decal.points) {
-      if (d.object != piece.object) flush_decal(piece), piece = decal_piece(d.object, index);
+      if (d.object != piece.object) restart(d.object);
       if (d.object == kMissed) continue;
-      const SceneObject& o = scene_.objects[d.object];
-      const glm::uvec3& t = o.mesh->triangles[d.face];
-      glm::dvec3 local = d.bary.x * glm::dvec3(o.mesh->positions[t[0]]) +
-                         d.bary.y * glm::dvec3(o.mesh->positions[t[1]]) +
-                         d.bary.z * glm::dvec3(o.mesh->positions[t[2]]);
-      glm::dvec3 w = glm::dvec3(glm::dmat4(o.transform) * glm::dvec4(local, 1.0)), win = project_(w);
+      glm::dvec3 local = decal_point_local(scene_, d);
+      glm::dvec3 w = glm::dvec3(glm::dmat4(scene_.objects[d.object].transform) * glm::dvec4(local, 1.0));
+      glm::dvec3 win = project_(w);
       if (win.z < double(scene_.camera.near)) {
-        flush_decal(piece), piece = decal_piece(d.object, index);
+        restart(d.object);
         continue;
       }
       piece.surface.push_back({d.face, d.bary, local});
@@ -136,11 +139,12 @@ class PathBuilder {
     return keys;
   }
 
-  WindowPath decal_piece(uint32_t object, uint32_t index) const {
-    return {LineKind::Decal, object, false, true, 0, {}, {}, {}, {}, {}, {}, 0, {}, index};
+  static WindowPath decal_piece(uint32_t object, uint32_t index, bool hatch, const HatchWeight& weight) {
+    return {hatch ? LineKind::Hatching : LineKind::Decal, object, false, true, 0, {}, {}, {}, {}, {}, {}, 0, {},
+            index, weight.alpha, weight.width};
   }
 
-  // A decal's segments test the faces of their ends.
+  // A decal's or hatch's segments test the faces of their ends.
   void flush_decal(WindowPath& piece) {
     for (size_t k = 0; k + 1 < piece.surface.size(); ++k)
       piece.front_faces.push_back({out_.face_key(piece.object, piece.surface[k].face),
@@ -192,9 +196,10 @@ const char* line_kind_name(LineKind kind) {
     case LineKind::Crease: return "crease";
     case LineKind::Border: return "border";
     case LineKind::Silhouette: return "silhouette";
-    case LineKind::Decal: break;
+    case LineKind::Decal: return "decal";
+    case LineKind::Hatching: break;
   }
-  return "decal";
+  return "hatching";
 }
 
 WindowProjection::WindowProjection(const Camera& camera, int width, int height)
@@ -240,11 +245,13 @@ WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects
     for (const FeaturePath& path : lines.silhouettes) builder.add(path, LineKind::Silhouette, i, nullptr);
   }
   assign_keys(out);
-  if (decals)
-    for (uint32_t d = 0; d < decals->size(); ++d) {
-      out.decal_styles.push_back((*decals)[d].style);
-      builder.add_decal((*decals)[d], d);
-    }
+  if (!decals) return out;
+  out.hatching = hatch_states(scene, *decals, scene.params.get<HatchingParams>());
+  std::vector<HatchWeight> weights = hatch_weights(out.hatching, *decals);
+  for (uint32_t d = 0; d < decals->size(); ++d) {
+    out.decal_styles.push_back((*decals)[d].style);
+    if (weights[d].alpha > 0) builder.add_decal((*decals)[d], d, weights[d]);
+  }
   return out;
 }
 

@@ -8,8 +8,8 @@
 //   - crease and border path i: face_count + 1 + i;
 //   - silhouette path j: silhouette_base + j, drawn as key << 8 | floor(255 s / L), with
 //     silhouette_base the smallest key whose shifted values lie above every other key;
-//   - decal paths (SPEC 4.9, common/decal.hpp) have none: they are not drawn in the ID
-//     image, their samples test their faces' keys.
+//   - decal and hatching paths (SPEC 4.9-4.10, common/decal.hpp, common/hatching.hpp) have
+//     none: they are not drawn in the ID image, their samples test their faces' keys.
 // A scene whose keys do not fit 32 bits is refused (std::length_error, with the counts).
 //
 // Window coordinates are SPEC 0's (pixels, origin bottom-left); depth is linear view depth
@@ -24,6 +24,7 @@
 #include <glm/glm.hpp>
 
 #include "common/feature_lines.hpp"
+#include "common/hatching.hpp"
 #include "common/scene.hpp"
 
 namespace plumbago {
@@ -49,7 +50,7 @@ struct StrokesParams {
   }
 };
 
-enum class LineKind : uint8_t { Crease, Border, Silhouette, Decal };
+enum class LineKind : uint8_t { Crease, Border, Silhouette, Decal, Hatching };
 const char* line_kind_name(LineKind kind);
 
 struct WindowPath {
@@ -62,22 +63,26 @@ struct WindowPath {
   std::vector<glm::dvec2> window;  // pixels, origin bottom-left
   std::vector<double> depth;       // linear view depth
   // Creases and borders: per segment (point k to k + 1, the closing one last), the keys
-  // of its adjacent faces that face the eye (0 where none). Decals: the keys of the faces
-  // its two ends lie on.
+  // of its adjacent faces that face the eye (0 where none). Decals and hatches: the keys of
+  // the faces its two ends lie on.
   std::vector<glm::uvec2> front_faces;
   std::vector<double> arc_px;  // window arc length at each point (the closing point last)
   double length_px = 0;        // the whole window length (closed: around the loop)
-  // Decals: the drawn pressure at each point, and the decal's index in WindowLines::decal_styles.
+  // Decals and hatches: the drawn pressure at each point, the index of its surface stroke
+  // in WindowLines::decal_styles, and (hatches) this frame's factors of alpha and width
+  // (common/hatching.hpp 4.).
   std::vector<double> pressure;
   uint32_t decal = 0;
+  double alpha_scale = 1, width_scale = 1;
 };
 
 struct WindowLines {
-  std::vector<WindowPath> paths;  // creases and borders first, then silhouettes, then decals
+  std::vector<WindowPath> paths;  // creases and borders first, then silhouettes, then decals and hatches
   std::vector<uint32_t> first_face;  // per scene object
   uint32_t face_count = 0, silhouette_base = 0;
   int width = 0, height = 0;
-  std::vector<StrokeStyle> decal_styles;  // per decal stroke (common/decal.hpp DecalSurface)
+  std::vector<StrokeStyle> decal_styles;  // per surface stroke (common/decal.hpp DecalSurface)
+  std::vector<HatchGroupState> hatching;  // per hatching group: its level of detail this frame
 
   uint32_t face_key(uint32_t object, uint32_t face) const { return first_face[object] + face + 1; }
 };
@@ -93,8 +98,9 @@ struct LineMeshes;
 std::shared_ptr<const LineMeshes> line_meshes(const Scene& scene, const StrokesParams& p, LineObjects which);
 
 // `prepared` (from line_meshes with the same scene, parameters and `which`) or none;
-// `decals`, the decals' surface points (SPEC 4.9, common/decal.hpp), placed after the
-// feature lines, or none.
+// `decals`, the surface points of decals and hatches (SPEC 4.9-4.10, common/decal.hpp),
+// placed after the feature lines, or none; a hatch absent at this frame's level of detail
+// (weight 0) is left out.
 struct ProjectedDecal;
 using DecalSurface = std::vector<ProjectedDecal>;  // common/decal.hpp
 WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which = LineObjects::Strokes,

@@ -174,11 +174,12 @@ std::vector<DrawnStroke> svg_strokes(const std::string& svg, const std::string& 
       s.role = e.attributes.count("data-role") ? role_named(reader, e, e.attributes.at("data-role")) : defaults.role;
       std::vector<double> p = pressures(reader, e, line.size(), widest);
       for (size_t k = 0; k < line.size(); ++k) s.points.push_back({reader.window(line[k]), p[k]});
-      if (s.role == StrokeRole::Decal)
+      if (s.role == StrokeRole::Decal || s.role == StrokeRole::Hatching)
         s.style_name = e.attributes.count("data-style") ? e.attributes.at("data-style") : defaults.style;
       if (s.role == StrokeRole::Hatching) {
         std::vector<double> g = numbers(e.attributes.count("data-group") ? e.attributes.at("data-group") : "");
         s.group = g.empty() ? defaults.group : int(g[0]);
+        s.free = e.attributes.count("data-free") ? e.attributes.at("data-free") == "true" : defaults.free;
       }
       out.push_back(std::move(s));
     }

@@ -6,8 +6,9 @@
 //   - pressure: `data-pressure` (one number in [0, 1] for every point, or one per point),
 //     else its stroke width (the `stroke-width` attribute or style property) over the
 //     widest stroke width of the drawing, else 1;
-//   - `data-role` (decal, crease, silhouette, hatching), `data-style` (decals' preset or
-//     style file), `data-group` (hatching): override the command's --role, --style, --group.
+//   - `data-role` (decal, crease, silhouette, hatching), `data-style` (the preset or style
+//     file of decals and hatching), `data-group` and `data-free="true"` (hatching): override
+//     the command's --role, --style, --group, --free.
 // Coordinates are the SVG's user units: the root's viewBox (else its width and height,
 // else the window) is mapped onto the window, y flipped (SVG's origin is top-left, the
 // window's bottom-left, SPEC 0). Curves (C, S, Q, T, A) and `transform` attributes are
@@ -25,6 +26,7 @@ struct SvgStrokeDefaults {
   StrokeRole role = StrokeRole::Decal;
   std::string style;  // empty: the stroke file names none
   int group = 0;      // hatching
+  bool free = false;  // hatching: a free group
 };
 
 // The strokes of an SVG document in a width x height window; throws std::invalid_argument

@@ -49,6 +49,9 @@ VisibilitySample sample_at(const WindowPath& p, double s) {
   if (p.kind == LineKind::Decal) {  // SPEC 4.9: the face of the nearer end
     v.kind = kDecalSample;
     v.faces[0] = at.t < 0.5 ? p.front_faces[at.segment].x : p.front_faces[at.segment].y;
+  } else if (p.kind == LineKind::Hatching) {  // SPEC 4.10: the faces of both ends
+    v.kind = kHatchingSample;
+    v.faces[0] = p.front_faces[at.segment].x, v.faces[1] = p.front_faces[at.segment].y;
   } else if (v.kind == kSilhouetteSample) {
     double wrapped = p.closed && p.length_px > 0 ? std::fmod(s, p.length_px) : s;
     v.byte = p.length_px > 0 ? uint32_t(std::clamp(std::floor(255.0 * wrapped / p.length_px), 0.0, 255.0)) : 0;
@@ -227,6 +230,7 @@ class RunBuilder {
 bool holds(uint32_t value, const VisibilitySample& s) {
   if (value == 0) return false;
   if (s.kind == kDecalSample) return value == s.faces[0];
+  if (s.kind == kHatchingSample) return value == s.faces[0] || value == s.faces[1];
   if (s.kind == kCreaseSample) return value == s.key || value == s.faces[0] || value == s.faces[1];
   if (value >> 8 != s.key) return false;
   int d = std::abs(int(value & 0xffu) - int(s.byte));
@@ -239,9 +243,9 @@ bool holds(uint32_t value, const VisibilitySample& s) {
 bool sample_visible(const ImageU32& keys, const VisibilitySample& s) {
   bool near_window = s.window.x > -2 && s.window.y > -2 && s.window.x < keys.width + 2 && s.window.y < keys.height + 2;
   if (!near_window) return false;  // NaN too
-  int x = int(std::floor(s.window.x)), y = int(std::floor(s.window.y));
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx) {
+  int x = int(std::floor(s.window.x)), y = int(std::floor(s.window.y)), r = s.kind == kHatchingSample ? 2 : 1;
+  for (int dy = -r; dy <= r; ++dy)
+    for (int dx = -r; dx <= r; ++dx) {
       int px = x + dx, py = y + dy;
       if (px >= 0 && py >= 0 && px < keys.width && py < keys.height && holds(keys.at(px, py), s)) return true;
     }

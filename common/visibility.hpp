@@ -3,14 +3,16 @@
 // Each path of common/strokes.hpp is sampled every `strokes.vis_step_px` pixels of window
 // arc length from its start (an open path also at its end), where it runs within 4 px of
 // the window; where it leaves or enters that, one sample marks the edge (hidden). A sample at window position
-// p, in pixel floor(p), is visible when some pixel of the 3x3 box around it holds
+// p, in pixel floor(p), is visible when some pixel of the 3x3 box around it (5x5 for hatches) holds
 //   - a silhouette: its path key, with an arc-length byte within
 //     ceil(2 max(2, 256 / L_px)) of its own floor(255 s / L) (around the seam of a
 //     closed path, the shorter way);
 //   - a crease or border: its path key, or the key of a front-facing face next to it;
 //   - a decal (a stroke fixed on the surface, SPEC 4.9, common/decal.hpp): the key of the
-//     face of the nearer of its segment's two path points. (Hatching samples, 2 px and a
-//     group of faces, come with the hatching groups of SPEC 4.10.)
+//     face of the nearer of its segment's two path points;
+//   - a hatch (SPEC 4.10, common/hatching.hpp), in the 5x5 box (2 px): the key of the face of
+//     either of its segment's two path points. (SPEC's "a face of its group": a hatch lies
+//     on the faces its own points were projected onto, the interpolated ones too.)
 // Back-facing silhouettes are not in the ID image, so never visible.
 //
 // Where two neighbouring samples disagree, the change is bisected along the path (new
@@ -34,14 +36,15 @@
 
 namespace plumbago {
 
-enum SampleKind : uint32_t { kCreaseSample = 0, kSilhouetteSample = 1, kDecalSample = 2 };
+enum SampleKind : uint32_t { kCreaseSample = 0, kSilhouetteSample = 1, kDecalSample = 2, kHatchingSample = 3 };
 
 // One sample as both backends read it (std430 layout: 32 bytes).
 struct VisibilitySample {
   glm::vec2 window;
   uint32_t kind;         // SampleKind
   uint32_t key;          // the path key
-  uint32_t faces[2];     // crease or border: front-facing adjacent faces (0: none); decal: its face, 0
+  uint32_t faces[2];     // crease or border: front-facing adjacent faces (0: none); decal: its face, 0;
+                         // hatch: its segment's two faces
   uint32_t byte;         // silhouette: floor(255 s / L)
   uint32_t byte_window;  // silhouette: ceil(2 max(2, 256 / L_px)), at most 255; bit 8: a closed path
 };

@@ -54,7 +54,7 @@ DecalSurface project_decals_through_gbuffer(const Scene& scene) {
   for (const DecalSamples& d : decal_samples(scene)) {
     auto it = ids.find(d.file);
     if (it == ids.end()) it = ids.emplace(d.file, ids_seen_from(scene, *d.file)).first;
-    ProjectedDecal decal{*d.stroke->style, {}};
+    ProjectedDecal decal{*d.style, {}, d.hatch};
     for (const DrawnPoint& p : d.samples) decal.points.push_back(surface_point(it->second, world, *d.file, p));
     out.push_back(std::move(decal));
   }

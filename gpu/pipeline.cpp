@@ -5,6 +5,7 @@
 #include "common/passes.hpp"
 #include "common/preprocess.hpp"
 #include "common/sketchy.hpp"
+#include "common/stroke.hpp"
 #include "gpu/context.hpp"
 #include "gpu/stage.hpp"
 #include "gpu/timer.hpp"
@@ -91,6 +92,7 @@ Frame Renderer::render(const FrameOptions& options) {
   frame.color = color.empty() ? Image(scene.width, scene.height, 3, 1.0f) : download_texture(state_->frame.output(color), 3);
   frame.ran.push_back({"readback", readback.ms()});
   if (options.keep_buffers) frame.buffers = state_->dump();
+  frame.counts = stroke_counts(state_->frame.host);
   Context::get().check_errors("reading back the frame");
   return frame;
 }

@@ -33,7 +33,7 @@ DecalSurface project_decals_by_rays(const Scene& scene) {
   RayScene rays(world_geometry(scene));
   DecalSurface out;
   for (const DecalSamples& d : decal_samples(scene)) {
-    ProjectedDecal decal{*d.stroke->style, {}};
+    ProjectedDecal decal{*d.style, {}, d.hatch};
     for (const DrawnPoint& p : d.samples) decal.points.push_back(first_surface_hit(rays.get(), *d.file, p));
     out.push_back(std::move(decal));
   }

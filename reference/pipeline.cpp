@@ -3,6 +3,7 @@
 #include "common/passes.hpp"
 #include "common/preprocess.hpp"
 #include "common/sketchy.hpp"
+#include "common/stroke.hpp"
 
 namespace plumbago::reference {
 
@@ -25,6 +26,7 @@ Frame render(const Scene& scene, const FrameOptions& options) {
   std::string color = frame_color_buffer(f.stages);  // none without effects: the blank page
   frame.color = color.empty() ? Image(scene.width, scene.height, 3, 1.0f) : f.image(color);
   if (options.keep_buffers) frame.buffers = dump(f);
+  frame.counts = stroke_counts(f.host);
   return frame;
 }
 

@@ -5,7 +5,7 @@ layout(local_size_x = 64) in;
 
 struct Sample {
   vec2 window;
-  uint kind;  // 0 crease or border, 1 silhouette, 2 decal (common/visibility.hpp SampleKind)
+  uint kind;  // 0 crease or border, 1 silhouette, 2 decal, 3 hatch (common/visibility.hpp SampleKind)
   uint key;
   uint faces[2];
   uint byte_value;
@@ -20,6 +20,7 @@ uniform uint first_sample;  // of this dispatch (a batch may take several: 65535
 bool holds(uint value, Sample s) {
   if (value == 0u) return false;
   if (s.kind == 2u) return value == s.faces[0];
+  if (s.kind == 3u) return value == s.faces[0] || value == s.faces[1];
   if (s.kind == 0u) return value == s.key || value == s.faces[0] || value == s.faces[1];
   if ((value >> 8) != s.key) return false;
   int d = abs(int(value & 0xffu) - int(s.byte_value));
@@ -36,8 +37,9 @@ void main() {
   bool visible = false;
   if (near_window) {
     ivec2 p = ivec2(floor(s.window));
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
+    int r = s.kind == 3u ? 2 : 1;
+    for (int dy = -r; dy <= r; ++dy)
+      for (int dx = -r; dx <= r; ++dx) {
         ivec2 q = p + ivec2(dx, dy);
         if (all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, size))) {
           uvec2 halves = texelFetch(ids, q, 0).xy;

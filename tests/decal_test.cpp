@@ -3,6 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
 
 #include "common/decal.hpp"
 #include "common/id_image.hpp"
@@ -41,7 +45,9 @@ TEST(StrokeFile, EveryRoleIsKept) {
   EXPECT_EQ(f.strokes[3].role, StrokeRole::Silhouette);
   EXPECT_EQ(f.strokes[4].role, StrokeRole::Hatching);
   EXPECT_EQ(f.strokes[4].group, 3);
-  EXPECT_FALSE(f.strokes[4].style.has_value());
+  EXPECT_EQ(f.strokes[4].style_name, "pencil");  // the file's
+  EXPECT_TRUE(f.strokes[4].style.has_value());
+  EXPECT_FALSE(f.strokes[4].free);
   StrokeFile again = parse_stroke_file(stroke_file_json(f, glm::dvec3(0, 0, 1)), "g.json", ".", glm::dvec3(0, 0, 1));
   EXPECT_EQ(again.strokes.size(), 5u);
   EXPECT_EQ(again.strokes[1].style_name, "ink");
@@ -91,6 +97,24 @@ TEST(StrokeFile, ScenesListThemRelativeToTheirFolder) {
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("none.json: cannot read the stroke file"), std::string::npos) << e.what();
   }
+}
+
+// The stroke files' JSON Schema names the program's roles, and the stroke files of scenes/
+// use only the keys it lists.
+TEST(StrokeFile, SchemaMatchesTheReaderAndTheFiles) {
+  std::ifstream in(std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/stroke_file.schema.json");
+  nlohmann::json schema = nlohmann::json::parse(in), stroke = schema["properties"]["strokes"]["items"];
+  EXPECT_EQ(stroke["properties"]["role"]["enum"].get<std::vector<std::string>>(), stroke_role_names());
+  size_t files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/drawn")) {
+    if (!e.path().string().ends_with(".strokes.json")) continue;
+    ++files;
+    nlohmann::json f = nlohmann::json::parse(std::ifstream(e.path()));
+    for (const auto& item : f.items()) EXPECT_TRUE(schema["properties"].contains(item.key())) << e.path() << item.key();
+    for (const nlohmann::json& s : f["strokes"])
+      for (const auto& item : s.items()) EXPECT_TRUE(stroke["properties"].contains(item.key())) << e.path() << item.key();
+  }
+  EXPECT_GE(files, 2u);
 }
 
 // A scene with strokes drawn over its own render: horizontal strokes every 12 px across the

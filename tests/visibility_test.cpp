@@ -50,6 +50,13 @@ TEST(Visibility, EachKindOfSampleByHand) {
   EXPECT_FALSE(sample_visible(k, sample(-5.0f, 1.5f, kDecalSample, 0, kFace)));  // off the image
   float nan = std::numeric_limits<float>::quiet_NaN();
   EXPECT_FALSE(sample_visible(k, sample(nan, 1.5f, kDecalSample, 0, kFace)));
+  // A hatch reaches 2 px (SPEC 4.10), either of its two faces.
+  EXPECT_TRUE(sample_visible(k, sample(10.5f, 4.5f, kHatchingSample, 0, kCreasePath)));   // 2 px from the column
+  EXPECT_FALSE(sample_visible(k, sample(11.5f, 4.5f, kHatchingSample, 0, kCreasePath)));  // 3 px
+  EXPECT_FALSE(sample_visible(k, sample(10.5f, 4.5f, kDecalSample, 0, kCreasePath)));     // a decal reaches 1
+  VisibilitySample second = sample(10.5f, 4.5f, kHatchingSample, 0, 6);
+  second.faces[1] = kCreasePath;
+  EXPECT_TRUE(sample_visible(k, second));
 }
 
 class VisibilityBackends : public testing::GlTest {};
@@ -66,7 +73,7 @@ TEST_F(VisibilityBackends, TheComputeShaderGivesTheSameFlags) {
   for (uint32_t& k : keys.data) k = key();
   std::vector<VisibilitySample> samples;
   for (int i = 0; i < 5000; ++i) {
-    uint32_t kind = uint32_t(rng.uniform() * 3), face = uint32_t(rng.uniform() * 6);
+    uint32_t kind = uint32_t(rng.uniform() * 4), face = uint32_t(rng.uniform() * 6);
     samples.push_back({{float(rng.uniform(-3, 67)), float(rng.uniform(-3, 51))}, kind,
                        kind == kSilhouetteSample ? 40 + uint32_t(rng.uniform() * 3) : uint32_t(rng.uniform() * 6),
                        {face, uint32_t(rng.uniform() * 6)}, uint32_t(rng.uniform() * 256),
