@@ -10,8 +10,9 @@
 //    sample whose ray meets nothing is kept as missed and splits the stroke. The backends
 //    find the face each their own way:
 //      - GPU (gpu/decal.cpp): the G-buffer rendered with that camera gives the faces seen
-//        at the pixel centers of the 3x3 pixels around p (its ids); of those, the one the
-//        ray through p meets first (decal_ray_hit, in double) is the face, and its
+//        at the pixel centers of the 3x3 pixels around p (its ids); of those (or, when the
+//        ray meets none, of the faces sharing a vertex with them: a sliver may cover no
+//        pixel center), the one the ray through p meets first (decal_ray_hit, in double) is the face, and its
 //        barycentrics are where the ray meets it (the G-buffer's own barycentrics are the
 //        pixel center's, up to half a pixel away);
 //      - reference (reference/decal.cpp): an Embree ray through p.

@@ -125,6 +125,22 @@ Mesh cylinder(float res) {
   return m;
 }
 
+// A cone along z: its base a disc of radius 0.5 at z = -1, its apex at z = 1, the side in
+// rings that shrink toward the apex (the snowman's nose and trees, Kalnins et al. Fig. 8).
+Mesh cone(float res) {
+  int n = segments(64, res), rows = segments(12, res);
+  Mesh m;
+  std::vector<unsigned> rings;
+  for (int r = 0; r < rows; ++r) {
+    float t = float(r) / float(rows);
+    rings.push_back(add_ring(m, circle({0, 0}, 0.5f * (1 - t), n), -1 + 2 * t));
+  }
+  for (int r = 0; r + 1 < rows; ++r) stitch(m, rings[r], rings[r + 1], unsigned(n));
+  add_fan(m, rings.front(), unsigned(n), {0, 0, -1}, false);
+  add_fan(m, rings.back(), unsigned(n), {0, 0, 1}, true);
+  return m;
+}
+
 // The box [lo, hi] as a rectangular wall along z with two capped fans: 12 crease edges.
 void add_box(Mesh& m, glm::vec3 lo, glm::vec3 hi) {
   auto rings = add_wall(m, {{lo.x, lo.y}, {hi.x, lo.y}, {hi.x, hi.y}, {lo.x, hi.y}}, lo.z, hi.z, 1);
@@ -214,7 +230,7 @@ using Maker = Mesh (*)(float resolution);
 const std::vector<std::pair<std::string, Maker>>& makers() {
   static const std::vector<std::pair<std::string, Maker>> table = {
       {"torus", torus}, {"sphere", sphere}, {"cad", cad_part}, {"plane", plane}, {"cylinder", cylinder}, {"cube", cube},
-      {"storefront", storefront}};
+      {"storefront", storefront}, {"cone", cone}};
   return table;
 }
 

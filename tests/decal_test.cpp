@@ -187,9 +187,9 @@ TEST_P(DecalProjection, BackendsAgree) {
   EXPECT_LE(a.max_bary_difference, 1e-3);  // Embree's float u, v against double (measured 4.6e-4, teapot)
   EXPECT_LE(a.differ_on_edge, a.points / 100);
   EXPECT_LE(a.differ_near_silhouette, a.points / 100);
-  // Measured 0 (sphere), 6 (torus), 12 (cad, 0.38%), 9 (teapot): not yet explained (a face
-  // no pixel center around the sample sees?); bounded, to be investigated.
-  EXPECT_LE(a.differ_elsewhere, a.points / 200);
+  // Measured 0 on all four since the GPU tries the faces around those it sees; before, 6
+  // (torus), 12 (cad, 0.38%) and 9 (teapot): slivers that cover no pixel center.
+  EXPECT_LE(a.differ_elsewhere, a.points / 2000);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, DecalProjection, ::testing::Values("sphere", "torus", "cad", "teapot"));

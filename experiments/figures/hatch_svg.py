@@ -8,13 +8,14 @@ it. `plumbago strokefile SCENE out.svg --role hatching` makes it a stroke file (
       --group 0 > hatches.svg
 
 Window coordinates (origin bottom-left, SPEC 0) on the command line; the SVG's y runs down.
+draw_stand_ins.py uses hatches() and svg() for the scenes of Kalnins et al.'s Table 1.
 """
 import argparse
 import math
 import random
 
 
-def clip(points, inside):
+def longest_inside(points, inside):
     """The longest run of consecutive points that are inside."""
     best, run = [], []
     for p in points:
@@ -23,34 +24,41 @@ def clip(points, inside):
     return best
 
 
-def hatch_lines(a):
-    """The strokes, window coordinates, as lists of (x, y, pressure)."""
-    rng = random.Random(a.seed)
-    cx, cy, r = a.disc if a.disc else ((a.box[0] + a.box[2]) / 2, (a.box[1] + a.box[3]) / 2,
-                                       math.hypot(a.box[2] - a.box[0], a.box[3] - a.box[1]) / 2)
-    d = (math.cos(math.radians(a.angle)), math.sin(math.radians(a.angle)))
+def hatches(inside, center, reach, angle, spacing, rng, wobble=0.8, min_length=20):
+    """Strokes at `angle` degrees, `spacing` px apart, over the disc of radius `reach` around
+    `center`, each the longest run of it where inside(x, y): lists of (x, y, pressure)."""
+    d = (math.cos(math.radians(angle)), math.sin(math.radians(angle)))
     n = (-d[1], d[0])
-
-    def inside(p):
-        x, y = p[0] - cx, p[1] - cy
-        in_shape = (x * x + y * y <= r * r) if a.disc else (a.box[0] <= p[0] <= a.box[2] and a.box[1] <= p[1] <= a.box[3])
-        return in_shape and (not a.side or a.side[0] * x + a.side[1] * y >= a.side[2])
-
     strokes = []
-    offset = -r + a.spacing / 2
-    while offset < r:
-        o = offset + rng.uniform(-0.15, 0.15) * a.spacing
-        points = []
-        for k in range(int(2 * r / 3) + 1):
-            t = -r + 3 * k
-            wobble = a.wobble * math.sin(t / 37.0 + offset) + rng.uniform(-0.3, 0.3) * a.wobble
-            points.append((cx + d[0] * t + n[0] * (o + wobble), cy + d[1] * t + n[1] * (o + wobble)))
-        run = clip(points, inside)
-        if len(run) >= max(2, int(a.min_length / 3)):
+    offset = -reach + spacing / 2
+    while offset < reach:
+        o = offset + rng.uniform(-0.15, 0.15) * spacing
+        line = []
+        for k in range(int(2 * reach / 3) + 1):
+            t = -reach + 3 * k
+            w = wobble * math.sin(t / 37.0 + offset) + rng.uniform(-0.3, 0.3) * wobble
+            line.append((center[0] + d[0] * t + n[0] * (o + w), center[1] + d[1] * t + n[1] * (o + w)))
+        run = longest_inside(line, lambda p: inside(*p))
+        if len(run) >= max(2, int(min_length / 3)):
             m = len(run) - 1
             strokes.append([(x, y, 0.55 + 0.45 * math.sin(math.pi * i / m)) for i, (x, y) in enumerate(run)])
-        offset += a.spacing
+        offset += spacing
     return strokes
+
+
+def svg(width, height, elements):
+    """An SVG document of polylines: elements are (strokes, attributes) pairs, strokes lists of
+    (x, y, pressure) in window coordinates, attributes a dict of data-* values."""
+    out = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" viewBox="0 0 %d %d">'
+           % (width, height, width, height)]
+    for strokes, attributes in elements:
+        extra = "".join(' %s="%s"' % (k, v) for k, v in attributes.items())
+        for s in strokes:
+            pts = " ".join("%.2f,%.2f" % (x, height - y) for x, y, _ in s)
+            pressure = " ".join("%.2f" % q for _, _, q in s)
+            out.append('  <polyline%s data-pressure="%s" points="%s" fill="none" stroke="black"/>'
+                       % (extra, pressure, pts))
+    return "\n".join(out + ["</svg>"]) + "\n"
 
 
 def main():
@@ -69,15 +77,20 @@ def main():
     p.add_argument("--free", action="store_true", help="a free group (its own level of detail)")
     p.add_argument("--seed", type=int, default=1)
     a = p.parse_args()
-    w, h = a.size
-    print('<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" viewBox="0 0 %d %d">' % (w, h, w, h))
-    free = ' data-free="true"' if a.free else ""
-    for s in hatch_lines(a):
-        pts = " ".join("%.2f,%.2f" % (x, h - y) for x, y, _ in s)
-        pressure = " ".join("%.2f" % q for _, _, q in s)
-        print('  <polyline data-role="hatching" data-group="%d"%s data-pressure="%s" points="%s" fill="none" '
-              'stroke="black"/>' % (a.group, free, pressure, pts))
-    print("</svg>")
+    if a.disc:
+        cx, cy, r = a.disc
+        in_shape = lambda x, y: (x - cx) ** 2 + (y - cy) ** 2 <= r * r
+    else:
+        x0, y0, x1, y1 = a.box
+        cx, cy, r = (x0 + x1) / 2, (y0 + y1) / 2, math.hypot(x1 - x0, y1 - y0) / 2
+        in_shape = lambda x, y: x0 <= x <= x1 and y0 <= y <= y1
+    on_side = lambda x, y: not a.side or a.side[0] * (x - cx) + a.side[1] * (y - cy) >= a.side[2]
+    strokes = hatches(lambda x, y: in_shape(x, y) and on_side(x, y), (cx, cy), r, a.angle, a.spacing,
+                      random.Random(a.seed), a.wobble, a.min_length)
+    attributes = {"data-role": "hatching", "data-group": str(a.group)}
+    if a.free:
+        attributes["data-free"] = "true"
+    print(svg(a.size[0], a.size[1], [(strokes, attributes)]), end="")
 
 
 if __name__ == "__main__":
