@@ -164,6 +164,14 @@ class GroupScale {
     return drawn_ > 0 && std::isfinite(now / drawn_) ? now / drawn_ : 1.0;
   }
 
+  // The object most of the drawn points meet (kMissed when none does).
+  uint32_t object() const {
+    std::map<uint32_t, size_t> count;
+    for (uint32_t o : objects_) ++count[o];
+    auto most = std::max_element(count.begin(), count.end(), [](auto& a, auto& b) { return a.second < b.second; });
+    return most == count.end() ? kMissed : most->first;
+  }
+
   HatchLevels levels(int max_level) const {
     HatchLevels out;
     if (!group_.free) {
@@ -180,14 +188,13 @@ class GroupScale {
   }
 
  private:
-  // Structured: the drawn hatches' middle surface points; free: level 0's object.
+  // The objects of the drawn points; structured: the drawn hatches' middle surface points.
   void add_anchor(const ProjectedDecal& d) {
     std::vector<const DecalPoint*> hit;
     for (const DecalPoint& p : d.points)
       if (p.object != kMissed) hit.push_back(&p);
-    if (hit.empty()) return;
-    if (group_.free) objects_.push_back(hit[0]->object);
-    else backbone_.push_back(decal_point_world(scene_, *hit[hit.size() / 2]));
+    for (const DecalPoint* p : hit) objects_.push_back(p->object);
+    if (!hit.empty() && !group_.free) backbone_.push_back(decal_point_world(scene_, *hit[hit.size() / 2]));
   }
 
   double measure(const Camera& camera, int width, int height) const {
@@ -207,7 +214,7 @@ class GroupScale {
   // The object's bounding sphere's diameter in px at its distance (§5.4's sigma_m).
   double screen_diameter(const Camera& camera, int height) const {
     if (objects_.empty()) return 0;
-    const SceneObject& o = scene_.objects[objects_[0]];
+    const SceneObject& o = scene_.objects[object()];
     glm::dvec3 lo(INFINITY), hi(-INFINITY);
     for (const glm::vec3& v : o.mesh->positions) {
       glm::dvec3 w(glm::dmat4(o.transform) * glm::dvec4(glm::dvec3(v), 1.0));
@@ -246,7 +253,8 @@ std::vector<HatchGroupState> hatch_states(const Scene& scene, const std::vector<
     for (size_t k = 1; k < cameras.size(); ++k)
       lod = hatch_lod_step(lod, scale.sigma(cameras[k]), scene.animation->time_s(int(k)), levels, p);
     double now = scene.animation ? scene.animation->time_s(scene.frame) : 0.0;
-    out.push_back({groups[g].number, groups[g].free, scale.sigma(cameras.back()), lod, lod.progress(now, p.fade_s)});
+    out.push_back({groups[g].number, groups[g].free, scale.object(), scale.sigma(cameras.back()), lod,
+                   lod.progress(now, p.fade_s)});
   }
   return out;
 }

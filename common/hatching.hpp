@@ -113,10 +113,14 @@ HatchLod hatch_lod_step(const HatchLod& state, double sigma, double time_s, cons
 // The settled level for `sigma`, from level 0.
 HatchLod hatch_lod_settled(double sigma, const HatchLevels& levels, const HatchingParams& p);
 
-// A group at the frame `scene` shows: its sigma, its state, the transition's progress.
+// A group at the frame `scene` shows: its sigma, its state, the transition's progress,
+// and the object it lies on: the one most of its drawn points (level 0's) meet. Its
+// hatches' points on other objects are dropped (a hatch that strays past its object's
+// outline while drawn does not hatch what lies behind).
 struct HatchGroupState {
   int number;
   bool free;
+  uint32_t object;
   double sigma;
   HatchLod lod;
   double progress;

@@ -99,14 +99,16 @@ class PathBuilder {
   // Adds the pieces of surface stroke `index` (SPEC 4.9-4.10), a decal or a hatch with its
   // weight: split where a point missed the surface, where the object changes and at the
   // near plane.
-  void add_decal(const ProjectedDecal& decal, uint32_t index, const HatchWeight& weight) {
+  // `object`: a hatch's group's object (points elsewhere count as missed), else kMissed.
+  void add_decal(const ProjectedDecal& decal, uint32_t index, const HatchWeight& weight, uint32_t object) {
     WindowPath start = decal_piece(kMissed, index, decal.hatch.group >= 0, weight), piece = start;
     auto restart = [&](uint32_t object) {
       flush_decal(piece);
       piece = start;
       piece.object = object;
     };
-    for (const DecalPoint& d : decal.points) {
+    for (DecalPoint d : decal.points) {
+      if (object != kMissed && d.object != object) d.object = kMissed;
       if (d.object != piece.object) restart(d.object);
       if (d.object == kMissed) continue;
       glm::dvec3 local = decal_point_local(scene_, d);
@@ -250,7 +252,8 @@ WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects
   std::vector<HatchWeight> weights = hatch_weights(out.hatching, *decals);
   for (uint32_t d = 0; d < decals->size(); ++d) {
     out.decal_styles.push_back((*decals)[d].style);
-    if (weights[d].alpha > 0) builder.add_decal((*decals)[d], d, weights[d]);
+    int group = (*decals)[d].hatch.group;
+    if (weights[d].alpha > 0) builder.add_decal((*decals)[d], d, weights[d], group >= 0 ? out.hatching[group].object : kMissed);
   }
   return out;
 }

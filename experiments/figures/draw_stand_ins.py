@@ -171,11 +171,42 @@ def object_box(scene, obj, folder):
     return [c[:3] for c in corners], (m @ [*(lo + hi) / 2, 1])[:3]
 
 
+def render_scene(view, folder, out_png):
+    """`plumbago render` of a scene document written beside the scene (its paths relative)."""
+    with tempfile.NamedTemporaryFile("w", suffix=".json", dir=folder, delete=False) as f:
+        json.dump(view, f)
+    try:
+        program = os.environ.get("PLUMBAGO", os.path.join(ROOT, "build", "plumbago"))
+        subprocess.run([program, "render", f.name, "-o", out_png], check=True, stdout=subprocess.DEVNULL)
+    finally:
+        os.unlink(f.name)
+
+
+def object_mask(scene, cam, k, folder):
+    """Where object k shows in `cam`'s window, alone: what the artist hatches over in the PNG.
+    A function of window (x, y), origin bottom-left."""
+    import matplotlib.image
+    view = dict(scene, camera=cam.document(), objects=[scene["objects"][k]], effects=["basecoat"])
+    view["params"] = {"basecoat.preset": "solid", "basecoat.light_r": 0, "basecoat.light_g": 0, "basecoat.light_b": 0,
+                      "basecoat.light_a": 1}
+    for key in ("stroke_files", "animation"):
+        view.pop(key, None)
+    with tempfile.TemporaryDirectory() as tmp:
+        render_scene(view, folder, os.path.join(tmp, "mask.png"))
+        image = matplotlib.image.imread(os.path.join(tmp, "mask.png"))
+    h, w = image.shape[:2]
+
+    def inside(x, y):
+        i, j = int(h - 1 - y), int(x)
+        return 0 <= i < h and 0 <= j < w and image[i, j, 0] < 0.5
+    return inside
+
+
 def breakfast(scene, folder):
     base = Camera(scene["camera"], *scene["resolution"])
     light = scene["lights"][0]["direction"]
     drawings = []
-    for level, (cam, spacing) in enumerate(((base, 11), (base.closer(0.45), 9))):
+    for level, (cam, spacing) in enumerate(((base, 4), (base.closer(0.45), 5))):
         rng = random.Random(7 + level)
         elements = []
         for g, obj in enumerate(scene["objects"][1:]):
@@ -183,9 +214,9 @@ def breakfast(scene, folder):
             px = [cam.project(c) for c in corners]
             x0, x1 = min(p[0] for p in px), max(p[0] for p in px)
             y0, y1 = min(p[1] for p in px), max(p[1] for p in px)
-            cx, cy, rx, ry = (x0 + x1) / 2, (y0 + y1) / 2, (x1 - x0) / 2 * 0.85, (y1 - y0) / 2 * 0.85
+            cx, cy, rx, ry = (x0 + x1) / 2, (y0 + y1) / 2, (x1 - x0) / 2, (y1 - y0) / 2
             side = cam.away_from(center, light)
-            inside = lambda x, y, cx=cx, cy=cy, rx=rx, ry=ry: ((x - cx) / rx) ** 2 + ((y - cy) / ry) ** 2 <= 1
+            inside = object_mask(scene, cam, 1 + g, folder)
             angle = 50 + 35 * level + 15 * g
             strokes = shadow_hatches(cam, (cx, cy), max(rx, ry), side, -0.1 * min(rx, ry), angle, spacing, rng,
                                      inside)
@@ -194,7 +225,7 @@ def breakfast(scene, folder):
     return drawings
 
 
-def make_stroke_file(scene_path, scene, cam, elements, svg_path, out_path):
+def make_stroke_file(scene_path, scene, cam, elements, svg_path, out_path, style):
     """The SVG, and `plumbago strokefile` over a copy of the scene seen by `cam` (without its
     stroke files, which this makes)."""
     with open(svg_path, "w") as f:
@@ -207,7 +238,7 @@ def make_stroke_file(scene_path, scene, cam, elements, svg_path, out_path):
         json.dump(view, f)
     try:
         program = os.environ.get("PLUMBAGO", os.path.join(ROOT, "build", "plumbago"))
-        subprocess.run([program, "strokefile", f.name, svg_path, "-o", out_path, "--style", "pencil"], check=True)
+        subprocess.run([program, "strokefile", f.name, svg_path, "-o", out_path, "--style", style], check=True)
     finally:
         os.unlink(f.name)
 
@@ -215,6 +246,7 @@ def make_stroke_file(scene_path, scene, cam, elements, svg_path, out_path):
 def main():
     name = sys.argv[1] if len(sys.argv) > 1 else ""
     draw = {"snowman": lambda s, folder: snowman(s), "breakfast": breakfast}
+    style = {"snowman": "pencil", "breakfast": "../styles/breakfast_hatching.json"}  # relative to scenes/drawn
     if name not in draw:
         sys.exit("usage: draw_stand_ins.py snowman|breakfast")
     scene_path = os.path.join(ROOT, "scenes", name + "_strokes.json")
@@ -223,7 +255,7 @@ def main():
     drawings = draw[name](scene, os.path.dirname(scene_path))
     for level, (cam, elements) in enumerate(drawings):
         stem = os.path.join(ROOT, "scenes", "drawn", name + (".level%d" % level if len(drawings) > 1 else ""))
-        make_stroke_file(scene_path, scene, cam, elements, stem + ".svg", stem + ".strokes.json")
+        make_stroke_file(scene_path, scene, cam, elements, stem + ".svg", stem + ".strokes.json", style[name])
 
 
 if __name__ == "__main__":
