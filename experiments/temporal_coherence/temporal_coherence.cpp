@@ -1,0 +1,120 @@
+// plumbago_temporal_coherence: the temporal coherence of stroke-based rendering over a
+// camera path (issue 17; SPEC 5, "Temporal coherence"; Kalnins et al. 2002). Renders the
+// path's frames on the CPU reference and writes, per pair of consecutive frames and per
+// line kind, texture sliding along the strokes, strokes born and dying, the largest change
+// of alpha and width, and the shower-door coherence of the stroke layer
+// (experiments/temporal_coherence/README.md).
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include "experiments/shower_door/coherence.hpp"
+#include "experiments/shower_door/surface_motion.hpp"
+#include "experiments/temporal_coherence/measures.hpp"
+#include "experiments/temporal_coherence/stroke_frames.hpp"
+
+using namespace plumbago;
+using namespace plumbago::temporal_coherence;
+
+namespace {
+
+struct Options {
+  std::string scene_path, out = "temporal_coherence.csv";
+  std::vector<std::string> sets;
+  std::optional<double> orbit_step_deg;
+  int frames = 0;
+  MatchParams match;
+  shower_door::MotionParams motion;
+};
+
+const char* kHeader =
+    "scene,width,height,path,step,pair,kind,runs_prev,runs_next,born,died,samples,matched,slide_mean_px,"
+    "slide_median_px,slide_p95_px,slide_max_px,alpha_change_p95,alpha_change_max,width_change_p95_px,"
+    "width_change_max_px,image_pixels,image_A,image_B,image_coherence\n";
+
+// ",v" with 6 significant digits, or "," for NaN (nothing measured).
+std::string cell(double v) {
+  std::ostringstream s;
+  s << ',';
+  if (!std::isnan(v)) s << std::setprecision(6) << v;
+  return s.str();
+}
+
+// The columns up to `kind` of every row of one pair.
+std::string row_start(const Scene& scene, const std::string& name, int pair) {
+  const Animation& a = *scene.animation;
+  std::ostringstream s;
+  s << name << ',' << scene.width << ',' << scene.height << ',' << (a.kind == Animation::Kind::Orbit ? "orbit" : "dolly")
+    << cell(a.amount / std::max(1, a.frames - 1)) << ',' << pair << ',';
+  return s.str();
+}
+
+// One row: the measures of one kind; the stroke layer's residuals on the "all" row only.
+std::string row(const std::string& kind, const PairMeasures& m, const shower_door::Residuals* layer) {
+  Stats slide = stats(m.slide_px), alpha = stats(m.alpha_change), width = stats(m.width_change_px);
+  std::ostringstream s;
+  s << kind << ',' << m.runs_prev << ',' << m.runs_next << ',' << m.born << ',' << m.died << ',' << m.samples << ','
+    << m.matched << cell(slide.mean) << cell(slide.median) << cell(slide.p95) << cell(slide.max) << cell(alpha.p95)
+    << cell(alpha.max) << cell(width.p95) << cell(width.max);
+  if (layer)
+    s << ',' << layer->pixels << cell(layer->attached) << cell(layer->fixed) << cell(layer->coherence());
+  else
+    s << ",,,,";
+  return s.str() + "\n";
+}
+
+void run(const Options& o) {
+  Scene scene = study_scene(o.scene_path, o.sets, o.orbit_step_deg, o.frames);
+  std::string name = std::filesystem::path(o.scene_path).stem().string();
+  int frames = scene.animation->frames;
+  std::printf("scene %s, %dx%d, %d frames\n", o.scene_path.c_str(), scene.width, scene.height, frames);
+  std::ofstream csv(o.out);
+  if (!csv) throw std::runtime_error("cannot write " + o.out);
+  csv << kHeader;
+  StrokeFrame prev;
+  for (int t = 0; t < frames; ++t) {
+    auto start = std::chrono::steady_clock::now();
+    StrokeFrame next = render_stroke_frame(scene, t);
+    if (t > 0) {
+      Image motion = shower_door::surface_motion(prev.strokes.camera, prev.points, next.points, o.motion);
+      shower_door::Residuals layer =
+          shower_door::residuals(prev.layer, next.layer, motion, shower_door::Sampling::Bilinear);
+      for (const auto& [kind, m] : pair_measures(prev.strokes, next.strokes, o.match))
+        csv << row_start(scene, name, t - 1) << row(kind, m, kind == "all" ? &layer : nullptr);
+    }
+    prev = std::move(next);
+    double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::fprintf(stderr, "frame %d/%d: %zu strokes, %.2f s\n", t + 1, frames, prev.strokes.runs.size(), s);
+  }
+  std::printf("wrote %s (%d frame pairs)\n", o.out.c_str(), frames - 1);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  CLI::App app{"Temporal coherence of stroke-based rendering over a camera path (SPEC 5)"};
+  app.add_option("scene", o.scene_path, "scene file with stroke objects")->required()->check(CLI::ExistingFile);
+  app.add_option("--out", o.out, "CSV, one row per frame pair and line kind, and one for all kinds");
+  app.add_option("--orbit-step-deg", o.orbit_step_deg, "replace the scene's camera path by an orbit of this step");
+  app.add_option("--frames", o.frames, "frames of that orbit (default: the scene's, else 36)")
+      ->check(CLI::Range(2, 3600));
+  app.add_option("--set", o.sets, "stage.param=value, as for plumbago render");
+  app.add_option("--match-px", o.match.radius_px, "a reprojected sample lands on a stroke at most this far (px)");
+  app.add_option("--depth-tolerance", o.match.depth_tolerance, "and at a depth within this share of its own");
+  app.add_option("--min-motion", o.motion.min_motion_px, "stroke layer: pixels whose surface moved less are left out");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    run(o);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "plumbago_temporal_coherence: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
