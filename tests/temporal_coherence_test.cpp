@@ -89,6 +89,8 @@ TEST(TemporalCoherence, UnmatchedStrokesAreBornOrDie) {
   TrackedRun other_kind = stroke(c, LineKind::Border, -1, 1, 0.5, 30);  // where `gone` was: not the same stroke
   auto all = pair_measures(frame({kept, gone}), frame({kept, fresh, other_kind}));
   EXPECT_EQ(of(all, "crease").died, 1u);
+  EXPECT_EQ(of(all, "crease").died_px, gone.length_px);
+  EXPECT_EQ(of(all, "border").born_px, fresh.length_px + other_kind.length_px);
   EXPECT_EQ(of(all, "crease").born, 0u);
   EXPECT_EQ(of(all, "border").born, 2u);
   EXPECT_EQ(of(all, "all").runs_next, 3u);

@@ -24,14 +24,16 @@ std::vector<bool> unmatched(const Landings& landings) {
   return out;
 }
 
-void add(PairMeasures& into, const PairMeasures& m) {
+}  // namespace
+
+void accumulate(PairMeasures& into, const PairMeasures& m) {
   into.runs_prev += m.runs_prev, into.runs_next += m.runs_next, into.died += m.died, into.born += m.born;
+  into.length_prev_px += m.length_prev_px, into.length_next_px += m.length_next_px;
+  into.died_px += m.died_px, into.born_px += m.born_px;
   into.samples += m.samples, into.matched += m.matched;
   for (auto field : {&PairMeasures::slide_px, &PairMeasures::alpha_change, &PairMeasures::width_change_px})
     (into.*field).insert((into.*field).end(), (m.*field).begin(), (m.*field).end());
 }
-
-}  // namespace
 
 std::vector<std::pair<std::string, PairMeasures>> pair_measures(const FrameStrokes& prev, const FrameStrokes& next,
                                                                 const MatchParams& params) {
@@ -39,13 +41,16 @@ std::vector<std::pair<std::string, PairMeasures>> pair_measures(const FrameStrok
   std::vector<bool> died = unmatched(forward), born = unmatched(backward);
   std::map<LineKind, PairMeasures> kinds;
   for (size_t r = 0; r < next.runs.size(); ++r) {
-    PairMeasures& m = kinds[next.runs[r].kind];
-    ++m.runs_next, m.born += born[r];
+    const TrackedRun& run = next.runs[r];
+    PairMeasures& m = kinds[run.kind];
+    ++m.runs_next, m.length_next_px += run.length_px;
+    if (born[r]) ++m.born, m.born_px += run.length_px;
   }
   for (size_t r = 0; r < prev.runs.size(); ++r) {
     const TrackedRun& run = prev.runs[r];
     PairMeasures& m = kinds[run.kind];
-    ++m.runs_prev, m.died += died[r], m.samples += run.samples.size();
+    ++m.runs_prev, m.length_prev_px += run.length_px, m.samples += run.samples.size();
+    if (died[r]) ++m.died, m.died_px += run.length_px;
     for (size_t j = 0; j < run.samples.size(); ++j) {
       if (!forward[r][j]) continue;
       const Landing& l = *forward[r][j];
@@ -60,7 +65,7 @@ std::vector<std::pair<std::string, PairMeasures>> pair_measures(const FrameStrok
   PairMeasures all;
   for (const auto& [kind, m] : kinds) {
     out.emplace_back(line_kind_name(kind), m);
-    add(all, m);
+    accumulate(all, m);
   }
   out.emplace_back("all", std::move(all));
   return out;

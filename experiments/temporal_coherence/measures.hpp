@@ -15,8 +15,10 @@ namespace plumbago::temporal_coherence {
 
 struct PairMeasures {
   size_t runs_prev = 0, runs_next = 0;  // strokes drawn in each frame
+  double length_prev_px = 0, length_next_px = 0;  // and their total length
   size_t died = 0;  // strokes of prev none of whose samples lands on next (carry prev -> next)
   size_t born = 0;  // strokes of next none of whose samples lands on prev (carry next -> prev)
+  double died_px = 0, born_px = 0;  // their total length
   size_t samples = 0, matched = 0;  // samples of prev, and those that land on next
   // Per sample of prev that lands on next: how far its texture coordinate moved along the
   // stroke (slide()), and |alpha_next - alpha_prev|, |width_next - width_prev| (px) there.
@@ -27,6 +29,9 @@ struct PairMeasures {
 // `to`: |s_to - s_from| in px (u x texture_period_px); when both strokes are loops, around
 // the loop the shorter way (a loop's texture starts at its seam, anywhere).
 double slide(const TrackedRun& from, const TrackedSample& sample, const TrackedRun& to, const Landing& landing);
+
+// Adds m's counts and lists to `into` (measures pooled over kinds, or over frame pairs).
+void accumulate(PairMeasures& into, const PairMeasures& m);
 
 // Per line kind of either frame, in LineKind order, then "all" over every kind.
 std::vector<std::pair<std::string, PairMeasures>> pair_measures(const FrameStrokes& prev, const FrameStrokes& next,

@@ -2,16 +2,18 @@
 // camera path (issue 17; SPEC 5, "Temporal coherence"; Kalnins et al. 2002). Renders the
 // path's frames on the CPU reference and writes, per pair of consecutive frames and per
 // line kind, texture sliding along the strokes, strokes born and dying, the largest change
-// of alpha and width, and the shower-door coherence of the stroke layer
-// (experiments/temporal_coherence/README.md).
+// of alpha and width, and the shower-door coherence of the stroke layer; and the same
+// pooled over the pairs (experiments/temporal_coherence/README.md).
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <sstream>
 
 #include "experiments/shower_door/coherence.hpp"
@@ -25,7 +27,7 @@ using namespace plumbago::temporal_coherence;
 namespace {
 
 struct Options {
-  std::string scene_path, out = "temporal_coherence.csv";
+  std::string scene_path, out = "temporal_coherence.csv", summary;
   std::vector<std::string> sets;
   std::optional<double> orbit_step_deg;
   int frames = 0;
@@ -33,10 +35,16 @@ struct Options {
   shower_door::MotionParams motion;
 };
 
-const char* kHeader =
-    "scene,width,height,path,step,pair,kind,runs_prev,runs_next,born,died,samples,matched,slide_mean_px,"
-    "slide_median_px,slide_p95_px,slide_max_px,alpha_change_p95,alpha_change_max,width_change_p95_px,"
-    "width_change_max_px,image_pixels,image_A,image_B,image_coherence\n";
+// The columns every row starts with, and the measures' columns (stat_cells).
+const char* kScene = "scene,width,height,path,step";
+const char* kStats = "slide_mean_px,slide_median_px,slide_p95_px,slide_max_px,alpha_change_p95,alpha_change_max,"
+                     "width_change_p95_px,width_change_max_px";
+const char* kPairColumns = "pair,kind,runs_prev,runs_next,length_prev_px,length_next_px,born,died,born_px,died_px,"
+                           "samples,matched";
+const char* kLayerColumns = "image_pixels,image_A,image_B,image_coherence";
+const char* kSummaryColumns = "pairs,kind,strokes_per_frame,length_per_frame_px,born_per_pair,died_per_pair,"
+                              "born_px_per_pair,died_px_per_pair,samples,matched";
+const char* kSummaryLayer = "image_coherence_mean,image_coherence_min,image_coherence_max";
 
 // ",v" with 6 significant digits, or "," for NaN (nothing measured).
 std::string cell(double v) {
@@ -46,37 +54,72 @@ std::string cell(double v) {
   return s.str();
 }
 
-// The columns up to `kind` of every row of one pair.
-std::string row_start(const Scene& scene, const std::string& name, int pair) {
+std::string scene_cells(const Scene& scene, const std::string& name) {
   const Animation& a = *scene.animation;
+  const char* path = a.kind == Animation::Kind::Orbit ? "orbit" : "dolly";
   std::ostringstream s;
-  s << name << ',' << scene.width << ',' << scene.height << ',' << (a.kind == Animation::Kind::Orbit ? "orbit" : "dolly")
-    << cell(a.amount / std::max(1, a.frames - 1)) << ',' << pair << ',';
+  s << name << ',' << scene.width << ',' << scene.height << ',' << path << cell(a.amount / std::max(1, a.frames - 1));
   return s.str();
 }
 
-// One row: the measures of one kind; the stroke layer's residuals on the "all" row only.
-std::string row(const std::string& kind, const PairMeasures& m, const shower_door::Residuals* layer) {
+std::string stat_cells(const PairMeasures& m) {
   Stats slide = stats(m.slide_px), alpha = stats(m.alpha_change), width = stats(m.width_change_px);
+  return cell(slide.mean) + cell(slide.median) + cell(slide.p95) + cell(slide.max) + cell(alpha.p95) +
+         cell(alpha.max) + cell(width.p95) + cell(width.max);
+}
+
+// The measures of one kind in one pair; the stroke layer's residuals on the "all" row only.
+std::string pair_row(const std::string& kind, const PairMeasures& m, const shower_door::Residuals* layer) {
   std::ostringstream s;
-  s << kind << ',' << m.runs_prev << ',' << m.runs_next << ',' << m.born << ',' << m.died << ',' << m.samples << ','
-    << m.matched << cell(slide.mean) << cell(slide.median) << cell(slide.p95) << cell(slide.max) << cell(alpha.p95)
-    << cell(alpha.max) << cell(width.p95) << cell(width.max);
+  s << ',' << kind << ',' << m.runs_prev << ',' << m.runs_next << cell(m.length_prev_px) << cell(m.length_next_px)
+    << ',' << m.born << ',' << m.died << cell(m.born_px) << cell(m.died_px) << ',' << m.samples << ',' << m.matched
+    << stat_cells(m);
   if (layer)
     s << ',' << layer->pixels << cell(layer->attached) << cell(layer->fixed) << cell(layer->coherence());
   else
     s << ",,,,";
-  return s.str() + "\n";
+  return s.str();
+}
+
+// The measures of one kind pooled over `pairs` pairs; the layer's scores on "all" only.
+std::string summary_row(const std::string& kind, const PairMeasures& m, int pairs, const std::vector<double>& layer) {
+  std::ostringstream s;
+  double n = pairs;
+  s << ',' << pairs << ',' << kind << cell(double(m.runs_next) / n) << cell(m.length_next_px / n)
+    << cell(double(m.born) / n) << cell(double(m.died) / n) << cell(m.born_px / n) << cell(m.died_px / n) << ','
+    << m.samples << ',' << m.matched << stat_cells(m);
+  if (kind != "all") return s.str() + ",,,";
+  double least = layer.empty() ? NAN : *std::min_element(layer.begin(), layer.end());
+  s << cell(stats(layer).mean) << cell(least) << cell(stats(layer).max);
+  return s.str();
+}
+
+// The measures pooled over the pairs: per kind (by name), and all kinds.
+struct Pooled {
+  std::map<std::string, PairMeasures> kinds;
+  PairMeasures all;
+  std::vector<double> layer;  // the stroke layer's coherence per pair, where defined
+
+  void add(const std::string& kind, const PairMeasures& m) { accumulate(kind == "all" ? all : kinds[kind], m); }
+};
+
+void write_summary(const Options& o, const std::string& scene, const Pooled& pooled, int pairs) {
+  std::ofstream csv(o.summary);
+  if (!csv) throw std::runtime_error("cannot write " + o.summary);
+  csv << kScene << ',' << kSummaryColumns << ',' << kStats << ',' << kSummaryLayer << '\n';
+  for (const auto& [kind, m] : pooled.kinds) csv << scene << summary_row(kind, m, pairs, pooled.layer) << '\n';
+  csv << scene << summary_row("all", pooled.all, pairs, pooled.layer) << '\n';
 }
 
 void run(const Options& o) {
   Scene scene = study_scene(o.scene_path, o.sets, o.orbit_step_deg, o.frames);
-  std::string name = std::filesystem::path(o.scene_path).stem().string();
+  std::string scene_columns = scene_cells(scene, std::filesystem::path(o.scene_path).stem().string());
   int frames = scene.animation->frames;
   std::printf("scene %s, %dx%d, %d frames\n", o.scene_path.c_str(), scene.width, scene.height, frames);
   std::ofstream csv(o.out);
   if (!csv) throw std::runtime_error("cannot write " + o.out);
-  csv << kHeader;
+  csv << kScene << ',' << kPairColumns << ',' << kStats << ',' << kLayerColumns << '\n';
+  Pooled pooled;
   StrokeFrame prev;
   for (int t = 0; t < frames; ++t) {
     auto start = std::chrono::steady_clock::now();
@@ -85,14 +128,19 @@ void run(const Options& o) {
       Image motion = shower_door::surface_motion(prev.strokes.camera, prev.points, next.points, o.motion);
       shower_door::Residuals layer =
           shower_door::residuals(prev.layer, next.layer, motion, shower_door::Sampling::Bilinear);
-      for (const auto& [kind, m] : pair_measures(prev.strokes, next.strokes, o.match))
-        csv << row_start(scene, name, t - 1) << row(kind, m, kind == "all" ? &layer : nullptr);
+      if (!std::isnan(layer.coherence())) pooled.layer.push_back(layer.coherence());
+      for (const auto& [kind, m] : pair_measures(prev.strokes, next.strokes, o.match)) {
+        csv << scene_columns << ',' << t - 1 << pair_row(kind, m, kind == "all" ? &layer : nullptr) << '\n';
+        pooled.add(kind, m);
+      }
     }
     prev = std::move(next);
     double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::fprintf(stderr, "frame %d/%d: %zu strokes, %.2f s\n", t + 1, frames, prev.strokes.runs.size(), s);
   }
-  std::printf("wrote %s (%d frame pairs)\n", o.out.c_str(), frames - 1);
+  if (!o.summary.empty()) write_summary(o, scene_columns, pooled, frames - 1);
+  std::printf("wrote %s%s (%d frame pairs)\n", o.out.c_str(), o.summary.empty() ? "" : (" and " + o.summary).c_str(),
+              frames - 1);
 }
 
 }  // namespace
@@ -102,6 +150,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Temporal coherence of stroke-based rendering over a camera path (SPEC 5)"};
   app.add_option("scene", o.scene_path, "scene file with stroke objects")->required()->check(CLI::ExistingFile);
   app.add_option("--out", o.out, "CSV, one row per frame pair and line kind, and one for all kinds");
+  app.add_option("--summary", o.summary, "CSV, one row per line kind and one for all: the pairs pooled");
   app.add_option("--orbit-step-deg", o.orbit_step_deg, "replace the scene's camera path by an orbit of this step");
   app.add_option("--frames", o.frames, "frames of that orbit (default: the scene's, else 36)")
       ->check(CLI::Range(2, 3600));
