@@ -229,7 +229,7 @@ std::vector<StrokeSample> ribbon_samples(const StrokeRun& run, const StrokeStyle
     StampedOffset o = stamp(s[j]);
     Shape shape = shape_at(s[j], L, !closed, run, style, o.pressure);
     bool down = j + 1 < s.size() && stamp(0.5 * (s[j] + s[j + 1])).pen_down;
-    out.push_back({base[j] + normals[j] * o.displacement_px, s[j], shape.width, shape.alpha, down});
+    out.push_back({base[j] + normals[j] * o.displacement_px, base[j], s[j], shape.width, shape.alpha, down});
   }
   return out;
 }

@@ -92,11 +92,11 @@ struct StampedOffset {
 };
 StampedOffset rubber_stamp(const OffsetExample& example, double s, double run_length);
 
-// One sample of a run's ribbon (3.-5. above): its position (offset applied, window px),
-// its arc length s along the spline from the run's start (px; u = s / texture_period_px),
-// its width and alpha.
+// One sample of a run's ribbon (3.-5. above): its position (offset applied, window px) and
+// the base curve's point under it, its arc length s along the spline from the run's start
+// (px; u = s / texture_period_px), its width and alpha.
 struct StrokeSample {
-  glm::dvec2 position;
+  glm::dvec2 position, base;
   double s, width, alpha;
   bool pen_down_after;  // the segment to the next sample is drawn
 };

@@ -33,7 +33,7 @@ TrackedRun stroke(const Camera& c, LineKind kind, double x0, double x1, double y
     glm::dvec3 world(std::lerp(x0, x1, double(k) / (count - 1)), y, 0), seen = project(world);
     double s = k == 0 ? 0 : run.length_px + glm::distance(glm::dvec2(seen), run.samples.back().window);
     run.length_px = s;
-    run.samples.push_back({world, glm::dvec2(seen), seen.z, s, 4.0, 0.5});
+    run.samples.push_back({world, glm::dvec2(seen), seen.z, s, 4.0, 0.5, glm::dvec2(0)});
   }
   for (TrackedSample& q : run.samples) q.s += s_shift;
   run.length_px += s_shift;
@@ -59,6 +59,7 @@ TEST(TemporalCoherence, KnownShiftAlongTheStrokeIsItsSlide) {
   FrameStrokes prev = frame({stroke(c, LineKind::Crease, -1, 1, 0, 60)});
   FrameStrokes next = frame({stroke(c, LineKind::Crease, -1, 1, 0, 60, 5.0)});  // the stroke's start moved 5 px back
   next.runs[0].samples[10].alpha = 0.75, next.runs[0].samples[20].width = 5.5;
+  next.runs[0].samples[30].offset = {0.6, -0.8};
   auto all = pair_measures(prev, next);
   ASSERT_EQ(all.size(), 2u);  // crease, all
   const PairMeasures& m = of(all, "crease");
@@ -70,6 +71,7 @@ TEST(TemporalCoherence, KnownShiftAlongTheStrokeIsItsSlide) {
   EXPECT_NEAR(slide.max, 5.0, 1e-9);
   EXPECT_NEAR(stats(m.alpha_change).max, 0.25, 1e-9);
   EXPECT_NEAR(stats(m.width_change_px).max, 1.5, 1e-9);
+  EXPECT_NEAR(stats(m.offset_change_px).max, 1.0, 1e-9);
   EXPECT_EQ(of(all, "all").matched, 60u);
 }
 
@@ -137,8 +139,8 @@ TEST(TemporalCoherence, StaticCameraChangesNothingAndATurnIsFollowed) {
     if (step == 0) {
       EXPECT_EQ(m.matched, m.samples);
       EXPECT_EQ(m.born + m.died, 0u);
-      for (const auto& changes : {m.slide_px, m.alpha_change, m.width_change_px})  // landed at a piece's end,
-        EXPECT_NEAR(stats(changes).max, 0.0, 1e-12);                                // t is 1 within rounding
+      for (const auto& changes : {m.slide_px, m.alpha_change, m.width_change_px, m.offset_change_px})  // landed at a
+        EXPECT_NEAR(stats(changes).max, 0.0, 1e-12);  // piece's end, t is 1 within rounding
       EXPECT_TRUE(std::isnan(layer));
     } else {
       EXPECT_GT(double(m.matched), 0.9 * double(m.samples));

@@ -31,7 +31,8 @@ void accumulate(PairMeasures& into, const PairMeasures& m) {
   into.length_prev_px += m.length_prev_px, into.length_next_px += m.length_next_px;
   into.died_px += m.died_px, into.born_px += m.born_px;
   into.samples += m.samples, into.matched += m.matched;
-  for (auto field : {&PairMeasures::slide_px, &PairMeasures::alpha_change, &PairMeasures::width_change_px})
+  for (auto field : {&PairMeasures::slide_px, &PairMeasures::alpha_change, &PairMeasures::width_change_px,
+                     &PairMeasures::offset_change_px})
     (into.*field).insert((into.*field).end(), (m.*field).begin(), (m.*field).end());
 }
 
@@ -59,6 +60,7 @@ std::vector<std::pair<std::string, PairMeasures>> pair_measures(const FrameStrok
       m.slide_px.push_back(slide(run, q, next.runs[l.run], l));
       m.alpha_change.push_back(std::abs(l.alpha - q.alpha));
       m.width_change_px.push_back(std::abs(l.width - q.width));
+      m.offset_change_px.push_back(glm::distance(l.offset, q.offset));
     }
   }
   std::vector<std::pair<std::string, PairMeasures>> out;

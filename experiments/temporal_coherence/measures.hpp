@@ -21,8 +21,9 @@ struct PairMeasures {
   double died_px = 0, born_px = 0;  // their total length
   size_t samples = 0, matched = 0;  // samples of prev, and those that land on next
   // Per sample of prev that lands on next: how far its texture coordinate moved along the
-  // stroke (slide()), and |alpha_next - alpha_prev|, |width_next - width_prev| (px) there.
-  std::vector<double> slide_px, alpha_change, width_change_px;
+  // stroke (slide()), and |alpha_next - alpha_prev|, |width_next - width_prev| (px) and
+  // |offset_next - offset_prev| (px, window vectors: SPEC 4.8's displacement) there.
+  std::vector<double> slide_px, alpha_change, width_change_px, offset_change_px;
 };
 
 // How far the texture slid along the stroke at the point where `sample` of `from` lands on

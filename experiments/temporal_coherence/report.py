@@ -44,7 +44,9 @@ CHANGES = KEY + [
     ("p95", lambda r: fmt(r["slide_p95_px"], 1)), ("max", lambda r: fmt(r["slide_max_px"], 0)),
     ("alpha change: p95", lambda r: fmt(r["alpha_change_p95"])), ("max", lambda r: fmt(r["alpha_change_max"])),
     ("width change px: p95", lambda r: fmt(r["width_change_p95_px"])),
-    ("max", lambda r: fmt(r["width_change_max_px"]))]
+    ("max", lambda r: fmt(r["width_change_max_px"])),
+    ("offset change px: mean", lambda r: fmt(r["offset_change_mean_px"])),
+    ("p95", lambda r: fmt(r["offset_change_p95_px"]))]
 
 
 def table(rows, columns):
@@ -65,7 +67,9 @@ MEASURES = [("image_coherence", "stroke layer coherence B / (A + B)", "linear", 
             ("slide_p95_px", "texture slide, p95 px", "log", None),
             ("born", "strokes born (solid) and died (dashed)", "symlog", "died"),
             ("alpha_change_p95", "alpha change: p95 (solid), max (dashed)", "linear", "alpha_change_max"),
-            ("width_change_p95_px", "width change px: p95 (solid), max (dashed)", "linear", "width_change_max_px")]
+            ("width_change_p95_px", "width change px: p95 (solid), max (dashed)", "linear", "width_change_max_px"),
+            ("offset_change_mean_px", "offset change px: mean (solid), p95 (dashed)", "linear", "offset_change_p95_px"),
+            ("matched_share", "samples that land on the next frame's strokes", "linear", None)]
 KIND_LINES = {"all": "-", "crease": "--", "border": ":", "silhouette": "-.", "decal": (0, (1, 3))}
 
 
@@ -79,7 +83,9 @@ def plot(rows, out):
     scenes = list(dict.fromkeys(r["scene"] for r in rows))
     kinds = list(dict.fromkeys(r["kind"] for r in rows))
     colors = dict(zip(scenes, plt.rcParams["axes.prop_cycle"].by_key()["color"]))
-    fig, axes = plt.subplots(2, 3, figsize=(16, 8.5))
+    for r in rows:
+        r["matched_share"] = r["matched"] / r["samples"] if r["samples"] else math.nan
+    fig, axes = plt.subplots(2, 4, figsize=(21, 8.5))
     for ax, (key, title, scale, dashed) in zip(axes.flat, MEASURES):
         by_kind = key.startswith("slide")  # the other measures: all kinds together
         for scene in scenes:

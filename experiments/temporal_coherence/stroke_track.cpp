@@ -36,7 +36,7 @@ FrameStrokes frame_strokes(const Camera& camera, int width, int height, const Wi
     for (const StrokeSample& q : b.samples) {
       glm::dvec3 world = world_at(path, run.s0 + q.s * path_per_spline);
       glm::dvec3 seen = project(world);
-      tracked.samples.push_back({world, glm::dvec2(seen), seen.z, q.s, q.width, q.alpha});
+      tracked.samples.push_back({world, glm::dvec2(seen), seen.z, q.s, q.width, q.alpha, q.position - q.base});
     }
     out.runs.push_back(std::move(tracked));
   }
@@ -120,7 +120,7 @@ std::optional<Landing> land(const FrameStrokes& to, const PieceGrid& grid, const
     double depth = std::lerp(a.depth, b.depth, t);
     if (distance > p.radius_px || std::abs(depth - seen.z) > p.depth_tolerance * seen.z) return;
     Landing l{piece.run, std::lerp(a.s, b.s, t), std::lerp(a.width, b.width, t), std::lerp(a.alpha, b.alpha, t),
-              distance};
+              glm::mix(a.offset, b.offset, t), distance};
     if (better(l, best, sample.s)) best = l;
   });
   return best;

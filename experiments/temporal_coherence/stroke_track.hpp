@@ -22,6 +22,7 @@ struct TrackedSample {
   glm::dvec2 window;       // that point in this frame's window (px)
   double depth;            // its linear view depth in this frame
   double s, width, alpha;  // as drawn: arc length from the stroke's start (px; u x period), width (px), alpha
+  glm::dvec2 offset;       // as drawn: the position minus the base curve's (px), the offsets of SPEC 4.8
 };
 
 // A visible run that draws something (2 samples or more).
@@ -55,7 +56,8 @@ FrameStrokes frame_strokes(const Camera& camera, int width, int height, const Wi
 struct Landing {
   size_t run;              // index in the other frame's runs
   double s, width, alpha;  // the other stroke's, interpolated at the nearest point
-  double distance_px;      // from the sample's reprojection to that point
+  glm::dvec2 offset;
+  double distance_px;  // from the sample's reprojection to that point
 };
 
 struct MatchParams {

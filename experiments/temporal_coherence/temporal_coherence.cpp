@@ -38,7 +38,7 @@ struct Options {
 // The columns every row starts with, and the measures' columns (stat_cells).
 const char* kScene = "scene,width,height,path,step";
 const char* kStats = "slide_mean_px,slide_median_px,slide_p95_px,slide_max_px,alpha_change_p95,alpha_change_max,"
-                     "width_change_p95_px,width_change_max_px";
+                     "width_change_p95_px,width_change_max_px,offset_change_mean_px,offset_change_p95_px";
 const char* kPairColumns = "pair,kind,runs_prev,runs_next,length_prev_px,length_next_px,born,died,born_px,died_px,"
                            "samples,matched";
 const char* kLayerColumns = "image_pixels,image_A,image_B,image_coherence";
@@ -63,9 +63,10 @@ std::string scene_cells(const Scene& scene, const std::string& name) {
 }
 
 std::string stat_cells(const PairMeasures& m) {
-  Stats slide = stats(m.slide_px), alpha = stats(m.alpha_change), width = stats(m.width_change_px);
+  Stats slide = stats(m.slide_px), alpha = stats(m.alpha_change), width = stats(m.width_change_px),
+        offset = stats(m.offset_change_px);
   return cell(slide.mean) + cell(slide.median) + cell(slide.p95) + cell(slide.max) + cell(alpha.p95) +
-         cell(alpha.max) + cell(width.p95) + cell(width.max);
+         cell(alpha.max) + cell(width.p95) + cell(width.max) + cell(offset.mean) + cell(offset.p95);
 }
 
 // The measures of one kind in one pair; the stroke layer's residuals on the "all" row only.
