@@ -214,14 +214,8 @@ Shape shape_at(double s, double L, bool has_ends, const StrokeRun& run, const St
   return {w, a};
 }
 
-// One sample of the ribbon: where it is (offset applied), and its u, width and alpha.
-struct Sample {
-  glm::dvec2 position;
-  double u, width, alpha;
-  bool pen_down_after;  // the segment to the next sample is drawn
-};
-
-std::vector<Sample> ribbon_samples(const StrokeRun& run, const StrokeStyle& style, const DenseCurve& curve, bool closed) {
+std::vector<StrokeSample> ribbon_samples(const StrokeRun& run, const StrokeStyle& style, const DenseCurve& curve,
+                                         bool closed) {
   double L = curve.length();
   std::vector<double> s = sample_arc_lengths(L, style);
   std::vector<glm::dvec2> base = points_at(curve, s);
@@ -230,12 +224,12 @@ std::vector<Sample> ribbon_samples(const StrokeRun& run, const StrokeStyle& styl
   auto stamp = [&](double at) {
     return style.offsets ? rubber_stamp(*style.offsets, at, L) : StampedOffset{0.0, 1.0, true};
   };
-  std::vector<Sample> out;
+  std::vector<StrokeSample> out;
   for (size_t j = 0; j < s.size(); ++j) {
     StampedOffset o = stamp(s[j]);
     Shape shape = shape_at(s[j], L, !closed, run, style, o.pressure);
     bool down = j + 1 < s.size() && stamp(0.5 * (s[j] + s[j + 1])).pen_down;
-    out.push_back({base[j] + normals[j] * o.displacement_px, s[j] / style.texture_period_px, shape.width, shape.alpha, down});
+    out.push_back({base[j] + normals[j] * o.displacement_px, base[j], s[j], shape.width, shape.alpha, down});
   }
   return out;
 }
@@ -245,17 +239,18 @@ RibbonVertex vertex(glm::dvec2 p, double u, double v, double alpha) {
 }
 
 // 6. The triangles of the strip through samples [a, b] (b > a), appended to `out`.
-void append_strip(const std::vector<Sample>& samples, size_t a, size_t b, bool cyclic, std::vector<RibbonVertex>& out) {
+void append_strip(const std::vector<StrokeSample>& samples, size_t a, size_t b, bool cyclic, double period,
+                  std::vector<RibbonVertex>& out) {
   std::vector<glm::dvec2> p;
   for (size_t j = a; j <= b; ++j) p.push_back(samples[j].position);
   std::vector<glm::dvec2> n = vertex_normals(p, cyclic);
   if (n.empty()) return;
   std::vector<RibbonVertex> strip;  // R0 L0 R1 L1 ...
   for (size_t j = a; j <= b; ++j) {
-    const Sample& q = samples[j];
+    const StrokeSample& q = samples[j];
     glm::dvec2 half = n[j - a] * (q.width / 2);
-    strip.push_back(vertex(q.position - half, q.u, 0.0, q.alpha));
-    strip.push_back(vertex(q.position + half, q.u, 1.0, q.alpha));
+    strip.push_back(vertex(q.position - half, q.s / period, 0.0, q.alpha));
+    strip.push_back(vertex(q.position + half, q.s / period, 1.0, q.alpha));
   }
   for (size_t k = 0; k + 2 < strip.size(); ++k) {  // GL's strip order: odd triangles swap their first two
     if (k % 2 == 0) out.insert(out.end(), {strip[k], strip[k + 1], strip[k + 2]});
@@ -294,15 +289,20 @@ StampedOffset rubber_stamp(const OffsetExample& example, double s, double run_le
           !o[i].pen_up};
 }
 
-Ribbon base_stroke(const StrokeRun& run, const StrokeStyle& style) {
+BaseStrokeSamples base_stroke_samples(const StrokeRun& run, const StrokeStyle& style) {
   validate_stroke_style(style, "base_stroke");
-  Ribbon ribbon{{}, glm::vec3(style.color_r, style.color_g, style.color_b)};
   std::vector<glm::dvec2> p = distinct_points(run.points, run.closed);
-  if (p.size() < 2) return ribbon;
+  if (p.size() < 2) return {};
   bool closed = run.closed && p.size() >= 3;
-  std::vector<Sample> samples = ribbon_samples(run, style, dense_curve(catmull_rom_spans(p, closed)), closed);
-  if (samples.size() < 2) return ribbon;
-  bool whole = std::all_of(samples.begin(), samples.end() - 1, [](const Sample& q) { return q.pen_down_after; });
+  DenseCurve curve = dense_curve(catmull_rom_spans(p, closed));
+  return {ribbon_samples(run, style, curve, closed), curve.length(), closed};
+}
+
+Ribbon ribbon(const BaseStrokeSamples& stroke, const StrokeStyle& style) {
+  Ribbon out{{}, glm::vec3(style.color_r, style.color_g, style.color_b)};
+  const std::vector<StrokeSample>& samples = stroke.samples;
+  if (samples.size() < 2) return out;
+  bool whole = std::all_of(samples.begin(), samples.end() - 1, [](const StrokeSample& q) { return q.pen_down_after; });
   for (size_t a = 0; a + 1 < samples.size();) {  // each maximal run of drawn segments is one strip
     if (!samples[a].pen_down_after) {
       ++a;
@@ -310,10 +310,14 @@ Ribbon base_stroke(const StrokeRun& run, const StrokeStyle& style) {
     }
     size_t b = a + 1;
     while (b + 1 < samples.size() && samples[b].pen_down_after) ++b;
-    append_strip(samples, a, b, closed && whole, ribbon.triangles);
+    append_strip(samples, a, b, stroke.closed && whole, style.texture_period_px, out.triangles);
     a = b;
   }
-  return ribbon;
+  return out;
+}
+
+Ribbon base_stroke(const StrokeRun& run, const StrokeStyle& style) {
+  return ribbon(base_stroke_samples(run, style), style);
 }
 
 }  // namespace plumbago

@@ -92,9 +92,31 @@ struct StampedOffset {
 };
 StampedOffset rubber_stamp(const OffsetExample& example, double s, double run_length);
 
-// The ribbon of one run; empty for a run of fewer than 2 distinct points. Throws
+// One sample of a run's ribbon (3.-5. above): its position (offset applied, window px) and
+// the base curve's point under it, its arc length s along the spline from the run's start
+// (px; u = s / texture_period_px), its width and alpha.
+struct StrokeSample {
+  glm::dvec2 position, base;
+  double s, width, alpha;
+  bool pen_down_after;  // the segment to the next sample is drawn
+};
+
+// The samples of one run, the length of its spline (px) and whether it is drawn as a loop.
+struct BaseStrokeSamples {
+  std::vector<StrokeSample> samples;
+  double length_px = 0;
+  bool closed = false;
+};
+
+// The samples of one run (1.-5.); none for a run of fewer than 2 distinct points. Throws
 // StrokeStyleError for a style validate_stroke_style refuses, std::invalid_argument for a
 // run that would take more than 1e7 samples.
+BaseStrokeSamples base_stroke_samples(const StrokeRun& run, const StrokeStyle& style);
+
+// The ribbon through a run's samples (6.), in the style's color; empty for fewer than 2.
+Ribbon ribbon(const BaseStrokeSamples& stroke, const StrokeStyle& style);
+
+// ribbon(base_stroke_samples(run, style), style): the ribbon of one run, with the same throws.
 Ribbon base_stroke(const StrokeRun& run, const StrokeStyle& style);
 
 }  // namespace plumbago

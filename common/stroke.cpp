@@ -68,16 +68,26 @@ StrokeStyle RunStyles::of(const WindowPath& path, const VisibleRun& run, size_t 
   return style;
 }
 
-std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visibility& visibility,
-                                           const StrokeStyles& styles, uint32_t seed) {
-  std::vector<StrokeVertex> out;
+std::vector<RunStroke> run_strokes(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
+                                   uint32_t seed) {
+  std::vector<RunStroke> out;
   RunStyles run_styles(styles, seed, lines.decal_styles);
   for (size_t i = 0; i < visibility.runs.size(); ++i) {
     const VisibleRun& run = visibility.runs[i];
     StrokeStyle style = run_styles.of(lines.paths[run.path], run, i);
-    Ribbon ribbon = base_stroke({run.window, run.closed, run.occluded_start, run.occluded_end}, style);
-    for (const RibbonVertex& v : ribbon.triangles)
-      out.push_back({v.position, v.uv, v.alpha, ribbon.color, float(int(style.texture))});
+    StrokeRun stroke{run.window, run.closed, run.occluded_start, run.occluded_end};
+    out.push_back({style, base_stroke_samples(stroke, style)});
+  }
+  return out;
+}
+
+std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visibility& visibility,
+                                           const StrokeStyles& styles, uint32_t seed) {
+  std::vector<StrokeVertex> out;
+  for (const RunStroke& stroke : run_strokes(lines, visibility, styles, seed)) {
+    Ribbon r = ribbon(stroke.samples, stroke.style);
+    for (const RibbonVertex& v : r.triangles)
+      out.push_back({v.position, v.uv, v.alpha, r.color, float(int(stroke.style.texture))});
   }
   return out;
 }

@@ -52,7 +52,18 @@ class RunStyles {
   std::map<LineKind, OffsetSynthesizer> chains_;  // one chain per kind's example, made on first use
 };
 
-// The ribbons of every visible run, three vertices a triangle, in drawing order; `seed`
+// One visible run as it is drawn: its style (RunStyles::of) and its base stroke's samples.
+struct RunStroke {
+  StrokeStyle style;
+  BaseStrokeSamples samples;
+};
+
+// Every visible run's stroke, in drawing order (visibility.runs' order): what
+// stroke_triangles draws, and what experiments/temporal_coherence measures.
+std::vector<RunStroke> run_strokes(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
+                                   uint32_t seed);
+
+// The ribbons of every visible run (run_strokes), three vertices a triangle, in drawing order; `seed`
 // (the scene's) seeds the offsets a style synthesizes (SPEC 4.8).
 std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visibility& visibility,
                                            const StrokeStyles& styles, uint32_t seed);

@@ -100,6 +100,9 @@ STUDIES = {
     "shower_door": dict(
         question="shower door: coherence of each sketchy style over an orbit (not timed)",
         columns=None, time=None, error=("field_coherence", "%.3f".__mod__, "field coherence, per pair")),
+    "temporal_coherence": dict(
+        question="stroke rendering over an orbit: sliding, births, deaths (not timed)",
+        columns=None, time=None, error=("image_coherence", "%.3f".__mod__, "stroke layer coherence, per pair")),
 }
 
 
@@ -140,11 +143,19 @@ def shower_door_table(rs):
                      for m in dict.fromkeys(r["mode"] for r in rs) if m in field])
 
 
+def temporal_coherence_tables(c):
+    sys.path.insert(0, str(c.root / "experiments" / "temporal_coherence"))
+    import report
+    return report.tables(pc.read_csv(c.results / "temporal_coherence" / "summary.csv"))
+
+
 def study(c, name):
     spec, rs = STUDIES[name], rows(c, name)
     out = ["From " + run_of(c, name) + ".", ""]
     if name == "shower_door":
         return out + shower_door_table(rs)
+    if name == "temporal_coherence":
+        return out + temporal_coherence_tables(c)
     out += markdown([h for h, _ in spec["columns"]], [[f(r) for _, f in spec["columns"]] for r in rs])
     if name == "scaling":
         slopes = pc.read_csv(c.results / name / "slopes.csv")

@@ -1,0 +1,49 @@
+#include "experiments/temporal_coherence/stroke_frames.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "common/animation.hpp"
+#include "common/gbuffer.hpp"
+#include "experiments/shower_door/surface_motion.hpp"
+#include "reference/pipeline.hpp"
+
+namespace plumbago::temporal_coherence {
+
+namespace {
+
+constexpr int kDefaultFrames = 36;
+
+}  // namespace
+
+Scene study_scene(const std::string& path, const std::vector<std::string>& sets, std::optional<double> orbit_step_deg,
+                  int frames) {
+  Scene s = load_scene(path);
+  if (!has_style(s, Style::Strokes)) throw std::runtime_error(path + ": no object has style strokes");
+  for (const std::string& assignment : sets) s.params.set_assignment(assignment);
+  s.effects.erase(std::remove(s.effects.begin(), s.effects.end(), "basecoat"), s.effects.end());
+  if (orbit_step_deg) {
+    int n = frames > 0 ? frames : s.animation ? s.animation->frames : kDefaultFrames;
+    double fps = s.animation ? s.animation->fps : 30.0;
+    s.animation = Animation{Animation::Kind::Orbit, *orbit_step_deg * (n - 1), n, fps};
+  } else if (!s.animation) {
+    throw std::runtime_error(path + ": no camera path (\"animation\"); give an orbit step");
+  } else if (frames > 0) {
+    throw std::runtime_error("a frame count changes an orbit given here, not the scene's own path");
+  }
+  return s;
+}
+
+StrokeFrame render_stroke_frame(const Scene& study, int t) {
+  Scene s = scene_at_frame(study, t);
+  std::vector<PassTime> ran;
+  reference::ReferenceFrame f = reference::run_stages(s, ran);
+  const Visibility* visibility = f.host.find<Visibility>("visibility");
+  if (!visibility) throw std::logic_error("the stroke stages did not run");
+  const WindowLines& lines = frame_lines(f.host, f.host, f.scene);
+  std::vector<RunStroke> strokes = run_strokes(lines, *visibility, s.strokes, s.seed);
+  return {frame_strokes(s.camera, s.width, s.height, lines, *visibility, strokes), f.image("stroke.color"),
+          shower_door::surface_points(world_geometry(f.ordinary), f.gbuffer("gbuffer"))};
+}
+
+}  // namespace plumbago::temporal_coherence

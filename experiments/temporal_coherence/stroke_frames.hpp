@@ -1,0 +1,32 @@
+// The frames of the temporal-coherence study: a stroke scene along a camera path, each
+// frame rendered by the CPU reference (reference::run_stages), kept as what the measures
+// read: the tracked strokes (stroke_track.hpp), the stroke layer and the surface points.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/scene.hpp"
+#include "experiments/temporal_coherence/stroke_track.hpp"
+
+namespace plumbago::temporal_coherence {
+
+// The scene as the study renders it: `sets` (stage.param=value) applied, the base coat
+// off (the strokes over the blank page: the stroke layer), and, when `orbit_step_deg` is
+// given, its camera path replaced by an orbit of `frames` frames that many degrees apart
+// (frames = 0: the scene's own frame count, or 36 when it has no path). Throws when the
+// scene has no stroke object, or no camera path and no orbit is given.
+Scene study_scene(const std::string& path, const std::vector<std::string>& sets, std::optional<double> orbit_step_deg,
+                  int frames);
+
+struct StrokeFrame {
+  FrameStrokes strokes;
+  Image layer;   // RGB: stroke.color, the strokes over the page (the paper's grain included)
+  Image points;  // shower_door::surface_points of the frame's G-buffer: the surface seen at each pixel
+};
+
+// Frame t of the study scene's camera path.
+StrokeFrame render_stroke_frame(const Scene& study, int t);
+
+}  // namespace plumbago::temporal_coherence
