@@ -40,9 +40,12 @@ inline const std::vector<PaperClaim>& paper_claims() {
        "strokes", "scenes/storefront_strokes.json", "a procedural brick storefront: every brick a box of creases, "
        "drawn with a Markov-synthesized graphite style; 4,902 of its 8,724 crease lines visible at the scene's camera"},
       {"Kalnins et al. 2002", "breakfast, 400 strokes", 25000, "not stated", 9, 9, "GeForce3, Pentium IV 1.5 GHz",
-       "strokes", "", "its stand-in scene comes with synthesis, decals and hatching"},
+       "strokes", "scenes/breakfast_strokes.json", "a table with the teapot, spot, the cow, an orange and a mug "
+       "(24,264 faces): conte silhouettes and creases, translucent toon coat, free hatching in two levels of detail; "
+       "279 visible strokes at frame 0; timed over its 40-frame dolly"},
       {"Kalnins et al. 2002", "snowman, 250 strokes", 10000, "not stated", 11, 11, "GeForce3, Pentium IV 1.5 GHz",
-       "strokes", "", "its stand-in scene comes with synthesis, decals and hatching"},
+       "strokes", "scenes/snowman_strokes.json", "procedural spheres and cones (11,136 faces): pale toon coat, "
+       "Markov-synthesized crayon silhouettes, decals for the face, structured hatching; 181 visible strokes"},
   };
   return claims;
 }

@@ -99,6 +99,11 @@ std::map<std::string, double> stroke_counts(const HostData& host) {
   if (!v || !lines) return out;
   out["strokes"] = double(v->runs.size());
   for (const VisibleRun& run : v->runs) out[std::string("strokes.") + line_kind_name(lines->paths[run.path].kind)] += 1;
+  for (const HatchGroupState& g : lines->hatching) {
+    std::string name = "hatching.group" + std::to_string(g.number);
+    out[name + ".sigma"] = g.sigma;
+    out[name + ".level"] = g.lod.from + g.progress * (g.lod.to - g.lod.from);
+  }
   return out;
 }
 

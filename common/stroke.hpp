@@ -69,8 +69,9 @@ std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visib
                                            const StrokeStyles& styles, uint32_t seed);
 
 // The strokes a frame draws: its visible runs per line kind, keyed "strokes.<kind>", and
-// their sum, "strokes" (what Kalnins et al.'s Table 1 counts); empty when the frame's
-// `host` data holds no visibility.
+// their sum, "strokes" (what Kalnins et al.'s Table 1 counts); per hatching group N,
+// "hatching.groupN.sigma" and "hatching.groupN.level" (from + progress (to - from), SPEC
+// 4.10); empty when the frame's `host` data holds no visibility.
 class HostData;
 std::map<std::string, double> stroke_counts(const HostData& host);
 

@@ -113,7 +113,7 @@ def snowman(scene):
     rng = random.Random(8)
     balls = [transform_of(o) for o in scene["objects"][:3]]
     elements = []
-    for g, (m, spacing) in enumerate(zip(balls, (4.5, 4.2, 4))):
+    for g, (m, spacing) in enumerate(zip(balls, (3.8, 3.6, 3.4))):
         center, radius = m[:3, 3], m[0, 0]
         (cx, cy), r = cam.disc(center, radius)
         side = cam.away_from(center, light)
@@ -128,7 +128,7 @@ def snowman(scene):
         center = ((a[0] + b[0] + tip[0]) / 3, (a[1] + b[1] + tip[1]) / 3)
         reach = max(math.dist(center, p) for p in (a, b, tip))
         side = cam.away_from((base[:3] + apex[:3]) / 2, light)
-        for layer, (angle, spacing) in enumerate(((70, 4.5), (-20, 6))):
+        for layer, (angle, spacing) in enumerate(((70, 4), (-20, 5.5))):
             strokes = shadow_hatches(cam, center, reach, side, -reach * 0.05, angle, spacing, rng, inside)
             elements.append((strokes, {"data-role": "hatching", "data-group": str(3 + 2 * t + layer)}))
     head = balls[2]
