@@ -38,6 +38,11 @@ struct SceneObject {
 // presets in styles/strokes, common/stroke_style.hpp). Scene key "strokes".
 struct StrokeStyles {
   StrokeStyle crease = default_stroke_style(), border = default_stroke_style(), silhouette = default_stroke_style();
+  // The offset examples drawn in the scene's stroke files (roles "crease" and "silhouette",
+  // common/stroke_file.hpp drawn_offsets), which replace the styles' own: creases and
+  // borders take the crease examples. Several are rubber-stamped in turn (run after run)
+  // or make one Markov chain (SPEC 4.8).
+  std::vector<OffsetExample> crease_examples, silhouette_examples;
 };
 
 struct Light {

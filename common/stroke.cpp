@@ -60,9 +60,13 @@ StrokeStyle RunStyles::of(const WindowPath& path, const VisibleRun& run, size_t 
     return style;
   }
   StrokeStyle style = style_of(path.kind, styles_);
+  const std::vector<OffsetExample>& drawn =
+      path.kind == LineKind::Silhouette ? styles_.silhouette_examples : styles_.crease_examples;
+  if (!drawn.empty()) style.offsets = drawn[index % drawn.size()];  // the stamp: each in turn
   if (style.synthesis != OffsetSynthesis::Markov || !style.offsets) return style;
   auto it = chains_.find(path.kind);
-  if (it == chains_.end()) it = chains_.emplace(path.kind, OffsetSynthesizer(*style.offsets)).first;
+  if (it == chains_.end())
+    it = chains_.emplace(path.kind, drawn.empty() ? OffsetSynthesizer(*style.offsets) : OffsetSynthesizer(drawn)).first;
   std::string name = "stroke run " + std::to_string(path.key) + "/" + std::to_string(index);
   style.offsets = it->second.synthesize_example(run.s1 - run.s0, seed_, name);
   return style;

@@ -34,7 +34,8 @@ struct StrokeVertex {
 };
 static_assert(sizeof(StrokeVertex) == 9 * sizeof(float), "shaders/stroke.vert reads 9 packed floats");
 
-// The style a run is drawn with: its line kind's, with the offsets example synthesized
+// The style a run is drawn with: its line kind's (its offsets example the scene's drawn
+// examples where it has some, StrokeStyles), with the offsets example synthesized
 // over the run's length (SPEC 4.8) where the style asks for it, seeded by the scene seed
 // and the run's name (its path key and its index among the frame's runs); a decal's
 // (SPEC 4.9), with its drawn pressure over the run (common/decal.hpp 3.); a hatch's the

@@ -186,6 +186,22 @@ StrokeFile load_stroke_file(const std::string& path, glm::dvec3 origin) {
   return parse_stroke_file(text.str(), path, dir.empty() ? "." : dir.string(), origin);
 }
 
+OffsetExample drawn_offsets(const DrawnStroke& stroke, const std::string& source) {
+  glm::dvec2 a = stroke.points.front().window, chord = stroke.points.back().window - a;
+  double length = glm::length(chord);
+  if (!(length >= 1)) throw SceneError(source + ": an offsets example needs its ends 1 px apart or more");
+  glm::dvec2 along = chord / length, left(-along.y, along.x);
+  OffsetExample out{length, {}};
+  double t = 0;
+  for (const DrawnPoint& p : stroke.points) {
+    t = std::clamp(std::max(t, glm::dot(p.window - a, along) / length), 0.0, 1.0);
+    double d = glm::dot(p.window - a, left);
+    if (std::abs(d) > 1000) throw SceneError(source + ": an offsets example strays more than 1000 px from its chord");
+    out.offsets.push_back({t, d, p.pressure, false});
+  }
+  return out;
+}
+
 std::string stroke_file_json(const StrokeFile& file, glm::dvec3 origin) {
   json strokes = json::array();
   for (const DrawnStroke& s : file.strokes) {

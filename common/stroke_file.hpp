@@ -11,11 +11,12 @@
 // Points are window pixels of SPEC 0 (origin bottom-left), pressure in [0, 1]; a stroke
 // has 2 points or more. ROLE is
 //   - "decal": a stroke fixed on the surface where it was drawn (common/decal.hpp);
-//   - "crease", "silhouette": an offset example for that kind of line (SPEC 4.8);
+//   - "crease", "silhouette": an offset example for that kind of line (SPEC 4.8;
+//     drawn_offsets below): the scene's creases (and borders) or silhouettes take the
+//     examples of its stroke files in place of their style's;
 //   - "hatching": a stroke of hatching group G (SPEC 4.10, common/hatching.hpp): structured
 //     unless "free" says otherwise; a group's strokes are all structured or all free.
-// Every role is read and kept; decals and hatching are drawn (crease and silhouette
-// examples are read and kept for the stages that will use them).
+// Every role is used.
 // A scene lists its stroke files under "stroke_files" (docs/scene-format.md); a refusal
 // throws SceneError naming the stroke file and the JSON path, as scene files do.
 #pragma once
@@ -57,6 +58,15 @@ struct StrokeFile {
   std::string style;  // the file's "style", or empty
   std::vector<DrawnStroke> strokes;
 };
+
+// A crease or silhouette example as SPEC 4.8's offset list, against its chord (the segment
+// from its first point to its last, of length L_drawn): per point, t = its projection on
+// the chord over L_drawn (never decreasing: a stroke that turns back holds its t), the
+// displacement = its signed distance from the chord, positive to the left of the direction
+// of travel (the screen normal of common/stroke_style.hpp), and its pressure. Throws
+// SceneError naming `source` and the stroke when its ends are under 1 px apart or a
+// displacement passes +-1000 px.
+OffsetExample drawn_offsets(const DrawnStroke& stroke, const std::string& source);
 
 // The style of decals and hatching where neither the stroke nor the file names one.
 inline constexpr const char* kDefaultDecalStyle = "ink";

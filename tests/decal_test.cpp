@@ -2,6 +2,7 @@
 // projections onto the surface, decal parity, decals hidden behind the surface.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +11,7 @@
 
 #include "common/decal.hpp"
 #include "common/id_image.hpp"
+#include "common/stroke.hpp"
 #include "common/visibility.hpp"
 #include "gpu/decal.hpp"
 #include "gpu/pipeline.hpp"
@@ -96,6 +98,50 @@ TEST(StrokeFile, ScenesListThemRelativeToTheirFolder) {
     FAIL() << "a missing stroke file was accepted";
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("none.json: cannot read the stroke file"), std::string::npos) << e.what();
+  }
+}
+
+// A crease example drawn in a stroke file becomes the creases' offsets (SPEC 4.8-4.9):
+// measured from its chord, to the left of its direction of travel, its pressure kept; the
+// rubber stamp takes the drawn examples in turn, the Markov chain draws from them.
+TEST(StrokeFile, DrawnExamplesStyleTheCreases) {
+  testing::TempDir dir;
+  std::string wave;
+  for (int k = 0; k <= 40; ++k)
+    wave += (k ? ", [" : "[") + std::to_string(100 + 2.5 * k) + ", " + std::to_string(50 + 3 * std::sin(k * M_PI / 10)) +
+            ", 0.5]";
+  dir.write("e.strokes.json", R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0],
+      "fov_deg": 40, "near": 1, "far": 10}, "resolution": [320, 240], "strokes": [
+      {"role": "crease", "points": [)" + wave + R"(]}, {"role": "crease", "points": [[0, 0, 1], [0, 30, 1]]}]})");
+  Scene s = load_scene(dir.write("scene.json", R"({"objects": [{"mesh": {"procedural": "cube"}, "style": "strokes"}],
+      "stroke_files": ["e.strokes.json"]})"));
+  ASSERT_EQ(s.strokes.crease_examples.size(), 2u);
+  EXPECT_TRUE(s.strokes.silhouette_examples.empty());
+  const OffsetExample& e = s.strokes.crease_examples[0];
+  EXPECT_NEAR(e.length_px, 100.0, 1e-9);
+  ASSERT_EQ(e.offsets.size(), 41u);
+  for (size_t k = 0; k < e.offsets.size(); ++k) {
+    EXPECT_NEAR(e.offsets[k].t, k / 40.0, 1e-6);
+    EXPECT_NEAR(e.offsets[k].displacement_px, 3 * std::sin(k * M_PI / 10), 1e-5);  // to_string: 6 decimals
+    EXPECT_DOUBLE_EQ(e.offsets[k].pressure, 0.5);
+  }
+  WindowPath path{LineKind::Crease, 0, false, true, 7, {}, {}, {}, {}, {}, {}, 0, {}, 0};
+  VisibleRun run{0, 0, 80, false, false, false, {}};
+  RunStyles stamp(s.strokes, 1, {});
+  EXPECT_EQ(stamp.of(path, run, 0).offsets->offsets.size(), 41u);  // in turn, run after run
+  EXPECT_EQ(stamp.of(path, run, 1).offsets->offsets.size(), 2u);
+  s.strokes.crease.synthesis = OffsetSynthesis::Markov;
+  RunStyles markov(s.strokes, 1, {});
+  for (const StrokeOffset& o : markov.of(path, run, 0).offsets->offsets) EXPECT_LE(std::abs(o.displacement_px), 3.3);
+  dir.write("e.strokes.json", R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0],
+      "fov_deg": 40, "near": 1, "far": 10}, "resolution": [320, 240], "strokes": [
+      {"role": "silhouette", "points": [[5, 5, 1], [9, 9, 1], [5.2, 5, 1]]}]})");
+  try {
+    load_scene(dir.path("scene.json"));
+    FAIL() << "an example whose ends meet was accepted";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("e.strokes.json: /strokes/0: an offsets example needs its ends"),
+              std::string::npos) << e.what();
   }
 }
 
