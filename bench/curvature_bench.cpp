@@ -96,10 +96,11 @@ void curvature(benchmark::State& state, const std::string& model, const std::vec
 
 const bool registered = [] {
   const std::vector<std::pair<std::string, std::vector<std::string>>> variants = {
-      {"tensor_1ring", {"curvature.radius=0"}},
-      {"tensor_default", {}},
+      {"tensor_1ring", {"curvature.method=tensor", "curvature.radius=0"}},
+      {"tensor_default", {"curvature.method=tensor"}},
+      {"auto_default", {}},  // the default: the jet where faces fold, else the tensor
       {"jet_default", {"curvature.method=jet"}},
-      {"tensor_approximate_ball", {"curvature.ball_clip=approximate"}},
+      {"tensor_approximate_ball", {"curvature.method=tensor", "curvature.ball_clip=approximate"}},
       {"jet_cgal", {"curvature.method=jet", "curvature.jet_solver=cgal"}}};
   for (const std::string model : {"fandisk.obj", "stanford-bunny.obj", "ogre.obj", "bunny-1M"})
     for (const auto& [name, assignments] : variants) {
