@@ -8,10 +8,13 @@ The program is $PLUMBAGO, or build/plumbago under the repository root.
 import csv
 import glob
 import json
+import math
 import os
 import pathlib
 import platform
+import re
 import subprocess
+import tempfile
 import time
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -48,6 +51,23 @@ def bench(scene, sets=(), size=None, frames=5, backend="gpu", reference_frames=N
     if tolerance is not None:
         args += ["--tolerance", tolerance]
     return json.loads(run(args))
+
+
+def lines_counts(scene, backend="gpu"):
+    """`plumbago lines SCENE` at the scene's camera: its paths (feature lines and decals), how
+    many show (a visible run or more), and the visible runs the strokes draw."""
+    with tempfile.TemporaryDirectory(prefix="plumbago-lines-") as work:
+        text = run(["lines", scene, "--backend", backend, "-o", pathlib.Path(work) / "lines.svg"])
+    paths, shown, runs = re.match(r"(\d+) paths, (\d+) shown, (\d+) visible runs", text).groups()
+    return dict(paths=int(paths), shown=int(shown), visible_runs=int(runs))
+
+
+TORUS_FACES_AT_1 = 9216  # faces of the procedural torus at resolution 1 (bench's count says what was drawn)
+
+
+def torus_resolution(faces):
+    """The procedural torus' resolution for about `faces` faces (TORUS_FACES_AT_1 x resolution^2)."""
+    return math.sqrt(faces / TORUS_FACES_AT_1)
 
 
 def result(j, backend):
