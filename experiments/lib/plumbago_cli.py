@@ -13,6 +13,7 @@ import os
 import pathlib
 import platform
 import re
+import resource
 import subprocess
 import tempfile
 import time
@@ -130,6 +131,24 @@ def machine(renderer):
     return dict(cpu=model, threads=os.cpu_count(), renderer=renderer, system=platform.platform(),
                 load_average=" ".join("%.2f" % x for x in os.getloadavg()), date=time.strftime("%Y-%m-%d %H:%M"),
                 plumbago=plumbago())
+
+
+def cpu_clock():
+    """What others_cpu compares: the machine's busy CPU seconds (/proc/stat), this process's
+    and its finished children's, and the wall clock."""
+    with open("/proc/stat") as f:
+        ticks = [int(x) for x in f.readline().split()[1:9]]
+    busy = (sum(ticks) - ticks[3] - ticks[4]) / os.sysconf("SC_CLK_TCK")  # less idle and iowait
+    own = sum(getattr(resource.getrusage(who), t) for who in (resource.RUSAGE_SELF, resource.RUSAGE_CHILDREN)
+              for t in ("ru_utime", "ru_stime"))
+    return busy, own, time.time()
+
+
+def others_cpu(since):
+    """The share of the machine's CPU time (0 to 1, all cores) that other processes used since
+    cpu_clock() gave `since`: how much they can have disturbed a timing."""
+    busy, own, wall = cpu_clock()
+    return max(0.0, (busy - since[0] - (own - since[1])) / ((wall - since[2]) * os.cpu_count()))
 
 
 def write_run_info(out, info):
