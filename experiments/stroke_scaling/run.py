@@ -156,6 +156,8 @@ def panel(ax, rows, backend, x):
             ax.plot(*zip(*pts), "k*" if k == "frame_ms" else "o-", ms=9 if k == "frame_ms" else 4, lw=1.2,
                     label={"frame_ms": "whole frame (wall clock)", "unattributed_ms": "frame - passes"}.get(
                         k, k.replace("stage:", "")))
+    sizes = [scene[2 if x == "strokes" else 1] for scene in table1_scenes()]
+    ax.axvspan(min(sizes), max(sizes), color="0.5", alpha=0.12, label="Kalnins et al. Table 1's scenes")
     per, intercept, _ = fit(rows, backend, x, "frame_ms")
     xs = np.geomspace(max(sel[0][key], 1), sel[-1][key], 50)
     ax.plot(xs, intercept + per / PER[x] * xs, "k--", lw=1, label="frame fit: %.3g ms per %s %s" % (
