@@ -89,7 +89,7 @@ STUDIES = {
         columns=[col("sweep", "sweep"), col("backend", "backend"), col("faces", "faces"), col("decals", "drawn"),
                  col("strokes that show", "shown"), col("visible runs", "visible_runs"),
                  col("frame ms", "frame_ms", ms), col("/ smallest", "ratio_to_smallest", ratio),
-                 col("stroke pass ms", "stage:stroke", ms), col("load (1 min)", "load_1min", "%.2f".__mod__)],
+                 col("stroke pass ms", "stage:stroke", ms), col("others' CPU share", "others_cpu", pct)],
         time=("ratio_to_smallest", ratio, "frame / smallest of its sweep"), error=None),
     "curvature_accuracy": dict(
         question="curvature: tensor radius, jet degree, on analytic surfaces",
