@@ -1,6 +1,8 @@
 // plumbago lines SCENE -o lines.json|lines.svg [--backend gpu|reference]: the feature
-// lines of every object but the sketchy ones (SPEC 4.3), for the scene's camera, with
-// their visibility from the chosen backend's ID image (SPEC 4.4-4.5).
+// lines of every object but the sketchy ones (SPEC 4.3) and the decals of the scene's
+// stroke files (SPEC 4.9, projected by the chosen backend), for the scene's camera, with
+// their visibility from the chosen backend's ID image (SPEC 4.4-4.5). It prints how many
+// paths there are, how many show (a visible run or more), and the visible runs drawn.
 //   .json: every path, {"paths": [{"kind", "object", "closed", "points" (world),
 //          "screen" (pixels, origin bottom-left), "visible" (per point)}]};
 //          With --truth also, per path, its window arc length at each point ("arc_px"),
@@ -14,16 +16,21 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <set>
 #include <nlohmann/json.hpp>
 
 #include "apps/command.hpp"
 #include "apps/scene_options.hpp"
 #include "common/base_stroke.hpp"
+#include "common/decal.hpp"
 #include "common/stroke.hpp"
 #include "common/id_image.hpp"
 #include "common/output_file.hpp"
 #include "common/visibility.hpp"
+#include "gpu/context.hpp"
+#include "gpu/decal.hpp"
 #include "gpu/pipeline.hpp"
+#include "reference/decal.hpp"
 #include "reference/pipeline.hpp"
 #include "reference/ray_visibility.hpp"
 
@@ -53,6 +60,14 @@ Scene lines_scene(const Scene& scene) {
 Frame strokes_frame(const Scene& scene, const std::string& backend) {
   FrameOptions keep{true};
   return backend == "reference" ? reference::render(scene, keep) : gpu::Renderer(scene).render(keep);
+}
+
+// The decals' surface points, projected as the backend's frames project them.
+DecalSurface decal_surface(const Scene& scene, const std::string& backend) {
+  if (!has_decals(scene)) return {};
+  if (backend == "reference") return reference::project_decals_by_rays(scene);
+  gpu::Context::get();  // before any GL call
+  return gpu::project_decals_through_gbuffer(scene);
 }
 
 // `origin`: the scene's (p.world is relative to it); the file has world space.
@@ -163,7 +178,8 @@ void run(const LinesOptions& o) {
     throw std::invalid_argument("lines: -o must end in .json or .svg, not '" + o.output + "'");
   Scene scene = lines_scene(o.scene.load());
   auto p = scene.params.get<StrokesParams>();
-  WindowLines lines = window_lines(scene, p);
+  DecalSurface decals = decal_surface(scene, o.backend);
+  WindowLines lines = window_lines(scene, p, LineObjects::Strokes, nullptr, &decals);
   Frame frame = strokes_frame(scene, o.backend);
   ImageU32 keys = keys_from_channels(frame.buffers.at("id_image.ids"));
   auto test = [&](const std::vector<VisibilitySample>& batch) {
@@ -171,15 +187,16 @@ void run(const LinesOptions& o) {
     for (const VisibilitySample& s : batch) flags.push_back(sample_visible(keys, s));
     return flags;
   };
+  Visibility visibility = visible_runs(lines, p, test);
   std::string text;
   if (as_svg) {
-    text = svg(scene, lines, visible_runs(lines, p, test));
+    text = svg(scene, lines, visibility);
   } else {
     nlohmann::json paths = nlohmann::json::array();
     for (const WindowPath& path : lines.paths) paths.push_back(path_json(path, keys, scene.origin));
     nlohmann::json j{{"paths", paths}};
     if (o.truth) {
-      add_truth(scene, lines, visible_runs(lines, p, test), j["paths"]);
+      add_truth(scene, lines, visibility, j["paths"]);
       for (const PassTime& t : frame.ran) j["ran"].push_back({{"name", t.name}, {"ms", t.ms}});
     }
     text = j.dump() + "\n";
@@ -187,7 +204,10 @@ void run(const LinesOptions& o) {
   OutputFile file(o.output);
   std::ofstream(file.temporary_path()) << text;
   file.commit();
-  std::printf("%zu paths -> %s\n", lines.paths.size(), o.output.c_str());
+  std::set<size_t> shown;
+  for (const VisibleRun& run : visibility.runs) shown.insert(run.path);
+  std::printf("%zu paths, %zu shown, %zu visible runs -> %s\n", lines.paths.size(), shown.size(),
+              visibility.runs.size(), o.output.c_str());
 }
 
 void setup(CLI::App& app) {

@@ -53,6 +53,24 @@ TEST_F(LinesCommand, SvgHasOnePathPerVisibleRun) {
   EXPECT_NE(svg.find("fill-opacity"), std::string::npos);
 }
 
+TEST_F(LinesCommand, DecalsAreLinesToo) {
+  tmp_.write("cube.strokes.json", R"({"camera": {"eye": [2.2, 1.7, 2.6], "target": [0, 0, 0], "up": [0, 1, 0],
+    "fov_deg": 35, "near": 1, "far": 10}, "resolution": [200, 160],
+    "strokes": [{"role": "decal", "points": [[100, 60, 1], [104, 50, 1]]}]})");
+  std::string scene(kCube);
+  tmp_.write("cube.json", scene.insert(scene.rfind('}'), R"(, "stroke_files": ["cube.strokes.json"])"));
+  for (const char* backend : {"gpu", "reference"}) {
+    testing::CliRun r = run("lines " + tmp_.path("cube.json") + " --backend " + backend + " -o " + tmp_.path("l.json"));
+    ASSERT_EQ(r.code, 0) << r.err;
+    auto j = nlohmann::json::parse(testing::slurp(tmp_.path("l.json")));
+    ASSERT_EQ(j["paths"].size(), 13u) << backend;  // 12 creases and the decal, last
+    EXPECT_EQ(j["paths"][12]["kind"], "decal");
+    EXPECT_NE(r.out.find("13 paths, 10 shown, 10 visible runs"), std::string::npos) << r.out;
+  }
+  ASSERT_EQ(run("lines " + tmp_.path("cube.json") + " -o " + tmp_.path("l.svg")).code, 0);
+  EXPECT_NE(testing::slurp(tmp_.path("l.svg")).find("class=\"decal\""), std::string::npos);
+}
+
 TEST_F(LinesCommand, RefusesAnUnknownStyleAndWritesNothing) {
   tmp_.write("bad.json", R"({"objects": [{"mesh": {"procedural": "cube"}, "style": "strokes"}], "strokes": {"crease": "nope"}})");
   testing::CliRun r = run("lines " + tmp_.path("bad.json") + " -o " + tmp_.path("lines.json"));

@@ -8,10 +8,14 @@ The program is $PLUMBAGO, or build/plumbago under the repository root.
 import csv
 import glob
 import json
+import math
 import os
 import pathlib
 import platform
+import re
+import resource
 import subprocess
+import tempfile
 import time
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -48,6 +52,23 @@ def bench(scene, sets=(), size=None, frames=5, backend="gpu", reference_frames=N
     if tolerance is not None:
         args += ["--tolerance", tolerance]
     return json.loads(run(args))
+
+
+def lines_counts(scene, backend="gpu"):
+    """`plumbago lines SCENE` at the scene's camera: its paths (feature lines and decals), how
+    many show (a visible run or more), and the visible runs the strokes draw."""
+    with tempfile.TemporaryDirectory(prefix="plumbago-lines-") as work:
+        text = run(["lines", scene, "--backend", backend, "-o", pathlib.Path(work) / "lines.svg"])
+    paths, shown, runs = re.match(r"(\d+) paths, (\d+) shown, (\d+) visible runs", text).groups()
+    return dict(paths=int(paths), shown=int(shown), visible_runs=int(runs))
+
+
+TORUS_FACES_AT_1 = 9216  # faces of the procedural torus at resolution 1 (bench's count says what was drawn)
+
+
+def torus_resolution(faces):
+    """The procedural torus' resolution for about `faces` faces (TORUS_FACES_AT_1 x resolution^2)."""
+    return math.sqrt(faces / TORUS_FACES_AT_1)
 
 
 def result(j, backend):
@@ -110,6 +131,24 @@ def machine(renderer):
     return dict(cpu=model, threads=os.cpu_count(), renderer=renderer, system=platform.platform(),
                 load_average=" ".join("%.2f" % x for x in os.getloadavg()), date=time.strftime("%Y-%m-%d %H:%M"),
                 plumbago=plumbago())
+
+
+def cpu_clock():
+    """What others_cpu compares: the machine's busy CPU seconds (/proc/stat), this process's
+    and its finished children's, and the wall clock."""
+    with open("/proc/stat") as f:
+        ticks = [int(x) for x in f.readline().split()[1:9]]
+    busy = (sum(ticks) - ticks[3] - ticks[4]) / os.sysconf("SC_CLK_TCK")  # less idle and iowait
+    own = sum(getattr(resource.getrusage(who), t) for who in (resource.RUSAGE_SELF, resource.RUSAGE_CHILDREN)
+              for t in ("ru_utime", "ru_stime"))
+    return busy, own, time.time()
+
+
+def others_cpu(since):
+    """The share of the machine's CPU time (0 to 1, all cores) that other processes used since
+    cpu_clock() gave `since`: how much they can have disturbed a timing."""
+    busy, own, wall = cpu_clock()
+    return max(0.0, (busy - since[0] - (own - since[1])) / ((wall - since[2]) * os.cpu_count()))
 
 
 def write_run_info(out, info):

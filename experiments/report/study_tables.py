@@ -84,6 +84,13 @@ STUDIES = {
         columns=[col("sweep", "sweep"), col("backend", "backend"), col("faces", "faces"), ("size", size),
                  col("frame ms", "frame_ms", ms), col("/ smallest", "ratio_to_smallest", ratio)],
         time=("ratio_to_smallest", ratio, "frame / smallest of its sweep"), error=None),
+    "stroke_scaling": dict(
+        question="strokes against faces (Kalnins et al. 2002)",
+        columns=[col("sweep", "sweep"), col("backend", "backend"), col("faces", "faces"), col("decals", "drawn"),
+                 col("strokes that show", "shown"), col("visible runs", "visible_runs"),
+                 col("frame ms", "frame_ms", ms), col("/ smallest", "ratio_to_smallest", ratio),
+                 col("stroke pass ms", "stage:stroke", ms), col("others' CPU share", "others_cpu", pct)],
+        time=("ratio_to_smallest", ratio, "frame / smallest of its sweep"), error=None),
     "curvature_accuracy": dict(
         question="curvature: tensor radius, jet degree, on analytic surfaces",
         columns=[col("surface", "surface"), col("meshing", "meshing"), col("vertices", "vertices"),
@@ -157,6 +164,8 @@ def study(c, name):
     if name == "temporal_coherence":
         return out + temporal_coherence_tables(c)
     out += markdown([h for h, _ in spec["columns"]], [[f(r) for _, f in spec["columns"]] for r in rs])
+    if name == "stroke_scaling":
+        out += stroke_scaling_fits(c)
     if name == "scaling":
         slopes = pc.read_csv(c.results / name / "slopes.csv")
         out += ["", "Log-log slope of each stage's ms against faces and against pixels (`slopes.csv`):", ""]
@@ -164,6 +173,18 @@ def study(c, name):
                         [[s["backend"], s["stage"], "%.2f" % s.get("slope_vs_faces", math.nan),
                           "%.2f" % s.get("slope_vs_pixels", math.nan)] for s in slopes])
     return out
+
+
+def stroke_scaling_fits(c):
+    fits = pc.read_csv(c.results / "stroke_scaling" / "fits.csv")
+    table1 = pc.read_csv(c.results / "stroke_scaling" / "table1.csv")
+    return ["", "Linear fits, per pass and for the frame (`fits.csv`):", ""] + markdown(
+        ["backend", "pass", "ms per 1K strokes", "ms per 100K faces"],
+        [[f["backend"], f["quantity"], "%.2f" % f["ms_per_1k_strokes"], "%.2f" % f["ms_per_100k_faces"]]
+         for f in fits]) + ["", "The frame fits at the sizes of Kalnins et al.'s Table 1 (`table1.csv`):", ""] + \
+        markdown(["backend", "their scene", "faces", "strokes", "strokes ms", "faces ms", "larger"],
+                 [[t["backend"], t["scene"], val(t["faces"]), val(t["strokes"]), ms(t["strokes_ms"]),
+                   ms(t["faces_ms"]), t["larger"]] for t in table1])
 
 
 def span(rs, key, fmt):

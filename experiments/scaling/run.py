@@ -22,7 +22,6 @@ sys.path.insert(0, str(HERE.parent / "lib"))
 import plumbago_cli as pc  # noqa: E402
 import study_cli  # noqa: E402
 
-TORUS_FACES_AT_1 = 9216  # faces of the procedural torus at resolution 1 (checked against bench's count below)
 EFFECTS = ["contours", "interior"]
 
 
@@ -59,7 +58,7 @@ def measure(s, point):
     rows, info = [], None
     with tempfile.TemporaryDirectory(prefix="plumbago-scaling-") as work:
         for f, (w, h) in todo:
-            resolution = math.sqrt(f / TORUS_FACES_AT_1)
+            resolution = pc.torus_resolution(f)
             j = pc.bench(scene(work, resolution), size="%dx%d" % (w, h), frames=s["frames"], backend="both",
                          reference_frames=s["reference_frames"])
             info = info or pc.machine(j["renderer"])
