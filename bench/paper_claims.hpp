@@ -31,9 +31,8 @@ inline const std::vector<PaperClaim>& paper_claims() {
       {"Nienhaus & Doellner 2004", "Ogre", 124008, "800x800", 20, 20, "GeForce FX 5600", "sketchy",
        "scenes/ogre_sketchy.json", "style default: edge and shade maps"},
       {"Kalnins et al. 2002", "cup, 25 strokes", 5000, "not stated", 20, 20, "GeForce3, Pentium IV 1.5 GHz", "strokes",
-       "scenes/cup_strokes.json", "the teapot (6,320 faces) for the cup: toon coat, paper, silhouette, crease and "
-       "border strokes, a floral band of 9 decals; 32 of its 42 lines show at the scene's camera (23 feature lines, "
-       "9 decals; `plumbago lines`), drawn as 83 visible runs, the silhouettes broken into short runs in places"},
+       "scenes/cup_strokes.json", "spot (5,856 faces) decorated like a cup: toon coat, paper, wide silhouettes, 9 "
+       "decals (flowers, leaves, a band); 35 visible strokes at the scene's camera"},
       {"Kalnins et al. 2002", "statue, 100 strokes", 120000, "not stated", 10, 10, "GeForce3, Pentium IV 1.5 GHz",
        "strokes", "scenes/statue_strokes.json", "the Ogre (124K faces): toon coat, silhouettes synthesized by the "
        "Markov chain, creases over 100 degrees; 146 visible strokes at the scene's camera"},

@@ -5,6 +5,8 @@ renderings, as SVG, and makes them stroke files with `plumbago strokefile` (SPEC
   draw_stand_ins.py snowman     scenes/drawn/snowman.svg -> snowman.strokes.json: the face
                                 and buttons as decals, structured hatching on the shadow
                                 side of each ball, two layers on each tree (Fig. 8)
+  draw_stand_ins.py cup         scenes/drawn/cup.svg -> cup.strokes.json: flowers, leaves and
+                                a band as decals on spot's flank (Table 1's cup)
   draw_stand_ins.py breakfast   scenes/drawn/breakfast.level<k>.svg -> .strokes.json: free
                                 hatching on each object's shadow side, level 0 from the
                                 scene's camera, level 1 denser from halfway to the table (Fig. 7)
@@ -66,6 +68,17 @@ class Camera:
 
     def document(self):
         return {"eye": list(self.eye), "target": list(self.target), "up": list(self.up), "fov_deg": self.fov_deg}
+
+
+class SceneCamera:
+    """A scene's own camera as its file gives it (a fitted one too: view_direction), for
+    drawing over the scene's render without projecting anything."""
+
+    def __init__(self, scene):
+        self.camera, (self.width, self.height) = scene["camera"], scene["resolution"]
+
+    def document(self):
+        return self.camera
 
 
 def transform_of(obj):
@@ -147,6 +160,39 @@ def snowman(scene):
         face.append(ring(cam, p, [1, 0, 0], [0, 1, 0], 0.05, 12))
     elements.append((face, {"data-role": "decal", "data-style": "ink"}))
     return [(cam, elements)]
+
+
+def flower(center, radius, petals=5):
+    """One stroke: a flower of `petals` loops around `center`, window coordinates."""
+    out = []
+    for k in range(petals * 12 + 1):
+        t = 2 * math.pi * k / (petals * 12)
+        r = radius * abs(math.sin(petals * t / 2))
+        out.append((center[0] + r * math.cos(t), center[1] + r * math.sin(t), 0.6 + 0.4 * r / radius))
+    return out
+
+
+def cup(scene, folder):
+    """Decals over spot's flank, as drawn on a cup: three flowers with their stems, two
+    leaves and a band under them; only where spot shows (its mask), so that each lands on it."""
+    cam = SceneCamera(scene)
+    inside = object_mask(scene, cam, 0, folder)
+    pixels = [(x, y) for x in range(0, cam.width, 4) for y in range(0, cam.height, 4) if inside(x, y)]
+    xs, ys = sorted(p[0] for p in pixels), sorted(p[1] for p in pixels)
+    x0, x1, y0, y1 = xs[len(xs) // 5], xs[4 * len(xs) // 5], ys[len(ys) // 5], ys[4 * len(ys) // 5]
+    strokes = []
+    for k in range(3):
+        c = (x0 + (x1 - x0) * (0.2 + 0.3 * k), y0 + (y1 - y0) * 0.62)
+        strokes.append(flower(c, 20))
+        stem = [(c[0] + 2 * math.sin(j / 3), c[1] - 20 - 3 * j, 1.0) for j in range(12)]
+        strokes.append(stem)
+    for k in range(2):
+        c = (x0 + (x1 - x0) * (0.35 + 0.3 * k), y0 + (y1 - y0) * 0.45)
+        strokes.append([(c[0] + 10 * math.cos(t / 6 * math.pi), c[1] + 4 * math.sin(t / 6 * math.pi), 0.8)
+                        for t in range(13)])
+    strokes.append([(x0 + (x1 - x0) * j / 30, y0 + (y1 - y0) * 0.3 + 2 * math.sin(j / 2), 0.9) for j in range(31)])
+    strokes = [[p for p in s if inside(p[0], p[1])] for s in strokes]
+    return [(cam, [([s for s in strokes if len(s) >= 2], {"data-role": "decal"})])]
 
 
 def mesh_bounds(path):
@@ -245,10 +291,11 @@ def make_stroke_file(scene_path, scene, cam, elements, svg_path, out_path, style
 
 def main():
     name = sys.argv[1] if len(sys.argv) > 1 else ""
-    draw = {"snowman": lambda s, folder: snowman(s), "breakfast": breakfast}
-    style = {"snowman": "pencil", "breakfast": "../styles/breakfast_hatching.json"}  # relative to scenes/drawn
+    draw = {"snowman": lambda s, folder: snowman(s), "breakfast": breakfast, "cup": cup}
+    style = {"snowman": "pencil", "breakfast": "../styles/breakfast_hatching.json",  # relative to scenes/drawn
+             "cup": "../styles/cup_decal.json"}
     if name not in draw:
-        sys.exit("usage: draw_stand_ins.py snowman|breakfast")
+        sys.exit("usage: draw_stand_ins.py snowman|breakfast|cup")
     scene_path = os.path.join(ROOT, "scenes", name + "_strokes.json")
     with open(scene_path) as f:
         scene = json.load(f)
