@@ -41,7 +41,7 @@ inline const std::vector<PaperClaim>& paper_claims() {
        "drawn in a graphite style synthesized from drawn crease examples; 5,359 visible strokes at the scene's camera"},
       {"Kalnins et al. 2002", "breakfast, 400 strokes", 25000, "not stated", 9, 9, "GeForce3, Pentium IV 1.5 GHz",
        "strokes", "scenes/breakfast_strokes.json", "a table with the teapot, spot, the cow, an orange and a mug "
-       "(24,264 faces): conte silhouettes and creases, translucent toon coat, free hatching in two levels of detail; "
+       "(24,268 faces): conte silhouettes and creases, translucent toon coat, free hatching in two levels of detail; "
        "279 visible strokes at frame 0; timed over its 40-frame dolly"},
       {"Kalnins et al. 2002", "snowman, 250 strokes", 10000, "not stated", 11, 11, "GeForce3, Pentium IV 1.5 GHz",
        "strokes", "scenes/snowman_strokes.json", "procedural spheres and cones (11,136 faces): pale toon coat, "

@@ -19,16 +19,17 @@ import plumbago_cli as pc  # noqa: E402
 
 def table(j):
     """The Markdown table of one `bench --paper --json` run."""
-    lines = ["| paper | their scene | faces | resolution | their fps | their hardware | our scene | faces | size | "
-             "our GPU fps | our CPU reference fps |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+    lines = ["| paper | their scene | faces | resolution | their fps | their hardware | our scene | faces | strokes | "
+             "size | our GPU fps | our CPU reference fps |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for c in j["claims"]:
         fps = "%g" % c["fps_low"] if c["fps_low"] == c["fps_high"] else "%g-%g" % (c["fps_low"], c["fps_high"])
         g, r = c["ours_gpu"], c["ours_reference"]
         ours = g or r
-        lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+        lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
             c["paper"], c["scene"], c["faces"] or "?", c["resolution"], fps, c["hardware"],
             ("`%s` (%s)" % (c["ours_scene"], c["note"])) if c["ours_scene"] else "none (%s)" % c["note"],
-            ours["faces"] if ours else "", "%dx%d" % tuple(ours["size"]) if ours else "",
+            ours["faces"] if ours else "", "%d" % ours["strokes"] if ours and ours.get("strokes") else "",
+            "%dx%d" % tuple(ours["size"]) if ours else "",
             "%.1f" % g["fps"] if g else "-", "%.1f" % r["fps"] if r else "-"))
     return lines
 
