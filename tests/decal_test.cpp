@@ -132,7 +132,8 @@ TEST(StrokeFile, DrawnExamplesStyleTheCreases) {
   EXPECT_EQ(stamp.of(path, run, 1).offsets->offsets.size(), 2u);
   s.strokes.crease.synthesis = OffsetSynthesis::Markov;
   RunStyles markov(s.strokes, 1, {});
-  for (const StrokeOffset& o : markov.of(path, run, 0).offsets->offsets) EXPECT_LE(std::abs(o.displacement_px), 3.3);
+  StrokeStyle synthesized = markov.of(path, run, 0);
+  for (const StrokeOffset& o : synthesized.offsets->offsets) EXPECT_LE(std::abs(o.displacement_px), 3.3);
   dir.write("e.strokes.json", R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0],
       "fov_deg": 40, "near": 1, "far": 10}, "resolution": [320, 240], "strokes": [
       {"role": "silhouette", "points": [[5, 5, 1], [9, 9, 1], [5.2, 5, 1]]}]})");
