@@ -48,7 +48,8 @@ FrameStrokes frame(std::vector<TrackedRun> runs, const std::vector<TrackedRun>& 
   return f;
 }
 
-const PairMeasures& of(const std::vector<std::pair<std::string, PairMeasures>>& all, const std::string& kind) {
+// By value: the measures are often a temporary's.
+PairMeasures of(const std::vector<std::pair<std::string, PairMeasures>>& all, const std::string& kind) {
   for (const auto& [name, m] : all)
     if (name == kind) return m;
   throw std::out_of_range("no kind " + kind);
@@ -108,7 +109,7 @@ TEST(TemporalCoherence, FixedPathsLandOnlyOnThemselves) {
     TrackedRun a = stroke(c, kind, -1, 1, 0, 30), beside = stroke(c, kind, -1, 1, 0.002, 30);  // 0.2 px above
     std::vector<TrackedRun> hidden;
     if (kind == LineKind::Crease) hidden.push_back(a);
-    const PairMeasures& m = of(pair_measures(frame({a}), frame({beside}, hidden)), line_kind_name(kind));
+    PairMeasures m = of(pair_measures(frame({a}), frame({beside}, hidden)), line_kind_name(kind));
     EXPECT_EQ(m.matched, kind == LineKind::Crease ? 0u : 30u) << line_kind_name(kind);
   }
 }
@@ -130,7 +131,7 @@ TEST(TemporalCoherence, StaticCameraChangesNothingAndATurnIsFollowed) {
     Scene scene = study_scene(path, {}, step, 2);
     scene.width = kWidth, scene.height = kHeight;
     StrokeFrame a = render_stroke_frame(scene, 0), b = render_stroke_frame(scene, 1);
-    const PairMeasures& m = of(pair_measures(a.strokes, b.strokes), "all");
+    PairMeasures m = of(pair_measures(a.strokes, b.strokes), "all");
     Image motion = shower_door::surface_motion(a.strokes.camera, a.points, b.points);
     double layer = shower_door::residuals(a.layer, b.layer, motion, shower_door::Sampling::Bilinear).coherence();
     std::printf("[temporal coherence, torus %dx%d, %g deg] %zu of %zu samples matched, slide mean %.3f px, "
