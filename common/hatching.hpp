@@ -45,6 +45,9 @@
 
 namespace plumbago {
 
+// Interpolated hatches are made down to this level: 2^3 - 1 between each pair of neighbours.
+constexpr int kMaxHatchLevel = 3;
+
 struct HatchingParams {
   static constexpr const char* stage = "hatching";
   float t_plus, t_minus, fade_s;
@@ -56,13 +59,10 @@ struct HatchingParams {
     v.real(t_minus, "t_minus", 1.4, 1.0, 2.0,
            "t-: down a level when sigma falls below sigma_level t- / 2 (hysteresis; above t+ counts as t+)");
     v.real(fade_s, "fade_s", 0.5, 0.0, 10.0, "seconds of frame time a level transition takes (SPEC 4.10)");
-    v.integer(max_level, "max_level", 2, 0, 3, "a structured group's highest level (2^level x its hatches); "
-              "beyond it the strokes only thicken");
+    v.integer(max_level, "max_level", 2, 0, kMaxHatchLevel,
+              "a structured group's highest level (2^level x its hatches); beyond it the strokes only thicken");
   }
 };
-
-// Interpolated hatches are made down to this level (1 + 2^3 positions between neighbours).
-constexpr int kMaxHatchLevel = 3;
 
 // What a surface stroke is: a decal (group -1) or a hatch of a group.
 struct HatchTag {
@@ -85,7 +85,7 @@ std::vector<HatchGroup> hatching_groups(const Scene& scene);
 // A hatch before projection: its polyline in its stroke file's window.
 struct HatchPolyline {
   uint32_t file;
-  const DrawnStroke* stroke;  // the drawn stroke it is, or the first of the two it interpolates
+  const DrawnStroke* stroke;  // whose style it takes: a free hatch's own; in a structured group, the group's first
   HatchTag tag;
   std::vector<DrawnPoint> points;
 };
