@@ -154,6 +154,8 @@ class GroupScale {
     for (const ProjectedDecal& d : surface)
       if (d.hatch.group == index && (g.free ? d.hatch.position == 0 : d.hatch.position == std::floor(d.hatch.position)))
         add_anchor(d);
+    object_ = most_met();
+    if (object_ != kMissed) bound_object();
     const StrokeFile& drawn = scene.stroke_files[g.files[0]];
     drawn_ = measure(drawn.camera, drawn.width, drawn.height);
   }
@@ -165,12 +167,7 @@ class GroupScale {
   }
 
   // The object most of the drawn points meet (kMissed when none does).
-  uint32_t object() const {
-    std::map<uint32_t, size_t> count;
-    for (uint32_t o : objects_) ++count[o];
-    auto most = std::max_element(count.begin(), count.end(), [](auto& a, auto& b) { return a.second < b.second; });
-    return most == count.end() ? kMissed : most->first;
-  }
+  uint32_t object() const { return object_; }
 
   HatchLevels levels(int max_level) const {
     HatchLevels out;
@@ -213,22 +210,38 @@ class GroupScale {
 
   // The object's bounding sphere's diameter in px at its distance (§5.4's sigma_m).
   double screen_diameter(const Camera& camera, int height) const {
-    if (objects_.empty()) return 0;
-    const SceneObject& o = scene_.objects[object()];
-    glm::dvec3 lo(INFINITY), hi(-INFINITY);
-    for (const glm::vec3& v : o.mesh->positions) {
-      glm::dvec3 w(glm::dmat4(o.transform) * glm::dvec4(glm::dvec3(v), 1.0));
+    if (object_ == kMissed) return 0;
+    double distance = glm::distance(center_, glm::dvec3(camera.eye));
+    double half_fov = glm::radians(double(camera.fov_deg)) / 2;
+    return distance > 0 ? 2 * radius_ / (distance * std::tan(half_fov)) * height / 2 : 0;
+  }
+
+  uint32_t most_met() const {
+    std::map<uint32_t, size_t> count;
+    for (uint32_t o : objects_) ++count[o];
+    auto most = std::max_element(count.begin(), count.end(), [](auto& a, auto& b) { return a.second < b.second; });
+    return most == count.end() ? kMissed : most->first;
+  }
+
+  // The bounding sphere of the object's box (Mesh::bbox_min/max) placed in the world.
+  void bound_object() {
+    const SceneObject& o = scene_.objects[object_];
+    glm::dvec3 lo(INFINITY), hi(-INFINITY), a(o.mesh->bbox_min()), b(o.mesh->bbox_max());
+    for (int k = 0; k < 8; ++k) {
+      glm::dvec3 corner(k & 1 ? b.x : a.x, k & 2 ? b.y : a.y, k & 4 ? b.z : a.z);
+      glm::dvec3 w(glm::dmat4(o.transform) * glm::dvec4(corner, 1.0));
       lo = glm::min(lo, w), hi = glm::max(hi, w);
     }
-    double radius = glm::distance(lo, hi) / 2, distance = glm::distance((lo + hi) / 2.0, glm::dvec3(camera.eye));
-    double half_fov = glm::radians(double(camera.fov_deg)) / 2;
-    return distance > 0 ? 2 * radius / (distance * std::tan(half_fov)) * height / 2 : 0;
+    center_ = (lo + hi) / 2.0, radius_ = glm::distance(lo, hi) / 2;
   }
 
   const Scene& scene_;
   const HatchGroup& group_;
   std::vector<glm::dvec3> backbone_;
   std::vector<uint32_t> objects_;
+  uint32_t object_ = kMissed;
+  glm::dvec3 center_{0.0};
+  double radius_ = 0;
   double drawn_ = 0;
 };
 

@@ -217,13 +217,14 @@ def object_box(scene, obj, folder):
     return [c[:3] for c in corners], (m @ [*(lo + hi) / 2, 1])[:3]
 
 
-def render_scene(view, folder, out_png):
-    """`plumbago render` of a scene document written beside the scene (its paths relative)."""
+def run_on_scene(view, folder, command):
+    """`plumbago COMMAND[0] SCENE COMMAND[1:]` on a scene document written beside the scene
+    (its relative paths hold), then removed."""
     with tempfile.NamedTemporaryFile("w", suffix=".json", dir=folder, delete=False) as f:
         json.dump(view, f)
     try:
         program = os.environ.get("PLUMBAGO", os.path.join(ROOT, "build", "plumbago"))
-        subprocess.run([program, "render", f.name, "-o", out_png], check=True, stdout=subprocess.DEVNULL)
+        subprocess.run([program, command[0], f.name] + command[1:], check=True, stdout=subprocess.DEVNULL)
     finally:
         os.unlink(f.name)
 
@@ -238,7 +239,7 @@ def object_mask(scene, cam, k, folder):
     for key in ("stroke_files", "animation"):
         view.pop(key, None)
     with tempfile.TemporaryDirectory() as tmp:
-        render_scene(view, folder, os.path.join(tmp, "mask.png"))
+        run_on_scene(view, folder, ["render", "-o", os.path.join(tmp, "mask.png")])
         image = matplotlib.image.imread(os.path.join(tmp, "mask.png"))
     h, w = image.shape[:2]
 
@@ -279,14 +280,7 @@ def make_stroke_file(scene_path, scene, cam, elements, svg_path, out_path, style
     view = dict(scene, camera=cam.document())
     view.pop("stroke_files", None)
     view.pop("animation", None)
-    folder = os.path.dirname(scene_path)
-    with tempfile.NamedTemporaryFile("w", suffix=".json", dir=folder, delete=False) as f:
-        json.dump(view, f)
-    try:
-        program = os.environ.get("PLUMBAGO", os.path.join(ROOT, "build", "plumbago"))
-        subprocess.run([program, "strokefile", f.name, svg_path, "-o", out_path, "--style", style], check=True)
-    finally:
-        os.unlink(f.name)
+    run_on_scene(view, os.path.dirname(scene_path), ["strokefile", svg_path, "-o", out_path, "--style", style])
 
 
 def main():
