@@ -119,8 +119,13 @@ def rows(c, name):
 
 def run_of(c, name):
     """Which run, machine and date: from run_info.json."""
-    path = c.results / name / "run_info.json"
-    where = os.path.relpath(c.results / name, c.root)
+    return run_in(c, c.results / name)
+
+
+def run_in(c, folder):
+    """Which run, machine and date: from the folder's run_info.json."""
+    path = folder / "run_info.json"
+    where = os.path.relpath(folder, c.root)
     if not path.exists():
         return "`%s/results.csv`; its run wrote no run_info.json, so run, machine and date are not recorded" % where
     i = json.loads(path.read_text())
@@ -209,16 +214,18 @@ def figure(c, name, file):
     return ["![%s](%s)" % (name, os.path.relpath(c.results / name / file, c.reports))]
 
 
-def paper_claims(c):
+def paper_claims(c, recorded=None):
+    """The study's last run, or a run recorded under bench/results/RECORDED/ (another machine)."""
     sys.path.insert(0, str(c.root / "experiments" / "paper_claims"))
     import run as claims
-    j = json.loads((c.results / "paper_claims" / "paper_claims.json").read_text())
-    return ["From " + run_of(c, "paper_claims") + ".", "", "machine: %s; GL renderer: %s" % (j["machine"], j["renderer"]),
+    folder = c.root / "bench" / "results" / recorded if recorded else c.results / "paper_claims"
+    j = json.loads((folder / "paper_claims.json").read_text())
+    return ["From " + run_in(c, folder) + ".", "", "machine: %s; GL renderer: %s" % (j["machine"], j["renderer"]),
             ""] + claims.table(j)
 
 
 KINDS = {"study": lambda c, name: study(c, name), "headline": lambda c: headline(c),
-         "figure": figure, "paper_claims": lambda c: paper_claims(c)}
+         "figure": figure, "paper_claims": paper_claims}
 
 
 def study_rows(c, name, *conditions):
