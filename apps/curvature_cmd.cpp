@@ -1,7 +1,8 @@
 // plumbago curvature MESH [--method auto|tensor|jet] [--radius R] [-o out.csv] [--quiet]
 //                         [--no-cache] [--set curvature.name=value ...]
 // Principal curvature per vertex (SPEC §1.1) as CSV, one row per vertex of the mesh as
-// loaded (after welding).
+// loaded (after welding); `firmness` is direction_firmness (0: the directions were
+// propagated from the neighbors, 1: the estimate's, held fixed).
 #include <charconv>
 #include <chrono>
 #include <cstdio>
@@ -23,7 +24,7 @@ struct CurvatureCommandOptions {
   bool quiet = false, no_cache = false;
 };
 
-const char* const kHeader = "vertex,x,y,z,nx,ny,nz,k_min,k_max,dmin_x,dmin_y,dmin_z,dmax_x,dmax_y,dmax_z\n";
+const char* const kHeader = "vertex,x,y,z,nx,ny,nz,k_min,k_max,dmin_x,dmin_y,dmin_z,dmax_x,dmax_y,dmax_z,firmness\n";
 
 // Shortest text that reads back as the same float.
 void append_number(std::string& out, float value) {
@@ -33,7 +34,8 @@ void append_number(std::string& out, float value) {
   out.append(buffer, end);
 }
 
-void write_csv(std::FILE* out, const Mesh& mesh, const Curvature& c) {
+void write_csv(std::FILE* out, const Mesh& mesh, const Curvature& c, const CurvatureParams& p) {
+  float diagonal = mesh.bbox_diagonal();
   std::fputs(kHeader, out);
   std::string row;
   for (size_t v = 0; v < c.size(); ++v) {
@@ -44,6 +46,7 @@ void write_csv(std::FILE* out, const Mesh& mesh, const Curvature& c) {
     append_number(row, c.k_max[v]);
     for (int k = 0; k < 3; ++k) append_number(row, c.d_min[v][k]);
     for (int k = 0; k < 3; ++k) append_number(row, c.d_max[v][k]);
+    append_number(row, float(direction_firmness(c.k_min[v], c.k_max[v], p, diagonal)));
     row.push_back('\n');
     std::fwrite(row.data(), 1, row.size(), out);
   }
@@ -74,13 +77,13 @@ void run(const CurvatureCommandOptions& o) {
     std::fprintf(stderr, "plumbago curvature: %s: %zu vertices, %s, %.1f ms\n", o.mesh.c_str(), c.size(),
                  method_name(resolved_method(mesh, params)), ms.count());
   if (o.output.empty()) {
-    write_csv(stdout, mesh, c);
+    write_csv(stdout, mesh, c, params);
     return;
   }
   OutputFile file(o.output);
   std::FILE* out = std::fopen(file.temporary_path().c_str(), "wb");
   if (!out) throw std::runtime_error(o.output + ": cannot be written");
-  write_csv(out, mesh, c);
+  write_csv(out, mesh, c, params);
   bool written = std::ferror(out) == 0;
   written = std::fclose(out) == 0 && written;
   if (!written) throw std::runtime_error(o.output + ": write failed");

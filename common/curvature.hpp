@@ -134,6 +134,11 @@ struct CurvatureOptions {
 // cache file is reported on stderr (unless !progress) and recomputed.
 Curvature compute_curvature(const Mesh& mesh, const CurvatureParams& params, const CurvatureOptions& options = {});
 
+// How firmly a vertex's estimated direction holds while the field is smoothed: 0 where
+// it is undefined (the umbilic/flat test: propagated from the neighbors), rising linearly
+// to 1 at `direction_firm` times the test's threshold, 1 beyond (held fixed).
+double direction_firmness(float k_min, float k_max, const CurvatureParams& p, float bbox_diagonal);
+
 // The estimator `method = auto` picks for this mesh (tensor or jet); the others as given.
 CurvatureMethod resolved_method(const Mesh& mesh, const CurvatureParams& params);
 const char* method_name(CurvatureMethod method);

@@ -145,17 +145,6 @@ void propagate_fronts(const MeshTopology& topo, Curvature& c, std::vector<uint8_
   }
 }
 
-// How firmly a vertex's estimated direction holds while the field is smoothed: 0 where
-// it is undefined (spread below the umbilic test's threshold), rising linearly to 1 at
-// `direction_firm` times the threshold, 1 beyond (held fixed).
-double firmness(float k_min, float k_max, const CurvatureParams& p, float bbox_diagonal) {
-  double flat = bbox_diagonal > 0 ? double(p.flat_curvature) / double(bbox_diagonal) : 0.0;
-  double threshold = double(p.umbilic_ratio) * (std::abs(double(k_max)) + std::abs(double(k_min))) + flat;
-  double spread = std::abs(double(k_max) - double(k_min));
-  if (!(spread >= threshold)) return 0.0;
-  if (!(threshold > 0) || !(p.direction_firm > 1)) return 1.0;
-  return std::clamp((spread / threshold - 1) / (double(p.direction_firm) - 1), 0.0, 1.0);
-}
 
 // The mean line in v's tangent plane of its own d_min, its neighbors' (as they are now)
 // and, with weight `hold` x (neighbors + 1), its estimated direction: the main axis of
@@ -190,7 +179,7 @@ void smooth_directions(const MeshTopology& topo, const CurvatureParams& p, float
   std::vector<double> hold;
   std::vector<glm::dvec3> estimate;
   for (uint32_t v = 0; v < c.size(); ++v) {
-    double f = firmness(c.k_min[v], c.k_max[v], p, bbox_diagonal);
+    double f = direction_firmness(c.k_min[v], c.k_max[v], p, bbox_diagonal);
     if (!known[v] || f >= 1) continue;
     free.push_back(v), hold.push_back(f), estimate.push_back(c.d_min[v]);
   }
@@ -227,3 +216,16 @@ void propagate_directions(const MeshTopology& topo, const CurvatureParams& p, fl
 }
 
 }  // namespace plumbago::curvature
+
+namespace plumbago {
+
+double direction_firmness(float k_min, float k_max, const CurvatureParams& p, float bbox_diagonal) {
+  double flat = bbox_diagonal > 0 ? double(p.flat_curvature) / double(bbox_diagonal) : 0.0;
+  double threshold = double(p.umbilic_ratio) * (std::abs(double(k_max)) + std::abs(double(k_min))) + flat;
+  double spread = std::abs(double(k_max) - double(k_min));
+  if (!(spread >= threshold)) return 0.0;
+  if (!(threshold > 0) || !(p.direction_firm > 1)) return 1.0;
+  return std::clamp((spread / threshold - 1) / (double(p.direction_firm) - 1), 0.0, 1.0);
+}
+
+}  // namespace plumbago

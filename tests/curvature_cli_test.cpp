@@ -77,17 +77,20 @@ TEST_F(CurvatureCli, WritesOneUnitRowPerVertexUnderTheExactHeader) {
   EXPECT_EQ(r.err, "");
   std::string csv = slurp(path("out.csv"));
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
-            "vertex,x,y,z,nx,ny,nz,k_min,k_max,dmin_x,dmin_y,dmin_z,dmax_x,dmax_y,dmax_z");
+            "vertex,x,y,z,nx,ny,nz,k_min,k_max,dmin_x,dmin_y,dmin_z,dmax_x,dmax_y,dmax_z,firmness");
   auto table = rows(csv);
   ASSERT_EQ(table.size(), mesh_.positions.size());
-  Curvature c = estimate_curvature(load_mesh(path("torus.obj")), curvature_params());
+  CurvatureParams params = curvature_params();
+  Curvature c = estimate_curvature(load_mesh(path("torus.obj")), params);
+  float diagonal = load_mesh(path("torus.obj")).bbox_diagonal();
   for (size_t v = 0; v < table.size(); ++v) {
     const auto& row = table[v];
-    ASSERT_EQ(row.size(), 15u) << v;
+    ASSERT_EQ(row.size(), 16u) << v;
     EXPECT_EQ(row[0], double(v));
     EXPECT_NEAR(row[1], mesh_.positions[v].x, 1e-5);
     EXPECT_FLOAT_EQ(float(row[7]), c.k_min[v]) << v;
     EXPECT_FLOAT_EQ(float(row[8]), c.k_max[v]) << v;
+    EXPECT_FLOAT_EQ(float(row[15]), float(direction_firmness(c.k_min[v], c.k_max[v], params, diagonal))) << v;
     for (int first : {4, 9, 12}) EXPECT_NEAR(std::hypot(row[first], row[first + 1], row[first + 2]), 1.0, 1e-5) << v;
   }
   EXPECT_EQ(std::distance(fs::directory_iterator(path("cache")), fs::directory_iterator()), 1);
