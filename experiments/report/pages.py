@@ -7,7 +7,8 @@ and the results files they name; no number on them is typed by hand.
 
 A template is Markdown; a line `{{KIND ARGS}}` becomes a table: the studies' kinds are in
 study_tables.py (ARGS: a study, read from RESULTS/<study>/), the recorded benchmarks' in
-bench_tables.py (ARGS: a file under bench/results/). Each table says which run, machine and
+bench_tables.py (ARGS: a file under bench/results/), and docs/curvature.md's summary in
+curvature_tables.py. Each table says which run, machine and
 date it comes from.
 """
 import argparse
@@ -17,11 +18,12 @@ import re
 import sys
 
 import bench_tables
+import curvature_tables
 import study_tables
 
 HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parents[1]
-KINDS = dict(study_tables.KINDS, **bench_tables.KINDS)
+KINDS = dict(study_tables.KINDS, **bench_tables.KINDS, **curvature_tables.KINDS)
 PLACEHOLDER = re.compile(r"^\{\{(\w+)(.*)\}\}$")
 
 
