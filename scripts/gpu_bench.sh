@@ -6,8 +6,10 @@
 #   scripts/gpu_bench.sh unpack            # nothing more
 #   scripts/gpu_bench.sh micro [FILTER]    # plumbago_bench (bundle-1 alone), default: the GPU ones
 #   scripts/gpu_bench.sh paper             # plumbago bench --paper (every part unpacked)
+#   scripts/gpu_bench.sh study NAME        # a study of experiments/ with the full config, no Snakemake
 #
-# Results go to $OUT (micro.txt; paper_claims/ as experiments/paper_claims writes it).
+# Results go to $OUT (micro.txt; paper_claims/ as experiments/paper_claims writes it; NAME/
+# as the study's collect step writes it).
 set -uo pipefail
 bundle=/tmp/plumbago-bundle
 out=${OUT:-/tmp/plumbago-out}
@@ -33,5 +35,13 @@ case ${1:-unpack} in
     if ldd "$bundle/bin/plumbago" | grep "not found"; then echo "gpu_bench: a part is missing" >&2; exit 3; fi
     PLUMBAGO=$bundle/bin/plumbago /usr/bin/env python3 experiments/paper_claims/run.py \
       '{"frames": 20, "reference_frames": 3, "size": null}' "$out/paper_claims" ;;
-  *) echo "gpu_bench: unpack, micro [FILTER] or paper" >&2; exit 2 ;;
+  study)
+    name=$2 points=/tmp/plumbago-points/$2 run="experiments/$2/run.py"
+    settings=$(python3 -c "import json, sys, yaml; print(json.dumps(yaml.safe_load(open(sys.argv[1]))[sys.argv[2]]))" \
+      experiments/config/full.yaml "$name")
+    mkdir -p "$points"
+    export PLUMBAGO=$bundle/bin/plumbago
+    for point in $(python3 "$run" points "$settings"); do python3 "$run" measure "$settings" "$point" "$points/$point.json"; done
+    python3 "$run" collect "$settings" "$out/$name" "$points"/*.json ;;
+  *) echo "gpu_bench: unpack, micro [FILTER], paper or study NAME" >&2; exit 2 ;;
 esac

@@ -161,18 +161,20 @@ def temporal_coherence_tables(c):
     return report.tables(pc.read_csv(c.results / "temporal_coherence" / "summary.csv"))
 
 
-def study(c, name):
-    spec, rs = STUDIES[name], rows(c, name)
-    out = ["From " + run_of(c, name) + ".", ""]
+def study(c, name, recorded=None):
+    """The study's last run, or a run recorded under bench/results/RECORDED/ (another machine)."""
+    folder = c.root / "bench" / "results" / recorded if recorded else c.results / name
+    spec, rs = STUDIES[name], pc.read_csv(folder / "results.csv")
+    out = ["From " + run_in(c, folder) + ".", ""]
     if name == "shower_door":
         return out + shower_door_table(rs)
     if name == "temporal_coherence":
         return out + temporal_coherence_tables(c)
     out += markdown([h for h, _ in spec["columns"]], [[f(r) for _, f in spec["columns"]] for r in rs])
     if name == "stroke_scaling":
-        out += stroke_scaling_fits(c)
+        out += stroke_scaling_fits(folder)
     if name == "scaling":
-        slopes = pc.read_csv(c.results / name / "slopes.csv")
+        slopes = pc.read_csv(folder / "slopes.csv")
         out += ["", "Log-log slope of each stage's ms against faces and against pixels (`slopes.csv`):", ""]
         out += markdown(["backend", "stage", "slope vs faces", "slope vs pixels"],
                         [[s["backend"], s["stage"], "%.2f" % s.get("slope_vs_faces", math.nan),
@@ -180,9 +182,9 @@ def study(c, name):
     return out
 
 
-def stroke_scaling_fits(c):
-    fits = pc.read_csv(c.results / "stroke_scaling" / "fits.csv")
-    table1 = pc.read_csv(c.results / "stroke_scaling" / "table1.csv")
+def stroke_scaling_fits(folder):
+    fits = pc.read_csv(folder / "fits.csv")
+    table1 = pc.read_csv(folder / "table1.csv")
     return ["", "Linear fits, per pass and for the frame (`fits.csv`):", ""] + markdown(
         ["backend", "pass", "ms per 1K strokes", "ms per 100K faces"],
         [[f["backend"], f["quantity"], "%.2f" % f["ms_per_1k_strokes"], "%.2f" % f["ms_per_100k_faces"]]
@@ -224,7 +226,7 @@ def paper_claims(c, recorded=None):
             ""] + claims.table(j)
 
 
-KINDS = {"study": lambda c, name: study(c, name), "headline": lambda c: headline(c),
+KINDS = {"study": study, "headline": lambda c: headline(c),
          "figure": figure, "paper_claims": paper_claims}
 
 
