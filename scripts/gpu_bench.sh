@@ -26,6 +26,8 @@ done
 export LD_LIBRARY_PATH=$bundle/lib PLUMBAGO_SHADER_DIR=$PWD/shaders PLUMBAGO_MODELS_DIR=$bundle/models
 export PLUMBAGO_CACHE_DIR=/tmp/plumbago-cache
 [ -e ../shared/models ] || { mkdir -p ../shared && ln -s "$bundle/models" ../shared/models; }
+source_dir=$(cat "$bundle/source_dir" 2>/dev/null || true)  # compiled into the programs (scenes, styles)
+if [ -n "$source_dir" ] && [ ! -e "$source_dir" ]; then mkdir -p "$(dirname "$source_dir")" && ln -s "$PWD" "$source_dir"; fi
 case ${1:-unpack} in
   unpack) ;;
   micro)

@@ -24,6 +24,8 @@ libraries() { ldd "$@" | awk '/=> \// {print $3}' | sort -u; }
 copy() { while read -r lib; do [[ $(basename "$lib") =~ $system ]] || cp -L "$lib" "$stage/lib/"; done; }
 libraries "$build/plumbago_bench" | copy
 [ -d ../shared/models ] && cp -r ../shared/models "$stage/models"
+# The checkout the programs were built from: they look for scenes, styles and shaders there.
+sed -n 's/^CMAKE_HOME_DIRECTORY:INTERNAL=//p' "$build/CMakeCache.txt" > "$stage/source_dir"
 (cd "$stage" && find . -type f -printf '%P\n') > "$stage/.part1"
 libraries "$build/plumbago" | copy
 # The rest, largest first, each to the part that holds the fewest bytes so far.
