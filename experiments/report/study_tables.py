@@ -1,5 +1,7 @@
 """The studies' tables for pages.py, read from RESULTS/<study>/ (results.csv, run_info.json,
-the figures): `{{study NAME}}`, `{{headline}}`, `{{figure NAME FILE}}`, `{{paper_claims}}`."""
+the figures): `{{study NAME}}`, `{{headline}}`, `{{figure NAME FILE}}`, `{{paper_claims}}`;
+`{{study NAME RECORDED}}` and `{{paper_claims RECORDED}}` read a run recorded on another
+machine from bench/results/RECORDED/ instead."""
 import collections
 import json
 import math
@@ -161,9 +163,13 @@ def temporal_coherence_tables(c):
     return report.tables(pc.read_csv(c.results / "temporal_coherence" / "summary.csv"))
 
 
+def results_folder(c, name, recorded=None):
+    """A study's results: its last run, or a run recorded under bench/results/RECORDED/ (another machine)."""
+    return c.root / "bench" / "results" / recorded if recorded else c.results / name
+
+
 def study(c, name, recorded=None):
-    """The study's last run, or a run recorded under bench/results/RECORDED/ (another machine)."""
-    folder = c.root / "bench" / "results" / recorded if recorded else c.results / name
+    folder = results_folder(c, name, recorded)
     spec, rs = STUDIES[name], pc.read_csv(folder / "results.csv")
     out = ["From " + run_in(c, folder) + ".", ""]
     if name == "shower_door":
@@ -217,10 +223,9 @@ def figure(c, name, file):
 
 
 def paper_claims(c, recorded=None):
-    """The study's last run, or a run recorded under bench/results/RECORDED/ (another machine)."""
     sys.path.insert(0, str(c.root / "experiments" / "paper_claims"))
     import run as claims
-    folder = c.root / "bench" / "results" / recorded if recorded else c.results / "paper_claims"
+    folder = results_folder(c, "paper_claims", recorded)
     j = json.loads((folder / "paper_claims.json").read_text())
     return ["From " + run_in(c, folder) + ".", "", "machine: %s; GL renderer: %s" % (j["machine"], j["renderer"]),
             ""] + claims.table(j)
