@@ -31,14 +31,6 @@ EDGES_PER_DEFAULT_RADIUS = 2.0
 UMBILIC_RATIO = 0.1          # directions are compared where the exact ones are defined
 
 
-def write_obj(path, positions, triangles):
-    with open(path, "w") as f:
-        for p in positions:
-            f.write("v %.9g %.9g %.9g\n" % tuple(p))
-        for t in triangles:
-            f.write("f %d %d %d\n" % tuple(t + 1))
-
-
 def run_plumbago(plumbago, mesh_path, out_csv, args):
     result = subprocess.run([plumbago, "curvature", str(mesh_path), "-o", str(out_csv), "--no-cache"] + args,
                             capture_output=True, text=True, check=True)
@@ -97,7 +89,7 @@ def measure(s, point):
         edge = DEFAULT_RADIUS * diagonal / EDGES_PER_DEFAULT_RADIUS
         positions, triangles, truth = make(edge, surfaces.JITTER[meshing], rng)
         mesh = work / f"{name}-{meshing}.obj"
-        write_obj(mesh, positions, triangles)
+        surfaces.write_obj(mesh, positions, triangles)
         keep = boundary_distance(positions, triangles) >= 0.1 * diagonal
         runs = [("default", 0, [])]
         runs += [("tensor", r, ["--method", "tensor", "--radius", str(r)]) for r in s["radii"]]

@@ -13,6 +13,13 @@ import numpy as np
 JITTER = {"regular": 0.0, "irregular": 0.15, "strong": 0.45}
 
 
+def write_obj(path, positions, triangles):
+    """The mesh as an OBJ file, positions to 9 significant digits (what both studies read back)."""
+    with open(path, "w") as f:
+        f.writelines("v %.9g %.9g %.9g\n" % tuple(p) for p in positions)
+        f.writelines("f %d %d %d\n" % tuple(t + 1) for t in triangles)
+
+
 def _quads_to_triangles(a, b, c, d, irregular, rng):
     """Quads (a, b, c, d) counter-clockwise from outside -> triangles."""
     flip = rng.random(len(a)) < 0.5 if irregular > 0 else np.zeros(len(a), bool)

@@ -46,12 +46,6 @@ def scenes(s):
     return []
 
 
-def write_obj(path, positions, triangles):
-    with open(path, "w") as f:
-        f.writelines("v %.9g %.9g %.9g\n" % tuple(p) for p in positions)
-        f.writelines("f %d %d %d\n" % tuple(t + 1) for t in triangles)
-
-
 def analytic_mesh(s, point, folder):
     """Writes the surface and meshing `point` names as an OBJ file in `folder`; its path."""
     name, meshing = point.rsplit("-", 1)
@@ -60,7 +54,7 @@ def analytic_mesh(s, point, folder):
     edge = np.linalg.norm(coarse.max(0) - coarse.min(0)) / s["edges_per_diagonal"]
     positions, triangles, _ = make(edge, surfaces.JITTER[meshing], rng)
     path = pathlib.Path(folder) / (point + ".obj")
-    write_obj(path, positions, triangles)
+    surfaces.write_obj(path, positions, triangles)
     return path
 
 
