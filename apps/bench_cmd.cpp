@@ -26,12 +26,12 @@
 #include "apps/path_frames.hpp"
 #include "apps/scene_options.hpp"
 #include "bench/paper_claims.hpp"
-#include "common/image_compare.hpp"
-#include "common/output_file.hpp"
-#include "common/passes.hpp"
-#include "gpu/context.hpp"
-#include "gpu/pipeline.hpp"
-#include "reference/pipeline.hpp"
+#include "common/util/image_compare.hpp"
+#include "common/util/output_file.hpp"
+#include "common/core/passes.hpp"
+#include "gpu/gl/context.hpp"
+#include "gpu/core/pipeline.hpp"
+#include "reference/core/pipeline.hpp"
 
 namespace plumbago {
 namespace {

@@ -6,7 +6,7 @@
 #include "apps/command.hpp"
 #include "parity/parity.hpp"
 #include "apps/scene_options.hpp"
-#include "common/visualize.hpp"
+#include "common/util/visualize.hpp"
 
 namespace plumbago {
 namespace {

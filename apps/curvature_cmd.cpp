@@ -10,9 +10,9 @@
 #include <optional>
 
 #include "apps/command.hpp"
-#include "common/curvature.hpp"
-#include "common/output_file.hpp"
-#include "common/params.hpp"
+#include "common/curvature/curvature.hpp"
+#include "common/util/output_file.hpp"
+#include "common/core/params.hpp"
 
 namespace plumbago {
 namespace {

@@ -1,9 +1,9 @@
 // plumbago effects: every effect a scene can ask for, its doc, and the stages it runs
-// (common/passes.hpp passes_for, with the default parameters).
+// (common/core/passes.hpp passes_for, with the default parameters).
 #include <cstdio>
 
 #include "apps/command.hpp"
-#include "common/passes.hpp"
+#include "common/core/passes.hpp"
 
 namespace plumbago {
 namespace {

@@ -8,7 +8,7 @@
 //          With --truth also, per path, its window arc length at each point ("arc_px"),
 //          the visible runs the strokes would draw ("runs": [[s0, s1], ...], arc px), and
 //          what rays say ("truth": an Embree occlusion ray to the path every 0.5 px of
-//          arc, reference/ray_visibility.hpp, passing over hits within two of the point's
+//          arc, reference/strokes/ray_visibility.hpp, passing over hits within two of the point's
 //          face's longest edges: its own facets), and the frame's passes with their times
 //          ("ran"): the accuracy study of experiments/stroke_visibility compares them;
 //   .svg:  the visible runs as the strokes draw them: one <path> per run, the outline of
@@ -21,18 +21,18 @@
 
 #include "apps/command.hpp"
 #include "apps/scene_options.hpp"
-#include "common/base_stroke.hpp"
-#include "common/decal.hpp"
-#include "common/stroke.hpp"
-#include "common/id_image.hpp"
-#include "common/output_file.hpp"
-#include "common/visibility.hpp"
-#include "gpu/context.hpp"
-#include "gpu/decal.hpp"
-#include "gpu/pipeline.hpp"
-#include "reference/decal.hpp"
-#include "reference/pipeline.hpp"
-#include "reference/ray_visibility.hpp"
+#include "common/strokes/base_stroke.hpp"
+#include "common/strokes/decal.hpp"
+#include "common/strokes/stroke.hpp"
+#include "common/strokes/id_image.hpp"
+#include "common/util/output_file.hpp"
+#include "common/strokes/visibility.hpp"
+#include "gpu/gl/context.hpp"
+#include "gpu/strokes/decal.hpp"
+#include "gpu/core/pipeline.hpp"
+#include "reference/strokes/decal.hpp"
+#include "reference/core/pipeline.hpp"
+#include "reference/strokes/ray_visibility.hpp"
 
 namespace plumbago {
 namespace {

@@ -3,7 +3,7 @@
 #include <exception>
 
 #include "apps/command.hpp"
-#include "common/memory_budget.hpp"
+#include "common/util/memory_budget.hpp"
 #include "parity/parity.hpp"
 
 namespace plumbago {

@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #include "apps/command.hpp"
-#include "common/params.hpp"
+#include "common/core/params.hpp"
 
 namespace plumbago {
 namespace {

@@ -1,9 +1,9 @@
 #include "apps/path_frames.hpp"
 
-#include "common/animation.hpp"
-#include "common/passes.hpp"
-#include "gpu/pipeline.hpp"
-#include "reference/pipeline.hpp"
+#include "common/scene/animation.hpp"
+#include "common/core/passes.hpp"
+#include "gpu/core/pipeline.hpp"
+#include "reference/core/pipeline.hpp"
 
 namespace plumbago {
 

@@ -6,8 +6,8 @@
 #include <memory>
 #include <string>
 
-#include "common/frame.hpp"
-#include "common/scene.hpp"
+#include "common/core/frame.hpp"
+#include "common/scene/scene.hpp"
 
 namespace plumbago {
 struct Preprocessed;

@@ -8,10 +8,10 @@
 #include "apps/command.hpp"
 #include "apps/path_frames.hpp"
 #include "apps/scene_options.hpp"
-#include "common/visualize.hpp"
-#include "gpu/context.hpp"
-#include "gpu/pipeline.hpp"
-#include "reference/pipeline.hpp"
+#include "common/util/visualize.hpp"
+#include "gpu/gl/context.hpp"
+#include "gpu/core/pipeline.hpp"
+#include "reference/core/pipeline.hpp"
 
 namespace plumbago {
 namespace {

@@ -3,7 +3,7 @@
 #include <regex>
 #include <stdexcept>
 
-#include "common/memory_budget.hpp"
+#include "common/util/memory_budget.hpp"
 
 namespace plumbago {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "common/scene.hpp"
+#include "common/scene/scene.hpp"
 
 namespace plumbago {
 

@@ -1,6 +1,6 @@
 // `plumbago strokefile SCENE drawing.svg -o strokes.json`: a stroke file (SPEC 4.9,
-// common/stroke_file.hpp) from strokes drawn in SVG over `plumbago render SCENE`'s image,
-// with the scene's camera and resolution (common/svg_strokes.hpp says what is read).
+// common/strokes/stroke_file.hpp) from strokes drawn in SVG over `plumbago render SCENE`'s image,
+// with the scene's camera and resolution (common/strokes/svg_strokes.hpp says what is read).
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -10,8 +10,8 @@
 
 #include "apps/command.hpp"
 #include "apps/scene_options.hpp"
-#include "common/output_file.hpp"
-#include "common/svg_strokes.hpp"
+#include "common/util/output_file.hpp"
+#include "common/strokes/svg_strokes.hpp"
 
 namespace plumbago {
 namespace {

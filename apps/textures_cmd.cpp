@@ -6,9 +6,9 @@
 
 #include "apps/command.hpp"
 #include "apps/scene_options.hpp"
-#include "common/frame.hpp"
-#include "common/output_file.hpp"
-#include "common/textures.hpp"
+#include "common/core/frame.hpp"
+#include "common/util/output_file.hpp"
+#include "common/pencil/textures.hpp"
 
 namespace plumbago {
 namespace {

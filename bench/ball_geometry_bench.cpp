@@ -1,4 +1,4 @@
-// The exact clipping of the curvature ball (common/ball_geometry.hpp, SPEC §1.1): what one
+// The exact clipping of the curvature ball (common/curvature/ball_geometry.hpp, SPEC §1.1): what one
 // face or side the sphere cuts costs. The ball's cost is mostly its cut band (docs/curvature.md:
 // 217 cut faces per ball on bunny-1M), so this is the number the 5 s per million target
 // hinges on. Faces with sides of about 1 (some irregular), their centroids within 1 of a
@@ -7,8 +7,8 @@
 
 #include <vector>
 
-#include "common/ball_geometry.hpp"
-#include "common/random.hpp"
+#include "common/curvature/ball_geometry.hpp"
+#include "common/util/random.hpp"
 
 namespace plumbago::bench {
 namespace {

@@ -13,10 +13,10 @@
 #include <map>
 #include <memory>
 
-#include "common/curvature.hpp"
-#include "common/frame.hpp"
-#include "common/mesh_topology.hpp"
-#include "common/params.hpp"
+#include "common/curvature/curvature.hpp"
+#include "common/core/frame.hpp"
+#include "common/mesh/mesh_topology.hpp"
+#include "common/core/params.hpp"
 
 namespace plumbago::bench {
 namespace {

@@ -4,13 +4,13 @@
 #include <benchmark/benchmark.h>
 
 #include "bench/bench_scenes.hpp"
-#include "common/frame.hpp"
-#include "common/lights.hpp"
-#include "gpu/context.hpp"
-#include "gpu/edge_detect.hpp"
-#include "gpu/timer.hpp"
-#include "reference/edge_detect.hpp"
-#include "reference/gbuffer.hpp"
+#include "common/core/frame.hpp"
+#include "common/scene/lights.hpp"
+#include "gpu/gl/context.hpp"
+#include "gpu/pencil/edge_detect.hpp"
+#include "gpu/gl/timer.hpp"
+#include "reference/pencil/edge_detect.hpp"
+#include "reference/scene/gbuffer.hpp"
 
 namespace plumbago::bench {
 namespace {

@@ -4,10 +4,10 @@
 
 #include <benchmark/benchmark.h>
 
-#include "common/frame.hpp"
-#include "gpu/context.hpp"
-#include "gpu/pipeline.hpp"
-#include "reference/pipeline.hpp"
+#include "common/core/frame.hpp"
+#include "gpu/gl/context.hpp"
+#include "gpu/core/pipeline.hpp"
+#include "reference/core/pipeline.hpp"
 
 namespace plumbago::bench {
 

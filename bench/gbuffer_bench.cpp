@@ -4,8 +4,8 @@
 #include <benchmark/benchmark.h>
 
 #include "bench/bench_scenes.hpp"
-#include "common/frame.hpp"
-#include "reference/gbuffer.hpp"
+#include "common/core/frame.hpp"
+#include "reference/scene/gbuffer.hpp"
 
 namespace plumbago::bench {
 namespace {

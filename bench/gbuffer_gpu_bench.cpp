@@ -3,10 +3,10 @@
 #include <benchmark/benchmark.h>
 
 #include "bench/bench_scenes.hpp"
-#include "common/frame.hpp"
-#include "gpu/context.hpp"
-#include "gpu/gbuffer.hpp"
-#include "gpu/timer.hpp"
+#include "common/core/frame.hpp"
+#include "gpu/gl/context.hpp"
+#include "gpu/scene/gbuffer.hpp"
+#include "gpu/gl/timer.hpp"
 
 namespace plumbago::bench {
 namespace {

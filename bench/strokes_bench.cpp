@@ -10,8 +10,8 @@
 #include "bench/frame_timing.hpp"
 #include <map>
 
-#include "common/strokes.hpp"
-#include "gpu/gl_objects.hpp"
+#include "common/strokes/strokes.hpp"
+#include "gpu/gl/gl_objects.hpp"
 
 namespace plumbago::bench {
 namespace {
@@ -73,7 +73,7 @@ void readback(benchmark::State& state, bool whole_image) {
     Stopwatch w;
     if (whole_image) benchmark::DoNotOptimize(gpu::download_texture_u32(ids, 2));
     else {
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, flags.id());  // as gpu/visibility.cpp reads the flags
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, flags.id());  // as gpu/strokes/visibility.cpp reads the flags
       glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(read.size() * sizeof(uint32_t)), read.data());
     }
     state.SetIterationTime(w.ms() * 1e-3);

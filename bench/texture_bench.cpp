@@ -1,11 +1,11 @@
 // Texture generation (SPEC 1.2-1.4, 3.2) at the default sizes: each generator's time.
 #include <benchmark/benchmark.h>
 
-#include "common/distortion.hpp"
-#include "common/noise.hpp"
-#include "common/paper.hpp"
-#include "common/params.hpp"
-#include "common/pencil_textures.hpp"
+#include "common/pencil/distortion.hpp"
+#include "common/util/noise.hpp"
+#include "common/pencil/paper.hpp"
+#include "common/core/params.hpp"
+#include "common/pencil/pencil_textures.hpp"
 
 namespace plumbago::bench {
 namespace {

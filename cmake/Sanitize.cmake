@@ -17,7 +17,7 @@ function(plumbago_non_gl_tests sources_var)
   set(kept "")
   foreach(source IN LISTS ${sources_var})
     file(STRINGS "${source}" needs_gl
-         REGEX "#include \"(gpu|parity)/|#include \"tests/(parity_checks|cli_run)\\.hpp\"|GlTest|PLUMBAGO_CLI")
+         REGEX "#include \"(gpu|parity)/|#include \"tests/support/(parity_checks|cli_run)\\.hpp\"|GlTest|PLUMBAGO_CLI")
     if(NOT needs_gl)
       list(APPEND kept "${source}")
     endif()

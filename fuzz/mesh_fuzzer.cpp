@@ -12,7 +12,7 @@
 #include <fstream>
 #include <string>
 
-#include "common/mesh.hpp"
+#include "common/mesh/mesh.hpp"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <string>
 
-#include "common/scene.hpp"
+#include "common/scene/scene.hpp"
 
 namespace {
 

@@ -6,19 +6,19 @@
 #include <map>
 #include <stdexcept>
 
-#include "common/gbuffer.hpp"
-#include "common/passes.hpp"
-#include "gpu/context.hpp"
-#include "gpu/pipeline.hpp"
-#include "gpu/stage.hpp"
-#include "reference/pipeline.hpp"
+#include "common/scene/gbuffer.hpp"
+#include "common/core/passes.hpp"
+#include "gpu/gl/context.hpp"
+#include "gpu/core/pipeline.hpp"
+#include "gpu/core/stage.hpp"
+#include "reference/core/pipeline.hpp"
 
 namespace plumbago {
 
 namespace {
 
 // End to end: at most this share of pixels may differ by more than 2/255 (measured on
-// the built-in scenes and the shared models: see tests/end_to_end_test.cpp).
+// the built-in scenes and the shared models: see tests/core/end_to_end_test.cpp).
 constexpr double kEndToEndShare = 0.05;
 constexpr float kDepthJump = 0.01f;  // relative linear-depth step that makes a discontinuity
 

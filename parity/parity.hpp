@@ -1,4 +1,4 @@
-// Stage parity (SPEC §5), from the stage descriptors (common/stage.hpp): for each GPU pass
+// Stage parity (SPEC §5), from the stage descriptors (common/core/stage.hpp): for each GPU pass
 // that computes a stage (alone, or fused with others as a frame runs it), the reference
 // computes the pass's declared inputs, the GPU pass gets them uploaded, both compute the
 // pass's stages, and every declared output is compared with its declared tolerance and
@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "common/image_compare.hpp"
-#include "common/scene.hpp"
+#include "common/util/image_compare.hpp"
+#include "common/scene/scene.hpp"
 
 namespace plumbago {
 
@@ -26,7 +26,7 @@ struct StageParity {
 };
 
 // The stage registry as a program starts: the descriptors and their parameter structs
-// (common/stage.hpp), and a frame implementation of every frame stage on both backends.
+// (common/core/stage.hpp), and a frame implementation of every frame stage on both backends.
 // Throws std::logic_error saying what is wrong.
 void check_stage_registry();
 

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "common/scene.hpp"
+#include "common/scene/scene.hpp"
 
 namespace plumbago {
 namespace {

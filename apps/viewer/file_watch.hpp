@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-#include "common/frame.hpp"
+#include "common/core/frame.hpp"
 
 namespace plumbago {
 

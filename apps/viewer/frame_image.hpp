@@ -4,8 +4,8 @@
 
 #include <glm/glm.hpp>
 
-#include "common/image.hpp"
-#include "gpu/gl_objects.hpp"
+#include "common/util/image.hpp"
+#include "gpu/gl/gl_objects.hpp"
 
 namespace plumbago {
 

@@ -7,7 +7,7 @@
 #include <cfloat>
 #include <cstdio>
 
-#include "common/passes.hpp"
+#include "common/core/passes.hpp"
 
 namespace plumbago {
 namespace {

@@ -5,8 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "common/params.hpp"
-#include "common/passes.hpp"
+#include "common/core/params.hpp"
+#include "common/core/passes.hpp"
 
 namespace plumbago {
 namespace {

@@ -4,7 +4,7 @@
 #include <optional>
 #include <utility>
 
-#include "common/passes.hpp"
+#include "common/core/passes.hpp"
 
 namespace plumbago {
 namespace {

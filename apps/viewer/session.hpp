@@ -12,11 +12,11 @@
 #include <string>
 
 #include "apps/viewer/window.hpp"
-#include "common/frame.hpp"
-#include "common/orbit.hpp"
-#include "common/scene.hpp"
-#include "common/preprocess.hpp"
-#include "gpu/pipeline.hpp"
+#include "common/core/frame.hpp"
+#include "common/scene/orbit.hpp"
+#include "common/scene/scene.hpp"
+#include "common/core/preprocess.hpp"
+#include "gpu/core/pipeline.hpp"
 
 namespace plumbago {
 

@@ -3,7 +3,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "common/visualize.hpp"
+#include "common/util/visualize.hpp"
 
 namespace plumbago {
 namespace {

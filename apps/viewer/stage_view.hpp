@@ -1,13 +1,13 @@
 // Stage view: one intermediate buffer of the current frame (the GPU renderer's kept
 // buffers, the names `render --dump-stages` writes) shown in place of the final image,
-// as --dump-stages's PNG shows it (common/visualize.hpp), with the raw values under the
+// as --dump-stages's PNG shows it (common/util/visualize.hpp), with the raw values under the
 // cursor.
 #pragma once
 
 #include <glm/glm.hpp>
 #include <string>
 
-#include "common/frame.hpp"
+#include "common/core/frame.hpp"
 
 namespace plumbago {
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cfloat>
 
-#include "common/passes.hpp"
+#include "common/core/passes.hpp"
 
 namespace plumbago {
 namespace {

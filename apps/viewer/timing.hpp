@@ -5,7 +5,7 @@
 #include <deque>
 #include <vector>
 
-#include "common/frame.hpp"
+#include "common/core/frame.hpp"
 
 namespace plumbago {
 

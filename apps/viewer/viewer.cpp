@@ -19,7 +19,7 @@
 #include "apps/viewer/script.hpp"
 #include "apps/viewer/session.hpp"
 #include "apps/viewer/window.hpp"
-#include "common/output_file.hpp"
+#include "common/util/output_file.hpp"
 
 namespace plumbago {
 namespace {

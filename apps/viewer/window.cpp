@@ -1,6 +1,6 @@
 #include "apps/viewer/window.hpp"
 
-#include "gpu/gl.hpp"  // before GLFW, which then includes no GL header of its own
+#include "gpu/gl/gl.hpp"  // before GLFW, which then includes no GL header of its own
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
@@ -9,7 +9,7 @@
 
 #include <stdexcept>
 
-#include "gpu/context.hpp"
+#include "gpu/gl/context.hpp"
 
 namespace plumbago {
 namespace {

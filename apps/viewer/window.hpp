@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-#include "common/image.hpp"
+#include "common/util/image.hpp"
 
 struct GLFWwindow;
 

@@ -56,7 +56,7 @@ def boundary_distance(positions, triangles):
 
 def errors(table, truth, keep):
     """Median direction error (degrees), median relative errors of k_min and k_max, as in
-    tests/curvature_test.cpp, and the share of vertices with either more than 50% off."""
+    tests/curvature/curvature_test.cpp, and the share of vertices with either more than 50% off."""
     p = table[keep, 1:4]
     _, k_min, k_max, d_min = truth(p)
     scale = 0.1 * np.maximum(np.abs(k_min), np.abs(k_max))

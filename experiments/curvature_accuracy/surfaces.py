@@ -1,8 +1,8 @@
 """Analytic test surfaces for the curvature experiment: meshes and exact curvature.
 
-The same surfaces and meshings as tests/analytic_surfaces.cpp, written independently in
+The same surfaces and meshings as tests/support/analytic_surfaces.cpp, written independently in
 numpy so that the experiment checks the C++ estimators against formulas it does not
-share with them. Sign convention as common/curvature.hpp: k > 0 where the surface bends
+share with them. Sign convention as common/curvature/curvature.hpp: k > 0 where the surface bends
 away from its normal. Meshes: regular (a grid with one diagonal), irregular (vertices
 jittered by up to 0.15 of a cell per grid direction, each quad's diagonal random) or
 strong (jittered by up to 0.45 of a cell, a spread of 0.9: about 1% of the triangles fold

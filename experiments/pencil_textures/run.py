@@ -23,7 +23,7 @@ import plumbago_cli as pc  # noqa: E402
 import study_cli  # noqa: E402
 
 BUFFERS = ["compose.color", "pencil_interior.interior_darkness"]
-BYTES_PER_TEXEL = 4  # GL_R32F (gpu/pipeline.cpp uploads the stack as R32F)
+BYTES_PER_TEXEL = 4  # GL_R32F (gpu/core/pipeline.cpp uploads the stack as R32F)
 
 
 def sets(layers, size, default_layers, default_layer):

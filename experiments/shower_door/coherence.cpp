@@ -6,14 +6,14 @@
 #include <stdexcept>
 #include <vector>
 
-#include "reference/sampler.hpp"
+#include "reference/util/sampler.hpp"
 
 namespace plumbago::shower_door {
 
 namespace {
 
 // img at window point q (pixel centers at i + 0.5), channel c (< 4): the GL-exact sampler
-// of the reference (reference/sampler.hpp), edges clamped.
+// of the reference (reference/util/sampler.hpp), edges clamped.
 float read(const Image& img, float qx, float qy, int c, Sampling sampling) {
   const reference::SamplerState state{sampling == Sampling::Nearest ? reference::Filter::Nearest
                                                                     : reference::Filter::Linear};

@@ -6,7 +6,7 @@
 
 #include <cstddef>
 
-#include "common/image.hpp"
+#include "common/util/image.hpp"
 
 namespace plumbago::shower_door {
 

@@ -12,7 +12,7 @@
 #include <fstream>
 #include <map>
 
-#include "common/image.hpp"
+#include "common/util/image.hpp"
 #include "experiments/shower_door/coherence.hpp"
 #include "experiments/shower_door/sketch_frames.hpp"
 #include "experiments/shower_door/surface_motion.hpp"

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "reference/rows.hpp"
-#include "reference/sketchy_composite.hpp"
-#include "reference/sketchy_enlarged.hpp"
+#include "reference/util/rows.hpp"
+#include "reference/sketchy/sketchy_composite.hpp"
+#include "reference/sketchy/sketchy_enlarged.hpp"
 
 namespace plumbago::shower_door {
 
@@ -71,7 +71,7 @@ ModeFrame render_mode(const Mode& mode, const View& view) {
 Image own_shell(const Mode& mode, const View& view, const Image& points, const Image& coordinates, float reach) {
   float enlarge = mode.scene.params.get<SketchyParams>().enlarge;
   // Per object: world -> object space, the enlarged bbox diagonal (noise coordinate =
-  // enlarged object-space position / that, common/sketchy.hpp) and the enlarge distance.
+  // enlarged object-space position / that, common/sketchy/sketchy.hpp) and the enlarge distance.
   std::vector<glm::mat4> to_object;
   std::vector<float> diagonal, distance;
   for (size_t i = 0; i < mode.scene.objects.size(); ++i) {

@@ -1,15 +1,15 @@
 // The sketchy drawing of one scene from one camera, in each mode compared by the
 // shower-door experiment: the (u, v) perturbation field (SPEC 3.2, 3.5) and the final
-// sketch (SPEC 3.3), made with the reference passes exactly as reference/pipeline.cpp
+// sketch (SPEC 3.3), made with the reference passes exactly as reference/core/pipeline.cpp
 // wires them.
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "common/sketchy.hpp"
-#include "reference/gbuffer.hpp"
-#include "reference/sketchy_maps.hpp"
+#include "common/sketchy/sketchy.hpp"
+#include "reference/scene/gbuffer.hpp"
+#include "reference/sketchy/sketchy_maps.hpp"
 
 namespace plumbago::shower_door {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "reference/rows.hpp"
+#include "reference/util/rows.hpp"
 
 namespace plumbago::shower_door {
 

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "common/gbuffer.hpp"
+#include "common/scene/gbuffer.hpp"
 
 namespace plumbago::shower_door {
 

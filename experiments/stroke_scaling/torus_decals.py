@@ -1,5 +1,5 @@
-"""The study's scenes: the procedural torus (common/procedural.cpp: radii 1 and 0.4 about the
-z axis) at a given face count, seen from above, with a stroke file (common/stroke_file.hpp)
+"""The study's scenes: the procedural torus (common/mesh/procedural.cpp: radii 1 and 0.4 about the
+z axis) at a given face count, seen from above, with a stroke file (common/strokes/stroke_file.hpp)
 of N decal strokes drawn on its upper half.
 
 Stroke i is a short arc on the surface (STROKE_LENGTH, about 20 px at the study's camera)

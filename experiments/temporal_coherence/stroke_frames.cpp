@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "common/animation.hpp"
-#include "common/gbuffer.hpp"
+#include "common/scene/animation.hpp"
+#include "common/scene/gbuffer.hpp"
 #include "experiments/shower_door/surface_motion.hpp"
-#include "reference/pipeline.hpp"
+#include "reference/core/pipeline.hpp"
 
 namespace plumbago::temporal_coherence {
 

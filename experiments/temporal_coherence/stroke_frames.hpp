@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "common/scene.hpp"
+#include "common/scene/scene.hpp"
 #include "experiments/temporal_coherence/stroke_track.hpp"
 
 namespace plumbago::temporal_coherence {

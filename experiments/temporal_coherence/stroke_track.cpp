@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "common/random.hpp"
+#include "common/util/random.hpp"
 
 namespace plumbago::temporal_coherence {
 

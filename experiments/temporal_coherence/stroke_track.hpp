@@ -1,6 +1,6 @@
 // The strokes of one frame as the temporal-coherence study follows them (SPEC 5, "Temporal
 // coherence"; experiments/temporal_coherence/README.md): every visible run's base-stroke
-// samples (common/stroke.hpp run_strokes, what the stroke stage draws), each with the point
+// samples (common/strokes/stroke.hpp run_strokes, what the stroke stage draws), each with the point
 // of its path it draws, and where those points land on the strokes of another frame.
 // Nothing here depends on the line kind: a new kind's runs are followed like the others.
 #pragma once
@@ -11,8 +11,8 @@
 
 #include <glm/glm.hpp>
 
-#include "common/camera.hpp"
-#include "common/stroke.hpp"
+#include "common/scene/camera.hpp"
+#include "common/strokes/stroke.hpp"
 
 namespace plumbago::temporal_coherence {
 

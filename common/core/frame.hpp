@@ -1,0 +1,48 @@
+// What a backend returns for one frame: the image, what ran and what each pass cost, and
+// (on request) every intermediate buffer by name.
+#pragma once
+
+#include <chrono>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "common/util/image.hpp"
+
+namespace plumbago {
+
+struct PassTime {
+  std::string name;
+  double ms;
+};
+
+struct Frame {
+  Image color;                          // RGB, row 0 = bottom
+  std::vector<PassTime> ran;            // every pass that ran, in order
+  std::map<std::string, Image> buffers; // intermediate buffers when asked for
+  // What the frame drew, by name: the visible strokes per line kind ("strokes.crease", ...)
+  // and the hatching groups' scale and level (common/strokes/stroke.hpp stroke_counts); empty
+  // without strokes.
+  std::map<std::string, double> counts;
+};
+
+struct FrameOptions {
+  bool keep_buffers = false;  // fill Frame::buffers (for --dump-stages and compare)
+};
+
+class Stopwatch {
+ public:
+  Stopwatch() : start_(std::chrono::steady_clock::now()) {}
+  double ms() const {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_;
+};
+
+// The G-buffer channels as named images (ids as floats), for dumps and comparisons.
+struct GBuffer;
+void add_gbuffer_buffers(const GBuffer& g, std::map<std::string, Image>& out, const std::string& prefix = "gbuffer");
+
+}  // namespace plumbago

@@ -1,0 +1,61 @@
+// The registry: every stage, once, in the order they run (each after the stages whose
+// outputs it reads). Adding a stage is adding its header and its type here, one line
+// each; `plumbago params`, --set, scene files, the GLSL declarations, the pass table,
+// the effects, the dumps and the parity runner follow from its descriptor
+// (common/core/stage.hpp).
+#pragma once
+
+#include "common/strokes/basecoat.hpp"
+#include "common/pencil/compose.hpp"
+#include "common/pencil/contour_light.hpp"
+#include "common/pencil/contour_texture.hpp"
+#include "common/curvature/curvature.hpp"
+#include "common/pencil/distortion.hpp"
+#include "common/pencil/edge_detect.hpp"
+#include "common/scene/gbuffer.hpp"
+#include "common/strokes/id_image.hpp"
+#include "common/pencil/interior_intensity.hpp"
+#include "common/pencil/multi_contour.hpp"
+#include "common/pencil/paper.hpp"
+#include "common/pencil/pencil_interior.hpp"
+#include "common/pencil/pencil_textures.hpp"
+#include "common/sketchy/sketchy_composite.hpp"
+#include "common/sketchy/sketchy_enlarged.hpp"
+#include "common/sketchy/sketchy_gbuffer.hpp"
+#include "common/sketchy/sketchy_maps.hpp"
+#include "common/sketchy/sketchy_noise.hpp"
+#include "common/strokes/stroke.hpp"
+#include "common/strokes/stroke_paper.hpp"
+#include "common/strokes/visibility.hpp"
+
+namespace plumbago {
+
+using AllStages = TypeList<
+    // preprocessing (SPEC 1), made once per scene and parameters
+    DistortionStage,
+    PencilTexturesStage,
+    ContourTextureStage,
+    PaperStage,
+    SketchyNoiseStage,
+    CurvatureStage,
+    // the pencil pipeline (SPEC 2)
+    GBufferStage,
+    EdgeDetectStage,
+    ContourLightStage,
+    InteriorIntensityStage,
+    PencilInteriorStage,
+    MultiContourStage,
+    ComposeStage,
+    // sketchy drawing (SPEC 3)
+    SketchyGBufferStage,
+    SketchyEnlargedStage,
+    SketchyMapsStage,
+    SketchyCompositeStage,
+    // stroke-based rendering (SPEC 4), over what the others drew
+    BaseCoatStage,
+    StrokePaperStage,
+    IdImageStage,
+    VisibilityStage,
+    StrokeStage>;
+
+}  // namespace plumbago

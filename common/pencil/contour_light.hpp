@@ -1,0 +1,31 @@
+// Contour lighting (SPEC 2.3; Lee §4.1, Eq. 1): lit contours are drawn lighter.
+//   d' = d l_c,   l_c = 1 - lambda min(1, sum_lights intensity max(0, N.L))
+// N the pixel's view-space shading normal (0 on the background: unlit), L the view-space
+// light directions. Reading (SPEC 2.3): Eq. 1 scales darkness, not the gray value.
+#pragma once
+
+#include "common/core/stage.hpp"
+
+namespace plumbago {
+
+struct ContourLightParams {
+  static constexpr const char* stage = "contour_light";
+  float light_influence;
+  template <class V>
+  void visit(V& v) {
+    v.real(light_influence, "light_influence", 0.5, 0.0, 1.0,
+           "lambda: how much light lightens a contour, l_c = 1 - lambda N.L (Lee Eq. 1)");
+  }
+};
+
+struct ContourLightStage {
+  using Params = TypeList<ContourLightParams>;
+  static StageDesc describe() {
+    return {"contour_light", StageKind::Frame, "lit contours drawn lighter (SPEC 2.3, Lee Eq. 1)", {"contour_light"},
+            {{"edge_detect.contour_darkness"}, {"gbuffer.normal"}},
+            {{"lit_contour_darkness", 1, Texel::Float, "d' = d l_c", tolerance::kFloat,
+              "fed the same d and G-buffer; float target"}}};
+  }
+};
+
+}  // namespace plumbago

@@ -1,0 +1,23 @@
+// The contour texture (SPEC 1.2, 2.4): the layer `contour.texture_layer` of the pencil
+// stack (the last layer when the stack has fewer), which breaks up the contour copies.
+#pragma once
+
+#include "common/core/stage.hpp"
+
+namespace plumbago {
+
+struct Scene;
+struct Preprocessed;
+struct ContourTextureStage {
+  using Params = TypeList<>;
+  // The stack's own layer when the stack was made; else only the layers up to it.
+  static void make(const Scene& scene, Preprocessed& out);
+  // The layer: contour.texture_layer, or the stack's last when it has fewer.
+  static int layer(const ParamSet& params);
+  static StageDesc describe() {
+    return preprocessing_stage("contour_texture", "the pencil layer used as contour texture (SPEC 1.2)",
+                               {"contour", "pencil_textures"}, {{"texture", 1, Texel::Host, "T_c"}}, make);
+  }
+};
+
+}  // namespace plumbago

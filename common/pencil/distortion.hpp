@@ -1,0 +1,40 @@
+// Distorted planes for contour shaking (SPEC 1.4; Lee §4.2, Eq. 2; Pacheco §3).
+// For copy k, at the grid vertex (x, y) (one every grid_cell pixels) the offset is
+//   dx_k = a sin(b y + c_k) + r xi_k(x, y),   dy_k = a sin(b x + c'_k) + r eta_k(x, y)
+// with b = 2 pi / shake_period, phases and xi, eta in [-1, 1] from the seeded RNG. Inside
+// a cell the offset is the bilinear interpolation of its corners (GL_LINEAR, clamp).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "common/util/image.hpp"
+#include "common/pencil/multi_contour.hpp"
+#include "common/scene/scene.hpp"
+
+namespace plumbago {
+
+// Offset grid of copy k: RG (dx, dy) in pixels, (ceil(W / cell) + 1) x (ceil(H / cell) + 1).
+std::vector<Image> distortion_grids(const ContourParams& p, int width, int height, uint32_t seed);
+
+// o_k: a seeded shift of copy k's contour texture, in texels (SPEC 2.4).
+std::vector<glm::vec2> contour_texture_shifts(const ContourParams& p, uint32_t seed);
+
+// The largest |dx| or |dy| of any grid (bilinear interpolation stays within it).
+float largest_offset(const std::vector<Image>& grids);
+
+struct Preprocessed;
+struct DistortionStage {
+  using Params = TypeList<>;
+  static void make(const Scene& scene, Preprocessed& out);
+  static StageDesc describe() {
+    return preprocessing_stage("distortion", "offset grids of the contour copies (SPEC 1.4, Lee Eq. 2)", {"contour"},
+                               {{"offset_grids", 2, Texel::Host, "one RG grid of pixel offsets per contour copy"},
+                                {"texture_shifts", 2, Texel::Host, "o_k: the shift of copy k's contour texture, texels"}},
+                               make);
+  }
+};
+
+}  // namespace plumbago

@@ -1,0 +1,51 @@
+// Interior pencil shading (SPEC 2.6-2.10; Lee §5, Pacheco §7-8), one function of the
+// G-buffer per pixel:
+//   s = (1 - I') (layers - 1), r = (s + 0.5) / layers                     tone to layer (2.6)
+//   c_k = P(R(-theta_k) p / texture_scale, r)                              texture rotation (2.7)
+//   c_k' = clamp(c_k + mu_p ((cos theta_k, sin theta_k, 0) . n_paper(p)))  paper effect (2.10)
+//   c = w0 c_0' + w1 c_1' + w2 c_2'                                        3-way blending (2.8)
+//   c = c mix(1, c_max, h), h = 1 - smoothstep(T - band, T, I')           cross hatching (2.9)
+//   interior darkness D_i = 1 - c; 0 on the background
+// P is the pencil stack as a 3D texture (LINEAR; REPEAT in s and t, CLAMP_TO_EDGE in r),
+// p the pixel center (texture origin p0 = 0). n_paper and the paper color are read
+// texel for pixel (texelFetch, wrapping), so they need no filtering.
+#pragma once
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "common/pencil/interior_intensity.hpp"
+#include "common/core/stage.hpp"
+
+namespace plumbago {
+
+// Which optional parts of the interior a scene's effects ask for.
+struct InteriorOptions {
+  bool crosshatch = false;  // effect "crosshatch": the max-curvature directions are sampled
+  bool paper = false;       // effect "paper": stroke/paper interaction and paper color
+};
+
+inline InteriorOptions interior_options(const std::vector<std::string>& effects) {
+  auto has = [&](const char* e) { return std::find(effects.begin(), effects.end(), e) != effects.end(); };
+  return {has("crosshatch"), has("paper")};
+}
+
+// The weights of the corners' textures (SPEC 2.8): the barycentrics `w` for three-way
+// blending; for nearest_corner, 1 for the largest of them (the first on a tie), 0 else.
+glm::vec3 blend_weights(glm::vec3 w, const InteriorParams& p);
+
+struct PencilInteriorStage {
+  using Params = TypeList<>;
+  static StageDesc describe() {
+    return {"pencil_interior", StageKind::Frame,
+            "tone to layer, rotated pencil textures, 3-way blending, cross hatching, paper effect (SPEC 2.6-2.10)",
+            {"interior", "paper"},
+            {{"interior_intensity.intensity"}, {"gbuffer.ids"}, {"gbuffer.bary"}, {"gbuffer.theta_min"},
+             {"gbuffer.theta_max"}, {"pencil_textures.stack"}, {"paper.normal", when::effect_paper}},
+            {{"interior_darkness", 1, Texel::Float, "D_i; 0 on the background", tolerance::kSampled,
+              "fed the same G-buffer (the GPU its corner angles as triangle records), I', pencil stack and paper"}}};
+  }
+};
+
+}  // namespace plumbago

@@ -1,0 +1,74 @@
+// The G-buffer of SPEC §2.1, written alike by the rasterizer (gpu/scene/gbuffer.cpp) and the
+// Embree tracer (reference/scene/gbuffer.cpp), from the same world-space geometry.
+#pragma once
+
+#include <vector>
+
+#include "common/curvature/curvature.hpp"
+#include "common/util/image.hpp"
+#include "common/scene/scene.hpp"
+#include "common/core/stage.hpp"
+
+namespace plumbago {
+
+enum class GBufferFormat { RGBA32F, RGBA16F, RGBA8 };
+
+struct GBufferParams {
+  static constexpr const char* stage = "gbuffer";
+  GBufferFormat normal_format;
+  template <class V>
+  void visit(V& v) {
+    v.choice(normal_format, "normal_format", GBufferFormat::RGBA32F, {"rgba32f", "rgba16f", "rgba8"},
+             "storage of the GPU normal targets (the reference is always float)");
+  }
+};
+
+struct GBuffer {
+  Image normal;       // 3 ch: unit view-space shading normal; 0 for background
+  Image face_normal;  // 3 ch: unit view-space geometric normal; 0 for background
+  Image depth;        // 1 ch: linear view depth d = -z_view; `far` for background
+  ImageU32 ids;       // 2 ch: object index + 1 (0 = background), triangle index in its mesh
+  Image bary;         // 3 ch: barycentric coordinates (w0, w1, w2); 0 for background
+  Image gouraud;      // 1 ch: interpolated Gouraud intensity (SPEC 2.5); 1 for background
+  Image theta_min;    // 3 ch: window-space angle of each corner's min-curvature direction (SPEC 2.7)
+  Image theta_max;    // 3 ch: the same for the max-curvature direction; both 0 without curvature
+  float near = 0, far = 1;
+
+  bool background(int x, int y) const { return ids.at(x, y, 0) == 0; }
+};
+
+// One object's geometry in world space, shared by both backends so that they rasterize
+// and trace the same floats.
+struct WorldObject {
+  std::vector<glm::vec3> positions;    // world space
+  std::vector<glm::vec3> normals;      // world space, unit (face normals when flat)
+  std::vector<glm::uvec3> triangles;
+  std::vector<float> gouraud;          // per vertex, SPEC 2.5
+  std::vector<glm::vec3> d_min, d_max; // world space, unit; empty without curvature
+  bool flat = false;
+};
+
+// `curvature` holds one entry per scene object, or nothing (no texture rotation).
+std::vector<WorldObject> world_geometry(const Scene& scene, const std::vector<Curvature>& curvature = {});
+
+// Unit geometric normal of triangle t, normalize(cross(p1 - p0, p2 - p0)); (0,0,1) for a
+// zero-area triangle, never NaN.
+glm::vec3 face_normal(const WorldObject& obj, size_t t);
+
+// Normalized depth z = (d - near) / (far - near): 1 for background (SPEC §0).
+Image normalized_depth(const GBuffer& g);
+
+// The channels of a G-buffer as outputs of a stage (dumps hold the normalized depth), each
+// saying how parity compares raster against ray (SPEC 5); the corner angles of SPEC 2.7
+// `with_angles`.
+std::vector<Output> gbuffer_outputs(bool with_angles);
+
+struct GBufferStage {
+  using Params = TypeList<GBufferParams>;
+  static StageDesc describe() {
+    return {"gbuffer", StageKind::Frame, "G-buffer: normals, depth, ids, barycentrics, Gouraud (SPEC 2.1)",
+            {"gbuffer", "interior"}, {{"curvature.principal", when::effect_interior}}, gbuffer_outputs(true)};
+  }
+};
+
+}  // namespace plumbago

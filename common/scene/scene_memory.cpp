@@ -1,0 +1,83 @@
+// What a scene's buffers would take, checked against the memory budget before any is
+// made (common/util/memory_budget.hpp).
+#include <algorithm>
+#include <cstdio>
+#include <set>
+#include <stdexcept>
+#include <vector>
+
+#include "common/util/memory_budget.hpp"
+#include "common/util/noise.hpp"
+#include "common/pencil/paper.hpp"
+#include "common/pencil/pencil_textures.hpp"
+#include "common/scene/scene.hpp"
+#include "common/sketchy/sketchy.hpp"
+#include "common/core/stage.hpp"
+
+namespace plumbago {
+
+namespace {
+
+struct Part {
+  std::string what;
+  double bytes;
+};
+
+// Bytes per pixel of every frame stage's outputs, as the reference keeps them (floats):
+// an upper bound for any effects, since a frame holds at most all of them.
+double frame_bytes_per_pixel() {
+  double bytes = 0;
+  for (const StageDesc& s : stage_table())
+    if (s.kind == StageKind::Frame)
+      for (const Output& o : s.outputs) bytes += 4.0 * o.channels;
+  return bytes;
+}
+
+std::string square(int size) { return std::to_string(size) + "x" + std::to_string(size); }
+
+// The scene's large allocations: its meshes, the frame's buffers, the textures its
+// parameters size (every float texel 4 bytes).
+std::vector<Part> scene_parts(const Scene& scene) {
+  const auto pencil = scene.params.get<PencilTexturesParams>();
+  const auto paper = scene.params.get<PaperParams>();
+  const auto noise = scene.params.get<NoiseTextureParams>();
+  const auto sketchy = scene.params.get<SketchyParams>();
+  std::vector<Part> parts = {
+      {"the frame's buffers (" + std::to_string(scene.width) + "x" + std::to_string(scene.height) + " pixels, " +
+           std::to_string(int(frame_bytes_per_pixel())) + " bytes each)",
+       double(scene.width) * scene.height * frame_bytes_per_pixel()},
+      {"the pencil stack (pencil_textures.layers " + std::to_string(pencil.layers) + " of pencil_textures.size " +
+           square(pencil.size) + ")",
+       4.0 * pencil.layers * pencil.size * pencil.size},
+      {"the paper (paper.size " + square(paper.size) + ", height and normal)", 16.0 * paper.size * paper.size},
+      {"the noise texture (noise.size " + square(noise.size) + ")", 4.0 * noise.size * noise.size},
+      {"the 3D noise (sketchy.noise3d_size " + std::to_string(sketchy.noise3d_size) + "^3)",
+       4.0 * sketchy.noise3d_size * sketchy.noise3d_size * sketchy.noise3d_size}};
+  std::set<const Mesh*> meshes;  // a file named twice is loaded once
+  double mesh_total = 0;
+  for (const SceneObject& o : scene.objects)
+    if (meshes.insert(o.mesh.get()).second)
+      mesh_total += mesh_bytes(double(o.mesh->positions.size()), double(o.mesh->triangles.size()));
+  parts.push_back({"the meshes", mesh_total});
+  return parts;
+}
+
+std::string gb(double bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f GB", bytes / 1e9);
+  return text;
+}
+
+}  // namespace
+
+void check_scene_memory(const Scene& scene) {
+  std::vector<Part> parts = scene_parts(scene);
+  double total = 0;
+  for (const Part& p : parts) total += p.bytes;
+  std::sort(parts.begin(), parts.end(), [](const Part& a, const Part& b) { return a.bytes > b.bytes; });
+  if (std::string why = over_memory_budget(scene.source + ": the scene", total); !why.empty())
+    throw std::length_error(why + ": mostly " + parts[0].what + ", " + gb(parts[0].bytes) + ", and " + parts[1].what +
+                            ", " + gb(parts[1].bytes));
+}
+
+}  // namespace plumbago

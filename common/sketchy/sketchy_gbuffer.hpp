@@ -1,0 +1,18 @@
+// The G-buffer of the objects whose style is sketchy (SPEC 3.1): the G-buffer of 2.1 drawn
+// for them alone, which their edge and shade maps read.
+#pragma once
+
+#include "common/scene/gbuffer.hpp"
+#include "common/core/stage.hpp"
+
+namespace plumbago {
+
+struct SketchyGBufferStage {
+  using Params = TypeList<>;
+  static StageDesc describe() {
+    return {"sketchy_gbuffer", StageKind::Frame, "G-buffer of the objects whose style is sketchy (SPEC 3.1)", {"gbuffer"}, {},
+            gbuffer_outputs(false)};
+  }
+};
+
+}  // namespace plumbago

@@ -1,0 +1,24 @@
+// Sketchy drawing's maps (SPEC 3.1): the edge map of the sketchy objects (contour
+// darkness of SPEC 2.2 and the depth it belongs to) and their shade map (unlit color).
+#pragma once
+
+#include "common/pencil/edge_detect.hpp"
+#include "common/core/stage.hpp"
+
+namespace plumbago {
+
+struct SketchyMapsStage {
+  using Params = TypeList<>;
+  static StageDesc describe() {
+    return {"sketchy_maps", StageKind::Frame, "edge and shade maps of the sketchy objects (SPEC 3.1)", {"edge"},
+            {{"sketchy_gbuffer.normal", EdgeDetectStage::smooth_normals},
+             {"sketchy_gbuffer.face_normal", EdgeDetectStage::face_normals},
+             {"sketchy_gbuffer.depth"}, {"sketchy_gbuffer.ids"}},
+            {{"edge", 2, Texel::Float, "contour darkness d and the linear depth it belongs to", tolerance::kFloat,
+              "fed the same sketchy G-buffer; float target"},
+             {"shade", 4, Texel::Unorm8, "the object's unlit color, alpha = coverage", tolerance::kByte,
+              "object colors and coverage; 8-bit target"}}};
+  }
+};
+
+}  // namespace plumbago

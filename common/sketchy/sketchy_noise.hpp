@@ -1,0 +1,22 @@
+// The noise textures of sketchy drawing's uncertainty (SPEC 3.2, 3.5; common/util/noise.hpp),
+// only what sketchy.style reads.
+#pragma once
+
+#include "common/util/noise.hpp"
+#include "common/core/stage.hpp"
+
+namespace plumbago {
+
+struct Scene;
+struct Preprocessed;
+struct SketchyNoiseStage {
+  using Params = TypeList<NoiseTextureParams>;
+  static void make(const Scene& scene, Preprocessed& out);
+  static StageDesc describe() {
+    return preprocessing_stage("sketchy_noise", "noise textures of the sketchy uncertainty (SPEC 3.2, 3.5)",
+                               {"noise", "sketchy"},
+                               {{"textures", 2, Texel::Host, "2D Perlin, white noise or 3D Perlin, as the style reads"}}, make);
+  }
+};
+
+}  // namespace plumbago

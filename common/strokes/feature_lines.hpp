@@ -1,0 +1,108 @@
+// Feature lines of a triangle mesh as geometry (SPEC 4.3; Kalnins et al. 2002, §4.5):
+// creases, borders and silhouettes, in double precision, with no GL and no ray tracer,
+// so that both backends draw the same paths.
+//
+// Frames: `eye_world` is the eye in world space; it is taken into object space with
+// inverse(object_to_world), and everything else (the test g, the path positions) is in
+// the mesh's own object space. The sign of n·(eye - x) does not change under an affine
+// map (normals go by the inverse transpose), so the silhouette is the same set either way.
+//
+// Creases and borders (SPEC 4.3, first item):
+//   - an edge is a crease when its two face normals satisfy n1·n2 < cos(crease_deg)
+//     (default 60°: n1·n2 < 0.5); an edge next to a zero-area face (no normal) is not;
+//   - a border is an edge with one face (build_topology's face[1] = -1, which includes
+//     the edges of faces it split off from non-manifold input);
+//   - both are chained into maximal paths in the crease+border graph: a path passes
+//     through vertices of degree 2 and ends at vertices of any other degree; a
+//     component whose vertices all have degree 2 is a closed loop. A chain is then cut
+//     where it changes from crease to border, since they are reported apart.
+//   - a path point at a vertex carries the lowest-index face holding that vertex.
+//
+// Silhouettes (SPEC 4.3, second item; paper §4.5, "the zero set of n·(c - x)"):
+//   - g = n · normalize(eye - x) per face corner (`silhouette_normalized`, the default),
+//     or the paper's literal g = n · (eye - x); n is the crease-aware vertex normal: the
+//     weighted average of the face normals of the fan of faces around the vertex reached
+//     from this corner without crossing a crease or border edge. The weights are Max's
+//     (1999), sin(corner angle) / (|e1| |e2|), exact on a sphere and independent of how
+//     a strip is triangulated; the Mesh's own normals are area-weighted and not used. So
+//     g has one value per vertex on smooth surface and one per side of a crease. g = 0
+//     exactly (and any non-finite g) is taken as -1e-8.
+//   - a face holds a segment where g changes sign along two of its edges; the crossing on
+//     edge ab is p = a + (b - a) g_a / (g_a - g_b), computed along the edge's own
+//     direction (MeshTopology::Edge from -> to) so that both faces give the same point.
+//   - segments are traced face to face through the exit edge, never across a crease or
+//     border edge (the path stops there), each face at most once: closed loops or open
+//     paths. A crossing on a smooth edge carries that edge's face[0]; one on a crease or
+//     border edge carries the face the path runs in.
+//   - orientation: a traced path runs so that the visible side (g > 0) lies on its left,
+//     seen from the side the face normal points to: (n_f × d) · ∇g > 0 for the first
+//     segment with a nonzero gradient.
+//   - front/back (SPEC 4.3, third item). ∇g is the gradient of g interpolated linearly
+//     over the face, in the face's plane. A segment is front-facing when ∇g · (eye - m) >= 0,
+//     m its midpoint: g grows towards the eye, i.e. the surface bends away from the viewer
+//     (positive radial curvature), as on the whole silhouette of a convex object seen
+//     from outside; zero-area faces (∇g = 0) count as front-facing. The SPEC's wording
+//     ("the gradient points away from the eye side") describes the same test with g of the
+//     opposite sign, n·(x - c). Paths are cut where the facing changes; back-facing
+//     pieces are dropped unless `keep_back_facing`, and kept ones say which they are.
+//
+// Robustness: every face and every edge is visited a bounded number of times, so the
+// tracing ends on any input (non-manifold edges, zero-area or repeated faces, vertices
+// where g = 0); no position is NaN for finite input. A silhouette path has at most one
+// point more than its faces, a crease or border path one more than its edges.
+#pragma once
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <memory>
+#include <vector>
+
+#include "common/mesh/mesh.hpp"
+
+namespace plumbago {
+
+struct SurfacePoint {
+  uint32_t face = 0;     // mesh triangle index
+  glm::dvec3 bary{0.0};  // weights of the triangle's corners 0, 1, 2 (sum 1)
+  glm::dvec3 position{0.0};  // object space: the barycentric combination of the corners
+};
+
+struct FeaturePath {
+  std::vector<SurfacePoint> points;
+  bool closed = false;       // the last point joins the first (not repeated)
+  bool front_facing = true;  // silhouettes only; creases and borders are always true
+};
+
+struct FeatureLines {
+  std::vector<FeaturePath> creases, borders, silhouettes;
+};
+
+struct FeatureLineOptions {
+  double crease_deg = 60.0;          // strokes.crease_deg
+  bool keep_back_facing = false;     // hidden-line mode: keep back-facing silhouettes
+  bool silhouette_normalized = true; // strokes.silhouette_normalized
+};
+
+// What does not depend on the eye, made once per mesh and crease angle (adjacency,
+// crease-aware normals, the creases and borders); `lines` adds the silhouettes for an eye.
+// The mesh must outlive it; copies share the data.
+class FeatureLineMesh {
+ public:
+  FeatureLineMesh(const Mesh& mesh, double crease_deg);
+  // feature_lines(mesh, ...) below; options.crease_deg is the constructor's.
+  FeatureLines lines(const glm::dmat4& object_to_world, glm::dvec3 eye_world, const FeatureLineOptions& options) const;
+
+ private:
+  struct Impl;
+  std::shared_ptr<const Impl> impl_;
+};
+
+// All three kinds of SPEC 4.3 for one mesh and one eye (see above for the frames).
+FeatureLines feature_lines(const Mesh& mesh, const glm::dmat4& object_to_world, glm::dvec3 eye_world,
+                           const FeatureLineOptions& options = {});
+
+// The silhouette test g of SPEC 4.3 per face corner (index 3 f + k), with the
+// g = 0 -> -1e-8 rule applied; `eye_object` in object space. Exposed for tests.
+std::vector<double> silhouette_function(const Mesh& mesh, glm::dvec3 eye_object, const FeatureLineOptions& options = {});
+
+}  // namespace plumbago

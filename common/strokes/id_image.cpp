@@ -1,0 +1,123 @@
+// The ID image's triangles (SPEC 4.4): see common/strokes/id_image.hpp.
+#include "common/strokes/id_image.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/scene/gbuffer.hpp"
+
+namespace plumbago {
+
+namespace {
+
+struct ClipPoint {
+  glm::dvec3 world;
+  double d;  // linear view depth
+};
+
+// The polygon of a triangle in front of the near plane (Sutherland-Hodgman, one plane).
+std::vector<ClipPoint> clipped_to_near(const ClipPoint (&corners)[3], double near) {
+  std::vector<ClipPoint> out;
+  for (int k = 0; k < 3; ++k) {
+    const ClipPoint &a = corners[k], &b = corners[(k + 1) % 3];
+    if (a.d >= near) out.push_back(a);
+    if ((a.d >= near) != (b.d >= near)) {
+      double t = (near - a.d) / (b.d - a.d);
+      out.push_back({a.world + t * (b.world - a.world), near});
+    }
+  }
+  return out;
+}
+
+class IdTriangles {
+ public:
+  IdTriangles(const Scene& scene, const StrokesParams& p)
+      : project_(scene.camera, scene.width, scene.height), near_(scene.camera.near), bias_(p.id_depth_bias) {}
+
+  void face(const ClipPoint (&corners)[3], uint32_t key) {
+    std::vector<ClipPoint> polygon = clipped_to_near(corners, near_);
+    for (size_t k = 1; k + 1 < polygon.size(); ++k)
+      for (const ClipPoint* c : {&polygon[0], &polygon[k], &polygon[k + 1]}) {
+        glm::dvec3 w = project_(c->world);
+        out.push_back({glm::vec2(w.x, w.y), float(near_ / std::max(c->d, near_)), key});
+      }
+  }
+
+  // Segment a -> b of a path as a quad `width` px wide.
+  void segment(glm::dvec2 a, glm::dvec2 b, double da, double db, double width, uint32_t key) {
+    glm::dvec2 along = b - a;
+    double length = glm::length(along);
+    if (!(length > 0)) return;
+    glm::dvec2 n = glm::dvec2(-along.y, along.x) / length * (width / 2);
+    IdVertex q[4] = {line_vertex(a - n, da, key), line_vertex(a + n, da, key), line_vertex(b + n, db, key),
+                     line_vertex(b - n, db, key)};
+    for (int k : {0, 1, 2, 0, 2, 3}) out.push_back(q[k]);
+  }
+
+  std::vector<IdVertex> out;
+
+ private:
+  IdVertex line_vertex(glm::dvec2 at, double d, uint32_t key) const {
+    return {glm::vec2(at), float(near_ / std::max(d * (1.0 - bias_), near_)), key};
+  }
+
+  WindowProjection project_;
+  double near_, bias_;
+};
+
+// The key a silhouette segment draws: the path's key << 8 | floor(255 s / L).
+uint32_t silhouette_value(const WindowPath& path, double s_mid) {
+  double byte = path.length_px > 0 ? std::floor(255.0 * s_mid / path.length_px) : 0.0;
+  return path.key << 8 | uint32_t(std::clamp(byte, 0.0, 255.0));
+}
+
+void add_path(const WindowPath& path, const StrokesParams& p, IdTriangles& tri) {
+  if (path.kind == LineKind::Decal || path.kind == LineKind::Hatching) return;  // tested against its faces' keys
+  bool silhouette = path.kind == LineKind::Silhouette;
+  if (silhouette && !path.front_facing) return;
+  double width = silhouette ? p.id_silhouette_px : p.id_crease_px;
+  size_t n = path.window.size(), segments = path.closed ? n : n - 1;
+  for (size_t k = 0; k < segments; ++k) {
+    size_t next = (k + 1) % n;
+    double s_mid = path.arc_px[k] + glm::distance(path.window[k], path.window[next]) / 2;
+    uint32_t key = silhouette ? silhouette_value(path, s_mid) : path.key;
+    tri.segment(path.window[k], path.window[next], path.depth[k], path.depth[next], width, key);
+  }
+}
+
+}  // namespace
+
+Image key_channels(const ImageU32& keys) {
+  Image out(keys.width, keys.height, 2);
+  for (size_t i = 0; i < keys.data.size(); ++i) {
+    out.data[2 * i] = float(keys.data[i] >> 16);
+    out.data[2 * i + 1] = float(keys.data[i] & 0xffffu);
+  }
+  return out;
+}
+
+ImageU32 keys_from_channels(const Image& channels) {
+  ImageU32 out(channels.width, channels.height, 1);
+  for (size_t i = 0; i < out.data.size(); ++i)
+    out.data[i] = uint32_t(channels.data[2 * i]) << 16 | uint32_t(channels.data[2 * i + 1]);
+  return out;
+}
+
+std::vector<IdVertex> id_triangles(const Scene& scene, const WindowLines& lines, const StrokesParams& p) {
+  IdTriangles tri(scene, p);
+  glm::dmat4 view(scene.camera.view());
+  std::vector<WorldObject> objects = world_geometry(scene);
+  for (uint32_t o = 0; o < objects.size(); ++o)
+    for (uint32_t f = 0; f < objects[o].triangles.size(); ++f) {
+      ClipPoint corners[3];
+      for (int k = 0; k < 3; ++k) {
+        glm::dvec3 w(objects[o].positions[objects[o].triangles[f][k]]);
+        corners[k] = {w, -(view * glm::dvec4(w, 1.0)).z};
+      }
+      tri.face(corners, lines.face_key(o, f));
+    }
+  for (const WindowPath& path : lines.paths) add_path(path, p, tri);  // creases and borders come first
+  return std::move(tri.out);
+}
+
+}  // namespace plumbago

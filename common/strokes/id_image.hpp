@@ -1,0 +1,71 @@
+// The ID reference image (SPEC 4.4; Kalnins et al. 2002 §4.6): a 32-bit key per pixel,
+// 0 where nothing is drawn, made of triangles both backends draw in the same order and
+// with the same rules:
+//   1. every face of every object (clipped to the near plane), with its face key;
+//   2. crease and border paths as window-space quads `strokes.id_crease_px` wide, with the
+//      path key;
+//   3. front-facing silhouette paths as quads `strokes.id_silhouette_px` wide, each segment
+//      with key << 8 | floor(255 s / L), s the window arc length at its midpoint and L the
+//      path's (common/strokes/strokes.hpp numbers the keys).
+// A segment's quad runs along it with its width centered on it (no caps).
+//
+// Depth: each vertex carries z = near / d, d its linear view depth: 1/d, and so z, is
+// affine in window space on a planar triangle, so interpolating z affinely over the
+// window is exact (perspective-correct) and the same rule on both backends. A line vertex
+// is placed at d (1 - `strokes.id_depth_bias`) (an explicit bias, not glPolygonOffset's
+// implementation-defined units). A pixel keeps the triangle with the largest z (the
+// nearest; GL_GREATER, the buffer cleared to 0); equal z keeps the first drawn.
+//
+// Rasterization (both backends, SPEC 0): a triangle covers the pixel centers inside it and
+// those on its top or left edges; vertices are snapped to 1/256 px (GL_SUBPIXEL_BITS = 8
+// on llvmpipe and the common GPUs); z is interpolated with the barycentrics of the
+// (snapped) window triangle.
+//
+// Output: the key as two channels, (key >> 16, key & 0xffff), each exact as a float.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "common/util/image.hpp"
+#include "common/strokes/hatching.hpp"
+#include "common/core/stage.hpp"
+#include "common/strokes/strokes.hpp"
+
+namespace plumbago {
+
+struct IdVertex {
+  glm::vec2 window;  // pixels, origin bottom-left
+  float z;           // near / d
+  uint32_t key;
+};
+
+// The triangles of the ID image in drawing order, three vertices each.
+std::vector<IdVertex> id_triangles(const Scene& scene, const WindowLines& lines, const StrokesParams& p);
+
+constexpr int kSubpixelBits = 8;
+
+// The key image as the output's two channels, and back.
+Image key_channels(const ImageU32& keys);
+ImageU32 keys_from_channels(const Image& channels);
+
+// Where two surfaces' z lie this close (relative, plus a subpixel of their z slopes) the
+// backends may keep either: a depth tie (reference/strokes/id_image.cpp).
+constexpr double kDepthTie = 1e-5;
+
+struct IdImageStage {
+  using Params = TypeList<StrokesParams, HatchingParams>;
+  static StageDesc describe() {
+    return {"id_image", StageKind::Frame, "ID reference image: faces, crease and silhouette quads (SPEC 4.4)", {"strokes"},
+            {},
+            {{"ids", 2, Texel::Uint, "the key, as (key >> 16, key & 0xffff)", 0.0,
+              "the same triangles, rasterized with the same rules: exact except where rounding decides, which a derived "
+              "bound allows and the note counts: depth ties (the nearest surfaces within 1e-5 relative plus a subpixel "
+              "of z slope) and edges within a subpixel of the pixel center (torus 800x600: 453 px, 0.09%)"}},
+            {"strokes"}};
+  }
+};
+
+}  // namespace plumbago

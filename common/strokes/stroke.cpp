@@ -1,0 +1,121 @@
+// The stroke raster's triangles (SPEC 4.6-4.7): see common/strokes/stroke.hpp.
+#include "common/strokes/stroke.hpp"
+
+#include <algorithm>
+#include <map>
+#include <string>
+
+#include "common/core/host_data.hpp"
+#include "common/strokes/offset_synthesis.hpp"
+#include "common/strokes/stroke_textures.hpp"
+
+namespace plumbago {
+
+namespace {
+
+const StrokeStyle& style_of(LineKind kind, const StrokeStyles& styles) {
+  switch (kind) {
+    case LineKind::Crease: return styles.crease;
+    case LineKind::Border: return styles.border;
+    case LineKind::Silhouette: break;
+    case LineKind::Decal: break;  // its own style: RunStyles::of
+    case LineKind::Hatching: break;
+  }
+  return styles.silhouette;
+}
+
+// The drawn pressure of a decal path at window arc length s (linear between its points).
+double pressure_at(const WindowPath& path, double s) {
+  size_t k = segment_at(path, s), next = std::min(k + 1, path.window.size() - 1);
+  double length = path.arc_px[next] - path.arc_px[k];
+  double t = length > 0 ? std::clamp((s - path.arc_px[k]) / length, 0.0, 1.0) : 0.0;
+  return path.pressure[k] + t * (path.pressure[next] - path.pressure[k]);
+}
+
+// A decal's style over one run (common/strokes/decal.hpp 3.): an offsets example of zero
+// displacement carrying the path's pressure at the run's ends and at every path point
+// between. It spans the run (at least 1 px, an example's least length) and 1e-6 px more,
+// so that the rubber stamp's period does not wrap the run's end to its start.
+StrokeStyle decal_style(const StrokeStyle& decal, const WindowPath& path, const VisibleRun& run) {
+  StrokeStyle style = decal;
+  double length = std::max(run.s1 - run.s0, 1.0) + 1e-6;
+  OffsetExample pressure{length, {{0.0, 0.0, pressure_at(path, run.s0), false}}};
+  for (size_t k = 0; k < path.arc_px.size(); ++k)
+    if (path.arc_px[k] > run.s0 && path.arc_px[k] < run.s1)
+      pressure.offsets.push_back({(path.arc_px[k] - run.s0) / length, 0.0, path.pressure[k], false});
+  pressure.offsets.push_back({(run.s1 - run.s0) / length, 0.0, pressure_at(path, run.s1), false});
+  style.offsets = pressure;
+  style.synthesis = OffsetSynthesis::Stamp;
+  return style;
+}
+
+}  // namespace
+
+StrokeStyle RunStyles::of(const WindowPath& path, const VisibleRun& run, size_t index) {
+  if (path.kind == LineKind::Decal) return decal_style(decals_.at(path.decal), path, run);
+  if (path.kind == LineKind::Hatching) {  // SPEC 4.10: faded and thickened by its level of detail
+    StrokeStyle style = decal_style(decals_.at(path.decal), path, run);
+    style.alpha = float(style.alpha * path.alpha_scale);
+    style.width_px = float(style.width_px * path.width_scale);
+    return style;
+  }
+  StrokeStyle style = style_of(path.kind, styles_);
+  const std::vector<OffsetExample>& drawn =
+      path.kind == LineKind::Silhouette ? styles_.silhouette_examples : styles_.crease_examples;
+  if (!drawn.empty()) style.offsets = drawn[index % drawn.size()];  // the stamp: each in turn
+  if (style.synthesis != OffsetSynthesis::Markov || !style.offsets) return style;
+  auto it = chains_.find(path.kind);
+  if (it == chains_.end())
+    it = chains_.emplace(path.kind, drawn.empty() ? OffsetSynthesizer(*style.offsets) : OffsetSynthesizer(drawn)).first;
+  std::string name = "stroke run " + std::to_string(path.key) + "/" + std::to_string(index);
+  style.offsets = it->second.synthesize_example(run.s1 - run.s0, seed_, name);
+  return style;
+}
+
+std::vector<RunStroke> run_strokes(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
+                                   uint32_t seed) {
+  std::vector<RunStroke> out;
+  RunStyles run_styles(styles, seed, lines.decal_styles);
+  for (size_t i = 0; i < visibility.runs.size(); ++i) {
+    const VisibleRun& run = visibility.runs[i];
+    StrokeStyle style = run_styles.of(lines.paths[run.path], run, i);
+    StrokeRun stroke{run.window, run.closed, run.occluded_start, run.occluded_end};
+    out.push_back({style, base_stroke_samples(stroke, style)});
+  }
+  return out;
+}
+
+std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visibility& visibility,
+                                           const StrokeStyles& styles, uint32_t seed) {
+  std::vector<StrokeVertex> out;
+  for (const RunStroke& stroke : run_strokes(lines, visibility, styles, seed)) {
+    Ribbon r = ribbon(stroke.samples, stroke.style);
+    for (const RibbonVertex& v : r.triangles)
+      out.push_back({v.position, v.uv, v.alpha, r.color, float(int(stroke.style.texture))});
+  }
+  return out;
+}
+
+std::map<std::string, double> stroke_counts(const HostData& host) {
+  const Visibility* v = host.find<Visibility>("visibility");
+  const WindowLines* lines = host.find<WindowLines>("strokes.lines");
+  std::map<std::string, double> out;
+  if (!v || !lines) return out;
+  out["strokes"] = double(v->runs.size());
+  for (const VisibleRun& run : v->runs) out[std::string("strokes.") + line_kind_name(lines->paths[run.path].kind)] += 1;
+  for (const HatchGroupState& g : lines->hatching) {
+    std::string name = "hatching.group" + std::to_string(g.number);
+    out[name + ".sigma"] = g.sigma;
+    out[name + ".level"] = g.lod.from + g.progress * (g.lod.to - g.lod.from);
+  }
+  return out;
+}
+
+std::vector<Image> stroke_texture_layers(uint32_t seed) {
+  std::vector<Image> layers;
+  for (size_t k = 0; k < stroke_texture_names().size(); ++k)
+    layers.push_back(stroke_texture(StrokeTextureKind(k), seed));
+  return layers;
+}
+
+}  // namespace plumbago

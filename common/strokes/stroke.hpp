@@ -1,0 +1,103 @@
+// The stroke raster (SPEC 4.6-4.7; Kalnins et al. 2002 §4.1, §4.4): each visible run of a
+// stroke object's feature lines (common/strokes/visibility.hpp) becomes a base stroke in its line
+// kind's style (common/strokes/base_stroke.hpp, the scene's "strokes" styles), a ribbon of window
+// triangles. Per fragment, with the ribbon's interpolated alpha a_v and texture
+// coordinates (u along, v across; affine in window space), and T the style's stroke
+// texture (common/strokes/stroke_textures.hpp; u REPEAT, v CLAMP_TO_EDGE, LINEAR):
+//   a = a_v T(u, v)
+//   out = color a' + out (1 - a'),  a' = the paper's alpha transfer of a (SPEC 4.2)
+// premultiplied "over", ribbon after ribbon in path order (creases and borders, then
+// silhouettes, then decals and hatches, SPEC 4.9-4.10), triangle after triangle. Both
+// backends draw the same triangles: the GPU as one draw call, the reference through its
+// scalar rasterizer.
+#pragma once
+
+#include <map>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "common/strokes/base_stroke.hpp"
+#include "common/strokes/offset_synthesis.hpp"
+#include "common/core/stage.hpp"
+#include "common/strokes/visibility.hpp"
+
+namespace plumbago {
+
+// One vertex as both backends read it: window position, (u, v), alpha, color, the stroke
+// texture's layer (StrokeTextureKind).
+struct StrokeVertex {
+  glm::vec2 position, uv;
+  float alpha;
+  glm::vec3 color;
+  float layer;
+};
+static_assert(sizeof(StrokeVertex) == 9 * sizeof(float), "shaders/strokes/stroke.vert reads 9 packed floats");
+
+// The style a run is drawn with: its line kind's (its offsets example the scene's drawn
+// examples where it has some, StrokeStyles), with the offsets example synthesized
+// over the run's length (SPEC 4.8) where the style asks for it, seeded by the scene seed
+// and the run's name (its path key and its index among the frame's runs); a decal's
+// (SPEC 4.9), with its drawn pressure over the run (common/strokes/decal.hpp 3.); a hatch's the
+// same, its alpha and width times its level-of-detail factors (SPEC 4.10).
+class RunStyles {
+ public:
+  RunStyles(const StrokeStyles& styles, uint32_t seed, const std::vector<StrokeStyle>& decals)
+      : styles_(styles), seed_(seed), decals_(decals) {}
+  StrokeStyle of(const WindowPath& path, const VisibleRun& run, size_t index);
+
+ private:
+  const StrokeStyles& styles_;
+  uint32_t seed_;
+  const std::vector<StrokeStyle>& decals_;
+  std::map<LineKind, OffsetSynthesizer> chains_;  // one chain per kind's example, made on first use
+};
+
+// One visible run as it is drawn: its style (RunStyles::of) and its base stroke's samples.
+struct RunStroke {
+  StrokeStyle style;
+  BaseStrokeSamples samples;
+};
+
+// Every visible run's stroke, in drawing order (visibility.runs' order): what
+// stroke_triangles draws, and what experiments/temporal_coherence measures.
+std::vector<RunStroke> run_strokes(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
+                                   uint32_t seed);
+
+// The ribbons of every visible run (run_strokes), three vertices a triangle, in drawing order; `seed`
+// (the scene's) seeds the offsets a style synthesizes (SPEC 4.8).
+std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visibility& visibility,
+                                           const StrokeStyles& styles, uint32_t seed);
+
+// The strokes a frame draws: its visible runs per line kind, keyed "strokes.<kind>", and
+// their sum, "strokes" (what Kalnins et al.'s Table 1 counts); per hatching group N,
+// "hatching.groupN.sigma" and "hatching.groupN.level" (from + progress (to - from), SPEC
+// 4.10); empty when the frame's `host` data holds no visibility.
+class HostData;
+std::map<std::string, double> stroke_counts(const HostData& host);
+
+// The stroke textures, one per StrokeTextureKind, from the scene seed.
+std::vector<Image> stroke_texture_layers(uint32_t seed);
+
+struct StrokeStage {
+  using Params = TypeList<>;
+  static StageDesc describe() {
+    StageDesc d{
+        "stroke",
+        StageKind::Frame,
+        "stylized strokes of the visible feature lines (SPEC 4.6-4.7)",
+        {"stroke_paper"},
+        {{"visibility.flags", nullptr, false}, {"stroke_paper.color"}, {"paper.height"}},
+        {{"color", 3, Texel::Unorm8, "the strokes over the page", tolerance::kByte,
+          "fed the same page, visible runs and paper; the same triangles; the GPU filters the stroke texture with "
+          "8-bit weights and blends each fragment into an 8-bit target: a derived bound allows 4.5/255 per "
+          "fragment less the tolerance, and anything in the 1-px band where a ribbon's edge passes within a "
+          "subpixel of the pixel center (measured max 0.0128 on the teapot where ribbons overlap)"}},
+        {"strokes"}};
+    d.outputs[0].frame_color = true;
+    d.outputs[0].draws_over = {"stroke_paper.color"};
+    return d;
+  }
+};
+
+}  // namespace plumbago

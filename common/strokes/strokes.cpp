@@ -1,0 +1,273 @@
+// Feature lines in the window, keyed for the ID image: see common/strokes/strokes.hpp.
+#include "common/strokes/strokes.hpp"
+
+#include <algorithm>
+#include <optional>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "common/strokes/decal.hpp"
+#include "common/core/host_data.hpp"
+
+namespace plumbago {
+
+namespace {
+
+FeatureLineOptions line_options(const StrokesParams& p) {
+  return {double(p.crease_deg), p.keep_back_facing, p.silhouette_normalized};
+}
+
+bool drawn(const SceneObject& o, LineObjects which) {
+  return which == LineObjects::Strokes ? o.style == Style::Strokes : o.style != Style::Sketchy;
+}
+
+// The mesh vertex a path point sits on (crease and border points are vertices).
+uint32_t vertex_of(const Mesh& mesh, const SurfacePoint& p) {
+  int k = int(std::max_element(&p.bary[0], &p.bary[0] + 3) - &p.bary[0]);
+  return mesh.triangles[p.face][k];
+}
+
+uint64_t edge_key(uint32_t a, uint32_t b) { return uint64_t(std::min(a, b)) << 32 | std::max(a, b); }
+
+// The faces around each edge, for the crease and border segments.
+class EdgeFaces {
+ public:
+  explicit EdgeFaces(const Mesh& mesh) {
+    for (uint32_t f = 0; f < mesh.triangles.size(); ++f)
+      for (int k = 0; k < 3; ++k) faces_[edge_key(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3])].push_back(f);
+  }
+  const std::vector<uint32_t>& of(uint32_t a, uint32_t b) const {
+    static const std::vector<uint32_t> none;
+    auto it = faces_.find(edge_key(a, b));
+    return it == faces_.end() ? none : it->second;
+  }
+
+ private:
+  std::unordered_map<uint64_t, std::vector<uint32_t>> faces_;
+};
+
+// Whether face f of `mesh` (object to world `m`) faces the eye.
+bool faces_eye(const Mesh& mesh, const glm::dmat4& m, uint32_t f, glm::dvec3 eye) {
+  glm::dvec3 p[3];
+  for (int k = 0; k < 3; ++k) p[k] = glm::dvec3(m * glm::dvec4(glm::dvec3(mesh.positions[mesh.triangles[f][k]]), 1.0));
+  return glm::dot(glm::cross(p[1] - p[0], p[2] - p[0]), eye - p[0]) > 0;
+}
+
+}  // namespace
+
+struct LineMeshes {
+  std::vector<std::optional<FeatureLineMesh>> lines;  // per scene object; none where not drawn
+  std::vector<std::shared_ptr<const EdgeFaces>> edges;
+};
+
+namespace {
+
+class PathBuilder {
+ public:
+  PathBuilder(const Scene& scene, const WindowProjection& project, WindowLines& out)
+      : scene_(scene), project_(project), out_(out), eye_(scene.camera.eye) {}
+
+  // Adds the pieces of `path` in front of the near plane.
+  void add(const FeaturePath& path, LineKind kind, uint32_t object, const EdgeFaces* edges) {
+    const SceneObject& o = scene_.objects[object];
+    glm::dmat4 m(o.transform);
+    WindowPath piece = empty(path, kind, object);
+    size_t n = path.points.size();
+    bool whole = true;
+    for (size_t i = 0; i < n; ++i) {
+      glm::dvec3 w = glm::dvec3(m * glm::dvec4(path.points[i].position, 1.0));
+      glm::dvec3 win = project_(w);
+      if (win.z < double(scene_.camera.near)) {
+        whole = false;
+        flush(piece);
+        piece = empty(path, kind, object);
+        continue;
+      }
+      piece.surface.push_back(path.points[i]);
+      piece.world.push_back(w);
+      piece.window.push_back({win.x, win.y});
+      piece.depth.push_back(win.z);
+      if (edges && i + 1 < n)
+        piece.front_faces.push_back(front_faces(*o.mesh, m, path.points[i], path.points[i + 1], object, *edges));
+    }
+    piece.closed = path.closed && whole;
+    if (edges && piece.closed)
+      piece.front_faces.push_back(front_faces(*o.mesh, m, path.points[n - 1], path.points[0], object, *edges));
+    flush(piece);
+  }
+
+  // Adds the pieces of surface stroke `index` (SPEC 4.9-4.10), a decal or a hatch with its
+  // weight: split where a point missed the surface, where the object changes and at the
+  // near plane.
+  // `object`: a hatch's group's object (points elsewhere count as missed), else kMissed.
+  void add_decal(const ProjectedDecal& decal, uint32_t index, const HatchWeight& weight, uint32_t object) {
+    WindowPath start = decal_piece(kMissed, index, decal.hatch.group >= 0, weight), piece = start;
+    auto restart = [&](uint32_t object) {
+      flush_decal(piece);
+      piece = start;
+      piece.object = object;
+    };
+    for (DecalPoint d : decal.points) {
+      if (object != kMissed && d.object != object) d.object = kMissed;
+      if (d.object != piece.object) restart(d.object);
+      if (d.object == kMissed) continue;
+      glm::dvec3 local = decal_point_local(scene_, d);
+      glm::dvec3 w = glm::dvec3(glm::dmat4(scene_.objects[d.object].transform) * glm::dvec4(local, 1.0));
+      glm::dvec3 win = project_(w);
+      if (win.z < double(scene_.camera.near)) {
+        restart(d.object);
+        continue;
+      }
+      piece.surface.push_back({d.face, d.bary, local});
+      piece.world.push_back(w);
+      piece.window.push_back({win.x, win.y});
+      piece.depth.push_back(win.z);
+      piece.pressure.push_back(d.pressure);
+    }
+    flush_decal(piece);
+  }
+
+ private:
+  WindowPath empty(const FeaturePath& path, LineKind kind, uint32_t object) const {
+    return {kind, object, false, path.front_facing, 0, {}, {}, {}, {}, {}, {}, 0, {}, 0};
+  }
+
+  glm::uvec2 front_faces(const Mesh& mesh, const glm::dmat4& m, const SurfacePoint& a, const SurfacePoint& b,
+                         uint32_t object, const EdgeFaces& edges) const {
+    glm::uvec2 keys(0);
+    int k = 0;
+    for (uint32_t f : edges.of(vertex_of(mesh, a), vertex_of(mesh, b)))
+      if (k < 2 && faces_eye(mesh, m, f, glm::dvec3(eye_))) keys[k++] = out_.face_key(object, f);
+    return keys;
+  }
+
+  static WindowPath decal_piece(uint32_t object, uint32_t index, bool hatch, const HatchWeight& weight) {
+    return {hatch ? LineKind::Hatching : LineKind::Decal, object, false, true, 0, {}, {}, {}, {}, {}, {}, 0, {},
+            index, weight.alpha, weight.width};
+  }
+
+  // A decal's or hatch's segments test the faces of their ends.
+  void flush_decal(WindowPath& piece) {
+    for (size_t k = 0; k + 1 < piece.surface.size(); ++k)
+      piece.front_faces.push_back({out_.face_key(piece.object, piece.surface[k].face),
+                                   out_.face_key(piece.object, piece.surface[k + 1].face)});
+    flush(piece);
+  }
+
+  // Keeps a piece of two points or more, with its window arc lengths.
+  void flush(WindowPath& piece) {
+    if (piece.window.size() < 2) return;
+    piece.front_faces.resize(piece.closed ? piece.window.size() : piece.window.size() - 1);
+    piece.arc_px.push_back(0);
+    for (size_t i = 1; i < piece.window.size(); ++i)
+      piece.arc_px.push_back(piece.arc_px.back() + glm::distance(piece.window[i - 1], piece.window[i]));
+    piece.length_px = piece.arc_px.back();
+    if (piece.closed) piece.length_px += glm::distance(piece.window.back(), piece.window.front());
+    out_.paths.push_back(std::move(piece));
+  }
+
+  const Scene& scene_;
+  const WindowProjection& project_;
+  WindowLines& out_;
+  glm::vec3 eye_;
+};
+
+// Numbers the paths (creases and borders first) and checks that the keys fit 32 bits.
+void assign_keys(WindowLines& lines) {
+  std::stable_partition(lines.paths.begin(), lines.paths.end(),
+                        [](const WindowPath& p) { return p.kind != LineKind::Silhouette; });
+  uint64_t next = uint64_t(lines.face_count) + 1;
+  size_t silhouettes = 0;
+  for (WindowPath& p : lines.paths)
+    if (p.kind != LineKind::Silhouette) p.key = uint32_t(next++);
+    else ++silhouettes;
+  uint64_t base = ((next - 1) >> 8) + 1;
+  if (base + silhouettes >= (uint64_t(1) << 24))
+    throw std::length_error("the ID image's keys do not fit 32 bits: " + std::to_string(lines.face_count) + " faces, " +
+                            std::to_string(next - 1 - lines.face_count) + " crease and border paths, " +
+                            std::to_string(silhouettes) + " silhouette paths");
+  lines.silhouette_base = uint32_t(base);
+  for (WindowPath& p : lines.paths)
+    if (p.kind == LineKind::Silhouette) p.key = uint32_t(base++);
+}
+
+}  // namespace
+
+const char* line_kind_name(LineKind kind) {
+  switch (kind) {
+    case LineKind::Crease: return "crease";
+    case LineKind::Border: return "border";
+    case LineKind::Silhouette: return "silhouette";
+    case LineKind::Decal: return "decal";
+    case LineKind::Hatching: break;
+  }
+  return "hatching";
+}
+
+WindowProjection::WindowProjection(const Camera& camera, int width, int height)
+    : view(glm::dmat4(camera.view())), clip(glm::dmat4(camera.projection(float(width) / float(height))) * view),
+      width(width), height(height) {}
+
+glm::dvec3 WindowProjection::operator()(glm::dvec3 world) const {
+  glm::dvec4 c = clip * glm::dvec4(world, 1.0);
+  double d = -(view * glm::dvec4(world, 1.0)).z;
+  return {(c.x / c.w * 0.5 + 0.5) * width, (c.y / c.w * 0.5 + 0.5) * height, d};
+}
+
+std::shared_ptr<const LineMeshes> line_meshes(const Scene& scene, const StrokesParams& p, LineObjects which) {
+  auto out = std::make_shared<LineMeshes>();
+  for (const SceneObject& o : scene.objects) {
+    bool drawn_here = drawn(o, which);
+    out->lines.push_back(drawn_here ? std::optional(FeatureLineMesh(*o.mesh, p.crease_deg)) : std::nullopt);
+    out->edges.push_back(drawn_here ? std::make_shared<const EdgeFaces>(*o.mesh) : nullptr);
+  }
+  return out;
+}
+
+WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which, const LineMeshes* prepared,
+                         const DecalSurface* decals) {
+  std::shared_ptr<const LineMeshes> made;
+  if (!prepared) made = line_meshes(scene, p, which), prepared = made.get();
+  WindowLines out;
+  out.width = scene.width, out.height = scene.height;
+  for (const SceneObject& o : scene.objects) {
+    out.first_face.push_back(out.face_count);
+    out.face_count += uint32_t(o.mesh->triangles.size());
+  }
+  WindowProjection project(scene.camera, scene.width, scene.height);
+  PathBuilder builder(scene, project, out);
+  for (uint32_t i = 0; i < scene.objects.size(); ++i) {
+    const SceneObject& o = scene.objects[i];
+    if (!prepared->lines[i]) continue;
+    FeatureLines lines =
+        prepared->lines[i]->lines(glm::dmat4(o.transform), glm::dvec3(scene.camera.eye), line_options(p));
+    const EdgeFaces* edges = prepared->edges[i].get();
+    for (const FeaturePath& path : lines.creases) builder.add(path, LineKind::Crease, i, edges);
+    for (const FeaturePath& path : lines.borders) builder.add(path, LineKind::Border, i, edges);
+    for (const FeaturePath& path : lines.silhouettes) builder.add(path, LineKind::Silhouette, i, nullptr);
+  }
+  assign_keys(out);
+  if (!decals) return out;
+  out.hatching = hatch_states(scene, *decals, scene.params.get<HatchingParams>());
+  std::vector<HatchWeight> weights = hatch_weights(out.hatching, *decals);
+  for (uint32_t d = 0; d < decals->size(); ++d) {
+    out.decal_styles.push_back((*decals)[d].style);
+    int group = (*decals)[d].hatch.group;
+    if (weights[d].alpha > 0) builder.add_decal((*decals)[d], d, weights[d], group >= 0 ? out.hatching[group].object : kMissed);
+  }
+  return out;
+}
+
+const WindowLines& frame_lines(HostData& frame, HostData& kept, const Scene& scene) {
+  auto p = scene.params.get<StrokesParams>();
+  using Meshes = std::shared_ptr<const LineMeshes>;
+  const Meshes& meshes =
+      kept.get<Meshes>("strokes.meshes", [&] { return line_meshes(scene, p, LineObjects::Strokes); });
+  return frame.get<WindowLines>("strokes.lines", [&] {
+    const DecalSurface* decals = kept.find<DecalSurface>(kDecalSurface);
+    if (!decals && has_decals(scene)) throw std::logic_error("strokes: the decals were not projected (kDecalSurface)");
+    return window_lines(scene, p, LineObjects::Strokes, meshes.get(), decals);
+  });
+}
+
+}  // namespace plumbago

@@ -1,0 +1,124 @@
+// The lines of stroke-based rendering in the window (SPEC 4.3-4.5; Kalnins et al. 2002
+// §4.5-4.6): the feature lines of common/strokes/feature_lines.hpp, for one camera, projected to
+// window pixels and keyed for the ID reference image. Both backends draw and test exactly
+// these paths; the `lines` command writes them.
+//
+// Keys (SPEC 4.4; one 32-bit space, 0 = nothing):
+//   - face f of object o (every object of the scene, in order): first_face[o] + f + 1;
+//   - crease and border path i: face_count + 1 + i;
+//   - silhouette path j: silhouette_base + j, drawn as key << 8 | floor(255 s / L), with
+//     silhouette_base the smallest key whose shifted values lie above every other key;
+//   - decal and hatching paths (SPEC 4.9-4.10, common/strokes/decal.hpp, common/strokes/hatching.hpp) have
+//     none: they are not drawn in the ID image, their samples test their faces' keys.
+// A scene whose keys do not fit 32 bits is refused (std::length_error, with the counts).
+//
+// Window coordinates are SPEC 0's (pixels, origin bottom-left); depth is linear view depth
+// d = -z_view. A path point nearer than the near plane is dropped and splits its path.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "common/strokes/feature_lines.hpp"
+#include "common/strokes/hatching.hpp"
+#include "common/scene/scene.hpp"
+
+namespace plumbago {
+
+struct StrokesParams {
+  static constexpr const char* stage = "strokes";
+  float crease_deg;
+  bool silhouette_normalized, keep_back_facing;
+  float id_crease_px, id_silhouette_px, id_depth_bias, vis_step_px;
+  template <class V>
+  void visit(V& v) {
+    v.real(crease_deg, "crease_deg", 60.0, 0.0, 180.0,
+           "an edge is a crease when its face normals differ by more (SPEC 4.3)");
+    v.boolean(silhouette_normalized, "silhouette_normalized", true,
+              "g = n.normalize(eye - x); false: the paper's literal n.(eye - x) (SPEC 4.3)");
+    v.boolean(keep_back_facing, "keep_back_facing", false, "keep back-facing silhouettes (hidden-line mode, SPEC 4.3)");
+    v.real(id_crease_px, "id_crease_px", 2.0, 0.5, 16.0, "width of crease and border quads in the ID image (SPEC 4.4)");
+    v.real(id_silhouette_px, "id_silhouette_px", 3.0, 0.5, 16.0,
+           "width of silhouette quads in the ID image (SPEC 4.4)");
+    v.real(id_depth_bias, "id_depth_bias", 0.005, 0.0, 0.5,
+           "lines are depth-tested at d (1 - bias) against the faces (SPEC 4.4; relative, linear view depth)");
+    v.real(vis_step_px, "vis_step_px", 2.0, 0.25, 64.0, "visibility samples along a path, pixels apart (SPEC 4.5)");
+  }
+};
+
+enum class LineKind : uint8_t { Crease, Border, Silhouette, Decal, Hatching };
+const char* line_kind_name(LineKind kind);
+
+struct WindowPath {
+  LineKind kind;
+  uint32_t object;  // index in scene.objects
+  bool closed, front_facing;
+  uint32_t key;                       // its key (a silhouette's before the shift)
+  std::vector<SurfacePoint> surface;  // object space
+  std::vector<glm::dvec3> world;
+  std::vector<glm::dvec2> window;  // pixels, origin bottom-left
+  std::vector<double> depth;       // linear view depth
+  // Creases and borders: per segment (point k to k + 1, the closing one last), the keys
+  // of its adjacent faces that face the eye (0 where none). Decals and hatches: the keys of
+  // the faces its two ends lie on.
+  std::vector<glm::uvec2> front_faces;
+  std::vector<double> arc_px;  // window arc length at each point (the closing point last)
+  double length_px = 0;        // the whole window length (closed: around the loop)
+  // Decals and hatches: the drawn pressure at each point, the index of its surface stroke
+  // in WindowLines::decal_styles, and (hatches) this frame's factors of alpha and width
+  // (common/strokes/hatching.hpp 4.).
+  std::vector<double> pressure;
+  uint32_t decal = 0;
+  double alpha_scale = 1, width_scale = 1;
+};
+
+struct WindowLines {
+  std::vector<WindowPath> paths;  // creases and borders first, then silhouettes, then decals and hatches
+  std::vector<uint32_t> first_face;  // per scene object
+  uint32_t face_count = 0, silhouette_base = 0;
+  int width = 0, height = 0;
+  std::vector<StrokeStyle> decal_styles;  // per surface stroke (common/strokes/decal.hpp DecalSurface)
+  std::vector<HatchGroupState> hatching;  // per hatching group: its level of detail this frame
+
+  uint32_t face_key(uint32_t object, uint32_t face) const { return first_face[object] + face + 1; }
+};
+
+// Which objects' lines: those drawn with strokes, or every object but the sketchy ones
+// (the `lines` command: pencil objects too).
+enum class LineObjects { Strokes, AllButSketchy };
+
+// What window_lines needs of each drawn object that does not depend on the view: the
+// feature lines' mesh data (common/strokes/feature_lines.hpp FeatureLineMesh) and the faces
+// around each edge. A renderer makes it once and keeps it across its frames.
+struct LineMeshes;
+std::shared_ptr<const LineMeshes> line_meshes(const Scene& scene, const StrokesParams& p, LineObjects which);
+
+// `prepared` (from line_meshes with the same scene, parameters and `which`) or none;
+// `decals`, the surface points of decals and hatches (SPEC 4.9-4.10, common/strokes/decal.hpp),
+// placed after the feature lines, or none; a hatch absent at this frame's level of detail
+// (weight 0) is left out.
+struct ProjectedDecal;
+using DecalSurface = std::vector<ProjectedDecal>;  // common/strokes/decal.hpp
+WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which = LineObjects::Strokes,
+                         const LineMeshes* prepared = nullptr, const DecalSurface* decals = nullptr);
+
+class HostData;
+// The frame's window lines of stroke objects, made once per frame into `frame`, from the
+// mesh data made once into `kept` (a renderer's store across frames; may be `frame`), and
+// the decals of the scene's stroke files from the surface points a backend projected into
+// `kept` (kDecalSurface; std::logic_error when the scene has decals and it did not).
+const WindowLines& frame_lines(HostData& frame, HostData& kept, const Scene& scene);
+
+// The window position and linear depth of a world point (SPEC 0), in double.
+struct WindowProjection {
+  WindowProjection(const Camera& camera, int width, int height);
+  glm::dvec3 operator()(glm::dvec3 world) const;  // (x, y, d)
+  glm::dmat4 view, clip;
+  int width, height;
+};
+
+}  // namespace plumbago

@@ -1,0 +1,101 @@
+// Visibility of stroke samples (SPEC 4.5; Kalnins et al. 2002 §4.6), from the ID image.
+//
+// Each path of common/strokes/strokes.hpp is sampled every `strokes.vis_step_px` pixels of window
+// arc length from its start (an open path also at its end), where it runs within 4 px of
+// the window; where it leaves or enters that, one sample marks the edge (hidden). A sample at window position
+// p, in pixel floor(p), is visible when some pixel of the 3x3 box around it (5x5 for hatches) holds
+//   - a silhouette: its path key, with an arc-length byte within
+//     ceil(2 max(2, 256 / L_px)) of its own floor(255 s / L) (around the seam of a
+//     closed path, the shorter way);
+//   - a crease or border: its path key, or the key of a front-facing face next to it;
+//   - a decal (a stroke fixed on the surface, SPEC 4.9, common/strokes/decal.hpp): the key of the
+//     face of the nearer of its segment's two path points;
+//   - a hatch (SPEC 4.10, common/strokes/hatching.hpp), in the 5x5 box (2 px): the key of the face of
+//     either of its segment's two path points. (SPEC's "a face of its group": a hatch lies
+//     on the faces its own points were projected onto, the interpolated ones too.)
+// Back-facing silhouettes are not in the ID image, so never visible.
+//
+// Where two neighbouring samples disagree, the change is bisected along the path (new
+// samples at the midpoints, tested the same way) until it is located within 1 px
+// (SPEC 4.6). What is visible then makes the runs the strokes draw.
+//
+// `sample_visible` is the one test both backends run (the GPU as a compute shader,
+// shaders/strokes/visibility.comp, the formula written twice); the bisection calls a backend's
+// batch test through `visible_runs`.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "common/util/image.hpp"
+#include "common/core/stage.hpp"
+#include "common/strokes/strokes.hpp"
+
+namespace plumbago {
+
+enum SampleKind : uint32_t { kCreaseSample = 0, kSilhouetteSample = 1, kDecalSample = 2, kHatchingSample = 3 };
+
+// One sample as both backends read it (std430 layout: 32 bytes).
+struct VisibilitySample {
+  glm::vec2 window;
+  uint32_t kind;         // SampleKind
+  uint32_t key;          // the path key
+  uint32_t faces[2];     // crease or border: front-facing adjacent faces (0: none); decal: its face, 0;
+                         // hatch: its segment's two faces
+  uint32_t byte;         // silhouette: floor(255 s / L)
+  uint32_t byte_window;  // silhouette: ceil(2 max(2, 256 / L_px)), at most 255; bit 8: a closed path
+};
+
+// The segment of `path` (from point k to k + 1) at window arc length s.
+size_t segment_at(const WindowPath& path, double s);
+
+// The world point of `path` at window arc length s (perspective-correct along its segment).
+glm::dvec3 world_at(const WindowPath& path, double s);
+
+// The sample of `path` at window arc length s.
+VisibilitySample sample_at(const WindowPath& path, double s);
+
+// The SPEC 4.5 test of one sample against the ID image's keys.
+bool sample_visible(const ImageU32& keys, const VisibilitySample& s);
+
+// A visible stretch of a path, in window arc length.
+struct VisibleRun {
+  uint32_t path;  // index in WindowLines::paths
+  double s0, s1;  // s1 > s0; a closed path's run may pass its seam (s1 beyond its length)
+  bool closed;    // the whole closed path
+  bool occluded_start, occluded_end;  // the end is where the path goes out of sight
+  std::vector<glm::dvec2> window;     // the path's window polyline from s0 to s1
+};
+
+using SampleTest = std::function<std::vector<uint8_t>(const std::vector<VisibilitySample>&)>;
+
+struct Visibility {
+  std::vector<uint8_t> flags;  // every tested sample, the first round then each bisection round
+  std::vector<VisibleRun> runs;
+};
+
+// Samples every path, tests them with `test`, bisects the changes and returns the runs.
+Visibility visible_runs(const WindowLines& lines, const StrokesParams& p, const SampleTest& test);
+
+// The flags as the stage's output image: one texel per sample, row after row of 1024.
+Image flags_image(const std::vector<uint8_t>& flags);
+
+struct VisibilityStage {
+  using Params = TypeList<>;  // reads strokes.*, which the ID image declares
+  static StageDesc describe() {
+    StageDesc d{"visibility",
+                StageKind::Frame,
+                "visibility of stroke samples from the ID image (SPEC 4.5)",
+                {"strokes"},
+                {{"id_image.ids"}},
+                {{"flags", 1, Texel::Unorm8, "1 where a sample is visible: one texel per sample, 1024 a row", 0.0,
+                  "fed the same ID image: the same integer test on both"}},
+                {"strokes"}};
+    return d;
+  }
+};
+
+}  // namespace plumbago

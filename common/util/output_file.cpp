@@ -1,0 +1,79 @@
+#include "common/util/output_file.hpp"
+
+#include <unistd.h>
+
+#include <stdexcept>
+
+namespace plumbago {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+void check_writable_folder(const fs::path& dir, const std::string& what) {
+  if (!fs::is_directory(dir)) throw std::runtime_error(what + ": folder '" + dir.string() + "' does not exist");
+  if (::access(dir.c_str(), W_OK | X_OK) != 0)
+    throw std::runtime_error(what + ": folder '" + dir.string() + "' is not writable");
+}
+
+}  // namespace
+
+OutputFile::OutputFile(std::string path) : path_(std::move(path)) {
+  fs::path p(path_);
+  fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  check_writable_folder(dir, path_);
+  if (fs::is_directory(p)) throw std::runtime_error(path_ + ": is a folder, not a file");
+  std::string name = p.stem().string();
+  name.insert(0, 1, '.');
+  name.append(".partial-").append(std::to_string(::getpid())).append(p.extension().string());
+  temporary_ = (dir / name).string();
+}
+
+OutputFile::~OutputFile() {
+  if (!committed_) {
+    std::error_code ec;
+    fs::remove(temporary_, ec);
+  }
+}
+
+void OutputFile::commit() {
+  std::error_code ec;
+  fs::rename(temporary_, path_, ec);
+  if (ec) throw std::runtime_error(path_ + ": cannot move the finished file into place: " + ec.message());
+  committed_ = true;
+}
+
+OutputFiles::~OutputFiles() {
+  files_.clear();  // removes the temporary files first
+  if (committed_) return;
+  std::error_code ec;
+  for (auto it = made_.rbegin(); it != made_.rend(); ++it) fs::remove(*it, ec);  // only when empty
+}
+
+void OutputFiles::folder(const std::string& dir) {
+  fs::path missing = fs::path(dir).lexically_normal();
+  if (!missing.has_filename()) missing = missing.parent_path();  // "out/" -> "out"
+  std::vector<fs::path> made;
+  for (; !missing.empty() && !fs::exists(missing); missing = missing.parent_path()) made.insert(made.begin(), missing);
+  if (!missing.empty() && !fs::is_directory(missing))
+    throw std::runtime_error(dir + ": " + (made.empty() ? "" : "'" + missing.string() + "' ") + "is a file, not a folder");
+  check_writable_folder(missing.empty() ? fs::path(".") : missing, dir);
+  for (const fs::path& p : made) {
+    fs::create_directory(p);
+    made_.push_back(p);
+  }
+}
+
+OutputFile& OutputFiles::add(const std::string& path) {
+  for (auto& f : files_)
+    if (f->path() == path) return *f;  // written again: the last write wins
+  files_.push_back(std::make_unique<OutputFile>(path));
+  return *files_.back();
+}
+
+void OutputFiles::commit() {
+  for (auto& f : files_) f->commit();
+  committed_ = true;
+}
+
+}  // namespace plumbago

@@ -1,0 +1,100 @@
+#include "gpu/core/pipeline.hpp"
+
+#include <stdexcept>
+
+#include "common/core/passes.hpp"
+#include "common/core/preprocess.hpp"
+#include "common/sketchy/sketchy.hpp"
+#include "common/strokes/stroke.hpp"
+#include "gpu/gl/context.hpp"
+#include "gpu/core/stage.hpp"
+#include "gpu/gl/timer.hpp"
+
+namespace plumbago::gpu {
+
+struct Renderer::State {
+  std::vector<std::string> all;
+  std::shared_ptr<const Preprocessed> pre;
+  GpuFrame frame;
+  std::vector<const GpuPassDef*> plan;
+  std::vector<std::unique_ptr<GpuPass>> passes;  // one per planned pass
+  PassTimer timer;
+
+  State(const Scene& scene, std::shared_ptr<const Preprocessed> made)
+      : all(passes_for(scene.effects, scene.params)),
+        pre(made ? std::move(made) : std::make_shared<const Preprocessed>(preprocess(ordinary_objects(scene), all))),
+        frame(scene, *pre, frame_stages(all)),
+        plan(plan_passes(frame.stages, frame.config())) {
+    for (const GpuPassDef* def : plan) passes.push_back(def->make(frame));
+  }
+
+  void run_frame() {
+    frame.host = {};  // CPU data of the frame (the window lines ...) is made anew each frame
+    for (size_t i = 0; i < plan.size(); ++i) {
+      const std::string name = plan[i]->name();
+      timer.begin(name);
+      passes[i]->run(frame);
+      timer.end();
+      Context::get().check_errors(name);
+    }
+    glFinish();
+  }
+
+  // Every buffer the frame's stages declare (common/core/stage.hpp dumped_buffers).
+  std::map<std::string, Image> dump() {
+    std::map<std::string, Image> all_buffers, out;
+    for (size_t i = 0; i < plan.size(); ++i) passes[i]->dump(frame, plan[i]->stages, all_buffers);
+    for (const std::string& name : dumped_buffers(frame.stages, frame.config())) {
+      auto it = all_buffers.find(name);
+      if (it == all_buffers.end()) throw std::logic_error("GPU: stage '" + stage_of(name).name + "' did not write '" + name + "'");
+      out[name] = std::move(it->second);
+    }
+    return out;
+  }
+};
+
+Renderer::Renderer(const Scene& scene, std::shared_ptr<const Preprocessed> preprocessed) {
+  Context& context = Context::get();  // before any GL call
+  state_ = std::make_unique<State>(scene, std::move(preprocessed));
+  context.check_errors("setting up the GPU renderer");
+}
+
+Renderer::~Renderer() = default;
+
+double Renderer::render_frame(Frame& timing) {
+  Stopwatch watch;
+  state_->run_frame();
+  double ms = watch.ms();
+  timing.ran = state_->timer.results();
+  return ms;
+}
+
+GBufferChannels Renderer::frame_channels(const std::string& stage) const {
+  GpuFrame& f = state_->frame;
+  bool dump = f.dump;
+  f.dump = false;
+  GBufferChannels c = f.gbuffer_channels(stage);
+  f.dump = dump;
+  return c;
+}
+
+std::shared_ptr<const Preprocessed> Renderer::preprocessed() const { return state_->pre; }
+
+Frame Renderer::render(const FrameOptions& options) {
+  Frame frame;
+  state_->frame.dump = options.keep_buffers;
+  state_->run_frame();
+  frame.ran = state_->pre->ran;  // made once, listed with every frame that uses it
+  for (const PassTime& t : state_->timer.results()) frame.ran.push_back(t);
+  Stopwatch readback;
+  std::string color = frame_color_buffer(state_->frame.stages);  // none without effects: the blank page
+  const Scene& scene = state_->frame.scene;
+  frame.color = color.empty() ? Image(scene.width, scene.height, 3, 1.0f) : download_texture(state_->frame.output(color), 3);
+  frame.ran.push_back({"readback", readback.ms()});
+  if (options.keep_buffers) frame.buffers = state_->dump();
+  frame.counts = stroke_counts(state_->frame.host);
+  Context::get().check_errors("reading back the frame");
+  return frame;
+}
+
+}  // namespace plumbago::gpu

@@ -1,0 +1,45 @@
+// The GPU backend: runs the stages a scene's effects need (common/core/passes.hpp) through the
+// GPU passes that compute them (gpu/core/stage.hpp), keeping every intermediate buffer in GPU
+// memory. A frame ends with glFinish; per-pass times come from GL timer queries.
+#pragma once
+
+#include <memory>
+
+#include "common/core/frame.hpp"
+#include "common/scene/scene.hpp"
+#include "gpu/scene/gbuffer.hpp"
+
+namespace plumbago {
+struct Preprocessed;  // common/core/preprocess.hpp
+}
+
+namespace plumbago::gpu {
+
+class Renderer {
+ public:
+  // Uploads the scene's geometry and compiles the programs the scene's passes need. The
+  // renderer reads `scene` while it lives. `preprocessed`, when given, is what another
+  // renderer made (preprocessed()) for the same objects, styles, passes and values of
+  // the parameters preprocessing reads: it is used, not made again (plumbago view, after
+  // a camera move or a change to a per-frame parameter).
+  explicit Renderer(const Scene& scene, std::shared_ptr<const Preprocessed> preprocessed = nullptr);
+  ~Renderer();
+  // Renders one frame and reads it back. `ran` holds the preprocessing steps that made
+  // its data (once, possibly by an earlier renderer) and the GPU times per pass, plus
+  // "readback" (CPU wall time of downloading the image).
+  Frame render(const FrameOptions& options = {});
+  // Renders one frame without reading anything back; returns wall-clock ms to glFinish
+  // and fills `timing.ran` with the GPU time of each pass.
+  double render_frame(Frame& timing);
+  // What a frame writes of the G-buffer `stage` ("gbuffer", "sketchy_gbuffer"): what its
+  // passes sample.
+  GBufferChannels frame_channels(const std::string& stage) const;
+  // The scene's preprocessed data (common/core/preprocess.hpp), for another renderer to reuse.
+  std::shared_ptr<const Preprocessed> preprocessed() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace plumbago::gpu

@@ -1,0 +1,159 @@
+#include "gpu/core/stage.hpp"
+
+#include <algorithm>
+#include <set>
+#include <stdexcept>
+
+#include "common/sketchy/sketchy.hpp"
+
+namespace plumbago::gpu {
+
+namespace {
+
+std::vector<GpuPassDef>& registry() {
+  static std::vector<GpuPassDef> passes;
+  return passes;
+}
+
+bool contains(const std::vector<std::string>& list, const std::string& name) {
+  return std::find(list.begin(), list.end(), name) != list.end();
+}
+
+PixelRect bounding(const PixelRect& a, const PixelRect& b) {
+  if (a.x1 <= a.x0 || a.y1 <= a.y0) return b;
+  if (b.x1 <= b.x0 || b.y1 <= b.y0) return a;
+  return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+}
+
+}  // namespace
+
+GpuFrame::GpuFrame(const Scene& s, const Preprocessed& p, std::vector<std::string> st)
+    : scene(s), ordinary(ordinary_objects(s)), sketchy(sketchy_objects(s)), pre(p), stages(std::move(st)) {}
+
+bool GpuFrame::ran(const std::string& stage) const {
+  find_stage(stage);  // an unknown name is a mistake, not a stage that did not run
+  return contains(stages, stage);
+}
+
+Texture& GpuFrame::output(const std::string& name) {
+  const Output& declared = find_output(name);
+  if (std::string under = drawn_over(declared, stages); !under.empty()) return output(under);
+  auto it = textures_.find(name);
+  if (it == textures_.end())
+    it = textures_.emplace(name, make_texture(scene.width, scene.height, texture_format(declared))).first;
+  return it->second;
+}
+
+const Texture& GpuFrame::input(const std::string& name) const {
+  auto it = textures_.find(name);
+  if (it == textures_.end()) throw std::logic_error("GPU frame: no pass wrote '" + name + "'");
+  return it->second;
+}
+
+void GpuFrame::read_gbuffer(const std::string& stage, const GBufferChannels& c) {
+  auto [it, first] = gbuffer_reads_.emplace(stage, GBufferChannels::none());
+  GBufferChannels& r = it->second;
+  r.normal |= c.normal;
+  r.face_normal |= c.face_normal;
+  r.bary |= c.bary;
+  r.gouraud |= c.gouraud;
+  r.theta_min |= c.theta_min;
+  r.theta_max |= c.theta_max;
+  r.depth |= c.depth;
+  r.triangle_angles |= c.triangle_angles;
+  r.object_only_background |= c.object_only_background;
+  r.read_region = bounding(r.read_region, c.read_region);
+}
+
+GBufferChannels GpuFrame::gbuffer_channels(const std::string& stage) const {
+  if (dump) return {};
+  auto it = gbuffer_reads_.find(stage);
+  return it == gbuffer_reads_.end() ? GBufferChannels::none() : it->second;
+}
+
+void GpuPass::dump(GpuFrame& f, const std::vector<std::string>& stages, std::map<std::string, Image>& out) {
+  for (const std::string& name : stages) {
+    const StageDesc& stage = find_stage(name);
+    for (const Output* o : outputs_written(stage, f.config()))
+      out[stage.output_name(*o)] = download_texture(f.output(stage.output_name(*o)), o->channels);
+  }
+}
+
+std::string GpuPassDef::name() const {
+  std::string n;
+  for (const std::string& s : stages) n += (n.empty() ? "" : "+") + s;
+  return n;
+}
+
+bool register_pass(GpuPassDef def) {
+  for (const std::string& s : def.stages)
+    if (!is_stage(s)) throw std::logic_error("gpu/: a pass computes unknown stage '" + s + "'");
+  for (const std::string& o : def.skipped) {
+    find_output(o);
+    if (!contains(def.stages, stage_of(o).name))
+      throw std::logic_error("gpu/: pass " + def.name() + " skips '" + o + "', which none of its stages writes");
+  }
+  for (const GpuPassDef& p : registry())
+    if (p.stages == def.stages) throw std::logic_error("gpu/: pass " + def.name() + " is registered twice");
+  registry().push_back(std::move(def));
+  return true;
+}
+
+const std::vector<GpuPassDef>& registered_passes() { return registry(); }
+
+void check_implementations() {
+  std::string missing;
+  for (const StageDesc& s : stage_table()) {
+    bool computed = std::any_of(registry().begin(), registry().end(),
+                                [&](const GpuPassDef& p) { return contains(p.stages, s.name); });
+    if (s.kind == StageKind::Frame && !computed) missing += (missing.empty() ? "" : ", ") + s.name;
+  }
+  if (!missing.empty())
+    throw std::logic_error("the GPU backend implements no stage " + missing + " (register a pass in gpu/<stem>.cpp)");
+}
+
+std::vector<const GpuPassDef*> plan_passes(const std::vector<std::string>& stages, const StageConfig& config) {
+  check_implementations();
+  std::vector<std::pair<size_t, const GpuPassDef*>> planned;  // where the pass's last stage is
+  std::set<std::string> covered;
+  for (const std::string& s : stages) {
+    if (covered.count(s)) continue;
+    const GpuPassDef* best = nullptr;
+    for (const GpuPassDef& p : registry()) {
+      bool all_run = std::all_of(p.stages.begin(), p.stages.end(), [&](const std::string& m) { return contains(stages, m); });
+      if (contains(p.stages, s) && all_run && (!best || p.stages.size() > best->stages.size())) best = &p;
+    }
+    if (!best) throw std::logic_error("the GPU backend computes stage '" + s + "' only fused with stages this frame does not run");
+    size_t last = 0;
+    for (const std::string& m : best->stages) {
+      covered.insert(m);
+      last = std::max(last, size_t(std::find(stages.begin(), stages.end(), m) - stages.begin()));
+    }
+    for (const std::string& skipped : best->skipped)
+      for (const std::string& reader : stages)
+        if (!contains(best->stages, reader) && contains(inputs_read(find_stage(reader), config), skipped))
+          throw std::logic_error("stage '" + reader + "' reads '" + skipped + "', which GPU pass " + best->name() +
+                                 " does not write in a frame");
+    planned.push_back({last, best});
+  }
+  std::stable_sort(planned.begin(), planned.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<const GpuPassDef*> out;
+  for (const auto& p : planned) out.push_back(p.second);
+  return out;
+}
+
+GLenum texture_format(const Output& o) {
+  switch (o.texel) {
+    case Texel::Unorm8:
+      return GL_RGBA8;
+    case Texel::Uint:
+      return o.channels == 1 ? GL_R32UI : GL_RG32UI;
+    case Texel::Float:
+      return o.channels == 1 ? GL_R32F : o.channels == 2 ? GL_RG32F : GL_RGBA32F;
+    case Texel::Host:
+      break;
+  }
+  throw std::logic_error("'" + o.name + "' is CPU data, not a GPU texture");
+}
+
+}  // namespace plumbago::gpu

@@ -1,0 +1,165 @@
+#include "gpu/gl/gl_objects.hpp"
+
+#include <stdexcept>
+#include <string>
+
+// Written against GL 4.3 bind-to-edit entry points, not 4.5 direct state access: Mesa's
+// libOSMesa exports no DSA functions, and the OSMesa build links them statically.
+namespace plumbago::gpu {
+
+namespace {
+
+GLenum format_of(int channels) {
+  switch (channels) {
+    case 1: return GL_RED;
+    case 2: return GL_RG;
+    case 3: return GL_RGB;
+    case 4: return GL_RGBA;
+  }
+  throw std::invalid_argument("images have 1 to 4 channels, not " + std::to_string(channels));
+}
+
+GLenum integer_format_of(int channels) {
+  switch (channels) {
+    case 1: return GL_RED_INTEGER;
+    case 2: return GL_RG_INTEGER;
+    case 3: return GL_RGB_INTEGER;
+    case 4: return GL_RGBA_INTEGER;
+  }
+  throw std::invalid_argument("images have 1 to 4 channels, not " + std::to_string(channels));
+}
+
+template <class T>
+void read_texture(const Texture& tex, GLenum format, GLenum type, std::vector<T>& out) {
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glBindTexture(GL_TEXTURE_2D, tex.id());
+  glGetTexImage(GL_TEXTURE_2D, 0, format, type, out.data());
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+}  // namespace
+
+Texture make_texture(int width, int height, GLenum internal_format) {
+  GLuint id = 0;
+  glGenTextures(1, &id);
+  Texture t{GlName<detail::delete_texture>(id), width, height, internal_format};
+  glBindTexture(GL_TEXTURE_2D, id);
+  glTexStorage2D(GL_TEXTURE_2D, 1, internal_format, width, height);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return t;
+}
+
+Texture make_texture_array(int width, int height, int layers, GLenum internal_format) {
+  GLuint id = 0;
+  glGenTextures(1, &id);
+  Texture t{GlName<detail::delete_texture>(id), width, height, internal_format, GL_TEXTURE_2D_ARRAY, layers};
+  glBindTexture(GL_TEXTURE_2D_ARRAY, id);
+  glTexStorage3D(GL_TEXTURE_2D_ARRAY, 1, internal_format, width, height, layers);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+  set_sampling(t, GL_NEAREST, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+void write_texture(const Texture& tex, int channels, bool integer, const void* data) {
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glBindTexture(GL_TEXTURE_2D, tex.id());
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, tex.width, tex.height,
+                  integer ? integer_format_of(channels) : format_of(channels), integer ? GL_UNSIGNED_INT : GL_FLOAT,
+                  data);
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+bool integer_texture(GLenum internal_format) {
+  return internal_format == GL_R32UI || internal_format == GL_RG32UI || internal_format == GL_RGBA32UI;
+}
+
+Texture upload_texture(const Image& img, GLenum internal_format) {
+  Texture t = make_texture(img.width, img.height, internal_format);
+  if (!integer_texture(internal_format)) {
+    write_texture(t, img.channels, false, img.data.data());
+    return t;
+  }
+  std::vector<uint32_t> values(img.data.begin(), img.data.end());  // whole numbers held as floats
+  write_texture(t, img.channels, true, values.data());
+  return t;
+}
+
+Image download_texture(const Texture& tex, int channels) {
+  Image img(tex.width, tex.height, channels);
+  if (!integer_texture(tex.internal_format)) {
+    read_texture(tex, format_of(channels), GL_FLOAT, img.data);
+    return img;
+  }
+  ImageU32 values = download_texture_u32(tex, channels);
+  img.data.assign(values.data.begin(), values.data.end());
+  return img;
+}
+
+ImageU32 download_texture_u32(const Texture& tex, int channels) {
+  ImageU32 img(tex.width, tex.height, channels);
+  read_texture(tex, integer_format_of(channels), GL_UNSIGNED_INT, img.data);
+  return img;
+}
+
+void set_sampling(const Texture& tex, GLenum filter, GLenum wrap_s, GLenum wrap_t, GLenum wrap_r) {
+  glBindTexture(tex.target, tex.id());
+  glTexParameteri(tex.target, GL_TEXTURE_MIN_FILTER, GLint(filter));
+  glTexParameteri(tex.target, GL_TEXTURE_MAG_FILTER, GLint(filter));
+  glTexParameteri(tex.target, GL_TEXTURE_WRAP_S, GLint(wrap_s));
+  glTexParameteri(tex.target, GL_TEXTURE_WRAP_T, GLint(wrap_t));
+  glTexParameteri(tex.target, GL_TEXTURE_WRAP_R, GLint(wrap_r));
+  glBindTexture(tex.target, 0);
+}
+
+Texture upload_texture_3d(const std::vector<Image>& layers, GLenum internal_format, GLenum target) {
+  const Image& first = layers.at(0);
+  GLuint id = 0;
+  glGenTextures(1, &id);
+  Texture t{GlName<detail::delete_texture>(id), first.width, first.height, internal_format, target,
+            int(layers.size())};
+  glBindTexture(target, id);
+  glTexStorage3D(target, 1, internal_format, first.width, first.height, GLsizei(layers.size()));
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  for (size_t l = 0; l < layers.size(); ++l)
+    glTexSubImage3D(target, 0, 0, 0, GLint(l), first.width, first.height, 1, format_of(first.channels), GL_FLOAT,
+                    layers[l].data.data());
+  glBindTexture(target, 0);
+  set_sampling(t, GL_LINEAR, GL_REPEAT, GL_REPEAT, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+Buffer make_buffer(const void* data, size_t bytes) {
+  GLuint id = 0;
+  glGenBuffers(1, &id);
+  glBindBuffer(GL_ARRAY_BUFFER, id);
+  glBufferStorage(GL_ARRAY_BUFFER, GLsizeiptr(bytes), data, 0);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  return Buffer(id);
+}
+
+VertexArray make_vertex_array() {
+  GLuint id = 0;
+  glGenVertexArrays(1, &id);
+  return VertexArray(id);
+}
+
+Framebuffer make_framebuffer() {
+  GLuint id = 0;
+  glGenFramebuffers(1, &id);
+  return Framebuffer(id);
+}
+
+Renderbuffer make_renderbuffer(int width, int height, GLenum internal_format) {
+  GLuint id = 0;
+  glGenRenderbuffers(1, &id);
+  glBindRenderbuffer(GL_RENDERBUFFER, id);
+  glRenderbufferStorage(GL_RENDERBUFFER, internal_format, width, height);
+  glBindRenderbuffer(GL_RENDERBUFFER, 0);
+  return Renderbuffer(id);
+}
+
+}  // namespace plumbago::gpu

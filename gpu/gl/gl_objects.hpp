@@ -1,0 +1,88 @@
+// RAII owners of GL objects (direct state access, GL 4.5) and image transfer.
+#pragma once
+
+#include <initializer_list>
+#include <vector>
+#include <utility>
+
+#include "common/util/image.hpp"
+#include "gpu/gl/gl.hpp"
+
+namespace plumbago::gpu {
+
+// Owns one GL name; `Deleter` frees it.
+template <void (*Delete)(GLuint)>
+class GlName {
+ public:
+  GlName() = default;
+  explicit GlName(GLuint id) : id_(id) {}
+  ~GlName() { reset(); }
+  GlName(GlName&& o) noexcept : id_(std::exchange(o.id_, 0)) {}
+  GlName& operator=(GlName&& o) noexcept {
+    if (this != &o) {
+      reset();
+      id_ = std::exchange(o.id_, 0);
+    }
+    return *this;
+  }
+  GLuint id() const { return id_; }
+  void reset() {
+    if (id_) Delete(id_);
+    id_ = 0;
+  }
+
+ private:
+  GLuint id_ = 0;
+};
+
+namespace detail {
+inline void delete_texture(GLuint id) { glDeleteTextures(1, &id); }
+inline void delete_buffer(GLuint id) { glDeleteBuffers(1, &id); }
+inline void delete_framebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
+inline void delete_renderbuffer(GLuint id) { glDeleteRenderbuffers(1, &id); }
+inline void delete_vertex_array(GLuint id) { glDeleteVertexArrays(1, &id); }
+inline void delete_query(GLuint id) { glDeleteQueries(1, &id); }
+}  // namespace detail
+
+using Buffer = GlName<detail::delete_buffer>;
+using Framebuffer = GlName<detail::delete_framebuffer>;
+using Renderbuffer = GlName<detail::delete_renderbuffer>;
+using VertexArray = GlName<detail::delete_vertex_array>;
+
+// A 2D or 3D texture with its size and format.
+struct Texture {
+  GlName<detail::delete_texture> name;
+  int width = 0, height = 0;
+  GLenum internal_format = 0;
+  GLenum target = GL_TEXTURE_2D;
+  int depth = 1;  // layers of a GL_TEXTURE_3D
+  GLuint id() const { return name.id(); }
+};
+
+// Immutable storage of `internal_format`, NEAREST filtering, CLAMP_TO_EDGE.
+Texture make_texture(int width, int height, GLenum internal_format);
+// A GL_TEXTURE_2D_ARRAY of `layers` layers, uninitialized; NEAREST, CLAMP_TO_EDGE.
+Texture make_texture_array(int width, int height, int layers, GLenum internal_format);
+// A GL_TEXTURE_3D (filtered across layers, as the pencil stack is sampled) or a
+// GL_TEXTURE_2D_ARRAY (layers kept apart) made of `layers` (equal sizes); LINEAR,
+// REPEAT in s and t, CLAMP_TO_EDGE in r.
+Texture upload_texture_3d(const std::vector<Image>& layers, GLenum internal_format, GLenum target = GL_TEXTURE_3D);
+// Uploads a float image (1-4 channels) into a texture of `internal_format`; an unsigned
+// integer format gets the floats as whole numbers.
+Texture upload_texture(const Image& img, GLenum internal_format);
+// Replaces a texture's contents: `channels` floats (or uint32 when `integer`) per texel.
+void write_texture(const Texture& tex, int channels, bool integer, const void* data);
+// Filter (GL_NEAREST/GL_LINEAR) and wrap modes (GL_REPEAT/GL_CLAMP_TO_EDGE) of a texture
+// (wrap_r matters for 3D textures only).
+void set_sampling(const Texture& tex, GLenum filter, GLenum wrap_s, GLenum wrap_t, GLenum wrap_r = GL_CLAMP_TO_EDGE);
+// Reads back `channels` float channels (row 0 = bottom, as GL stores it); an unsigned
+// integer texture's values as floats.
+Image download_texture(const Texture& tex, int channels);
+ImageU32 download_texture_u32(const Texture& tex, int channels);
+
+Buffer make_buffer(const void* data, size_t bytes);
+VertexArray make_vertex_array();
+Framebuffer make_framebuffer();
+Renderbuffer make_renderbuffer(int width, int height, GLenum internal_format);
+
+}  // namespace plumbago::gpu

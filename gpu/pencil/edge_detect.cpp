@@ -1,0 +1,72 @@
+#include "gpu/pencil/edge_detect.hpp"
+
+#include "common/scene/lights.hpp"
+#include "gpu/pencil/contour_blocks.hpp"
+#include "gpu/core/stage.hpp"
+
+namespace plumbago::gpu {
+
+EdgeDetectPass::EdgeDetectPass()
+    : programs_("util/fullscreen.vert", "pencil/edge_detect.frag",
+                glsl_params<EdgeDetectParams>() + glsl_params<ContourLightParams>() + contour_block_define(),
+                {"WRITE_UNLIT", "MARK_CONTOUR_BLOCKS"}) {}
+
+void EdgeDetectPass::run(const GBufferTargets& g, const EdgeDetectParams& p, const std::vector<Light>& view_lights,
+                         const ContourLightParams& light, const EdgeOutputs& out, const PixelRect& covered) {
+  const Program& program = programs_.get({out.darkness != nullptr, out.block_marks != nullptr});
+  program.set_params(p);
+  program.set_params(light);
+  set_lights(program, view_lights);
+  glProgramUniform1f(program.id(), program.uniform("near_plane"), g.near);
+  glProgramUniform1f(program.id(), program.uniform("far_plane"), g.far);
+  const Texture& normals = p.normals == EdgeNormals::Face ? g.face_normal : g.normal;
+  float background = background_darkness(p);  // unlit: a background normal gets no light
+  if (out.block_marks) {
+    float mark = background > 0.0f ? 1.0f : 0.0f;  // the blocks outside `covered`
+    glClearTexImage(out.block_marks->id(), 0, GL_RED, GL_FLOAT, &mark);
+    glBindImageTexture(0, out.block_marks->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+  }
+  glm::vec4 outside(background);
+  if (out.darkness)
+    pass_.draw_inside(program, {{"normals", &normals}, {"shading_normals", &g.normal}}, {&out.lit, out.darkness}, covered,
+                      {outside, outside});
+  else
+    pass_.draw_inside(program, {{"normals", &normals}, {"shading_normals", &g.normal}}, {&out.lit}, covered, {outside});
+}
+
+namespace {
+
+// Edge detection and contour lighting as a frame draws them: a frame writes only d'; the
+// blocks' marks when multiple contours are drawn (shared as "contour_blocks.marks").
+class EdgeAndLightPass : public GpuPass {
+ public:
+  explicit EdgeAndLightPass(GpuFrame& f) {
+    GBufferChannels read = GBufferChannels::none();
+    bool face = EdgeDetectStage::face_normals(f.config());
+    read.normal = true;  // contour lighting reads the shading normals, whatever the edges compare
+    read.face_normal = face;
+    read.read_region = filter_rect(f.ordinary, 2);  // the filter runs within 1 pixel and reads 1 more
+    f.read_gbuffer("gbuffer", read);
+    if (f.ran("multi_contour")) {
+      marks_ = make_contour_block_marks(f.scene.width, f.scene.height);
+      f.share("contour_blocks.marks", marks_);
+    }
+  }
+  void run(GpuFrame& f) override {
+    pass_.run(f.shared<GBufferTargets>("gbuffer"), f.params<EdgeDetectParams>(), view_space_lights(f.scene),
+              f.params<ContourLightParams>(),
+              {f.output("contour_light.lit_contour_darkness"), f.dumped_output("edge_detect.contour_darkness"),
+               marks_.id() ? &marks_ : nullptr},
+              filter_rect(f.ordinary, 1));
+  }
+
+ private:
+  EdgeDetectPass pass_;
+  Texture marks_;
+};
+
+}  // namespace
+
+PLUMBAGO_GPU_PASS(edge_detect, {{"edge_detect", "contour_light"}, {"edge_detect.contour_darkness"}, make_pass<EdgeAndLightPass>});
+
+}  // namespace plumbago::gpu

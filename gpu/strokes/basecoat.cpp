@@ -1,0 +1,48 @@
+// Base coat on the GPU (SPEC 4.1), the twin of reference/strokes/basecoat.cpp: a full-window pass
+// over the G-buffer's ids and barycentrics, with the corners' s as one record per triangle.
+#include "common/strokes/basecoat.hpp"
+
+#include "gpu/gl/framebuffer.hpp"
+#include "gpu/core/stage.hpp"
+
+namespace plumbago::gpu {
+
+namespace {
+
+class BaseCoatPass : public GpuPass {
+ public:
+  explicit BaseCoatPass(GpuFrame& f) : program_("util/fullscreen.vert", "strokes/basecoat.frag", glsl_params<BaseCoatParams>()) {
+    auto p = f.params<BaseCoatParams>();
+    TriangleShades shades = triangle_shades(f.ordinary, p);
+    if (shades.corners.empty()) shades.corners.push_back(glm::vec4(0.0f));
+    if (shades.first_triangle.empty()) shades.first_triangle.push_back(0);
+    corners_ = make_buffer(shades.corners.data(), shades.corners.size() * sizeof(glm::vec4));
+    first_ = make_buffer(shades.first_triangle.data(), shades.first_triangle.size() * sizeof(uint32_t));
+    texture_ = upload_texture(basecoat_texture(p), GL_RGBA32F);
+    set_sampling(texture_, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
+    GBufferChannels read = GBufferChannels::none();
+    read.bary = true;
+    read.read_region = filter_rect(f.ordinary, 0);
+    f.read_gbuffer("gbuffer", read);
+  }
+  void run(GpuFrame& f) override {
+    const GBufferTargets& g = f.shared<GBufferTargets>("gbuffer");
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, corners_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, first_.id());
+    // Only the objects' rectangle runs the shader; outside it the coat is transparent.
+    pass_.draw_inside(program_, {{"ids", &g.ids}, {"bary", &g.bary}, {"coat", &texture_}}, {&f.output("basecoat.coat")},
+                      filter_rect(f.ordinary, 0), {glm::vec4(0.0f)});
+  }
+
+ private:
+  Program program_;
+  FullscreenPass pass_;
+  Buffer corners_, first_;
+  Texture texture_;
+};
+
+}  // namespace
+
+PLUMBAGO_GPU_PASS(basecoat, {{"basecoat"}, {}, make_pass<BaseCoatPass>});
+
+}  // namespace plumbago::gpu

@@ -1,0 +1,61 @@
+// The stroke raster on the GPU (SPEC 4.6-4.7), the twin of reference/strokes/stroke.cpp: the
+// ribbons' triangles in one draw call, blended premultiplied "over" onto the page.
+#include "common/strokes/stroke.hpp"
+
+#include "common/strokes/stroke_paper.hpp"
+#include "gpu/core/stage.hpp"
+
+namespace plumbago::gpu {
+
+namespace {
+
+class StrokePass : public GpuPass {
+ public:
+  explicit StrokePass(GpuFrame& f)
+      : program_("strokes/stroke.vert", "strokes/stroke.frag", glsl_params<StrokePaperParams>()),
+        textures_(upload_texture_3d(stroke_texture_layers(f.scene.seed), GL_R32F, GL_TEXTURE_2D_ARRAY)),
+        height_(upload_texture(f.pre.paper.height, GL_R32F)),
+        fbo_(make_framebuffer()),
+        empty_(make_vertex_array()) {
+    set_sampling(textures_, GL_LINEAR, GL_REPEAT, GL_CLAMP_TO_EDGE);
+  }
+
+  void run(GpuFrame& f) override {
+    std::vector<StrokeVertex> v = stroke_triangles(frame_lines(f.host, f.kept, f.scene), *f.host.find<Visibility>("visibility"), f.scene.strokes, f.scene.seed);
+    Texture& target = f.output("stroke.color");
+    if (drawn_over(find_output("stroke.color"), f.stages).empty()) copy_page(f.input("stroke_paper.color"), target);
+    if (v.empty()) return;
+    Buffer vertices = make_buffer(v.data(), v.size() * sizeof(StrokeVertex));
+    program_.set_params(f.params<StrokePaperParams>());
+    glProgramUniform2f(program_.id(), program_.uniform("window_size"), float(target.width), float(target.height));
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target.id(), 0);
+    glViewport(0, 0, target.width, target.height);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    bind_textures(program_, {{"stroke_textures", &textures_}, {"paper_height", &height_}});
+    glUseProgram(program_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, vertices.id());
+    glBindVertexArray(empty_.id());
+    glDrawArrays(GL_TRIANGLES, 0, GLsizei(v.size()));
+    glDisable(GL_BLEND);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+
+ private:
+  // Where the page was made outside this frame (parity feeds it), the strokes draw on a copy.
+  static void copy_page(const Texture& page, const Texture& target) {
+    glCopyImageSubData(page.id(), GL_TEXTURE_2D, 0, 0, 0, 0, target.id(), GL_TEXTURE_2D, 0, 0, 0, 0, page.width, page.height, 1);
+  }
+
+  Program program_;
+  Texture textures_, height_;
+  Framebuffer fbo_;
+  VertexArray empty_;
+};
+
+}  // namespace
+
+PLUMBAGO_GPU_PASS(stroke, {{"stroke"}, {}, make_pass<StrokePass>});
+
+}  // namespace plumbago::gpu

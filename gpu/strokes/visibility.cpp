@@ -1,0 +1,61 @@
+// Visibility of stroke samples on the GPU (SPEC 4.5), the twin of reference/strokes/visibility.cpp:
+// a compute shader tests each batch of samples against the ID image where it lies, and
+// only the flags come back (Kalnins et al. read the whole ID image back every frame).
+#include "gpu/strokes/visibility.hpp"
+
+#include <algorithm>
+
+#include "gpu/core/stage.hpp"
+
+namespace plumbago::gpu {
+
+SampleTest::SampleTest() : program_(Program::compute("strokes/visibility.comp")) {}
+
+std::vector<uint8_t> SampleTest::operator()(const Texture& ids, const std::vector<VisibilitySample>& batch) {
+  Buffer samples = make_buffer(batch.data(), batch.size() * sizeof(VisibilitySample));
+  Buffer flags = make_buffer(nullptr, batch.size() * sizeof(uint32_t));
+  glUseProgram(program_.id());
+  glProgramUniform1ui(program_.id(), program_.uniform("sample_count"), GLuint(batch.size()));
+  bind_textures(program_, {{"ids", &ids}});
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, samples.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, flags.id());
+  const size_t per_dispatch = size_t(65535) * 64;  // GL's least maximum of work groups, 64 samples each
+  for (size_t first = 0; first < batch.size(); first += per_dispatch) {
+    glProgramUniform1ui(program_.id(), program_.uniform("first_sample"), GLuint(first));
+    glDispatchCompute(GLuint((std::min(per_dispatch, batch.size() - first) + 63) / 64), 1, 1);
+  }
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<uint32_t> read(batch.size());
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, flags.id());  // not glGetNamedBufferSubData: OSMesa has no such entry
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(read.size() * sizeof(uint32_t)), read.data());
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  return std::vector<uint8_t>(read.begin(), read.end());
+}
+
+namespace {
+
+class VisibilityPass : public GpuPass {
+ public:
+  explicit VisibilityPass(GpuFrame&) {}
+
+  void run(GpuFrame& f) override {
+    const Texture& ids = f.input("id_image.ids");
+    auto test = [&](const std::vector<VisibilitySample>& batch) { return test_(ids, batch); };
+    Visibility v = visible_runs(frame_lines(f.host, f.kept, f.scene), f.params<StrokesParams>(), test);
+    if (f.dump) f.set_output("visibility.flags", upload_texture(flags_image(v.flags), GL_RGBA8));
+    f.host.put("visibility", std::move(v));
+  }
+
+  void dump(GpuFrame& f, const std::vector<std::string>&, std::map<std::string, Image>& out) override {
+    out["visibility.flags"] = download_texture(f.input("visibility.flags"), 1);
+  }
+
+ private:
+  SampleTest test_;
+};
+
+}  // namespace
+
+PLUMBAGO_GPU_PASS(visibility, {{"visibility"}, {}, make_pass<VisibilityPass>});
+
+}  // namespace plumbago::gpu

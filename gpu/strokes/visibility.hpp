@@ -1,0 +1,23 @@
+// Visibility of stroke samples on the GPU (SPEC 4.5): the test of common/strokes/visibility.hpp
+// as a compute shader (shaders/strokes/visibility.comp), reading back only the flags.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "common/strokes/visibility.hpp"
+#include "gpu/gl/program.hpp"
+
+namespace plumbago::gpu {
+
+class SampleTest {
+ public:
+  SampleTest();
+  // One flag per sample against `ids` (the ID image: RG32UI, key >> 16 and key & 0xffff).
+  std::vector<uint8_t> operator()(const Texture& ids, const std::vector<VisibilitySample>& batch);
+
+ private:
+  Program program_;
+};
+
+}  // namespace plumbago::gpu

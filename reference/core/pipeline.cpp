@@ -1,0 +1,33 @@
+#include "reference/core/pipeline.hpp"
+
+#include "common/core/passes.hpp"
+#include "common/core/preprocess.hpp"
+#include "common/sketchy/sketchy.hpp"
+#include "common/strokes/stroke.hpp"
+
+namespace plumbago::reference {
+
+ReferenceFrame run_stages(const Scene& scene, std::vector<PassTime>& ran) {
+  check_implementations();
+  std::vector<std::string> all = passes_for(scene.effects, scene.params);
+  ReferenceFrame f(scene, preprocess(ordinary_objects(scene), all), frame_stages(all));
+  ran = f.pre.ran;
+  for (const std::string& name : f.stages) {
+    Stopwatch watch;
+    implementation(name)(f);
+    ran.push_back({name, watch.ms()});
+  }
+  return f;
+}
+
+Frame render(const Scene& scene, const FrameOptions& options) {
+  Frame frame;
+  ReferenceFrame f = run_stages(scene, frame.ran);
+  std::string color = frame_color_buffer(f.stages);  // none without effects: the blank page
+  frame.color = color.empty() ? Image(scene.width, scene.height, 3, 1.0f) : f.image(color);
+  if (options.keep_buffers) frame.buffers = dump(f);
+  frame.counts = stroke_counts(f.host);
+  return frame;
+}
+
+}  // namespace plumbago::reference

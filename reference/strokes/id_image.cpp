@@ -1,0 +1,93 @@
+// The ID reference image, CPU reference (SPEC 4.4): the triangles of common/strokes/id_image.hpp
+// through the scalar rasterizer, each pixel keeping the nearest (largest z = near / d).
+#include "common/strokes/id_image.hpp"
+
+#include "reference/strokes/decal.hpp"
+#include "reference/strokes/raster.hpp"
+#include "reference/core/stage.hpp"
+
+namespace plumbago::reference {
+
+namespace {
+
+// Per pixel: the key of the nearest (largest z) triangle; for the depth ties, its z and the
+// largest z of another key, each with its triangle's z slope; and the largest z of a
+// triangle whose edge passes within a subpixel of the pixel center (covered or not).
+struct IdRaster {
+  ImageU32 key;
+  Image nearest, runner_up;  // 2 ch: z, |grad z| (per pixel)
+  Image edge_z;
+};
+
+const double kSubpixel = 1.0 / double(1 << kSubpixelBits);
+
+// |grad z| of a window-space triangle, per pixel.
+float z_slope(const IdVertex* t) {
+  glm::dvec2 e1 = glm::dvec2(t[1].window - t[0].window), e2 = glm::dvec2(t[2].window - t[0].window);
+  double det = e1.x * e2.y - e1.y * e2.x, dz1 = t[1].z - t[0].z, dz2 = t[2].z - t[0].z;
+  if (det == 0) return 0;
+  return float(glm::length(glm::dvec2(dz1 * e2.y - dz2 * e1.y, dz2 * e1.x - dz1 * e2.x)) / std::abs(det));
+}
+
+// Draws one triangle into the band [y0, y1), GL_GREATER.
+void draw(const IdVertex* t, IdRaster& r, int y0, int y1) {
+  float slope = z_slope(t);
+  auto fragment = [&](int x, int y, glm::dvec3 w, bool edge) {
+    float z = float(w[0] * t[0].z + w[1] * t[1].z + w[2] * t[2].z);
+    if (edge) r.edge_z.at(x, y) = std::max(r.edge_z.at(x, y), z);
+    if (!(w[0] >= 0 && w[1] >= 0 && w[2] >= 0)) return;  // just outside: only the edge's mark
+    uint32_t& key = r.key.at(x, y);
+    float* nearest = &r.nearest.at(x, y);
+    float* runner_up = &r.runner_up.at(x, y);
+    if (z > nearest[0]) {
+      if (key != t[0].key && nearest[0] > 0) runner_up[0] = nearest[0], runner_up[1] = nearest[1];
+      nearest[0] = z, nearest[1] = slope, key = t[0].key;
+    } else if (t[0].key != key && z > runner_up[0]) {
+      runner_up[0] = z, runner_up[1] = slope;
+    }
+  };
+  rasterize_triangle(t[0].window, t[1].window, t[2].window, {0, y0, r.key.width, y1}, kSubpixel, fragment);
+}
+
+// Where another rasterizer may keep another key: the two nearest surfaces lie within what
+// float interpolation can swap (kDepthTie relative, plus each triangle's z change over a
+// subpixel step), or a triangle at least as near has an edge within a subpixel of the
+// pixel center (rounding decides its coverage).
+bool ambiguous(const IdRaster& r, size_t i) {
+  const float* nearest = &r.nearest.data[2 * i];
+  const float* runner_up = &r.runner_up.data[2 * i];
+  float margin = float(kDepthTie) * nearest[0] + float((nearest[1] + runner_up[1]) * kSubpixel);
+  bool tie = runner_up[0] > 0 && nearest[0] - runner_up[0] <= margin;
+  return tie || (r.edge_z.data[i] > 0 && r.edge_z.data[i] >= nearest[0] - margin);
+}
+
+IdRaster id_raster(const std::vector<IdVertex>& v, int width, int height) {
+  IdRaster r{ImageU32(width, height, 1), Image(width, height, 2), Image(width, height, 2), Image(width, height, 1)};
+  draw_in_bands(
+      v, height, [](const IdVertex& x) { return x.window; },
+      [&](const IdVertex* t, int y0, int y1) { draw(t, r, y0, y1); });
+  return r;
+}
+
+}  // namespace
+
+PLUMBAGO_REFERENCE_STAGE(id_image, [](ReferenceFrame& f) {
+  auto p = f.params<StrokesParams>();
+  if (has_decals(f.scene) && !f.host.find<DecalSurface>(kDecalSurface))  // SPEC 4.9: by rays, once per frame's data
+    f.host.put<DecalSurface>(kDecalSurface, project_decals_by_rays(f.scene));
+  IdRaster r = id_raster(id_triangles(f.scene, frame_lines(f.host, f.host, f.scene), p), f.scene.width, f.scene.height);
+  f.put("id_image.ids", key_channels(r.key));
+  Image ties(r.key.width, r.key.height, 1);
+  for (size_t i = 0; i < ties.data.size(); ++i)
+    ties.data[i] = ambiguous(r, i);
+  f.put("id_image.ambiguous", std::move(ties));  // not an output: what the bound below reads
+});
+
+// Where the rounding of a rasterizer decides (ambiguous above), the backends may keep either key.
+PLUMBAGO_REFERENCE_BOUND(id_image_ids, "id_image.ids", [](const ReferenceFrame& f) {
+  Image bound = f.image("id_image.ambiguous");
+  for (float& b : bound.data) b *= 65536.0f;
+  return bound;
+});
+
+}  // namespace plumbago::reference

@@ -1,0 +1,78 @@
+// The stroke raster, CPU reference (SPEC 4.6-4.7; formula in common/strokes/stroke.hpp): the
+// ribbons' triangles through the scalar rasterizer, each fragment blended in order.
+#include "common/strokes/stroke.hpp"
+
+#include "common/strokes/stroke_paper.hpp"
+#include "reference/strokes/raster.hpp"
+#include "reference/util/sampler.hpp"
+#include "reference/core/stage.hpp"
+
+namespace plumbago::reference {
+
+namespace {
+
+struct StrokeInputs {
+  const std::vector<Image>& textures;
+  const Image& height;  // the paper
+  StrokePaperParams paper;
+};
+
+template <class T>
+T interpolated(const StrokeVertex* t, glm::dvec3 w, T StrokeVertex::*field) {
+  return T(float(w[0]) * t[0].*field + float(w[1]) * t[1].*field + float(w[2]) * t[2].*field);
+}
+
+// Per pixel: the fragments blended there, and 1 where a triangle's edge passes within a
+// subpixel of its center (another rasterizer's rounding may decide its coverage).
+struct FragmentCounts {
+  Image fragments, edge;
+};
+
+// One triangle of a ribbon over `out`, rows [y0, y1).
+void draw(const StrokeVertex* t, const StrokeInputs& in, Image& out, FragmentCounts& counts, int y0, int y1) {
+  const SamplerState along{Filter::Linear, Wrap::Repeat, Wrap::ClampToEdge};
+  const Image& texture = in.textures[size_t(t[0].layer)];
+  const double subpixel = 1.0 / double(1 << kSubpixelBits);
+  rasterize_triangle(t[0].position, t[1].position, t[2].position, {0, y0, out.width, y1}, subpixel, [&](int x, int y, glm::dvec3 w, bool edge) {
+    if (edge) counts.edge.at(x, y) = 1;
+    if (!(w[0] >= 0 && w[1] >= 0 && w[2] >= 0)) return;  // just outside: only the edge's mark
+    float a = interpolated(t, w, &StrokeVertex::alpha) * sample(texture, interpolated(t, w, &StrokeVertex::uv), along).x;
+    glm::vec3 under(out.at(x, y, 0), out.at(x, y, 1), out.at(x, y, 2));
+    glm::vec3 c = over_paper(glm::vec4(t[0].color, a), under, in.height.at(x % in.height.width, y % in.height.height), in.paper);
+    for (int ch = 0; ch < 3; ++ch) out.at(x, y, ch) = c[ch];
+    counts.fragments.at(x, y) += 1;
+  });
+}
+
+}  // namespace
+
+PLUMBAGO_REFERENCE_STAGE(stroke, [](ReferenceFrame& f) {
+  std::vector<StrokeVertex> v = stroke_triangles(frame_lines(f.host, f.host, f.scene), *f.host.find<Visibility>("visibility"), f.scene.strokes, f.scene.seed);
+  std::vector<Image> textures = stroke_texture_layers(f.scene.seed);
+  StrokeInputs in{textures, f.pre.paper.height, f.params<StrokePaperParams>()};
+  Image out = f.image("stroke_paper.color");
+  FragmentCounts counts{Image(out.width, out.height, 1), Image(out.width, out.height, 1)};
+  draw_in_bands(v, out.height, [](const StrokeVertex& x) { return x.position; },
+                [&](const StrokeVertex* t, int y0, int y1) { draw(t, in, out, counts, y0, y1); });
+  f.put("stroke.color", std::move(out));
+  f.put("stroke.fragments", std::move(counts.fragments));  // not outputs: what the bound below reads
+  f.put("stroke.ribbon_edges", std::move(counts.edge));
+});
+
+// What the GPU may add to each fragment (derived, not fitted): its alpha comes from a
+// bilinear lookup whose sample position llvmpipe quantizes to 1/256 of a texel (SPEC 5: 8-bit
+// weights), up to 1/256 of a [0, 1] texture's step in u and in v, doubled by the paper
+// transfer's slope: 4/256 of alpha, so of color; and its blend into the 8-bit target
+// rounds by up to half a step. 4.5/255 a fragment, less the declared tolerance. At the
+// pixels a ribbon's edge passes within a subpixel of (the 1-px band at ribbon edges),
+// rounding decides whether the fragment is drawn at all: anything goes there, and the note
+// counts them.
+PLUMBAGO_REFERENCE_BOUND(stroke_color, "stroke.color", [](const ReferenceFrame& f) {
+  Image bound = f.image("stroke.fragments");
+  const Image& edges = f.image("stroke.ribbon_edges");
+  for (size_t i = 0; i < bound.data.size(); ++i)
+    bound.data[i] = edges.data[i] > 0 ? 1.0f : std::max(0.0f, bound.data[i] * 4.5f / 255.0f - float(tolerance::kByte));
+  return bound;
+});
+
+}  // namespace plumbago::reference

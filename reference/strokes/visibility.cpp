@@ -1,0 +1,24 @@
+// Visibility of stroke samples, CPU reference (SPEC 4.5): the test of
+// common/strokes/visibility.hpp on the ID image, sample by sample.
+#include "common/strokes/visibility.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include "common/strokes/id_image.hpp"
+#include "reference/core/stage.hpp"
+
+namespace plumbago::reference {
+
+PLUMBAGO_REFERENCE_STAGE(visibility, [](ReferenceFrame& f) {
+  ImageU32 keys = keys_from_channels(f.image("id_image.ids"));
+  auto test = [&](const std::vector<VisibilitySample>& batch) {
+    std::vector<uint8_t> flags(batch.size());
+    tbb::parallel_for(size_t(0), batch.size(), [&](size_t k) { flags[k] = sample_visible(keys, batch[k]); });
+    return flags;
+  };
+  Visibility v = visible_runs(frame_lines(f.host, f.host, f.scene), f.params<StrokesParams>(), test);
+  f.put("visibility.flags", flags_image(v.flags));
+  f.host.put("visibility", std::move(v));
+});
+
+}  // namespace plumbago::reference

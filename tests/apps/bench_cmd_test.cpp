@@ -1,0 +1,105 @@
+// `plumbago bench`: the papers' claims table (--paper) and the accuracy options
+// (--save/--against) the experiments/ studies are built on. Structure only: a benchmark
+// reports times and never asserts them.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "bench/paper_claims.hpp"
+#include "tests/support/cli_run.hpp"
+
+namespace plumbago {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::CliRun;
+
+class BenchCmd : public ::testing::Test {
+ protected:
+  std::string path(const std::string& name) const { return tmp_.path(name); }
+  CliRun run(const std::string& args) const { return testing::run_cli(args, tmp_); }
+  testing::TempDir tmp_;
+};
+
+TEST_F(BenchCmd, PaperTableHasEveryClaimWithOursNextToIt) {
+  CliRun r = run("bench --paper --json --size 48x48 --frames 1");
+  ASSERT_EQ(r.code, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_FALSE(j.at("machine").get<std::string>().empty());
+  EXPECT_FALSE(j.at("renderer").get<std::string>().empty());
+  const auto& claims = paper_claims();
+  ASSERT_EQ(j.at("claims").size(), claims.size());
+  bool any_ours = false;
+  for (size_t i = 0; i < claims.size(); ++i) {
+    const auto& c = j["claims"][i];
+    EXPECT_EQ(c.at("paper"), claims[i].paper);
+    EXPECT_EQ(c.at("fps_low").get<double>(), claims[i].fps_low);
+    EXPECT_LE(claims[i].fps_low, claims[i].fps_high) << claims[i].paper;
+    EXPECT_EQ(c.at("ours_scene"), claims[i].plumbago_scene);
+    if (claims[i].plumbago_scene.empty()) {
+      EXPECT_TRUE(c.at("ours_gpu").is_null());
+      EXPECT_FALSE(c.at("note").get<std::string>().empty()) << "a claim with no configuration of ours says why";
+      continue;
+    }
+    EXPECT_TRUE(fs::exists(fs::path(PLUMBAGO_SOURCE_DIR) / claims[i].plumbago_scene)) << claims[i].plumbago_scene;
+    if (c.at("ours_gpu").is_null()) {  // e.g. the shared models are absent: it says so
+      EXPECT_EQ(c.at("note").get<std::string>().rfind("not run: ", 0), 0u) << c.dump();
+      continue;
+    }
+    any_ours = true;
+    for (const char* backend : {"ours_gpu", "ours_reference"}) {
+      const auto& ours = c.at(backend);
+      EXPECT_GT(ours.at("fps").get<double>(), 0) << backend;
+      EXPECT_GT(ours.at("faces").get<int>(), 0) << backend;
+      EXPECT_EQ(ours.at("size"), nlohmann::json({48, 48}));
+    }
+  }
+  if (!any_ours) GTEST_SKIP() << "no scene of the claims table could be loaded (shared models absent?)";
+}
+
+TEST_F(BenchCmd, PaperTextNamesTheMachineTheRendererAndEveryPaper) {
+  CliRun r = run("bench --paper --size 48x48 --frames 1 --backend gpu");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("machine:"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("GL renderer:"), std::string::npos) << r.out;
+  for (const auto& c : paper_claims()) {
+    EXPECT_NE(r.out.find(c.paper), std::string::npos) << c.paper;
+    EXPECT_NE(r.out.find(c.scene), std::string::npos) << c.scene;
+  }
+}
+
+TEST_F(BenchCmd, PaperRefusesAScene) {
+  CliRun r = run("bench --paper builtin:torus");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--paper"), std::string::npos) << r.err;
+}
+
+TEST_F(BenchCmd, AgainstItsOwnSavedFrameIsZeroAndAgainstAnotherSettingIsNot) {
+  std::string base = "bench builtin:torus --size 64x48 --frames 1 --backend gpu --json --buffers compose.color ";
+  ASSERT_EQ(run(base + "--save " + path("saved")).code, 0);
+  ASSERT_TRUE(fs::exists(path("saved/gpu/compose.color.exr")));
+  CliRun same = run(base + "--against " + path("saved/gpu"));
+  ASSERT_EQ(same.code, 0) << same.err;
+  auto e = nlohmann::json::parse(same.out)["results"][0]["errors"]["compose.color"];
+  EXPECT_EQ(e.at("max_abs").get<double>(), 0.0) << "the same scene rendered twice differs";
+  CliRun other = run(base + "--set contour.copies=1 --against " + path("saved/gpu"));
+  ASSERT_EQ(other.code, 0) << other.err;
+  auto o = nlohmann::json::parse(other.out)["results"][0]["errors"]["compose.color"];
+  EXPECT_GT(o.at("rmse").get<double>(), 0.0);
+  EXPECT_LE(o.at("mean_abs").get<double>(), o.at("rmse").get<double>());
+  EXPECT_LE(o.at("rmse").get<double>(), o.at("max_abs").get<double>());
+}
+
+TEST_F(BenchCmd, AgainstAnImageOfAnotherSizeIsRefused) {
+  ASSERT_EQ(run("bench builtin:torus --size 64x48 --frames 1 --backend gpu --buffers compose.color --save " + path("s")).code, 0);
+  CliRun r = run("bench builtin:torus --size 32x32 --frames 1 --backend gpu --buffers compose.color --against " + path("s/gpu"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--against"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace plumbago

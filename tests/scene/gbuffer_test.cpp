@@ -1,0 +1,185 @@
+// G-buffer parity, raster (gpu/scene/gbuffer.cpp) vs ray tracing (reference/scene/gbuffer.cpp),
+// SPEC §5: interior pixels agree within 1e-4 in depth and 1e-3 in normals; differences
+// only in the one-pixel band along depth discontinuities, whose share is printed.
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "parity/parity.hpp"
+#include "common/core/passes.hpp"
+#include "gpu/scene/gbuffer.hpp"
+#include "gpu/core/pipeline.hpp"
+#include "tests/support/parity_checks.hpp"
+#include "tests/support/test_scenes.hpp"
+
+namespace plumbago {
+namespace {
+
+void expect_gbuffer_parity(const Scene& scene, const std::string& label) {
+  auto results = run_parity(scene, {"gbuffer"});
+  ASSERT_EQ(testing::names_of(results), (std::vector<std::string>{"gbuffer.normal", "gbuffer.face_normal", "gbuffer.depth",
+                                                                  "gbuffer.bary", "gbuffer.gouraud"}));
+  for (const StageParity& r : results) {
+    std::printf("[gbuffer %s] %s  [%s]\n", label.c_str(), format_diff(r.name, r.diff).c_str(), r.note.c_str());
+    EXPECT_GT(r.diff.compared, scene.width * scene.height / 20) << r.name << ": too few interior pixels to mean anything";
+    EXPECT_TRUE(r.pass) << r.name;
+    EXPECT_FALSE(has_non_finite(r.gpu)) << r.name;
+    EXPECT_FALSE(has_non_finite(r.reference)) << r.name;
+  }
+}
+
+class GBufferParity : public testing::GlTest, public ::testing::WithParamInterface<std::string> {};
+
+TEST_P(GBufferParity, BuiltinScene) { expect_gbuffer_parity(testing::builtin_at(GetParam(), 400, 300), GetParam()); }
+
+INSTANTIATE_TEST_SUITE_P(Builtin, GBufferParity, ::testing::Values("torus", "sphere", "cad"));
+
+TEST_F(GBufferParity, Fandisk) {
+  PLUMBAGO_REQUIRE_MODEL("fandisk.obj");
+  expect_gbuffer_parity(testing::model_scene("fandisk.obj", 800, 800), "fandisk");
+}
+
+TEST_F(GBufferParity, StanfordBunny) {
+  PLUMBAGO_REQUIRE_MODEL("stanford-bunny.obj");
+  expect_gbuffer_parity(testing::model_scene("stanford-bunny.obj", 800, 800), "stanford-bunny");
+}
+
+// The raster G-buffer with and without culling the faces gpu/scene/gbuffer.cpp takes for hidden.
+struct CulledAndNot {
+  GBuffer culled, whole;
+  int culled_objects = 0;
+};
+
+CulledAndNot render_culled_and_not(const Scene& scene) {
+  gpu::GBufferTargets targets = gpu::make_gbuffer_targets(scene.width, scene.height, GBufferFormat::RGBA32F);
+  gpu::GBufferPass pass(scene);
+  CulledAndNot out;
+  pass.render(scene, targets);
+  out.culled = gpu::download_gbuffer(targets);
+  out.culled_objects = pass.culled_objects();
+  pass.set_culling(false);
+  pass.render(scene, targets);
+  out.whole = gpu::download_gbuffer(targets);
+  EXPECT_EQ(pass.culled_objects(), 0);
+  return out;
+}
+
+// Culling may change which of two faces wins a pixel only where their depths tie (along
+// silhouettes, where a back face meets the front face it folds into); it never uncovers
+// or covers a pixel. Returns how many pixels changed face.
+int expect_same_surface(const CulledAndNot& r, const std::string& label) {
+  int changed = 0, uncovered_or_covered = 0, not_tied = 0;
+  const GBuffer &a = r.culled, &b = r.whole;
+  for (int y = 0; y < a.ids.height; ++y)
+    for (int x = 0; x < a.ids.width; ++x) {
+      uncovered_or_covered += a.ids.at(x, y, 0) != b.ids.at(x, y, 0);
+      if (a.ids.at(x, y, 1) == b.ids.at(x, y, 1)) continue;
+      ++changed;
+      not_tied += std::abs(a.depth.at(x, y) - b.depth.at(x, y)) > 1e-4f * b.depth.at(x, y);
+    }
+  std::printf("[gbuffer culling %s] %d culled object(s); %d of %d pixels show another face (depth tie)\n", label.c_str(),
+              r.culled_objects, changed, a.ids.width * a.ids.height);
+  EXPECT_EQ(uncovered_or_covered, 0) << label << ": pixels whose object changed";
+  EXPECT_EQ(not_tied, 0) << label << ": pixels that show another face at another depth";
+  EXPECT_LE(changed, a.ids.width * a.ids.height / 1000) << label;
+  return changed;
+}
+
+Scene builtin_with_mesh(const std::string& name, Mesh mesh) {
+  Scene s = testing::builtin_at(name, 400, 300);
+  s.objects.at(0).mesh = std::make_shared<const Mesh>(std::move(mesh));
+  return s;
+}
+
+using GBufferCulling = testing::GlTest;
+
+TEST_F(GBufferCulling, ClosedObjectsSeenFromOutsideLoseOnlyHiddenFaces) {
+  for (const char* name : {"sphere", "torus", "cad"}) {
+    CulledAndNot r = render_culled_and_not(testing::builtin_at(name, 400, 300));
+    EXPECT_EQ(r.culled_objects, 1) << name;
+    expect_same_surface(r, name);
+  }
+  // Triangles turning clockwise seen from outside (negative volume): the other faces hide.
+  Scene inside_out = testing::builtin_at("sphere", 400, 300);
+  Mesh flipped = *inside_out.objects[0].mesh;
+  for (glm::uvec3& t : flipped.triangles) std::swap(t[1], t[2]);
+  CulledAndNot r = render_culled_and_not(builtin_with_mesh("sphere", flipped));
+  EXPECT_EQ(r.culled_objects, 1);
+  expect_same_surface(r, "sphere, clockwise triangles");
+  // A mirroring transform turns counter-clockwise triangles clockwise in the world.
+  Scene mirrored = testing::builtin_at("torus", 400, 300);
+  mirrored.objects[0].transform = glm::scale(glm::mat4(1.0f), glm::vec3(-1, 1, 1)) * mirrored.objects[0].transform;
+  r = render_culled_and_not(mirrored);
+  EXPECT_EQ(r.culled_objects, 1);
+  expect_same_surface(r, "torus, mirrored");
+}
+
+TEST_F(GBufferCulling, Fandisk) {
+  PLUMBAGO_REQUIRE_MODEL("fandisk.obj");
+  CulledAndNot r = render_culled_and_not(testing::model_scene("fandisk.obj", 800, 800));
+  EXPECT_EQ(r.culled_objects, 1);
+  expect_same_surface(r, "fandisk");
+}
+
+TEST_F(GBufferCulling, NothingIsCulledWhereTheInsideCanShow) {
+  // The camera inside a closed sphere: every face it sees is a back face.
+  Scene inside = testing::builtin_at("sphere", 400, 300);
+  inside.camera.eye = inside.camera.target + 0.1f * (inside.camera.eye - inside.camera.target) / glm::length(inside.camera.eye - inside.camera.target);
+  inside.camera.near = 0.01f;
+  CulledAndNot r = render_culled_and_not(inside);
+  EXPECT_EQ(r.culled_objects, 0);
+  EXPECT_EQ(expect_same_surface(r, "camera inside the sphere"), 0);
+  // An open mesh: the sphere without one triangle.
+  Mesh open = *testing::builtin_at("sphere", 400, 300).objects[0].mesh;
+  open.triangles.pop_back();
+  r = render_culled_and_not(builtin_with_mesh("sphere", open));
+  EXPECT_EQ(r.culled_objects, 0);
+}
+
+// Renders the sphere, then the same sphere from a camera moved sideways, into the same
+// targets: the pixels the first render covered and the second does not must hold the
+// background values of SPEC 2.1 again. Returns how many such pixels there were.
+int expect_second_render_leaves_no_trace(const gpu::GBufferChannels& channels, const std::string& label) {
+  Scene scene = testing::builtin_at("sphere", 200, 150);
+  gpu::GBufferTargets targets = gpu::make_gbuffer_targets(scene.width, scene.height, GBufferFormat::RGBA32F);
+  gpu::GBufferPass pass(scene);
+  pass.render(scene, targets, channels);
+  ImageU32 first_ids = gpu::download_texture_u32(targets.ids, 2);
+  glm::vec3 side = glm::normalize(glm::cross(scene.camera.forward(), scene.camera.up));
+  float shift = 0.4f * glm::length(scene.camera.eye - scene.camera.target);
+  scene.camera.eye += shift * side;
+  scene.camera.target += shift * side;
+  pass.render(scene, targets, channels);
+  GBuffer g = gpu::download_gbuffer(targets);
+  Image normal = gpu::download_texture(targets.normal, 4), face_normal = gpu::download_texture(targets.face_normal, 4);
+  const PixelRect& r = channels.read_region;
+  int uncovered = 0, wrong = 0;
+  for (int y = std::max(r.y0, 0); y < std::min(r.y1, scene.height); ++y)
+    for (int x = std::max(r.x0, 0); x < std::min(r.x1, scene.width); ++x) {
+      if (g.ids.at(x, y, 0) != 0) continue;
+      uncovered += first_ids.at(x, y, 0) != 0;
+      for (int c = 0; c < 3; ++c) wrong += (channels.normal && normal.at(x, y, c) != 0) + (channels.face_normal && face_normal.at(x, y, c) != 0);
+      wrong += (channels.normal && normal.at(x, y, 3) != g.far) + (channels.face_normal && face_normal.at(x, y, 3) != g.far);
+      if (!channels.object_only_background) continue;
+      for (int c = 0; c < 3; ++c) wrong += (g.bary.at(x, y, c) != 0) + (g.theta_min.at(x, y, c) != 0) + (g.theta_max.at(x, y, c) != 0);
+      wrong += (g.depth.at(x, y) != g.far) + (g.gouraud.at(x, y) != 1.0f);
+    }
+  std::printf("[gbuffer background %s] %d pixels covered only by the first render\n", label.c_str(), uncovered);
+  EXPECT_GT(uncovered, 100) << label << ": the camera did not move the sphere off enough pixels to test";
+  EXPECT_EQ(wrong, 0) << label << ": channel values of the first render left on the background";
+  return uncovered;
+}
+
+using GBufferBackground = testing::GlTest;
+
+TEST_F(GBufferBackground, ASecondRenderLeavesNoTraceOfTheFirstOnTheBackground) {
+  expect_second_render_leaves_no_trace(gpu::GBufferChannels{}, "every channel, whole window (a dump)");
+  Scene scene = testing::builtin_at("sphere", 200, 150);
+  scene.effects = {"contours", "interior", "crosshatch", "paper"};
+  gpu::GBufferChannels frame = gpu::Renderer(scene).frame_channels("gbuffer");
+  frame.read_region = {0, 0, scene.width, scene.height};  // the moved sphere's region is elsewhere
+  expect_second_render_leaves_no_trace(frame, "a frame's channels");
+}
+
+}  // namespace
+}  // namespace plumbago

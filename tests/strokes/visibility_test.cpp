@@ -1,0 +1,96 @@
+// The SPEC 4.5 test of one sample against an ID image, by hand (every kind of sample) and
+// on both backends (the C++ function and the compute shader) over random images and
+// samples.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "common/strokes/id_image.hpp"
+#include "common/util/random.hpp"
+#include "common/strokes/visibility.hpp"
+#include "gpu/strokes/visibility.hpp"
+#include "tests/support/test_scenes.hpp"
+
+namespace plumbago {
+namespace {
+
+constexpr uint32_t kFace = 5, kCreasePath = 100, kSilhouettePath = 300;
+
+// 16 x 16, face 5 everywhere but a crease column at x = 8 and a silhouette pixel at (3, 3)
+// with byte 10.
+ImageU32 keys_by_hand() {
+  ImageU32 k(16, 16, 1);
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) k.at(x, y) = x == 8 ? kCreasePath : kFace;
+  k.at(3, 3) = kSilhouettePath << 8 | 10;
+  return k;
+}
+
+VisibilitySample sample(float x, float y, uint32_t kind, uint32_t key, uint32_t face = 0, uint32_t byte = 0,
+                        uint32_t window = 4) {
+  return {{x, y}, kind, key, {face, 0}, byte, window};
+}
+
+TEST(Visibility, EachKindOfSampleByHand) {
+  ImageU32 k = keys_by_hand();
+  EXPECT_TRUE(sample_visible(k, sample(9.5f, 4.5f, kCreaseSample, kCreasePath)));      // the path a pixel away
+  EXPECT_FALSE(sample_visible(k, sample(11.5f, 4.5f, kCreaseSample, kCreasePath)));    // 3 px away
+  EXPECT_TRUE(sample_visible(k, sample(11.5f, 4.5f, kCreaseSample, 7, kFace)));        // an adjacent front face
+  EXPECT_TRUE(sample_visible(k, sample(2.5f, 2.5f, kSilhouetteSample, kSilhouettePath, 0, 14)));   // byte within 4
+  EXPECT_FALSE(sample_visible(k, sample(2.5f, 2.5f, kSilhouetteSample, kSilhouettePath, 0, 20)));  // too far along
+  EXPECT_FALSE(sample_visible(k, sample(5.5f, 5.5f, kSilhouetteSample, kSilhouettePath, 0, 10)));  // 2 px away
+  EXPECT_FALSE(sample_visible(k, sample(2.5f, 2.5f, kSilhouetteSample, kSilhouettePath, 0, 254)));
+  EXPECT_TRUE(sample_visible(k, sample(2.5f, 2.5f, kSilhouetteSample, kSilhouettePath, 0, 8, 4 | 0x100u)));
+  k.at(3, 3) = kSilhouettePath << 8 | 254;  // a closed path's seam: 254 and 2 are 4 apart
+  EXPECT_TRUE(sample_visible(k, sample(2.5f, 2.5f, kSilhouetteSample, kSilhouettePath, 0, 2, 4 | 0x100u)));
+  EXPECT_FALSE(sample_visible(k, sample(2.5f, 2.5f, kSilhouetteSample, kSilhouettePath, 0, 2, 4)));  // open: 252 apart
+  EXPECT_TRUE(sample_visible(k, sample(1.5f, 1.5f, kDecalSample, 0, kFace)));
+  EXPECT_FALSE(sample_visible(k, sample(1.5f, 1.5f, kDecalSample, 0, 6)));
+  EXPECT_FALSE(sample_visible(k, sample(-5.0f, 1.5f, kDecalSample, 0, kFace)));  // off the image
+  float nan = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_FALSE(sample_visible(k, sample(nan, 1.5f, kDecalSample, 0, kFace)));
+  // A hatch reaches 2 px (SPEC 4.10), either of its two faces.
+  EXPECT_TRUE(sample_visible(k, sample(10.5f, 4.5f, kHatchingSample, 0, kCreasePath)));   // 2 px from the column
+  EXPECT_FALSE(sample_visible(k, sample(11.5f, 4.5f, kHatchingSample, 0, kCreasePath)));  // 3 px
+  EXPECT_FALSE(sample_visible(k, sample(10.5f, 4.5f, kDecalSample, 0, kCreasePath)));     // a decal reaches 1
+  VisibilitySample second = sample(10.5f, 4.5f, kHatchingSample, 0, 6);
+  second.faces[1] = kCreasePath;
+  EXPECT_TRUE(sample_visible(k, second));
+}
+
+class VisibilityBackends : public testing::GlTest {};
+
+// Random keys from a small set (so that matches happen) and random samples of every kind,
+// some off the image: the compute shader gives the C++ function's flags, sample for sample.
+TEST_F(VisibilityBackends, TheComputeShaderGivesTheSameFlags) {
+  Rng rng(1, "visibility backends");
+  ImageU32 keys(64, 48, 1);
+  auto key = [&] {
+    uint32_t path = 40 + uint32_t(rng.uniform() * 3);
+    return rng.uniform() < 0.5 ? uint32_t(rng.uniform() * 6) : path << 8 | uint32_t(rng.uniform() * 256);
+  };
+  for (uint32_t& k : keys.data) k = key();
+  std::vector<VisibilitySample> samples;
+  for (int i = 0; i < 5000; ++i) {
+    uint32_t kind = uint32_t(rng.uniform() * 4), face = uint32_t(rng.uniform() * 6);
+    samples.push_back({{float(rng.uniform(-3, 67)), float(rng.uniform(-3, 51))}, kind,
+                       kind == kSilhouetteSample ? 40 + uint32_t(rng.uniform() * 3) : uint32_t(rng.uniform() * 6),
+                       {face, uint32_t(rng.uniform() * 6)}, uint32_t(rng.uniform() * 256),
+                       uint32_t(rng.uniform() * 12) | (rng.uniform() < 0.5 ? 0x100u : 0u)});
+  }
+  gpu::Texture ids = gpu::upload_texture(key_channels(keys), GL_RG32UI);
+  std::vector<uint8_t> on_gpu = gpu::SampleTest()(ids, samples);
+  ASSERT_EQ(on_gpu.size(), samples.size());
+  size_t visible = 0;
+  for (size_t i = 0; i < samples.size(); ++i) {
+    bool cpu = sample_visible(keys, samples[i]);
+    visible += cpu;
+    EXPECT_EQ(bool(on_gpu[i]), cpu) << "sample " << i << " kind " << samples[i].kind;
+  }
+  EXPECT_GT(visible, 500u);  // both outcomes are exercised
+  EXPECT_LT(visible, 4500u);
+}
+
+}  // namespace
+}  // namespace plumbago
