@@ -136,7 +136,8 @@ std::vector<std::string> fed_inputs(const gpu::GpuPassDef& pass, const StageConf
     for (const Input& in : find_stage(name).inputs) {
       const StageDesc& from = stage_of(in.buffer);
       bool read = !in.used || in.used(config);
-      if (read && in.fed_in_parity && from.kind == StageKind::Frame && !contains(pass.stages, from.name) &&
+      bool image = find_output(in.buffer).texel != Texel::Host;  // CPU data is handed over as it is
+      if (read && image && in.fed_in_parity && from.kind == StageKind::Frame && !contains(pass.stages, from.name) &&
           !contains(fed, in.buffer))
         fed.push_back(in.buffer);
     }
@@ -150,22 +151,22 @@ class PassParity {
   PassParity(const Scene& scene, const reference::ReferenceFrame& ref, const gpu::GpuPassDef& pass)
       : pass_(pass), rf_(scene, ref.pre, pass.stages), gf_(scene, rf_.pre, pass.stages) {
     gf_.dump = true;  // every output, the skipped ones too, in the whole window
-    rf_.host = gf_.host = ref.host;  // CPU data (the window lines, the visible runs) as it is
+    rf_.data = gf_.data = ref.data;  // CPU data (the window lines, the visible runs) as it is
     for (const std::string& buffer : fed_inputs(pass, rf_.config())) feed(ref, buffer);
-    for (const std::string& stage : pass_.stages) reference::implementation(stage)(rf_);
+    for (const std::string& stage : pass_.stages) reference::run_stage(rf_, stage);
     ref_out_ = reference::dump(rf_);
   }
 
   std::vector<StageParity> compare() {
     for (const auto& [buffer, image] : fed_images_)
-      gf_.set_output(buffer, gpu::upload_texture(image, gpu::texture_format(find_output(buffer))));
+      gf_.put(Buffer{buffer.c_str()}, gpu::upload_texture(image, gpu::texture_format(find_output(buffer))));
     for (const std::string& producer : fed_gbuffers_) {
-      const GBuffer& g = rf_.gbuffer(producer);
-      gf_.share(producer, uploaded_.emplace_back(gpu::upload_gbuffer(g)));
-      gf_.share(producer + ".triangle_angles", angles_.emplace_back(gpu::triangle_angles_from(g)));
+      const GBuffer& g = rf_.gbuffers.at(producer);
+      gf_.put(GBufferSlot{producer.c_str()}, uploaded_.emplace_back(gpu::upload_gbuffer(g)));
+      if (producer == kGBuffer.name) gf_.put(gpu::kTriangleAngles, angles_.emplace_back(gpu::triangle_angles_from(g)));
     }
-    std::unique_ptr<gpu::GpuPass> gpu_pass = pass_.make(gf_);
-    gpu_pass->run(gf_);
+    std::unique_ptr<gpu::GpuPass> gpu_pass = gpu::make_checked(pass_, gf_);
+    gpu::run_checked(pass_, *gpu_pass, gf_);
     std::map<std::string, Image> gpu_out;
     gpu_pass->dump(gf_, pass_.stages, gpu_out);
     gpu::Context::get().check_errors(pass_.name() + " parity");
@@ -181,8 +182,8 @@ class PassParity {
     const std::string producer = stage_of(buffer).name;
     auto g = ref.gbuffers.find(producer);
     if (g == ref.gbuffers.end()) {
-      rf_.put(buffer, ref.image(buffer));
-      fed_images_[buffer] = ref.image(buffer);
+      rf_.images[buffer] = ref.images.at(buffer);
+      fed_images_[buffer] = ref.images.at(buffer);
     } else if (!rf_.gbuffers.count(producer)) {
       rf_.gbuffers[producer] = g->second;
       fed_gbuffers_.push_back(producer);
@@ -195,7 +196,7 @@ class PassParity {
     if (it == masks_.end())
       it = masks_
                .emplace(stage,
-                        raster_masks(rf_.gbuffer(stage), gpu::download_gbuffer(gf_.shared<gpu::GBufferTargets>(stage))))
+                        raster_masks(rf_.gbuffers.at(stage), gpu::download_gbuffer(gf_.get(GBufferSlot{stage.c_str()}))))
                .first;
     return it->second;
   }

@@ -4,6 +4,7 @@
 #include <optional>
 #include <utility>
 
+#include "common/sketchy/sketchy.hpp"
 #include "common/core/passes.hpp"
 
 namespace plumbago {

@@ -52,6 +52,8 @@ void check(const std::vector<StageDesc>& table) {
       const StageDesc& from = *std::find_if(table.begin(), table.end(), [&](const StageDesc& d) { return d.name == producer; });
       if (!output_in(from, in.buffer.substr(dot + 1))) fail("reads '" + in.buffer + "', which '" + producer + "' does not write");
     }
+    for (const Output& o : s.outputs)
+      if (o.producer != s.name) fail("declares '" + o.producer + "." + o.name + "', another stage's handle");
     for (const std::string& e : s.effects)
       if (!effects.count(e)) fail("names an unknown effect '" + e + "'");
     for (const std::string& p : s.params)
@@ -71,6 +73,27 @@ const std::vector<StageDesc>& stage_table() {
     return t;
   }();
   return table;
+}
+
+namespace {
+
+bool declares(const StageDesc& s, const std::string& buffer) {
+  auto named = [&](const std::string& name) { return name == buffer || name.rfind(buffer + ".", 0) == 0; };
+  for (const Input& in : s.inputs)
+    if (named(in.buffer)) return true;
+  for (const Output& o : s.outputs)
+    if (named(s.output_name(o))) return true;
+  return false;
+}
+
+}  // namespace
+
+void check_declared(const std::vector<std::string>& stages, const std::string& buffer) {
+  for (const std::string& s : stages)
+    if (declares(find_stage(s), buffer)) return;
+  std::string names;
+  for (const std::string& s : stages) names += (names.empty() ? "" : "+") + s;
+  throw std::logic_error("stage " + names + " reads '" + buffer + "', which it does not declare");
 }
 
 StageDesc preprocessing_stage(std::string name, std::string doc, std::vector<std::string> params,
@@ -130,7 +153,7 @@ std::vector<std::string> dumped_buffers(const std::vector<std::string>& stages, 
     const StageDesc& stage = find_stage(name);
     if (stage.kind != StageKind::Frame) continue;
     for (const Output* o : outputs_written(stage, config))
-      if (!drawn_over.count(stage.output_name(*o))) names.push_back(stage.output_name(*o));
+      if (o->texel != Texel::Host && !drawn_over.count(stage.output_name(*o))) names.push_back(stage.output_name(*o));
   }
   return names;
 }

@@ -29,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "common/core/handle.hpp"
 #include "common/core/params.hpp"
 
 namespace plumbago {
@@ -42,8 +43,9 @@ struct TypeList {};
 enum class StageKind { Preprocessing, Frame };
 
 // How a buffer is kept on the GPU (the reference keeps floats): 32-bit float, 8-bit
-// unsigned normalized, unsigned integer; Host: CPU data made by preprocessing (grids,
-// stacks), uploaded by the stages that read it, not an image of the frame.
+// unsigned normalized, unsigned integer; Host: CPU data under a Slot (common/core/handle.hpp):
+// what preprocessing makes (grids, stacks) and what a stage hands later ones (the window
+// lines, the visible runs); neither dumped nor compared as an image.
 enum class Texel { Float, Unorm8, Uint, Host };
 
 // How parity compares an output. Stages fed identical inputs compare every pixel
@@ -87,13 +89,25 @@ struct StageConfig {
 };
 using Condition = bool (*)(const StageConfig&);
 
+// The name a descriptor takes from a handle (common/core/handle.hpp): descriptors list
+// handles, never spelled names.
+struct HandleName {
+  HandleName(Buffer b) : name(b.name) {}
+  template <class T>
+  HandleName(Slot<T> s) : name(s.name) {}
+  const char* name;
+};
+
 struct Output {
-  Output(std::string name, int channels, Texel texel, std::string doc, double tolerance = 0, std::string tolerance_why = {},
+  Output(HandleName handle, int channels, Texel texel, std::string doc, double tolerance = 0, std::string tolerance_why = {},
          ParityMask mask = ParityMask::All, ParityValue value = ParityValue::Plain)
-      : name(std::move(name)), channels(channels), texel(texel), doc(std::move(doc)), tolerance(tolerance),
+      : producer(std::string(handle.name).substr(0, std::string(handle.name).find('.'))),
+        name(std::string(handle.name).substr(producer.size() + 1)),
+        channels(channels), texel(texel), doc(std::move(doc)), tolerance(tolerance),
         tolerance_why(std::move(tolerance_why)), mask(mask), value(value) {}
 
-  std::string name;  // the part after "<stage>."
+  std::string producer;  // the handle's part before "." (the registry checks it is the stage)
+  std::string name;      // the part after "<stage>."
   int channels;  // in a dump (a GPU target may hold more, e.g. depth in the normals' w)
   Texel texel;
   std::string doc;
@@ -113,8 +127,8 @@ struct Output {
 };
 
 struct Input {
-  Input(std::string buffer, Condition used = nullptr, bool fed_in_parity = true)
-      : buffer(std::move(buffer)), used(used), fed_in_parity(fed_in_parity) {}
+  Input(HandleName handle, Condition used = nullptr, bool fed_in_parity = true)
+      : buffer(handle.name), used(used), fed_in_parity(fed_in_parity) {}
 
   std::string buffer;          // "<stage>.<output>"
   Condition used;  // read only where this holds (null: always)
@@ -172,7 +186,10 @@ const Output& find_output(const std::string& buffer);
 std::vector<std::string> inputs_read(const StageDesc& stage, const StageConfig& config);
 // The outputs of `stage` that `config` writes.
 std::vector<const Output*> outputs_written(const StageDesc& stage, const StageConfig& config);
-std::string stage_names();  // "gbuffer, edge_detect, ..." for messages
+std::string stage_names();
+// Throws std::logic_error unless one of `stages` declares `buffer` as an input or an output
+// (a G-buffer's name: one of its channels). Frames check every read of a running stage.
+void check_declared(const std::vector<std::string>& stages, const std::string& buffer);  // "gbuffer, edge_detect, ..." for messages
 
 // The buffers a dump of a frame that ran `stages` holds: every output the frame stages
 // write, less those another stage that ran drew over in place.

@@ -144,7 +144,9 @@ void CurvatureStage::make(const Scene& scene, Preprocessed& out) {
   auto params = scene.params.get<CurvatureParams>();
   CurvatureOptions options;
   options.progress = false;
-  for (const auto& obj : scene.objects) out.curvature.push_back(compute_curvature(*obj.mesh, params, options));
+  std::vector<Curvature> per_object;
+  for (const auto& obj : scene.objects) per_object.push_back(compute_curvature(*obj.mesh, params, options));
+  out.put(kCurvature, std::move(per_object));
 }
 
 }  // namespace plumbago

@@ -150,6 +150,9 @@ double folded_face_share(const Mesh& mesh);
 // The computation itself, no cache.
 Curvature estimate_curvature(const Mesh& mesh, const CurvatureParams& params, bool progress = false);
 
+// One per scene object the preprocessing was given (the G-buffer's objects).
+inline constexpr Slot<std::vector<Curvature>> kCurvature{"curvature.principal"};
+
 struct Scene;
 struct Preprocessed;
 struct CurvatureStage {
@@ -157,7 +160,7 @@ struct CurvatureStage {
   static void make(const Scene& scene, Preprocessed& out);
   static StageDesc describe() {
     return preprocessing_stage("curvature", "principal curvature per vertex (SPEC 1.1)", {"curvature"},
-                               {{"principal", 8, Texel::Host, "k_min, k_max and their directions, per vertex of each object"}},
+                               {{kCurvature, 8, Texel::Host, "k_min, k_max and their directions, per vertex of each object"}},
                                make);
   }
 };

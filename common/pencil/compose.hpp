@@ -6,6 +6,9 @@
 #pragma once
 
 #include "common/core/stage.hpp"
+#include "common/pencil/multi_contour.hpp"
+#include "common/pencil/pencil_interior.hpp"
+#include "common/pencil/paper.hpp"
 
 namespace plumbago {
 
@@ -20,14 +23,17 @@ struct ComposeParams {
   }
 };
 
+inline constexpr Buffer kComposeColor{"compose.color"};
+
 struct ComposeStage {
   using Params = TypeList<ComposeParams>;
   static StageDesc describe() {
     StageDesc d{"compose", StageKind::Frame, "contours, interior and paper into the final image (SPEC 2.11)", {"compose"},
-                {{"multi_contour.contour_darkness", when::effect_contours},
-                 {"pencil_interior.interior_darkness", when::effect_interior},
-                 {"paper.color", when::effect_paper}},
-                {{"color", 3, Texel::Unorm8, "RGB", tolerance::kByte, "fed the same D_c, D_i and paper color; 8-bit target"}},
+                {{kCopiesDarkness, when::effect_contours},
+                 {kInteriorDarkness, when::effect_interior},
+                 {kPaperColor, when::effect_paper},
+                 {kOffsetGrids, when::effect_contours}},  // the GPU: the contours' reach bounds the pixels drawn
+                {{kComposeColor, 3, Texel::Unorm8, "RGB", tolerance::kByte, "fed the same D_c, D_i and paper color; 8-bit target"}},
                 {"contours", "interior", "crosshatch", "paper"}};
     d.outputs[0].frame_color = true;
     d.declared_effects = {{"contours", "image-space contours (Lee 2006 §4)"},

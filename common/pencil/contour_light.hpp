@@ -5,6 +5,8 @@
 #pragma once
 
 #include "common/core/stage.hpp"
+#include "common/pencil/edge_detect.hpp"
+#include "common/scene/gbuffer.hpp"
 
 namespace plumbago {
 
@@ -18,12 +20,14 @@ struct ContourLightParams {
   }
 };
 
+inline constexpr Buffer kLitContourDarkness{"contour_light.lit_contour_darkness"};  // d'
+
 struct ContourLightStage {
   using Params = TypeList<ContourLightParams>;
   static StageDesc describe() {
     return {"contour_light", StageKind::Frame, "lit contours drawn lighter (SPEC 2.3, Lee Eq. 1)", {"contour_light"},
-            {{"edge_detect.contour_darkness"}, {"gbuffer.normal"}},
-            {{"lit_contour_darkness", 1, Texel::Float, "d' = d l_c", tolerance::kFloat,
+            {{kContourDarkness}, {kGBuffer.normal}},
+            {{kLitContourDarkness, 1, Texel::Float, "d' = d l_c", tolerance::kFloat,
               "fed the same d and G-buffer; float target"}}};
   }
 };

@@ -14,9 +14,9 @@ int ContourTextureStage::layer(const ParamSet& params) {
 
 void ContourTextureStage::make(const Scene& scene, Preprocessed& out) {
   int l = layer(scene.params);
-  out.contour_texture = out.pencil_stack.empty()
-                            ? pencil_layers(scene.params.get<PencilTexturesParams>(), scene.seed, l).back()
-                            : out.pencil_stack[size_t(l)];
+  const std::vector<Image>* stack = out.get(maybe(kPencilStack));
+  out.put(kContourTexture, stack ? (*stack)[size_t(l)]
+                                 : pencil_layers(scene.params.get<PencilTexturesParams>(), scene.seed, l).back());
 }
 
 }  // namespace plumbago

@@ -3,11 +3,14 @@
 #pragma once
 
 #include "common/core/stage.hpp"
+#include "common/util/image.hpp"
 
 namespace plumbago {
 
 struct Scene;
 struct Preprocessed;
+inline constexpr Slot<Image> kContourTexture{"contour_texture.texture"};  // T_c
+
 struct ContourTextureStage {
   using Params = TypeList<>;
   // The stack's own layer when the stack was made; else only the layers up to it.
@@ -16,7 +19,7 @@ struct ContourTextureStage {
   static int layer(const ParamSet& params);
   static StageDesc describe() {
     return preprocessing_stage("contour_texture", "the pencil layer used as contour texture (SPEC 1.2)",
-                               {"contour", "pencil_textures"}, {{"texture", 1, Texel::Host, "T_c"}}, make);
+                               {"contour", "pencil_textures"}, {{kContourTexture, 1, Texel::Host, "T_c"}}, make);
   }
 };
 

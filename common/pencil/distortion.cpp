@@ -56,8 +56,8 @@ float largest_offset(const std::vector<Image>& grids) {
 
 void DistortionStage::make(const Scene& scene, Preprocessed& out) {
   auto p = scene.params.get<ContourParams>();
-  out.offset_grids = distortion_grids(p, scene.width, scene.height, scene.seed);
-  out.texture_shifts = contour_texture_shifts(p, scene.seed);
+  out.put(kOffsetGrids, distortion_grids(p, scene.width, scene.height, scene.seed));
+  out.put(kTextureShifts, contour_texture_shifts(p, scene.seed));
 }
 
 }  // namespace plumbago

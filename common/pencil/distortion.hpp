@@ -25,14 +25,15 @@ std::vector<glm::vec2> contour_texture_shifts(const ContourParams& p, uint32_t s
 // The largest |dx| or |dy| of any grid (bilinear interpolation stays within it).
 float largest_offset(const std::vector<Image>& grids);
 
+// kOffsetGrids and kTextureShifts: in common/pencil/multi_contour.hpp, which reads them.
 struct Preprocessed;
 struct DistortionStage {
   using Params = TypeList<>;
   static void make(const Scene& scene, Preprocessed& out);
   static StageDesc describe() {
     return preprocessing_stage("distortion", "offset grids of the contour copies (SPEC 1.4, Lee Eq. 2)", {"contour"},
-                               {{"offset_grids", 2, Texel::Host, "one RG grid of pixel offsets per contour copy"},
-                                {"texture_shifts", 2, Texel::Host, "o_k: the shift of copy k's contour texture, texels"}},
+                               {{kOffsetGrids, 2, Texel::Host, "one RG grid of pixel offsets per contour copy"},
+                                {kTextureShifts, 2, Texel::Host, "o_k: the shift of copy k's contour texture, texels"}},
                                make);
   }
 };

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "common/core/stage.hpp"
+#include "common/scene/gbuffer.hpp"
 
 namespace plumbago {
 
@@ -40,14 +41,16 @@ inline float background_darkness(const EdgeDetectParams& p) {
   return p.background_pairs == BackgroundPairs::Continuous ? 0.0f : 1.0f;
 }
 
+inline constexpr Buffer kContourDarkness{"edge_detect.contour_darkness"};  // d
+
 struct EdgeDetectStage {
   using Params = TypeList<EdgeDetectParams>;
   static bool face_normals(const StageConfig& c) { return c.params.get<EdgeDetectParams>().normals == EdgeNormals::Face; }
   static bool smooth_normals(const StageConfig& c) { return !face_normals(c); }
   static StageDesc describe() {
     return {"edge_detect", StageKind::Frame, "contour darkness from normal and depth discontinuities (SPEC 2.2)", {"edge"},
-            {{"gbuffer.normal", smooth_normals}, {"gbuffer.face_normal", face_normals}, {"gbuffer.depth"}},
-            {{"contour_darkness", 1, Texel::Float, "d = 1 - I_n I_z", tolerance::kFloat, "fed the same G-buffer; float target"}}};
+            {{kGBuffer.normal, smooth_normals}, {kGBuffer.face_normal, face_normals}, {kGBuffer.depth}},
+            {{kContourDarkness, 1, Texel::Float, "d = 1 - I_n I_z", tolerance::kFloat, "fed the same G-buffer; float target"}}};
   }
 };
 

@@ -8,6 +8,7 @@
 
 #include "common/scene/scene.hpp"
 #include "common/core/stage.hpp"
+#include "common/scene/gbuffer.hpp"
 
 namespace plumbago {
 
@@ -47,14 +48,16 @@ float lambert_intensity(glm::vec3 n, const std::vector<Light>& unit_lights, cons
 // Brightness adjustment I' = sqrt(I) when p.brightness_sqrt (Lee §5.2).
 float adjusted_brightness(float intensity, const InteriorParams& p);
 
+inline constexpr Buffer kIntensity{"interior_intensity.intensity"};  // I'
+
 struct InteriorIntensityStage {
   using Params = TypeList<InteriorParams>;
   static bool gouraud(const StageConfig& c) { return c.params.get<InteriorParams>().shading == InteriorShading::Gouraud; }
   static bool phong(const StageConfig& c) { return !gouraud(c); }
   static StageDesc describe() {
     return {"interior_intensity", StageKind::Frame, "interior intensity and brightness (SPEC 2.5)", {"interior"},
-            {{"gbuffer.ids"}, {"gbuffer.gouraud", gouraud}, {"gbuffer.normal", phong}},
-            {{"intensity", 1, Texel::Float, "I'; 1 on the background", tolerance::kFloat,
+            {{kGBuffer.ids}, {kGBuffer.gouraud, gouraud}, {kGBuffer.normal, phong}},
+            {{kIntensity, 1, Texel::Float, "I'; 1 on the background", tolerance::kFloat,
               "fed the same G-buffer; float target"}}};
   }
 };

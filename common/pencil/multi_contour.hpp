@@ -10,6 +10,8 @@
 #include "common/util/image.hpp"
 #include "common/scene/scene.hpp"
 #include "common/core/stage.hpp"
+#include "common/pencil/contour_light.hpp"
+#include "common/pencil/contour_texture.hpp"
 
 namespace plumbago {
 
@@ -38,14 +40,18 @@ struct ContourParams {
 // window when the background's d is not 0 (edge.background_pairs = formula).
 PixelRect contour_rect(const Scene& scene, const std::vector<Image>& grids);
 
+// What the distortion preprocessing (common/pencil/distortion.hpp) makes of ContourParams.
+inline constexpr Slot<std::vector<Image>> kOffsetGrids{"distortion.offset_grids"};
+inline constexpr Slot<std::vector<glm::vec2>> kTextureShifts{"distortion.texture_shifts"};  // o_k
+inline constexpr Buffer kCopiesDarkness{"multi_contour.contour_darkness"};  // D_c
+
 struct MultiContourStage {
   using Params = TypeList<ContourParams>;
   static StageDesc describe() {
     return {"multi_contour", StageKind::Frame, "contour copies on distorted planes with the contour texture (SPEC 2.4)",
             {"contour"},
-            {{"contour_light.lit_contour_darkness"}, {"distortion.offset_grids"}, {"distortion.texture_shifts"},
-             {"contour_texture.texture"}},
-            {{"contour_darkness", 1, Texel::Float, "D_c of all copies", tolerance::kSampled,
+            {{kLitContourDarkness}, {kOffsetGrids}, {kTextureShifts}, {kContourTexture}},
+            {{kCopiesDarkness, 1, Texel::Float, "D_c of all copies", tolerance::kSampled,
               "fed the same d', offset grids and contour texture; bilinear lookups"}}};
   }
 };

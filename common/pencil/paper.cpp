@@ -61,7 +61,10 @@ Paper make_paper(const PaperParams& p, uint32_t seed) {
 }
 
 void PaperStage::make(const Scene& scene, Preprocessed& out) {
-  out.paper = make_paper(scene.params.get<PaperParams>(), scene.seed);
+  Paper paper = make_paper(scene.params.get<PaperParams>(), scene.seed);
+  out.put(kPaperHeight, std::move(paper.height));
+  out.put(kPaperNormal, std::move(paper.normal));
+  out.put(kPaperColor, std::move(paper.color));
 }
 
 }  // namespace plumbago

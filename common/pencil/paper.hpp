@@ -42,6 +42,10 @@ struct Paper {
 
 Paper make_paper(const PaperParams& p, uint32_t seed);
 
+inline constexpr Slot<Image> kPaperHeight{"paper.height"};
+inline constexpr Slot<Image> kPaperNormal{"paper.normal"};
+inline constexpr Slot<Image> kPaperColor{"paper.color"};
+
 struct Scene;
 struct Preprocessed;
 struct PaperStage {
@@ -49,9 +53,9 @@ struct PaperStage {
   static void make(const Scene& scene, Preprocessed& out);
   static StageDesc describe() {
     return preprocessing_stage("paper", "paper height, normal map and color (SPEC 1.3)", {"paper"},
-                               {{"height", 1, Texel::Host, "h in [0, 1]"},
-                                {"normal", 3, Texel::Host, "unit normal map"},
-                                {"color", 3, Texel::Host, "c_p"}},
+                               {{kPaperHeight, 1, Texel::Host, "h in [0, 1]"},
+                                {kPaperNormal, 3, Texel::Host, "unit normal map"},
+                                {kPaperColor, 3, Texel::Host, "c_p"}},
                                make);
   }
 };

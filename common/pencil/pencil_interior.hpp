@@ -17,6 +17,9 @@
 
 #include "common/pencil/interior_intensity.hpp"
 #include "common/core/stage.hpp"
+#include "common/pencil/pencil_textures.hpp"
+#include "common/pencil/paper.hpp"
+#include "common/scene/gbuffer.hpp"
 
 namespace plumbago {
 
@@ -35,15 +38,17 @@ inline InteriorOptions interior_options(const std::vector<std::string>& effects)
 // blending; for nearest_corner, 1 for the largest of them (the first on a tie), 0 else.
 glm::vec3 blend_weights(glm::vec3 w, const InteriorParams& p);
 
+inline constexpr Buffer kInteriorDarkness{"pencil_interior.interior_darkness"};  // D_i
+
 struct PencilInteriorStage {
   using Params = TypeList<>;
   static StageDesc describe() {
     return {"pencil_interior", StageKind::Frame,
             "tone to layer, rotated pencil textures, 3-way blending, cross hatching, paper effect (SPEC 2.6-2.10)",
             {"interior", "paper"},
-            {{"interior_intensity.intensity"}, {"gbuffer.ids"}, {"gbuffer.bary"}, {"gbuffer.theta_min"},
-             {"gbuffer.theta_max"}, {"pencil_textures.stack"}, {"paper.normal", when::effect_paper}},
-            {{"interior_darkness", 1, Texel::Float, "D_i; 0 on the background", tolerance::kSampled,
+            {{kIntensity}, {kGBuffer.ids}, {kGBuffer.bary}, {kGBuffer.theta_min}, {kGBuffer.theta_max}, {kPencilStack},
+             {kPaperNormal, when::effect_paper}},
+            {{kInteriorDarkness, 1, Texel::Float, "D_i; 0 on the background", tolerance::kSampled,
               "fed the same G-buffer (the GPU its corner angles as triangle records), I', pencil stack and paper"}}};
   }
 };

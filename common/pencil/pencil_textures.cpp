@@ -141,7 +141,7 @@ std::vector<Image> pencil_layers(const PencilTexturesParams& p, uint32_t seed, i
 }
 
 void PencilTexturesStage::make(const Scene& scene, Preprocessed& out) {
-  out.pencil_stack = pencil_layers(scene.params.get<PencilTexturesParams>(), scene.seed);
+  out.put(kPencilStack, pencil_layers(scene.params.get<PencilTexturesParams>(), scene.seed));
 }
 
 }  // namespace plumbago

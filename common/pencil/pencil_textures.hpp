@@ -54,12 +54,14 @@ float graphite_update(const PencilTexturesParams& p, float c_t, float c_s);
 float layer_target(const PencilTexturesParams& p, int layer);
 
 struct Preprocessed;
+inline constexpr Slot<std::vector<Image>> kPencilStack{"pencil_textures.stack"};  // white first
+
 struct PencilTexturesStage {
   using Params = TypeList<PencilTexturesParams>;
   static void make(const Scene& scene, Preprocessed& out);
   static StageDesc describe() {
     return preprocessing_stage("pencil_textures", "the pencil tone stack (SPEC 1.2, Lee Eq. 3-4)", {"pencil_textures"},
-                               {{"stack", 1, Texel::Host, "the layers, white first"}}, make);
+                               {{kPencilStack, 1, Texel::Host, "the layers, white first"}}, make);
   }
 };
 

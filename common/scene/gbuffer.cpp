@@ -79,22 +79,22 @@ void add_gbuffer_buffers(const GBuffer& g, std::map<std::string, Image>& out, co
   out[prefix + ".ids"] = ids;
 }
 
-std::vector<Output> gbuffer_outputs(bool with_angles) {
+std::vector<Output> gbuffer_outputs(const GBufferSlot& g, bool with_angles) {
   const char* interior = "raster vs ray on interior pixels; the band along depth discontinuities excluded";
   const char* same = "raster vs ray on interior pixels that both backends give the same triangle";
   std::vector<Output> out = {
-      {"normal", 3, Texel::Float, "unit view-space shading normal", tolerance::kNormal, interior, ParityMask::Interior},
-      {"face_normal", 3, Texel::Float, "unit view-space geometric normal", tolerance::kNormal, same,
+      {g.normal, 3, Texel::Float, "unit view-space shading normal", tolerance::kNormal, interior, ParityMask::Interior},
+      {g.face_normal, 3, Texel::Float, "unit view-space geometric normal", tolerance::kNormal, same,
        ParityMask::SameTriangle},
-      {"depth", 1, Texel::Float, "linear view depth (dumps: normalized)", tolerance::kDepth, interior,
+      {g.depth, 1, Texel::Float, "linear view depth (dumps: normalized)", tolerance::kDepth, interior,
        ParityMask::Interior},
-      {"ids", 2, Texel::Uint, "object index + 1, triangle index", 0, "coverage: the band's share is reported"},
-      {"bary", 3, Texel::Float, "barycentrics", tolerance::kBary, same, ParityMask::SameTriangle},
-      {"gouraud", 1, Texel::Float, "Gouraud intensity (SPEC 2.5)", tolerance::kNormal, interior, ParityMask::Interior},
-      {"theta_min", 3, Texel::Float, "corner angles of the min-curvature direction (SPEC 2.7)", tolerance::kAngle,
+      {g.ids, 2, Texel::Uint, "object index + 1, triangle index", 0, "coverage: the band's share is reported"},
+      {g.bary, 3, Texel::Float, "barycentrics", tolerance::kBary, same, ParityMask::SameTriangle},
+      {g.gouraud, 1, Texel::Float, "Gouraud intensity (SPEC 2.5)", tolerance::kNormal, interior, ParityMask::Interior},
+      {g.theta_min, 3, Texel::Float, "corner angles of the min-curvature direction (SPEC 2.7)", tolerance::kAngle,
        "(cos, sin) of each corner's angle; interior pixels on the same triangle", ParityMask::SameTriangle,
        ParityValue::Angles},
-      {"theta_max", 3, Texel::Float, "corner angles of the max-curvature direction (SPEC 2.7)", tolerance::kAngle,
+      {g.theta_max, 3, Texel::Float, "corner angles of the max-curvature direction (SPEC 2.7)", tolerance::kAngle,
        "(cos, sin) of each corner's angle; interior pixels on the same triangle", ParityMask::SameTriangle,
        ParityValue::Angles},
   };

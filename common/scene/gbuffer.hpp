@@ -61,13 +61,15 @@ Image normalized_depth(const GBuffer& g);
 // The channels of a G-buffer as outputs of a stage (dumps hold the normalized depth), each
 // saying how parity compares raster against ray (SPEC 5); the corner angles of SPEC 2.7
 // `with_angles`.
-std::vector<Output> gbuffer_outputs(bool with_angles);
+std::vector<Output> gbuffer_outputs(const GBufferSlot& g, bool with_angles);
+
+inline constexpr GBufferSlot kGBuffer{"gbuffer", {"gbuffer.normal"}, {"gbuffer.face_normal"}, {"gbuffer.depth"}, {"gbuffer.ids"}, {"gbuffer.bary"}, {"gbuffer.gouraud"}, {"gbuffer.theta_min"}, {"gbuffer.theta_max"}};
 
 struct GBufferStage {
   using Params = TypeList<GBufferParams>;
   static StageDesc describe() {
     return {"gbuffer", StageKind::Frame, "G-buffer: normals, depth, ids, barycentrics, Gouraud (SPEC 2.1)",
-            {"gbuffer", "interior"}, {{"curvature.principal", when::effect_interior}}, gbuffer_outputs(true)};
+            {"gbuffer", "interior"}, {{kCurvature, when::effect_interior}}, gbuffer_outputs(kGBuffer, true)};
   }
 };
 

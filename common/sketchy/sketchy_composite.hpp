@@ -7,8 +7,15 @@
 
 #include "common/sketchy/sketchy.hpp"
 #include "common/core/stage.hpp"
+#include "common/sketchy/sketchy_maps.hpp"
+#include "common/sketchy/sketchy_enlarged.hpp"
+#include "common/sketchy/sketchy_noise.hpp"
+#include "common/pencil/compose.hpp"
 
 namespace plumbago {
+
+inline constexpr Buffer kSketchColor{"sketchy_composite.color"};
+inline constexpr Buffer kSketchDepth{"sketchy_composite.depth"};
 
 struct SketchyCompositeStage {
   using Params = TypeList<SketchyParams>;
@@ -16,16 +23,16 @@ struct SketchyCompositeStage {
   static StageDesc describe() {
     StageDesc d{"sketchy_composite", StageKind::Frame,
                 "perturbed edges and shade, drawn as a depth sprite over the ordinary objects (SPEC 3.2-3.4)", {"sketchy"},
-                {{"sketchy_maps.edge"}, {"sketchy_maps.shade"}, {"sketchy_gbuffer.depth"}, {"sketchy_noise.textures"},
-                 {"sketchy_enlarged.noise_coordinates", object_style}, {"compose.color", when::pencil_effects, false},
-                 {"gbuffer.depth", when::ordinary_drawn, false}},
-                {{"color", 3, Texel::Unorm8, "the sketch over what the ordinary objects drew", tolerance::kByte,
+                {{kSketchyEdge}, {kSketchyShade}, {kSketchyGBuffer.depth}, {kSketchyNoise},
+                 {kNoiseCoordinates, object_style}, {kComposeColor, when::pencil_effects, false},
+                 {kGBuffer.depth, when::ordinary_drawn, false}},
+                {{kSketchColor, 3, Texel::Unorm8, "the sketch over what the ordinary objects drew", tolerance::kByte,
                   "fed the same maps, sketchy G-buffer, noise and noise coordinates; 8-bit target"},
-                 {"depth", 1, Texel::Float, "the sprite's normalized depth where the sketch was drawn, 1 elsewhere",
+                 {kSketchDepth, 1, Texel::Float, "the sprite's normalized depth where the sketch was drawn, 1 elsewhere",
                   tolerance::kFloat, "fed the same maps, sketchy G-buffer, noise and noise coordinates; float target"}},
                 {"sketchy"}};
     d.outputs[0].frame_color = true;
-    d.outputs[0].draws_over = {"compose.color"};
+    d.outputs[0].draws_over = {kComposeColor.name};
     d.declared_effects = {{"sketchy", "sketchy drawing of the objects whose style is sketchy (Nienhaus & Doellner 2004); "
                                       "on by itself when one is", true}};
     return d;

@@ -6,12 +6,14 @@
 
 namespace plumbago {
 
+inline constexpr Buffer kNoiseCoordinates{"sketchy_enlarged.noise_coordinates"};
+
 struct SketchyEnlargedStage {
   using Params = TypeList<>;
   static StageDesc describe() {
     return {"sketchy_enlarged", StageKind::Frame, "noise coordinates on the enlarged sketchy objects (SPEC 3.5, object style)",
             {"sketchy"}, {},
-            {{"noise_coordinates", 4, Texel::Float, "noise coordinate, alpha = coverage", tolerance::kBary,
+            {{kNoiseCoordinates, 4, Texel::Float, "noise coordinate, alpha = coverage", tolerance::kBary,
               "raster vs ray on the enlarged objects; pixels covered with their 3x3 neighborhood in both; "
               "tolerance of the barycentrics (the coordinates are below 1)",
               ParityMask::Covered}}};

@@ -7,11 +7,13 @@
 
 namespace plumbago {
 
+inline constexpr GBufferSlot kSketchyGBuffer{"sketchy_gbuffer", {"sketchy_gbuffer.normal"}, {"sketchy_gbuffer.face_normal"}, {"sketchy_gbuffer.depth"}, {"sketchy_gbuffer.ids"}, {"sketchy_gbuffer.bary"}, {"sketchy_gbuffer.gouraud"}, {"sketchy_gbuffer.theta_min"}, {"sketchy_gbuffer.theta_max"}};
+
 struct SketchyGBufferStage {
   using Params = TypeList<>;
   static StageDesc describe() {
     return {"sketchy_gbuffer", StageKind::Frame, "G-buffer of the objects whose style is sketchy (SPEC 3.1)", {"gbuffer"}, {},
-            gbuffer_outputs(false)};
+            gbuffer_outputs(kSketchyGBuffer, false)};
   }
 };
 

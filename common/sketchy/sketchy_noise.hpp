@@ -9,13 +9,16 @@ namespace plumbago {
 
 struct Scene;
 struct Preprocessed;
+struct SketchyNoise;
+inline constexpr Slot<SketchyNoise> kSketchyNoise{"sketchy_noise.textures"};
+
 struct SketchyNoiseStage {
   using Params = TypeList<NoiseTextureParams>;
   static void make(const Scene& scene, Preprocessed& out);
   static StageDesc describe() {
     return preprocessing_stage("sketchy_noise", "noise textures of the sketchy uncertainty (SPEC 3.2, 3.5)",
                                {"noise", "sketchy"},
-                               {{"textures", 2, Texel::Host, "2D Perlin, white noise or 3D Perlin, as the style reads"}}, make);
+                               {{kSketchyNoise, 2, Texel::Host, "2D Perlin, white noise or 3D Perlin, as the style reads"}}, make);
   }
 };
 

@@ -17,6 +17,7 @@
 #include "common/util/image.hpp"
 #include "common/scene/scene.hpp"
 #include "common/core/stage.hpp"
+#include "common/scene/gbuffer.hpp"
 
 namespace plumbago {
 
@@ -60,12 +61,14 @@ struct TriangleShades {
 };
 TriangleShades triangle_shades(const Scene& scene, const BaseCoatParams& p);
 
+inline constexpr Buffer kCoat{"basecoat.coat"};
+
 struct BaseCoatStage {
   using Params = TypeList<BaseCoatParams>;
   static StageDesc describe() {
     StageDesc d{"basecoat", StageKind::Frame, "toon or solid base coat from a 1D texture (SPEC 4.1, Kalnins §4.2)",
-                {"basecoat"}, {{"gbuffer.ids"}, {"gbuffer.bary"}},
-                {{"coat", 4, Texel::Unorm8, "T(s), straight alpha, on the stroke objects; 0 elsewhere", tolerance::kByte,
+                {"basecoat"}, {{kGBuffer.ids}, {kGBuffer.bary}},
+                {{kCoat, 4, Texel::Unorm8, "T(s), straight alpha, on the stroke objects; 0 elsewhere", tolerance::kByte,
                   "fed the same G-buffer and per-vertex s; bilinear lookup of the 1D texture; 8-bit target"}},
                 {"basecoat"}};
     d.declared_effects = {{"basecoat", "the base coat of the objects whose style is strokes (Kalnins 2002 §4.2), through "

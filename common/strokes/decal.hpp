@@ -82,10 +82,9 @@ struct ProjectedDecal {
 glm::dvec3 decal_point_local(const Scene& scene, const DecalPoint& p);
 glm::dvec3 decal_point_world(const Scene& scene, const DecalPoint& p);
 
-// One per decal stroke, in decal_samples' order: what a backend projects once and keeps
-// (HostData "decals.surface", kDecalSurface).
+// One per decal stroke, in decal_samples' order: what a backend projects (the GPU once per
+// renderer, the reference by rays each frame) and hands window_lines.
 using DecalSurface = std::vector<ProjectedDecal>;
-inline constexpr const char* kDecalSurface = "decals.surface";
 
 // The ray of window point p of `file`'s camera (SPEC 0): from the eye, unit direction.
 struct DecalRay {

@@ -55,15 +55,23 @@ ImageU32 keys_from_channels(const Image& channels);
 // backends may keep either: a depth tie (reference/strokes/id_image.cpp).
 constexpr double kDepthTie = 1e-5;
 
+inline constexpr Buffer kIds{"id_image.ids"};
+// The frame's lines in the window: feature lines, decals and hatching (common/strokes/strokes.hpp).
+inline constexpr Slot<WindowLines> kWindowLines{"id_image.lines"};
+// Reference only: where rounding decides the ID (what the parity bound of kIds reads).
+inline constexpr Slot<Image> kAmbiguousIds{"id_image.ambiguous"};
+
 struct IdImageStage {
   using Params = TypeList<StrokesParams, HatchingParams>;
   static StageDesc describe() {
     return {"id_image", StageKind::Frame, "ID reference image: faces, crease and silhouette quads (SPEC 4.4)", {"strokes"},
             {},
-            {{"ids", 2, Texel::Uint, "the key, as (key >> 16, key & 0xffff)", 0.0,
+            {{kIds, 2, Texel::Uint, "the key, as (key >> 16, key & 0xffff)", 0.0,
               "the same triangles, rasterized with the same rules: exact except where rounding decides, which a derived "
               "bound allows and the note counts: depth ties (the nearest surfaces within 1e-5 relative plus a subpixel "
-              "of z slope) and edges within a subpixel of the pixel center (torus 800x600: 453 px, 0.09%)"}},
+              "of z slope) and edges within a subpixel of the pixel center (torus 800x600: 453 px, 0.09%)"},
+             {kWindowLines, 0, Texel::Host, "the lines in the window, their keys and surface points (CPU)"},
+             {kAmbiguousIds, 1, Texel::Host, "reference only: 1 where rounding decides the key"}},
             {"strokes"}};
   }
 };

@@ -5,7 +5,6 @@
 #include <map>
 #include <string>
 
-#include "common/core/host_data.hpp"
 #include "common/strokes/offset_synthesis.hpp"
 #include "common/strokes/stroke_textures.hpp"
 
@@ -96,9 +95,7 @@ std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visib
   return out;
 }
 
-std::map<std::string, double> stroke_counts(const HostData& host) {
-  const Visibility* v = host.find<Visibility>("visibility");
-  const WindowLines* lines = host.find<WindowLines>("strokes.lines");
+std::map<std::string, double> stroke_counts(const WindowLines* lines, const Visibility* v) {
   std::map<std::string, double> out;
   if (!v || !lines) return out;
   out["strokes"] = double(v->runs.size());

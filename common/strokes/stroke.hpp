@@ -21,6 +21,7 @@
 #include "common/strokes/offset_synthesis.hpp"
 #include "common/core/stage.hpp"
 #include "common/strokes/visibility.hpp"
+#include "common/strokes/stroke_paper.hpp"
 
 namespace plumbago {
 
@@ -72,12 +73,16 @@ std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visib
 // The strokes a frame draws: its visible runs per line kind, keyed "strokes.<kind>", and
 // their sum, "strokes" (what Kalnins et al.'s Table 1 counts); per hatching group N,
 // "hatching.groupN.sigma" and "hatching.groupN.level" (from + progress (to - from), SPEC
-// 4.10); empty when the frame's `host` data holds no visibility.
-class HostData;
-std::map<std::string, double> stroke_counts(const HostData& host);
+// 4.10); empty without lines or visible runs (a frame without strokes).
+std::map<std::string, double> stroke_counts(const WindowLines* lines, const Visibility* v);
 
 // The stroke textures, one per StrokeTextureKind, from the scene seed.
 std::vector<Image> stroke_texture_layers(uint32_t seed);
+
+inline constexpr Buffer kStrokeColor{"stroke.color"};
+// Reference only: what the parity bound of kStrokeColor reads.
+inline constexpr Slot<Image> kStrokeFragments{"stroke.fragments"};
+inline constexpr Slot<Image> kRibbonEdges{"stroke.ribbon_edges"};
 
 struct StrokeStage {
   using Params = TypeList<>;
@@ -87,15 +92,17 @@ struct StrokeStage {
         StageKind::Frame,
         "stylized strokes of the visible feature lines (SPEC 4.6-4.7)",
         {"stroke_paper"},
-        {{"visibility.flags", nullptr, false}, {"stroke_paper.color"}, {"paper.height"}},
-        {{"color", 3, Texel::Unorm8, "the strokes over the page", tolerance::kByte,
+        {{kWindowLines}, {kVisibleRuns}, {kPage}, {kPaperHeight}},
+        {{kStrokeColor, 3, Texel::Unorm8, "the strokes over the page", tolerance::kByte,
           "fed the same page, visible runs and paper; the same triangles; the GPU filters the stroke texture with "
           "8-bit weights and blends each fragment into an 8-bit target: a derived bound allows 4.5/255 per "
           "fragment less the tolerance, and anything in the 1-px band where a ribbon's edge passes within a "
-          "subpixel of the pixel center (measured max 0.0128 on the teapot where ribbons overlap)"}},
+          "subpixel of the pixel center (measured max 0.0128 on the teapot where ribbons overlap)"},
+         {kStrokeFragments, 1, Texel::Host, "reference only: fragments per pixel"},
+         {kRibbonEdges, 1, Texel::Host, "reference only: 1 where a ribbon edge passes near the pixel center"}},
         {"strokes"}};
     d.outputs[0].frame_color = true;
-    d.outputs[0].draws_over = {"stroke_paper.color"};
+    d.outputs[0].draws_over = {kPage.name};
     return d;
   }
 };

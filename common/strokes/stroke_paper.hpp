@@ -22,6 +22,9 @@
 #include "common/scene/scene.hpp"
 
 #include "common/core/stage.hpp"
+#include "common/strokes/basecoat.hpp"
+#include "common/sketchy/sketchy_composite.hpp"
+#include "common/pencil/paper.hpp"
 
 namespace plumbago {
 
@@ -60,21 +63,23 @@ inline std::vector<uint32_t> stroke_object_flags(const Scene& ordinary) {
   return flags;
 }
 
+inline constexpr Buffer kPage{"stroke_paper.color"};
+
 struct StrokePaperStage {
   using Params = TypeList<StrokePaperParams>;
   static StageDesc describe() {
     StageDesc d{"stroke_paper", StageKind::Frame,
                 "the stroke objects' page: the base coat through the paper effect (SPEC 4.2)", {"stroke_paper"},
-                {{"basecoat.coat", when::effect_basecoat}, {"paper.height"}, {"gbuffer.ids"},
-                 {"compose.color", when::pencil_effects, false},
-                 {"sketchy_composite.color", when::effect_sketchy, false},
-                 {"sketchy_composite.depth", when::effect_sketchy, false}},
-                {{"color", 3, Texel::Unorm8, "the page with the coat over the stroke objects", tolerance::kByte,
+                {{kCoat, when::effect_basecoat}, {kPaperHeight}, {kGBuffer.ids},
+                 {kComposeColor, when::pencil_effects, false},
+                 {kSketchColor, when::effect_sketchy, false},
+                 {kSketchDepth, when::effect_sketchy, false}},
+                {{kPage, 3, Texel::Unorm8, "the page with the coat over the stroke objects", tolerance::kByte,
                   "fed the same coat and paper height; the GPU's coat is 8-bit: alpha off by half a step, doubled by the "
                   "transfer's slope, plus half an output step: 1.5/255 at most (measured 1.05/255)"}},
                 {"strokes"}};
     d.outputs[0].frame_color = true;
-    d.outputs[0].draws_over = {"sketchy_composite.color", "compose.color"};
+    d.outputs[0].draws_over = {kSketchColor.name, kComposeColor.name};
     d.declared_effects = {{"strokes", "stroke-based rendering of the objects whose style is strokes (Kalnins et al. 2002): "
                                       "paper, feature-line strokes; on by itself when one is", true}};
     return d;

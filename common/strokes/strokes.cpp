@@ -7,7 +7,6 @@
 #include <unordered_map>
 
 #include "common/strokes/decal.hpp"
-#include "common/core/host_data.hpp"
 
 namespace plumbago {
 
@@ -258,16 +257,5 @@ WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects
   return out;
 }
 
-const WindowLines& frame_lines(HostData& frame, HostData& kept, const Scene& scene) {
-  auto p = scene.params.get<StrokesParams>();
-  using Meshes = std::shared_ptr<const LineMeshes>;
-  const Meshes& meshes =
-      kept.get<Meshes>("strokes.meshes", [&] { return line_meshes(scene, p, LineObjects::Strokes); });
-  return frame.get<WindowLines>("strokes.lines", [&] {
-    const DecalSurface* decals = kept.find<DecalSurface>(kDecalSurface);
-    if (!decals && has_decals(scene)) throw std::logic_error("strokes: the decals were not projected (kDecalSurface)");
-    return window_lines(scene, p, LineObjects::Strokes, meshes.get(), decals);
-  });
-}
 
 }  // namespace plumbago

@@ -106,12 +106,6 @@ using DecalSurface = std::vector<ProjectedDecal>;  // common/strokes/decal.hpp
 WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which = LineObjects::Strokes,
                          const LineMeshes* prepared = nullptr, const DecalSurface* decals = nullptr);
 
-class HostData;
-// The frame's window lines of stroke objects, made once per frame into `frame`, from the
-// mesh data made once into `kept` (a renderer's store across frames; may be `frame`), and
-// the decals of the scene's stroke files from the surface points a backend projected into
-// `kept` (kDecalSurface; std::logic_error when the scene has decals and it did not).
-const WindowLines& frame_lines(HostData& frame, HostData& kept, const Scene& scene);
 
 // The window position and linear depth of a world point (SPEC 0), in double.
 struct WindowProjection {

@@ -33,6 +33,7 @@
 #include "common/util/image.hpp"
 #include "common/core/stage.hpp"
 #include "common/strokes/strokes.hpp"
+#include "common/strokes/id_image.hpp"
 
 namespace plumbago {
 
@@ -83,6 +84,9 @@ Visibility visible_runs(const WindowLines& lines, const StrokesParams& p, const 
 // The flags as the stage's output image: one texel per sample, row after row of 1024.
 Image flags_image(const std::vector<uint8_t>& flags);
 
+inline constexpr Buffer kFlags{"visibility.flags"};
+inline constexpr Slot<Visibility> kVisibleRuns{"visibility.runs"};
+
 struct VisibilityStage {
   using Params = TypeList<>;  // reads strokes.*, which the ID image declares
   static StageDesc describe() {
@@ -90,9 +94,10 @@ struct VisibilityStage {
                 StageKind::Frame,
                 "visibility of stroke samples from the ID image (SPEC 4.5)",
                 {"strokes"},
-                {{"id_image.ids"}},
-                {{"flags", 1, Texel::Unorm8, "1 where a sample is visible: one texel per sample, 1024 a row", 0.0,
-                  "fed the same ID image: the same integer test on both"}},
+                {{kIds}, {kWindowLines}},
+                {{kFlags, 1, Texel::Unorm8, "1 where a sample is visible: one texel per sample, 1024 a row", 0.0,
+                  "fed the same ID image: the same integer test on both"},
+                 {kVisibleRuns, 0, Texel::Host, "the visible runs of every path, ends bisected to 1 px (CPU)"}},
                 {"strokes"}};
     return d;
   }

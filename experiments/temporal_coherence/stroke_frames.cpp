@@ -5,6 +5,9 @@
 
 #include "common/scene/animation.hpp"
 #include "common/scene/gbuffer.hpp"
+#include "common/strokes/id_image.hpp"
+#include "common/strokes/stroke.hpp"
+#include "common/strokes/visibility.hpp"
 #include "experiments/shower_door/surface_motion.hpp"
 #include "reference/core/pipeline.hpp"
 
@@ -38,12 +41,12 @@ StrokeFrame render_stroke_frame(const Scene& study, int t) {
   Scene s = scene_at_frame(study, t);
   std::vector<PassTime> ran;
   reference::ReferenceFrame f = reference::run_stages(s, ran);
-  const Visibility* visibility = f.host.find<Visibility>("visibility");
+  const Visibility* visibility = f.get(maybe(kVisibleRuns));
   if (!visibility) throw std::logic_error("the stroke stages did not run");
-  const WindowLines& lines = frame_lines(f.host, f.host, f.scene);
+  const WindowLines& lines = f.get(kWindowLines);
   std::vector<RunStroke> strokes = run_strokes(lines, *visibility, s.strokes, s.seed);
-  return {frame_strokes(s.camera, s.width, s.height, lines, *visibility, strokes), f.image("stroke.color"),
-          shower_door::surface_points(world_geometry(f.ordinary), f.gbuffer("gbuffer"))};
+  return {frame_strokes(s.camera, s.width, s.height, lines, *visibility, strokes), f.get(kStrokeColor),
+          shower_door::surface_points(world_geometry(f.ordinary), f.get(kGBuffer))};
 }
 
 }  // namespace plumbago::temporal_coherence

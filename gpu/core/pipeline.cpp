@@ -5,7 +5,9 @@
 #include "common/core/passes.hpp"
 #include "common/core/preprocess.hpp"
 #include "common/sketchy/sketchy.hpp"
+#include "common/strokes/id_image.hpp"
 #include "common/strokes/stroke.hpp"
+#include "common/strokes/visibility.hpp"
 #include "gpu/gl/context.hpp"
 #include "gpu/core/stage.hpp"
 #include "gpu/gl/timer.hpp"
@@ -25,15 +27,15 @@ struct Renderer::State {
         pre(made ? std::move(made) : std::make_shared<const Preprocessed>(preprocess(ordinary_objects(scene), all))),
         frame(scene, *pre, frame_stages(all)),
         plan(plan_passes(frame.stages, frame.config())) {
-    for (const GpuPassDef* def : plan) passes.push_back(def->make(frame));
+    for (const GpuPassDef* def : plan) passes.push_back(make_checked(*def, frame));
   }
 
   void run_frame() {
-    frame.host = {};  // CPU data of the frame (the window lines ...) is made anew each frame
+    frame.data.clear();  // CPU data of the frame (the window lines ...) is made anew each frame
     for (size_t i = 0; i < plan.size(); ++i) {
       const std::string name = plan[i]->name();
       timer.begin(name);
-      passes[i]->run(frame);
+      run_checked(*plan[i], *passes[i], frame);
       timer.end();
       Context::get().check_errors(name);
     }
@@ -89,10 +91,10 @@ Frame Renderer::render(const FrameOptions& options) {
   Stopwatch readback;
   std::string color = frame_color_buffer(state_->frame.stages);  // none without effects: the blank page
   const Scene& scene = state_->frame.scene;
-  frame.color = color.empty() ? Image(scene.width, scene.height, 3, 1.0f) : download_texture(state_->frame.output(color), 3);
+  frame.color = color.empty() ? Image(scene.width, scene.height, 3, 1.0f) : download_texture(state_->frame.texture_named(color), 3);
   frame.ran.push_back({"readback", readback.ms()});
   if (options.keep_buffers) frame.buffers = state_->dump();
-  frame.counts = stroke_counts(state_->frame.host);
+  frame.counts = stroke_counts(state_->frame.data.find(kWindowLines), state_->frame.data.find(kVisibleRuns));
   Context::get().check_errors("reading back the frame");
   return frame;
 }

@@ -35,19 +35,40 @@ bool GpuFrame::ran(const std::string& stage) const {
   return contains(stages, stage);
 }
 
-Texture& GpuFrame::output(const std::string& name) {
+Texture& GpuFrame::texture_named(const std::string& name) {
   const Output& declared = find_output(name);
-  if (std::string under = drawn_over(declared, stages); !under.empty()) return output(under);
+  if (std::string under = drawn_over(declared, stages); !under.empty()) return texture_named(under);
   auto it = textures_.find(name);
   if (it == textures_.end())
     it = textures_.emplace(name, make_texture(scene.width, scene.height, texture_format(declared))).first;
   return it->second;
 }
 
-const Texture& GpuFrame::input(const std::string& name) const {
-  auto it = textures_.find(name);
-  if (it == textures_.end()) throw std::logic_error("GPU frame: no pass wrote '" + name + "'");
-  return it->second;
+Texture& GpuFrame::put(plumbago::Buffer buffer) {
+  checked(buffer.name);
+  return texture_named(buffer.name);
+}
+
+void GpuFrame::put(plumbago::Buffer buffer, Texture texture) { textures_[buffer.name] = std::move(texture); }
+
+const Texture* GpuFrame::get(Maybe<plumbago::Buffer> buffer) const {
+  checked(buffer.handle.name);
+  auto it = textures_.find(buffer.handle.name);
+  return it == textures_.end() ? nullptr : &it->second;
+}
+
+const Texture& GpuFrame::get(plumbago::Buffer buffer) const {
+  if (const Texture* t = get(maybe(buffer))) return *t;
+  throw std::logic_error(std::string("GPU frame: no pass wrote '") + buffer.name + "'");
+}
+
+void GpuFrame::put(GBufferSlot gbuffer, const GBufferTargets& targets) { shared_[gbuffer.name] = &targets; }
+
+const GBufferTargets& GpuFrame::get(GBufferSlot gbuffer) const {
+  checked(gbuffer.name);
+  auto it = shared_.find(gbuffer.name);
+  if (it == shared_.end()) throw std::logic_error(std::string("GPU frame: no pass made the G-buffer '") + gbuffer.name + "'");
+  return *std::any_cast<const GBufferTargets*>(it->second);
 }
 
 void GpuFrame::read_gbuffer(const std::string& stage, const GBufferChannels& c) {
@@ -75,8 +96,22 @@ void GpuPass::dump(GpuFrame& f, const std::vector<std::string>& stages, std::map
   for (const std::string& name : stages) {
     const StageDesc& stage = find_stage(name);
     for (const Output* o : outputs_written(stage, f.config()))
-      out[stage.output_name(*o)] = download_texture(f.output(stage.output_name(*o)), o->channels);
+      if (o->texel != Texel::Host)
+        out[stage.output_name(*o)] = download_texture(f.texture_named(stage.output_name(*o)), o->channels);
   }
+}
+
+std::unique_ptr<GpuPass> make_checked(const GpuPassDef& def, GpuFrame& f) {
+  f.running = def.stages;
+  std::unique_ptr<GpuPass> pass = def.make(f);
+  f.running.clear();
+  return pass;
+}
+
+void run_checked(const GpuPassDef& def, GpuPass& pass, GpuFrame& f) {
+  f.running = def.stages;
+  pass.run(f);
+  f.running.clear();
 }
 
 std::string GpuPassDef::name() const {

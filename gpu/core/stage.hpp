@@ -19,7 +19,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "common/core/host_data.hpp"
+#include "common/core/handle.hpp"
 #include "common/core/preprocess.hpp"
 #include "common/scene/scene.hpp"
 #include "common/core/stage.hpp"
@@ -28,6 +28,9 @@
 
 namespace plumbago::gpu {
 
+// The data of one frame, by handle (common/core/handle.hpp). While a pass is made or runs
+// (`running` holds its stages), every read of a Buffer, G-buffer or Slot is checked against
+// its stages' descriptors: an undeclared read is a std::logic_error naming it.
 class GpuFrame {
  public:
   GpuFrame(const Scene& scene, const Preprocessed& pre, std::vector<std::string> stages);
@@ -37,8 +40,7 @@ class GpuFrame {
   const Preprocessed& pre;
   const std::vector<std::string> stages;  // the frame stages that run
   bool dump = false;  // a dump writes every output, the skipped ones too, in the whole window
-  HostData host;     // CPU data the stages share this frame (common/core/host_data.hpp)
-  HostData kept;     // CPU data kept across the renderer's frames (what does not depend on the view)
+  std::vector<std::string> running;  // the stages of the pass made or run now (none: pipeline, parity)
 
   template <class P>
   P params() const {
@@ -48,39 +50,66 @@ class GpuFrame {
   // Whether `stage` runs in this frame; throws std::logic_error for a name no stage has.
   bool ran(const std::string& stage) const;
 
-  // A declared output's texture, made on first use at the window's size in the declared
-  // format; an output drawn over another (Output::draws_over) is that one's texture where
+  // An output's render target, made on first use at the window's size in the declared
+  // format; an output drawn over another (Output::draws_over) is that one's target where
   // its stage runs.
-  Texture& output(const std::string& name);
-  // An output that a frame skips writing: its texture in a dump, else null.
-  Texture* dumped_output(const std::string& name) { return dump ? &output(name) : nullptr; }
+  Texture& put(plumbago::Buffer buffer);
+  void put(plumbago::Buffer buffer, Texture texture);  // parity: an input made elsewhere
   // An output some pass wrote (or parity uploaded); throws std::logic_error naming it.
-  const Texture& input(const std::string& name) const;
-  bool has(const std::string& name) const { return textures_.count(name) != 0; }
-  void set_output(const std::string& name, Texture texture) { textures_[name] = std::move(texture); }
+  const Texture& get(plumbago::Buffer buffer) const;
+  const Texture* get(Maybe<plumbago::Buffer> buffer) const;  // null where not written
 
-  // What passes share besides textures (a G-buffer's targets, its depth buffer), by name.
+  void put(GBufferSlot gbuffer, const GBufferTargets& targets);
+  const GBufferTargets& get(GBufferSlot gbuffer) const;
+
   template <class T>
-  void share(const std::string& name, T& object) {
-    shared_[name] = const_cast<std::remove_const_t<T>*>(&object);  // a reader asks for const or not
+  void put(Shared<T> shared, const T& object) {
+    shared_[shared.name] = &object;
   }
   template <class T>
-  T* find_shared(const std::string& name) const {
-    auto it = shared_.find(name);
-    return it == shared_.end() ? nullptr : std::any_cast<std::remove_const_t<T>*>(it->second);
+  const T* get(Maybe<Shared<T>> shared) const {
+    auto it = shared_.find(shared.handle.name);
+    return it == shared_.end() ? nullptr : std::any_cast<const T*>(it->second);
   }
   template <class T>
-  T& shared(const std::string& name) const {
-    if (T* object = find_shared<T>(name)) return *object;
-    throw std::logic_error("GPU frame: no pass made '" + name + "'");
+  const T& get(Shared<T> shared) const {
+    if (const T* object = get(maybe(shared))) return *object;
+    throw std::logic_error(std::string("GPU frame: no pass made '") + shared.name + "'");
   }
+
+  // CPU data: the frame's (made anew each frame), else preprocessing's.
+  template <class T>
+  void put(Slot<T> slot, T value) {
+    checked(slot.name);
+    data.put(slot, std::make_shared<const T>(std::move(value)));
+  }
+  template <class T>
+  const T* get(Maybe<Slot<T>> slot) const {
+    checked(slot.handle.name);
+    const T* value = data.find(slot.handle);
+    return value ? value : pre.get(slot);
+  }
+  template <class T>
+  const T& get(Slot<T> slot) const {
+    if (const T* value = get(maybe(slot))) return *value;
+    throw std::logic_error(std::string("GPU frame: no stage made '") + slot.name + "'");
+  }
+
+  // The dumps' and the frame color's access by a descriptor's name (not for stages).
+  Texture& texture_named(const std::string& name);
 
   // What the frame's passes sample of a G-buffer ("gbuffer", "sketchy_gbuffer"): each
   // pass says so when it is made, and the G-buffer writes only that (a dump: everything).
   void read_gbuffer(const std::string& stage, const GBufferChannels& channels);
   GBufferChannels gbuffer_channels(const std::string& stage) const;
 
+  DataTable data;  // the frame's CPU data
+
  private:
+  void checked(const std::string& name) const {
+    if (!running.empty()) check_declared(running, name);
+  }
+
   std::map<std::string, Texture> textures_;
   std::map<std::string, std::any> shared_;
   std::map<std::string, GBufferChannels> gbuffer_reads_;
@@ -106,6 +135,10 @@ template <class Pass>
 std::unique_ptr<GpuPass> make_pass(GpuFrame& f) {
   return std::make_unique<Pass>(f);
 }
+
+// Makes and runs a pass with its reads checked against its stages' descriptors.
+std::unique_ptr<GpuPass> make_checked(const GpuPassDef& def, GpuFrame& f);
+void run_checked(const GpuPassDef& def, GpuPass& pass, GpuFrame& f);
 
 // Called by PLUMBAGO_GPU_PASS; throws std::logic_error for an unknown stage, a skipped
 // output its stages do not declare, or a pass registered twice.

@@ -65,23 +65,25 @@ namespace {
 class ComposeStagePass : public GpuPass {
  public:
   explicit ComposeStagePass(GpuFrame& f)
-      : paper_color_(f.pre.paper.color.empty() ? make_texture(1, 1, GL_RGBA32F)
-                                               : upload_texture(f.pre.paper.color, GL_RGBA32F)),
+      : paper_color_(f.get(maybe(kPaperColor)) ? upload_texture(f.get(kPaperColor), GL_RGBA32F)
+                                               : make_texture(1, 1, GL_RGBA32F)),
+        has_paper_(f.get(maybe(kPaperColor)) != nullptr),
         none_(make_texture(1, 1, GL_R32F)) {}
 
  protected:
   ComposeInputs inputs(const GpuFrame& f) const {
-    bool interior = f.has("pencil_interior.interior_darkness");
-    return {interior ? f.input("pencil_interior.interior_darkness") : none_, interior, paper_color_,
-            !f.pre.paper.color.empty()};
+    const Texture* interior = f.get(maybe(kInteriorDarkness));
+    return {interior ? *interior : none_, interior != nullptr, paper_color_, has_paper_};
   }
   // Where D_c or D_i can differ from 0: around the contours' reach, or the objects.
   PixelRect inside(const GpuFrame& f) const {
     if (f.dump) return {0, 0, f.scene.width, f.scene.height};
-    return f.ran("multi_contour") ? contour_rect(f.ordinary, f.pre.offset_grids) : filter_rect(f.ordinary, 0);
+    return f.ran("multi_contour") ? contour_rect(f.ordinary, f.get(kOffsetGrids)) : filter_rect(f.ordinary, 0);
   }
   ComposePass pass_;
-  Texture paper_color_, none_;
+  Texture paper_color_;
+  bool has_paper_;
+  Texture none_;
 };
 
 // The composition alone: of D_c where a pass wrote it (parity), else of no contours.
@@ -89,9 +91,9 @@ class ComposeAlonePass : public ComposeStagePass {
  public:
   using ComposeStagePass::ComposeStagePass;
   void run(GpuFrame& f) override {
-    bool contours = f.has("multi_contour.contour_darkness");
-    pass_.run(contours ? f.input("multi_contour.contour_darkness") : none_, contours, inputs(f),
-              f.params<ComposeParams>(), f.output("compose.color"), inside(f));
+    const Texture* contours = f.get(maybe(kCopiesDarkness));
+    pass_.run(contours ? *contours : none_, contours != nullptr, inputs(f), f.params<ComposeParams>(), f.put(kComposeColor),
+              inside(f));
   }
 };
 
@@ -101,10 +103,10 @@ class ContoursInComposePass : public ComposeStagePass {
  public:
   explicit ContoursInComposePass(GpuFrame& f) : ComposeStagePass(f), contour_inputs_(make_contour_inputs(f)) {}
   void run(GpuFrame& f) override {
-    ContourSources contours = contours_.prepare(f.input("contour_light.lit_contour_darkness"), contour_inputs_,
-                                                f.params<ContourParams>(), f.find_shared<Texture>("contour_blocks.marks"));
-    pass_.run(contours, inputs(f), f.params<ComposeParams>(), f.output("compose.color"), inside(f),
-              f.dumped_output("multi_contour.contour_darkness"));
+    ContourSources contours = contours_.prepare(f.get(kLitContourDarkness), contour_inputs_, f.params<ContourParams>(),
+                                                f.get(maybe(kContourBlockMarks)));
+    pass_.run(contours, inputs(f), f.params<ComposeParams>(), f.put(kComposeColor), inside(f),
+              f.dump ? &f.put(kCopiesDarkness) : nullptr);
   }
 
  private:
@@ -115,7 +117,7 @@ class ContoursInComposePass : public ComposeStagePass {
 }  // namespace
 
 PLUMBAGO_GPU_PASS(compose, {{"compose"}, {}, make_pass<ComposeAlonePass>});
-PLUMBAGO_GPU_PASS(multi_contour_compose, {{"multi_contour", "compose"}, {"multi_contour.contour_darkness"},
+PLUMBAGO_GPU_PASS(multi_contour_compose, {{"multi_contour", "compose"}, {kCopiesDarkness.name},
                                           make_pass<ContoursInComposePass>});
 
 }  // namespace plumbago::gpu

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "gpu/gl/gl_objects.hpp"
+#include "common/core/handle.hpp"
 
 namespace plumbago::gpu {
 
@@ -17,5 +18,6 @@ std::string contour_block_define();
 void fit_to_blocks(Texture& t, int width, int height);
 // The blocks' marks for a window: 1 where some d' > 0, else 0.
 Texture make_contour_block_marks(int width, int height);
+inline constexpr Shared<Texture> kContourBlockMarks{"contour_blocks.marks"};
 
 }  // namespace plumbago::gpu

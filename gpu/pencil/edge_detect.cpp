@@ -37,7 +37,7 @@ void EdgeDetectPass::run(const GBufferTargets& g, const EdgeDetectParams& p, con
 namespace {
 
 // Edge detection and contour lighting as a frame draws them: a frame writes only d'; the
-// blocks' marks when multiple contours are drawn (shared as "contour_blocks.marks").
+// blocks' marks when multiple contours are drawn (shared as kContourBlockMarks).
 class EdgeAndLightPass : public GpuPass {
  public:
   explicit EdgeAndLightPass(GpuFrame& f) {
@@ -49,13 +49,12 @@ class EdgeAndLightPass : public GpuPass {
     f.read_gbuffer("gbuffer", read);
     if (f.ran("multi_contour")) {
       marks_ = make_contour_block_marks(f.scene.width, f.scene.height);
-      f.share("contour_blocks.marks", marks_);
+      f.put(kContourBlockMarks, marks_);
     }
   }
   void run(GpuFrame& f) override {
-    pass_.run(f.shared<GBufferTargets>("gbuffer"), f.params<EdgeDetectParams>(), view_space_lights(f.scene),
-              f.params<ContourLightParams>(),
-              {f.output("contour_light.lit_contour_darkness"), f.dumped_output("edge_detect.contour_darkness"),
+    pass_.run(f.get(kGBuffer), f.params<EdgeDetectParams>(), view_space_lights(f.scene), f.params<ContourLightParams>(),
+              {f.put(kLitContourDarkness), f.dump ? &f.put(kContourDarkness) : nullptr,
                marks_.id() ? &marks_ : nullptr},
               filter_rect(f.ordinary, 1));
   }
@@ -67,6 +66,6 @@ class EdgeAndLightPass : public GpuPass {
 
 }  // namespace
 
-PLUMBAGO_GPU_PASS(edge_detect, {{"edge_detect", "contour_light"}, {"edge_detect.contour_darkness"}, make_pass<EdgeAndLightPass>});
+PLUMBAGO_GPU_PASS(edge_detect, {{"edge_detect", "contour_light"}, {kContourDarkness.name}, make_pass<EdgeAndLightPass>});
 
 }  // namespace plumbago::gpu

@@ -73,7 +73,7 @@ void MultiContourPass::run(const Texture& lit, const ContourInputs& in, const Co
 }
 
 ContourInputs make_contour_inputs(const GpuFrame& f) {
-  return make_contour_inputs(f.params<ContourParams>(), f.pre.offset_grids, f.pre.contour_texture, f.pre.texture_shifts,
+  return make_contour_inputs(f.params<ContourParams>(), f.get(kOffsetGrids), f.get(kContourTexture), f.get(kTextureShifts),
                              f.scene.width, f.scene.height);
 }
 
@@ -85,8 +85,8 @@ class MultiContourStagePass : public GpuPass {
  public:
   explicit MultiContourStagePass(GpuFrame& f) : inputs_(make_contour_inputs(f)) {}
   void run(GpuFrame& f) override {
-    pass_.run(f.input("contour_light.lit_contour_darkness"), inputs_, f.params<ContourParams>(),
-              f.output("multi_contour.contour_darkness"), contour_rect(f.ordinary, f.pre.offset_grids));
+    pass_.run(f.get(kLitContourDarkness), inputs_, f.params<ContourParams>(), f.put(kCopiesDarkness),
+              contour_rect(f.ordinary, f.get(kOffsetGrids)));
   }
 
  private:

@@ -42,9 +42,9 @@ namespace {
 class InteriorPass : public GpuPass {
  public:
   explicit InteriorPass(GpuFrame& f)
-      : stack_(upload_texture_3d(f.pre.pencil_stack, GL_R32F)),
-        paper_normal_(f.pre.paper.normal.empty() ? make_texture(1, 1, GL_RGBA32F)
-                                                 : upload_texture(f.pre.paper.normal, GL_RGBA32F)) {
+      : stack_(upload_texture_3d(f.get(kPencilStack), GL_R32F)),
+        paper_normal_(f.get(maybe(kPaperNormal)) ? upload_texture(f.get(kPaperNormal), GL_RGBA32F)
+                                                 : make_texture(1, 1, GL_RGBA32F)) {
     GBufferChannels read = GBufferChannels::none();
     read.normal = InteriorIntensityStage::phong(f.config());
     read.bary = true;  // w: the Gouraud intensity
@@ -54,10 +54,10 @@ class InteriorPass : public GpuPass {
   }
   void run(GpuFrame& f) override {
     std::vector<Light> lights = view_space_lights(f.scene);
-    pass_.run({f.shared<GBufferTargets>("gbuffer"), f.shared<const TriangleAngles>("gbuffer.triangle_angles"), lights,
+    pass_.run({f.get(kGBuffer), f.get(kTriangleAngles), lights,
                stack_, paper_normal_, interior_options(f.scene.effects)},
               f.params<InteriorParams>(), f.params<PaperParams>().mu_p,
-              {f.output("pencil_interior.interior_darkness"), f.dumped_output("interior_intensity.intensity")},
+              {f.put(kInteriorDarkness), f.dump ? &f.put(kIntensity) : nullptr},
               filter_rect(f.ordinary, 0));
   }
 
@@ -68,7 +68,7 @@ class InteriorPass : public GpuPass {
 
 }  // namespace
 
-PLUMBAGO_GPU_PASS(pencil_interior, {{"interior_intensity", "pencil_interior"}, {"interior_intensity.intensity"},
+PLUMBAGO_GPU_PASS(pencil_interior, {{"interior_intensity", "pencil_interior"}, {kIntensity.name},
                                     make_pass<InteriorPass>});
 
 }  // namespace plumbago::gpu

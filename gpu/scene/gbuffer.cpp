@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "common/sketchy/sketchy_gbuffer.hpp"
 #include "common/pencil/edge_detect.hpp"
 #include "common/pencil/interior_intensity.hpp"
 #include "common/mesh/mesh_topology.hpp"
@@ -358,22 +359,22 @@ namespace {
 // depth sprite is tested against) and its corner angles.
 class GBufferStagePass : public GpuPass {
  public:
-  GBufferStagePass(GpuFrame& f, std::string stage, const Scene& objects, const std::vector<Curvature>& curvature)
-      : stage_(std::move(stage)),
+  GBufferStagePass(GpuFrame& f, GBufferSlot stage, const Scene& objects, const std::vector<Curvature>& curvature)
+      : stage_(stage),
         pass_(objects, curvature),
         targets_(make_gbuffer_targets(f.scene.width, f.scene.height, f.params<GBufferParams>().normal_format)) {
-    f.share(stage_, targets_);
-    if (stage_ != "gbuffer") return;
-    f.share("gbuffer.depth_buffer", pass_.depth_buffer());
-    f.share("gbuffer.triangle_angles", pass_.triangle_angles());
+    f.put(stage_, targets_);
+    if (std::string(stage_.name) != kGBuffer.name) return;
+    f.put(kDepthBuffer, pass_.depth_buffer());
+    f.put(kTriangleAngles, pass_.triangle_angles());
   }
-  void run(GpuFrame& f) override { pass_.render(f.scene, targets_, f.gbuffer_channels(stage_)); }
+  void run(GpuFrame& f) override { pass_.render(f.scene, targets_, f.gbuffer_channels(stage_.name)); }
   void dump(GpuFrame&, const std::vector<std::string>&, std::map<std::string, Image>& out) override {
-    add_gbuffer_buffers(download_gbuffer(targets_), out, stage_);
+    add_gbuffer_buffers(download_gbuffer(targets_), out, stage_.name);
   }
 
  private:
-  std::string stage_;
+  GBufferSlot stage_;
   GBufferPass pass_;
   GBufferTargets targets_;
 };
@@ -381,10 +382,12 @@ class GBufferStagePass : public GpuPass {
 }  // namespace
 
 PLUMBAGO_GPU_PASS(gbuffer, {{"gbuffer"}, {}, [](GpuFrame& f) -> std::unique_ptr<GpuPass> {
-                              return std::make_unique<GBufferStagePass>(f, "gbuffer", f.ordinary, f.pre.curvature);
+                              const std::vector<Curvature>* curvature = f.get(maybe(kCurvature));
+                              return std::make_unique<GBufferStagePass>(f, kGBuffer, f.ordinary,
+                                                                        curvature ? *curvature : std::vector<Curvature>{});
                             }});
 PLUMBAGO_GPU_PASS(sketchy_gbuffer, {{"sketchy_gbuffer"}, {}, [](GpuFrame& f) -> std::unique_ptr<GpuPass> {
-                                      return std::make_unique<GBufferStagePass>(f, "sketchy_gbuffer", f.sketchy,
+                                      return std::make_unique<GBufferStagePass>(f, kSketchyGBuffer, f.sketchy,
                                                                                 std::vector<Curvature>{});
                                     }});
 

@@ -60,6 +60,10 @@ struct GBufferChannels {
 };
 
 // Uploads a scene's geometry once; render() draws it into targets of any size.
+// What the ordinary G-buffer's pass shares with later passes.
+inline constexpr Shared<Renderbuffer> kDepthBuffer{"gbuffer.depth_buffer"};  // a sketchy sprite's depth test
+inline constexpr Shared<TriangleAngles> kTriangleAngles{"gbuffer.triangle_angles"};
+
 class GBufferPass {
  public:
   // `curvature`: one per object for the corner angles of SPEC 2.7, or none.

@@ -95,18 +95,16 @@ namespace {
 class SketchyCompositeStagePass : public GpuPass {
  public:
   explicit SketchyCompositeStagePass(GpuFrame& f)
-      : noise_(upload_sketchy_noise(f.pre.sketchy_noise)), none_(make_texture(1, 1, GL_RGBA32F)) {
+      : noise_(upload_sketchy_noise(f.get(kSketchyNoise))), none_(make_texture(1, 1, GL_RGBA32F)) {
     GBufferChannels read = GBufferChannels::none();
     read.depth = true;  // read at the uncertainty's offsets
     read.read_region = {0, 0, f.scene.width, f.scene.height};
     f.read_gbuffer("sketchy_gbuffer", read);
   }
   void run(GpuFrame& f) override {
-    bool object = f.has("sketchy_enlarged.noise_coordinates");
-    pass_.run({f.input("sketchy_maps.edge"), f.input("sketchy_maps.shade"), f.shared<GBufferTargets>("sketchy_gbuffer"),
-               noise_, object ? f.input("sketchy_enlarged.noise_coordinates") : none_},
-              f.params<SketchyParams>(), f.output("sketchy_composite.color"),
-              f.find_shared<const Renderbuffer>("gbuffer.depth_buffer"), f.output("sketchy_composite.depth"),
+    const Texture* coordinates = f.get(maybe(kNoiseCoordinates));
+    pass_.run({f.get(kSketchyEdge), f.get(kSketchyShade), f.get(kSketchyGBuffer), noise_, coordinates ? *coordinates : none_},
+              f.params<SketchyParams>(), f.put(kSketchColor), f.get(maybe(kDepthBuffer)), f.put(kSketchDepth),
               composite_rect(f.sketchy, f.scene.width, f.scene.height));
   }
 

@@ -1,4 +1,5 @@
 #include "gpu/sketchy/sketchy_enlarged.hpp"
+#include "common/sketchy/sketchy_enlarged.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -73,7 +74,7 @@ namespace {
 class SketchyEnlargedStagePass : public GpuPass {
  public:
   explicit SketchyEnlargedStagePass(GpuFrame& f) : pass_(enlarged_scene(f.sketchy)) {}
-  void run(GpuFrame& f) override { pass_.render(f.scene.camera, f.output("sketchy_enlarged.noise_coordinates")); }
+  void run(GpuFrame& f) override { pass_.render(f.scene.camera, f.put(kNoiseCoordinates)); }
 
  private:
   SketchyEnlargedPass pass_;

@@ -43,8 +43,8 @@ class SketchyMapsStagePass : public GpuPass {
     f.read_gbuffer("sketchy_gbuffer", read);
   }
   void run(GpuFrame& f) override {
-    pass_.run(f.shared<GBufferTargets>("sketchy_gbuffer"), f.params<EdgeDetectParams>(), f.output("sketchy_maps.edge"),
-              f.output("sketchy_maps.shade"), filter_rect(f.sketchy, 1));
+    pass_.run(f.get(kSketchyGBuffer), f.params<EdgeDetectParams>(), f.put(kSketchyEdge), f.put(kSketchyShade),
+              filter_rect(f.sketchy, 1));
   }
 
  private:

@@ -26,11 +26,11 @@ class BaseCoatPass : public GpuPass {
     f.read_gbuffer("gbuffer", read);
   }
   void run(GpuFrame& f) override {
-    const GBufferTargets& g = f.shared<GBufferTargets>("gbuffer");
+    const GBufferTargets& g = f.get(kGBuffer);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, corners_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, first_.id());
     // Only the objects' rectangle runs the shader; outside it the coat is transparent.
-    pass_.draw_inside(program_, {{"ids", &g.ids}, {"bary", &g.bary}, {"coat", &texture_}}, {&f.output("basecoat.coat")},
+    pass_.draw_inside(program_, {{"ids", &g.ids}, {"bary", &g.bary}, {"coat", &texture_}}, {&f.put(kCoat)},
                       filter_rect(f.ordinary, 0), {glm::vec4(0.0f)});
   }
 

@@ -17,14 +17,17 @@ class IdImagePass : public GpuPass {
         fbo_(make_framebuffer()),
         empty_(make_vertex_array()),
         depth_(make_renderbuffer(f.scene.width, f.scene.height, GL_DEPTH_COMPONENT32F)) {
-    // The decals' surface points, projected once for the renderer's frames (SPEC 4.9).
-    if (has_decals(f.scene)) f.kept.put<DecalSurface>(kDecalSurface, project_decals_through_gbuffer(f.scene));
+    // The decals' surface points, projected once for the renderer's frames (Kalnins et al.
+    // 2002, §3), and the meshes' feature-line data (view-independent).
+    if (has_decals(f.scene)) decals_ = project_decals_through_gbuffer(f.scene);
   }
 
   void run(GpuFrame& f) override {
-    std::vector<IdVertex> triangles =
-        id_triangles(f.scene, frame_lines(f.host, f.kept, f.scene), f.params<StrokesParams>());
-    Texture& target = f.output("id_image.ids");
+    auto p = f.params<StrokesParams>();
+    if (!meshes_) meshes_ = line_meshes(f.scene, p, LineObjects::Strokes);
+    f.put(kWindowLines, window_lines(f.scene, p, LineObjects::Strokes, meshes_.get(), has_decals(f.scene) ? &decals_ : nullptr));
+    std::vector<IdVertex> triangles = id_triangles(f.scene, f.get(kWindowLines), p);
+    Texture& target = f.put(kIds);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target.id(), 0);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
@@ -55,6 +58,8 @@ class IdImagePass : public GpuPass {
   Framebuffer fbo_;
   VertexArray empty_;
   Renderbuffer depth_;
+  DecalSurface decals_;
+  std::shared_ptr<const LineMeshes> meshes_;
 };
 
 }  // namespace

@@ -14,16 +14,16 @@ class StrokePass : public GpuPass {
   explicit StrokePass(GpuFrame& f)
       : program_("strokes/stroke.vert", "strokes/stroke.frag", glsl_params<StrokePaperParams>()),
         textures_(upload_texture_3d(stroke_texture_layers(f.scene.seed), GL_R32F, GL_TEXTURE_2D_ARRAY)),
-        height_(upload_texture(f.pre.paper.height, GL_R32F)),
+        height_(upload_texture(f.get(kPaperHeight), GL_R32F)),
         fbo_(make_framebuffer()),
         empty_(make_vertex_array()) {
     set_sampling(textures_, GL_LINEAR, GL_REPEAT, GL_CLAMP_TO_EDGE);
   }
 
   void run(GpuFrame& f) override {
-    std::vector<StrokeVertex> v = stroke_triangles(frame_lines(f.host, f.kept, f.scene), *f.host.find<Visibility>("visibility"), f.scene.strokes, f.scene.seed);
-    Texture& target = f.output("stroke.color");
-    if (drawn_over(find_output("stroke.color"), f.stages).empty()) copy_page(f.input("stroke_paper.color"), target);
+    std::vector<StrokeVertex> v = stroke_triangles(f.get(kWindowLines), f.get(kVisibleRuns), f.scene.strokes, f.scene.seed);
+    Texture& target = f.put(kStrokeColor);
+    if (drawn_over(find_output(kStrokeColor.name), f.stages).empty()) copy_page(f.get(kPage), target);
     if (v.empty()) return;
     Buffer vertices = make_buffer(v.data(), v.size() * sizeof(StrokeVertex));
     program_.set_params(f.params<StrokePaperParams>());

@@ -14,7 +14,7 @@ class StrokePaperPass : public GpuPass {
  public:
   explicit StrokePaperPass(GpuFrame& f)
       : program_("util/fullscreen.vert", "strokes/stroke_paper.frag", glsl_params<StrokePaperParams>()),
-        height_(upload_texture(f.pre.paper.height, GL_R32F)),
+        height_(upload_texture(f.get(kPaperHeight), GL_R32F)),
         none_(upload_texture(Image(1, 1, 4), GL_RGBA8)) {
     std::vector<uint32_t> flags = stroke_object_flags(f.ordinary);
     flags.push_back(0);  // never empty
@@ -24,21 +24,21 @@ class StrokePaperPass : public GpuPass {
     f.read_gbuffer("gbuffer", read);
   }
   void run(GpuFrame& f) override {
-    Texture& target = f.output("stroke_paper.color");
-    if (drawn_over(find_output("stroke_paper.color"), f.stages).empty()) {
+    Texture& target = f.put(kPage);
+    if (drawn_over(find_output(kPage.name), f.stages).empty()) {
       const float white[4] = {1, 1, 1, 1};
       glClearTexImage(target.id(), 0, GL_RGBA, GL_FLOAT, white);
     }
-    bool coat = f.has("basecoat.coat"), sprite = f.has("sketchy_composite.depth");
-    glProgramUniform1i(program_.id(), program_.uniform("has_coat"), coat);
-    glProgramUniform1i(program_.id(), program_.uniform("has_sprite"), sprite);
+    const Texture *coat = f.get(maybe(kCoat)), *sprite = f.get(maybe(kSketchDepth));
+    glProgramUniform1i(program_.id(), program_.uniform("has_coat"), coat != nullptr);
+    glProgramUniform1i(program_.id(), program_.uniform("has_sprite"), sprite != nullptr);
     program_.set_params(f.params<StrokePaperParams>());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, strokes_.id());
     // Only where the G-buffer's objects can be: elsewhere every pixel keeps what is under.
     pass_.draw_inside(program_,
-                      {{"ids", &f.shared<GBufferTargets>("gbuffer").ids},
-                       {"coat", coat ? &f.input("basecoat.coat") : &none_},
-                       {"sprite_depth", sprite ? &f.input("sketchy_composite.depth") : &none_},
+                      {{"ids", &f.get(kGBuffer).ids},
+                       {"coat", coat ? coat : &none_},
+                       {"sprite_depth", sprite ? sprite : &none_},
                        {"paper_height", &height_}},
                       {&target}, filter_rect(f.ordinary, 0), {});
   }

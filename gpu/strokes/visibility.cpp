@@ -39,15 +39,15 @@ class VisibilityPass : public GpuPass {
   explicit VisibilityPass(GpuFrame&) {}
 
   void run(GpuFrame& f) override {
-    const Texture& ids = f.input("id_image.ids");
+    const Texture& ids = f.get(kIds);
     auto test = [&](const std::vector<VisibilitySample>& batch) { return test_(ids, batch); };
-    Visibility v = visible_runs(frame_lines(f.host, f.kept, f.scene), f.params<StrokesParams>(), test);
-    if (f.dump) f.set_output("visibility.flags", upload_texture(flags_image(v.flags), GL_RGBA8));
-    f.host.put("visibility", std::move(v));
+    Visibility v = visible_runs(f.get(kWindowLines), f.params<StrokesParams>(), test);
+    if (f.dump) f.put(kFlags, upload_texture(flags_image(v.flags), GL_RGBA8));
+    f.put(kVisibleRuns, std::move(v));
   }
 
   void dump(GpuFrame& f, const std::vector<std::string>&, std::map<std::string, Image>& out) override {
-    out["visibility.flags"] = download_texture(f.input("visibility.flags"), 1);
+    out[kFlags.name] = download_texture(f.get(kFlags), 1);
   }
 
  private:

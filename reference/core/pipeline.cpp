@@ -3,7 +3,9 @@
 #include "common/core/passes.hpp"
 #include "common/core/preprocess.hpp"
 #include "common/sketchy/sketchy.hpp"
+#include "common/strokes/id_image.hpp"
 #include "common/strokes/stroke.hpp"
+#include "common/strokes/visibility.hpp"
 
 namespace plumbago::reference {
 
@@ -14,7 +16,7 @@ ReferenceFrame run_stages(const Scene& scene, std::vector<PassTime>& ran) {
   ran = f.pre.ran;
   for (const std::string& name : f.stages) {
     Stopwatch watch;
-    implementation(name)(f);
+    run_stage(f, name);
     ran.push_back({name, watch.ms()});
   }
   return f;
@@ -24,9 +26,9 @@ Frame render(const Scene& scene, const FrameOptions& options) {
   Frame frame;
   ReferenceFrame f = run_stages(scene, frame.ran);
   std::string color = frame_color_buffer(f.stages);  // none without effects: the blank page
-  frame.color = color.empty() ? Image(scene.width, scene.height, 3, 1.0f) : f.image(color);
+  frame.color = color.empty() ? Image(scene.width, scene.height, 3, 1.0f) : f.images.at(color);
   if (options.keep_buffers) frame.buffers = dump(f);
-  frame.counts = stroke_counts(f.host);
+  frame.counts = stroke_counts(f.get(maybe(kWindowLines)), f.get(maybe(kVisibleRuns)));
   return frame;
 }
 

@@ -24,20 +24,43 @@ std::map<std::string, BoundFn>& bounds() {
 ReferenceFrame::ReferenceFrame(const Scene& s, Preprocessed p, std::vector<std::string> st)
     : scene(s), ordinary(ordinary_objects(s)), sketchy(sketchy_objects(s)), pre(std::move(p)), stages(std::move(st)) {}
 
-const Image* ReferenceFrame::find(const std::string& name) const {
-  auto it = images.find(name);
+const Image* ReferenceFrame::get(Maybe<Buffer> buffer) const {
+  checked(buffer.handle.name);
+  auto it = images.find(buffer.handle.name);
   return it == images.end() ? nullptr : &it->second;
 }
 
-const Image& ReferenceFrame::image(const std::string& name) const {
-  if (const Image* img = find(name)) return *img;
-  throw std::logic_error("reference frame: no stage made '" + name + "'");
+const Image& ReferenceFrame::get(Buffer buffer) const {
+  if (const Image* img = get(maybe(buffer))) return *img;
+  throw std::logic_error(std::string("reference frame: no stage made '") + buffer.name + "'");
 }
 
-const GBuffer& ReferenceFrame::gbuffer(const std::string& stage) const {
-  auto it = gbuffers.find(stage);
-  if (it == gbuffers.end()) throw std::logic_error("reference frame: no stage made the G-buffer '" + stage + "'");
-  return it->second;
+void ReferenceFrame::put(Buffer buffer, Image image) {
+  checked(buffer.name);
+  images[buffer.name] = std::move(image);
+}
+
+const GBuffer* ReferenceFrame::get(Maybe<GBufferSlot> gbuffer) const {
+  checked(gbuffer.handle.name);
+  auto it = gbuffers.find(gbuffer.handle.name);
+  return it == gbuffers.end() ? nullptr : &it->second;
+}
+
+const GBuffer& ReferenceFrame::get(GBufferSlot gbuffer) const {
+  if (const GBuffer* g = get(maybe(gbuffer))) return *g;
+  throw std::logic_error(std::string("reference frame: no stage made the G-buffer '") + gbuffer.name + "'");
+}
+
+void ReferenceFrame::put(GBufferSlot gbuffer, GBuffer value) {
+  checked(gbuffer.name);
+  gbuffers[gbuffer.name] = std::move(value);
+}
+
+void run_stage(ReferenceFrame& f, const std::string& stage) {
+  StageFn fn = implementation(stage);
+  f.running = {stage};
+  fn(f);
+  f.running.clear();
 }
 
 bool register_stage(const char* stage, StageFn fn) {

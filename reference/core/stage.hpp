@@ -1,9 +1,9 @@
 // Stages on the reference backend: each registers its implementation next to its code
-// (reference/<stem>.cpp), a plain function that reads its inputs from a ReferenceFrame by
-// their declared names (common/core/stage.hpp) and writes its outputs there:
+// (reference/<subsystem>/<stem>.cpp), a plain function that reads its declared inputs from
+// a ReferenceFrame through their handles (common/core/handle.hpp) and puts its outputs there:
 //
 //   PLUMBAGO_REFERENCE_STAGE(edge_detect, [](ReferenceFrame& f) {
-//     f.put("edge_detect.contour_darkness", contour_darkness(f.gbuffer("gbuffer"), f.params<EdgeDetectParams>()));
+//     f.put(kContourDarkness, contour_darkness(f.get(kGBuffer), f.params<EdgeDetectParams>()));
 //   });
 #pragma once
 
@@ -11,16 +11,16 @@
 #include <string>
 #include <vector>
 
-#include "common/scene/gbuffer.hpp"
-#include "common/core/host_data.hpp"
+#include "common/core/handle.hpp"
 #include "common/core/preprocess.hpp"
-#include "common/scene/scene.hpp"
 #include "common/core/stage.hpp"
+#include "common/scene/gbuffer.hpp"
+#include "common/scene/scene.hpp"
 
 namespace plumbago::reference {
 
-// The buffers of one frame, by name. The G-buffers are kept whole, under their stage's
-// name ("gbuffer", "sketchy_gbuffer"); every other output is an image "<stage>.<output>".
+// The data of one frame, by handle. A stage that runs (run_stage) may read only what its
+// descriptor declares: any other read is a std::logic_error naming it.
 struct ReferenceFrame {
   ReferenceFrame(const Scene& scene, Preprocessed pre, std::vector<std::string> stages);
 
@@ -28,22 +28,51 @@ struct ReferenceFrame {
   Scene ordinary, sketchy;  // the objects each pipeline draws (common/sketchy/sketchy.hpp)
   Preprocessed pre;
   std::vector<std::string> stages;  // the frame stages that run
-  std::map<std::string, Image> images;
-  std::map<std::string, GBuffer> gbuffers;
+  std::vector<std::string> running;  // the stage running now (none: the pipeline or parity)
 
   template <class P>
   P params() const {
     return scene.params.get<P>();
   }
   StageConfig config() const { return {scene.params, scene.effects}; }
-  // An input; throws std::logic_error naming it when no stage made it.
-  const Image& image(const std::string& name) const;
-  const GBuffer& gbuffer(const std::string& stage) const;
-  // An optional input (an input whose condition may not hold): null when not made.
-  const Image* find(const std::string& name) const;
-  void put(const std::string& name, Image image) { images[name] = std::move(image); }
-  HostData host;  // CPU data the stages share (common/core/host_data.hpp)
+
+  // An input; std::logic_error naming it when no stage made it.
+  const Image& get(Buffer buffer) const;
+  const Image* get(Maybe<Buffer> buffer) const;  // null where not made
+  void put(Buffer buffer, Image image);
+  const GBuffer& get(GBufferSlot gbuffer) const;
+  const GBuffer* get(Maybe<GBufferSlot> gbuffer) const;  // null where not made
+  void put(GBufferSlot gbuffer, GBuffer value);
+  // CPU data: the frame's, else preprocessing's.
+  template <class T>
+  const T* get(Maybe<Slot<T>> slot) const {
+    checked(slot.handle.name);
+    const T* value = data.find(slot.handle);
+    return value ? value : pre.get(slot);
+  }
+  template <class T>
+  const T& get(Slot<T> slot) const {
+    if (const T* value = get(maybe(slot))) return *value;
+    throw std::logic_error(std::string("reference frame: no stage made '") + slot.name + "'");
+  }
+  template <class T>
+  void put(Slot<T> slot, T value) {
+    checked(slot.name);
+    data.put(slot, std::make_shared<const T>(std::move(value)));
+  }
+
+  std::map<std::string, Image> images;
+  std::map<std::string, GBuffer> gbuffers;
+  DataTable data;
+
+ private:
+  void checked(const std::string& name) const {
+    if (!running.empty()) check_declared(running, name);
+  }
 };
+
+// Runs `stage`'s implementation on `f`, its reads checked against its descriptor.
+void run_stage(ReferenceFrame& f, const std::string& stage);
 
 using StageFn = void (*)(ReferenceFrame&);
 

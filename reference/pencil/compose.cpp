@@ -40,10 +40,12 @@ Image compose(const Image& contour_darkness, const Image& interior_darkness, con
 
 // Composition reads what the effects made: no contours (D_c = 0), no interior, white paper.
 PLUMBAGO_REFERENCE_STAGE(compose, [](ReferenceFrame& f) {
-  const Image* contours = f.find("multi_contour.contour_darkness");
-  const Image* interior = f.find("pencil_interior.interior_darkness");
-  f.put("compose.color", compose(contours ? *contours : Image(f.scene.width, f.scene.height, 1),
-                                 interior ? *interior : Image(), f.pre.paper.color, f.params<ComposeParams>()));
+  const Image* contours = f.get(maybe(kCopiesDarkness));
+  const Image* interior = f.get(maybe(kInteriorDarkness));
+  const Image* paper_color = f.get(maybe(kPaperColor));
+  f.put(kComposeColor, compose(contours ? *contours : Image(f.scene.width, f.scene.height, 1),
+                                 interior ? *interior : Image(), paper_color ? *paper_color : Image(),
+                                 f.params<ComposeParams>()));
 });
 
 }  // namespace plumbago::reference

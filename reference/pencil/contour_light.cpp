@@ -28,8 +28,8 @@ Image lit_contour_darkness(const Image& d, const GBuffer& g, const std::vector<L
 }
 
 PLUMBAGO_REFERENCE_STAGE(contour_light, [](ReferenceFrame& f) {
-  f.put("contour_light.lit_contour_darkness",
-        lit_contour_darkness(f.image("edge_detect.contour_darkness"), f.gbuffer("gbuffer"), view_space_lights(f.scene),
+  f.put(kLitContourDarkness,
+        lit_contour_darkness(f.get(kContourDarkness), f.get(kGBuffer), view_space_lights(f.scene),
                              f.params<ContourLightParams>()));
 });
 

@@ -67,7 +67,7 @@ Image contour_darkness(const GBuffer& g, const EdgeDetectParams& p) {
 }
 
 PLUMBAGO_REFERENCE_STAGE(edge_detect, [](ReferenceFrame& f) {
-  f.put("edge_detect.contour_darkness", contour_darkness(f.gbuffer("gbuffer"), f.params<EdgeDetectParams>()));
+  f.put(kContourDarkness, contour_darkness(f.get(kGBuffer), f.params<EdgeDetectParams>()));
 });
 
 }  // namespace plumbago::reference

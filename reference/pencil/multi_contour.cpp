@@ -47,9 +47,8 @@ Image multi_contour_darkness(const Image& lit, const std::vector<Image>& grids, 
 }
 
 PLUMBAGO_REFERENCE_STAGE(multi_contour, [](ReferenceFrame& f) {
-  f.put("multi_contour.contour_darkness",
-        multi_contour_darkness(f.image("contour_light.lit_contour_darkness"), f.pre.offset_grids, f.pre.contour_texture,
-                               f.pre.texture_shifts, f.params<ContourParams>()));
+  f.put(kCopiesDarkness, multi_contour_darkness(f.get(kLitContourDarkness), f.get(kOffsetGrids), f.get(kContourTexture),
+                                               f.get(kTextureShifts), f.params<ContourParams>()));
 });
 
 }  // namespace plumbago::reference

@@ -76,9 +76,9 @@ Image interior_darkness(const GBuffer& g, const Image& intensity, const std::vec
 }
 
 PLUMBAGO_REFERENCE_STAGE(pencil_interior, [](ReferenceFrame& f) {
-  f.put("pencil_interior.interior_darkness",
-        interior_darkness(f.gbuffer("gbuffer"), f.image("interior_intensity.intensity"), f.pre.pencil_stack,
-                          f.pre.paper.normal, interior_options(f.scene.effects), f.params<InteriorParams>(),
+  const Image* paper_normal = f.get(maybe(kPaperNormal));
+  f.put(kInteriorDarkness,
+        interior_darkness(f.get(kGBuffer), f.get(kIntensity), f.get(kPencilStack), paper_normal ? *paper_normal : Image(), interior_options(f.scene.effects), f.params<InteriorParams>(),
                           f.params<PaperParams>().mu_p));
 });
 

@@ -1,4 +1,5 @@
 #include "reference/scene/gbuffer.hpp"
+#include "common/sketchy/sketchy_gbuffer.hpp"
 
 #include <embree3/rtcore.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -126,10 +127,11 @@ GBuffer trace_gbuffer(const Scene& scene, int width, int height, const std::vect
 }
 
 PLUMBAGO_REFERENCE_STAGE(gbuffer, [](ReferenceFrame& f) {
-  f.gbuffers["gbuffer"] = trace_gbuffer(f.ordinary, f.scene.width, f.scene.height, f.pre.curvature);
+  const std::vector<Curvature>* curvature = f.get(maybe(kCurvature));
+  f.put(kGBuffer, trace_gbuffer(f.ordinary, f.scene.width, f.scene.height, curvature ? *curvature : std::vector<Curvature>{}));
 });
 PLUMBAGO_REFERENCE_STAGE(sketchy_gbuffer, [](ReferenceFrame& f) {
-  f.gbuffers["sketchy_gbuffer"] = trace_gbuffer(f.sketchy, f.scene.width, f.scene.height);
+  f.put(kSketchyGBuffer, trace_gbuffer(f.sketchy, f.scene.width, f.scene.height));
 });
 
 }  // namespace plumbago::reference

@@ -1,4 +1,5 @@
 #include "reference/sketchy/sketchy_composite.hpp"
+#include "common/sketchy/sketchy_composite.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -299,9 +300,9 @@ namespace {
 // The composite's inputs in a frame; `maps` holds the maps they refer to.
 SketchyInputs composite_inputs(const ReferenceFrame& f, SketchyMaps& maps) {
   static const Image none;
-  maps = {f.image("sketchy_maps.edge"), f.image("sketchy_maps.shade")};
-  const Image* coordinates = f.find("sketchy_enlarged.noise_coordinates");
-  return {maps, f.gbuffer("sketchy_gbuffer"), f.pre.sketchy_noise, coordinates ? *coordinates : none};
+  maps = {f.get(kSketchyEdge), f.get(kSketchyShade)};
+  const Image* coordinates = f.get(maybe(kNoiseCoordinates));
+  return {maps, f.get(kSketchyGBuffer), f.get(kSketchyNoise), coordinates ? *coordinates : none};
 }
 
 }  // namespace
@@ -309,12 +310,12 @@ SketchyInputs composite_inputs(const ReferenceFrame& f, SketchyMaps& maps) {
 PLUMBAGO_REFERENCE_STAGE(sketchy_composite, [](ReferenceFrame& f) {
   SketchyMaps maps;
   SketchyInputs in = composite_inputs(f, maps);
-  const Image* under = f.find("compose.color");
-  auto g = f.gbuffers.find("gbuffer");
+  const Image* under = f.get(maybe(kComposeColor));
+  const GBuffer* ordinary = f.get(maybe(kGBuffer));
   SketchyFrame sketch = sketchy_composite(in, f.params<SketchyParams>(), under ? *under : Image(),
-                                          g == f.gbuffers.end() ? Image() : g->second.depth);
-  f.put("sketchy_composite.color", std::move(sketch.color));
-  f.put("sketchy_composite.depth", std::move(sketch.depth));
+                                          ordinary ? ordinary->depth : Image());
+  f.put(kSketchColor, std::move(sketch.color));
+  f.put(kSketchDepth, std::move(sketch.depth));
 });
 
 // The sprite's depth is read from nearest texels: at a texel-edge tie the backends' sample

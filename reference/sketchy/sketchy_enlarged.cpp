@@ -1,4 +1,5 @@
 #include "reference/sketchy/sketchy_enlarged.hpp"
+#include "common/sketchy/sketchy_enlarged.hpp"
 
 #include "common/sketchy/sketchy.hpp"
 #include "reference/scene/gbuffer.hpp"
@@ -27,7 +28,7 @@ Image enlarged_noise_coordinates(const Scene& enlarged, int width, int height) {
 }
 
 PLUMBAGO_REFERENCE_STAGE(sketchy_enlarged, [](ReferenceFrame& f) {
-  f.put("sketchy_enlarged.noise_coordinates",
+  f.put(kNoiseCoordinates,
         enlarged_noise_coordinates(enlarged_scene(f.sketchy), f.scene.width, f.scene.height));
 });
 

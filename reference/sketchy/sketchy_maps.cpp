@@ -1,4 +1,5 @@
 #include "reference/sketchy/sketchy_maps.hpp"
+#include "common/sketchy/sketchy_maps.hpp"
 
 #include <algorithm>
 
@@ -40,9 +41,9 @@ SketchyMaps sketchy_maps(const GBuffer& g, const std::vector<glm::vec3>& colors,
 }
 
 PLUMBAGO_REFERENCE_STAGE(sketchy_maps, [](ReferenceFrame& f) {
-  SketchyMaps maps = sketchy_maps(f.gbuffer("sketchy_gbuffer"), object_colors(f.sketchy), f.params<EdgeDetectParams>());
-  f.put("sketchy_maps.edge", std::move(maps.edge));
-  f.put("sketchy_maps.shade", std::move(maps.shade));
+  SketchyMaps maps = sketchy_maps(f.get(kSketchyGBuffer), object_colors(f.sketchy), f.params<EdgeDetectParams>());
+  f.put(kSketchyEdge, std::move(maps.edge));
+  f.put(kSketchyShade, std::move(maps.shade));
 });
 
 }  // namespace plumbago::reference

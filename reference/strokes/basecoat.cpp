@@ -38,7 +38,7 @@ Image coat(const GBuffer& g, const TriangleShades& shades, const Image& texture)
 
 PLUMBAGO_REFERENCE_STAGE(basecoat, [](ReferenceFrame& f) {
   auto p = f.params<BaseCoatParams>();
-  f.put("basecoat.coat", coat(f.gbuffer("gbuffer"), triangle_shades(f.ordinary, p), basecoat_texture(p)));
+  f.put(kCoat, coat(f.get(kGBuffer), triangle_shades(f.ordinary, p), basecoat_texture(p)));
 });
 
 }  // namespace plumbago::reference

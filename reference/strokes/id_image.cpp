@@ -73,19 +73,20 @@ IdRaster id_raster(const std::vector<IdVertex>& v, int width, int height) {
 
 PLUMBAGO_REFERENCE_STAGE(id_image, [](ReferenceFrame& f) {
   auto p = f.params<StrokesParams>();
-  if (has_decals(f.scene) && !f.host.find<DecalSurface>(kDecalSurface))  // SPEC 4.9: by rays, once per frame's data
-    f.host.put<DecalSurface>(kDecalSurface, project_decals_by_rays(f.scene));
-  IdRaster r = id_raster(id_triangles(f.scene, frame_lines(f.host, f.host, f.scene), p), f.scene.width, f.scene.height);
-  f.put("id_image.ids", key_channels(r.key));
+  DecalSurface decals = has_decals(f.scene) ? project_decals_by_rays(f.scene) : DecalSurface{};  // by rays
+  auto meshes = line_meshes(f.scene, p, LineObjects::Strokes);
+  f.put(kWindowLines, window_lines(f.scene, p, LineObjects::Strokes, meshes.get(), has_decals(f.scene) ? &decals : nullptr));
+  IdRaster r = id_raster(id_triangles(f.scene, f.get(kWindowLines), p), f.scene.width, f.scene.height);
+  f.put(kIds, key_channels(r.key));
   Image ties(r.key.width, r.key.height, 1);
   for (size_t i = 0; i < ties.data.size(); ++i)
     ties.data[i] = ambiguous(r, i);
-  f.put("id_image.ambiguous", std::move(ties));  // not an output: what the bound below reads
+  f.put(kAmbiguousIds, std::move(ties));
 });
 
 // Where the rounding of a rasterizer decides (ambiguous above), the backends may keep either key.
 PLUMBAGO_REFERENCE_BOUND(id_image_ids, "id_image.ids", [](const ReferenceFrame& f) {
-  Image bound = f.image("id_image.ambiguous");
+  Image bound = f.get(kAmbiguousIds);
   for (float& b : bound.data) b *= 65536.0f;
   return bound;
 });

@@ -47,16 +47,16 @@ void draw(const StrokeVertex* t, const StrokeInputs& in, Image& out, FragmentCou
 }  // namespace
 
 PLUMBAGO_REFERENCE_STAGE(stroke, [](ReferenceFrame& f) {
-  std::vector<StrokeVertex> v = stroke_triangles(frame_lines(f.host, f.host, f.scene), *f.host.find<Visibility>("visibility"), f.scene.strokes, f.scene.seed);
+  std::vector<StrokeVertex> v = stroke_triangles(f.get(kWindowLines), f.get(kVisibleRuns), f.scene.strokes, f.scene.seed);
   std::vector<Image> textures = stroke_texture_layers(f.scene.seed);
-  StrokeInputs in{textures, f.pre.paper.height, f.params<StrokePaperParams>()};
-  Image out = f.image("stroke_paper.color");
+  StrokeInputs in{textures, f.get(kPaperHeight), f.params<StrokePaperParams>()};
+  Image out = f.get(kPage);
   FragmentCounts counts{Image(out.width, out.height, 1), Image(out.width, out.height, 1)};
   draw_in_bands(v, out.height, [](const StrokeVertex& x) { return x.position; },
                 [&](const StrokeVertex* t, int y0, int y1) { draw(t, in, out, counts, y0, y1); });
-  f.put("stroke.color", std::move(out));
-  f.put("stroke.fragments", std::move(counts.fragments));  // not outputs: what the bound below reads
-  f.put("stroke.ribbon_edges", std::move(counts.edge));
+  f.put(kStrokeColor, std::move(out));
+  f.put(kStrokeFragments, std::move(counts.fragments));
+  f.put(kRibbonEdges, std::move(counts.edge));
 });
 
 // What the GPU may add to each fragment (derived, not fitted): its alpha comes from a
@@ -68,8 +68,8 @@ PLUMBAGO_REFERENCE_STAGE(stroke, [](ReferenceFrame& f) {
 // rounding decides whether the fragment is drawn at all: anything goes there, and the note
 // counts them.
 PLUMBAGO_REFERENCE_BOUND(stroke_color, "stroke.color", [](const ReferenceFrame& f) {
-  Image bound = f.image("stroke.fragments");
-  const Image& edges = f.image("stroke.ribbon_edges");
+  Image bound = f.get(kStrokeFragments);
+  const Image& edges = f.get(kRibbonEdges);
   for (size_t i = 0; i < bound.data.size(); ++i)
     bound.data[i] = edges.data[i] > 0 ? 1.0f : std::max(0.0f, bound.data[i] * 4.5f / 255.0f - float(tolerance::kByte));
   return bound;

@@ -48,10 +48,10 @@ Image page_with(const PageInputs& in, const StrokePaperParams& p) {
 }  // namespace
 
 PLUMBAGO_REFERENCE_STAGE(stroke_paper, [](ReferenceFrame& f) {
-  const Image* under = f.find("sketchy_composite.color");
-  PageInputs in{f.gbuffer("gbuffer"), stroke_object_flags(f.ordinary), f.find("basecoat.coat"), f.pre.paper.height,
-                under ? under : f.find("compose.color"), f.find("sketchy_composite.depth")};
-  f.put("stroke_paper.color", page_with(in, f.params<StrokePaperParams>()));
+  const Image* under = f.get(maybe(kSketchColor));
+  PageInputs in{f.get(kGBuffer), stroke_object_flags(f.ordinary), f.get(maybe(kCoat)), f.get(kPaperHeight),
+                under ? under : f.get(maybe(kComposeColor)), f.get(maybe(kSketchDepth))};
+  f.put(kPage, page_with(in, f.params<StrokePaperParams>()));
 });
 
 }  // namespace plumbago::reference

@@ -10,15 +10,15 @@
 namespace plumbago::reference {
 
 PLUMBAGO_REFERENCE_STAGE(visibility, [](ReferenceFrame& f) {
-  ImageU32 keys = keys_from_channels(f.image("id_image.ids"));
+  ImageU32 keys = keys_from_channels(f.get(kIds));
   auto test = [&](const std::vector<VisibilitySample>& batch) {
     std::vector<uint8_t> flags(batch.size());
     tbb::parallel_for(size_t(0), batch.size(), [&](size_t k) { flags[k] = sample_visible(keys, batch[k]); });
     return flags;
   };
-  Visibility v = visible_runs(frame_lines(f.host, f.host, f.scene), f.params<StrokesParams>(), test);
-  f.put("visibility.flags", flags_image(v.flags));
-  f.host.put("visibility", std::move(v));
+  Visibility v = visible_runs(f.get(kWindowLines), f.params<StrokesParams>(), test);
+  f.put(kFlags, flags_image(v.flags));
+  f.put(kVisibleRuns, std::move(v));
 });
 
 }  // namespace plumbago::reference

@@ -84,13 +84,13 @@ TEST(PencilInteriorBlend, NearestCornerKeepsOnlyTheLargestWeight) {
 struct ReferenceInterior {
   Scene scene;
   Preprocessed pre = preprocess(scene, {"curvature", "pencil_textures"});
-  GBuffer g = reference::trace_gbuffer(scene, scene.width, scene.height, pre.curvature);
+  GBuffer g = reference::trace_gbuffer(scene, scene.width, scene.height, pre.get(kCurvature));
   InteriorParams ip = scene.params.get<InteriorParams>();
   Image intensity = reference::interior_intensity(g, view_space_lights(scene), ip);
 
   // D_i without cross hatching or paper, for `p` (default: the scene's parameters).
   Image darkness(const InteriorParams& p) const {
-    return reference::interior_darkness(g, intensity, pre.pencil_stack, {}, {false, false}, p, 0);
+    return reference::interior_darkness(g, intensity, pre.get(kPencilStack), {}, {false, false}, p, 0);
   }
 };
 
@@ -139,11 +139,11 @@ TEST(PencilInteriorReference, WithoutCrosshatchTheMaxDirectionsAreNeverRead) {
 TEST(PencilInteriorReference, DarkerIntensityGivesDarkerStrokesAndBackgroundStaysBlank) {
   Scene scene = testing::builtin_at("sphere", 100, 100);
   Preprocessed pre = preprocess(scene, {"curvature", "pencil_textures"});
-  GBuffer g = reference::trace_gbuffer(scene, scene.width, scene.height, pre.curvature);
+  GBuffer g = reference::trace_gbuffer(scene, scene.width, scene.height, pre.get(kCurvature));
   auto ip = scene.params.get<InteriorParams>();
   auto mean_darkness = [&](float level) {
     Image intensity(100, 100, 1, level);
-    Image d = reference::interior_darkness(g, intensity, pre.pencil_stack, {}, {false, false}, ip, 0);
+    Image d = reference::interior_darkness(g, intensity, pre.get(kPencilStack), {}, {false, false}, ip, 0);
     EXPECT_EQ(d.at(0, 0), 0.0f);  // background corner
     double sum = 0;
     for (float v : d.data) sum += v;
