@@ -78,7 +78,7 @@ std::vector<GoldenCase> golden_cases() {
   return cases;
 }
 
-fs::path source_root() { return fs::path(__FILE__).parent_path().parent_path(); }
+fs::path source_root() { return fs::path(__FILE__).parent_path().parent_path().parent_path(); }  // tests/core/..
 fs::path golden_dir() { return source_root() / "tests" / "golden"; }
 fs::path golden_path(const std::string& name, Backend b) {
   return golden_dir() / (name + "." + backend_name(b) + ".png");
