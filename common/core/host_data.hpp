@@ -1,4 +1,4 @@
-// CPU data that the stages of one frame share (the window lines of SPEC 4 and what is
+// CPU data that the stages of one frame share (the window lines of Kalnins et al. 2002 and what is
 // made of them), by name, made on first use. Both backends' frames hold one.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The ID reference image on the GPU (SPEC 4.4), the twin of reference/strokes/id_image.cpp: the
+// The ID reference image on the GPU (Kalnins et al. 2002, §4.6), the twin of reference/strokes/id_image.cpp: the
 // triangles of common/strokes/id_image.hpp, pulled from a buffer, depth-tested GL_GREATER on
 // z = near / d, written as the fragment's depth.
 #include "common/strokes/id_image.hpp"
@@ -17,7 +17,7 @@ class IdImagePass : public GpuPass {
         fbo_(make_framebuffer()),
         empty_(make_vertex_array()),
         depth_(make_renderbuffer(f.scene.width, f.scene.height, GL_DEPTH_COMPONENT32F)) {
-    // The decals' surface points, projected once for the renderer's frames (SPEC 4.9).
+    // The decals' surface points, projected once for the renderer's frames (Kalnins et al. 2002, §3, §4.5).
     if (has_decals(f.scene)) f.kept.put<DecalSurface>(kDecalSurface, project_decals_through_gbuffer(f.scene));
   }
 

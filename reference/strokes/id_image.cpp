@@ -1,4 +1,4 @@
-// The ID reference image, CPU reference (SPEC 4.4): the triangles of common/strokes/id_image.hpp
+// The ID reference image, CPU reference (Kalnins et al. 2002, §4.6): the triangles of common/strokes/id_image.hpp
 // through the scalar rasterizer, each pixel keeping the nearest (largest z = near / d).
 #include "common/strokes/id_image.hpp"
 
@@ -73,7 +73,8 @@ IdRaster id_raster(const std::vector<IdVertex>& v, int width, int height) {
 
 PLUMBAGO_REFERENCE_STAGE(id_image, [](ReferenceFrame& f) {
   auto p = f.params<StrokesParams>();
-  if (has_decals(f.scene) && !f.host.find<DecalSurface>(kDecalSurface))  // SPEC 4.9: by rays, once per frame's data
+  if (has_decals(f.scene) && !f.host.find<DecalSurface>(kDecalSurface))  // Kalnins et al. 2002, §3, §4.5: by rays, once
+                                                                         // per frame's data
     f.host.put<DecalSurface>(kDecalSurface, project_decals_by_rays(f.scene));
   IdRaster r = id_raster(id_triangles(f.scene, frame_lines(f.host, f.host, f.scene), p), f.scene.width, f.scene.height);
   f.put("id_image.ids", key_channels(r.key));
