@@ -2,7 +2,7 @@
 //   static void setup(CLI::App& app) { auto* cmd = app.add_subcommand(...); ... }
 //   PLUMBAGO_COMMAND(setup);
 // A command reports bad input by throwing; main() prints the message on stderr and
-// exits with code 2 (DESIGN.md principle 7).
+// exits with code 2 (docs/design.md, principle 7).
 #pragma once
 
 #include <CLI/CLI.hpp>

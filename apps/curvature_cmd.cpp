@@ -1,6 +1,6 @@
 // plumbago curvature MESH [--method auto|tensor|jet] [--radius R] [-o out.csv] [--quiet]
 //                         [--no-cache] [--set curvature.name=value ...]
-// Principal curvature per vertex (SPEC §1.1) as CSV, one row per vertex of the mesh as
+// Principal curvature per vertex (Lee et al. 2006, §5.3; Alliez et al. 2003) as CSV, one row per vertex of the mesh as
 // loaded (after welding); `firmness` is direction_firmness (0: the directions were
 // propagated from the neighbors, 1: the estimate's, held fixed).
 #include <charconv>
@@ -92,7 +92,8 @@ void run(const CurvatureCommandOptions& o) {
 
 void setup(CLI::App& app) {
   auto o = std::make_shared<CurvatureCommandOptions>();
-  auto* cmd = app.add_subcommand("curvature", "Principal curvature per vertex of a mesh, as CSV (SPEC 1.1)");
+  auto* cmd = app.add_subcommand("curvature", "Principal curvature per vertex of a mesh, as CSV (Lee et al. 2006, "
+                                              "§5.3; Alliez et al. 2003)");
   cmd->add_option("mesh", o->mesh, "Mesh file (OBJ, OFF, PLY, STL)")->required();
   cmd->add_option("--method", o->method,
                   "auto (the default: tensor, or jet on folded meshes), tensor (Cohen-Steiner/Morvan, the paper's) or jet");

@@ -1,7 +1,7 @@
 // plumbago lines SCENE -o lines.json|lines.svg [--backend gpu|reference]: the feature
-// lines of every object but the sketchy ones (SPEC 4.3) and the decals of the scene's
-// stroke files (SPEC 4.9, projected by the chosen backend), for the scene's camera, with
-// their visibility from the chosen backend's ID image (SPEC 4.4-4.5). It prints how many
+// lines of every object but the sketchy ones (Kalnins et al. 2002, §4.5) and the decals of the scene's
+// stroke files (Kalnins et al. 2002, §3, §4.5, projected by the chosen backend), for the scene's camera, with
+// their visibility from the chosen backend's ID image (Kalnins et al. 2002, §4.6). It prints how many
 // paths there are, how many show (a visible run or more), and the visible runs drawn.
 //   .json: every path, {"paths": [{"kind", "object", "closed", "points" (world),
 //          "screen" (pixels, origin bottom-left), "visible" (per point)}]};
@@ -12,7 +12,7 @@
 //          face's longest edges: its own facets), and the frame's passes with their times
 //          ("ran"): the accuracy study of experiments/stroke_visibility compares them;
 //   .svg:  the visible runs as the strokes draw them: one <path> per run, the outline of
-//          its variable-width ribbon (SPEC 4.6), filled with its style's color and alpha.
+//          its variable-width ribbon (Kalnins et al. 2002, §4.1), filled with its style's color and alpha.
 #include <algorithm>
 #include <cstdio>
 #include <fstream>

@@ -1,4 +1,4 @@
-// plumbago: render, compare, inspect. See README.md and DESIGN.md "The command line".
+// plumbago: render, compare, inspect. See README.md and docs/design.md.
 #include <cstdio>
 #include <exception>
 

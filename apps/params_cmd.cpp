@@ -3,37 +3,19 @@
 #include <stdexcept>
 
 #include "apps/command.hpp"
+#include "apps/param_text.hpp"
 #include "common/core/params.hpp"
 
 namespace plumbago {
 namespace {
-
-const char* type_name(ParamType t) {
-  switch (t) {
-    case ParamType::Real: return "real";
-    case ParamType::Integer: return "int";
-    case ParamType::Boolean: return "bool";
-    default: return "choice";
-  }
-}
-
-std::string range_of(const ParamSpec& s) {
-  if (s.type == ParamType::Boolean) return "true|false";
-  if (s.type == ParamType::Choice) {
-    std::string r;
-    for (const auto& c : s.choices) r += (r.empty() ? "" : "|") + c;
-    return r;
-  }
-  return "[" + format_value(s, s.min) + ", " + format_value(s, s.max) + "]";
-}
 
 void print_params(const std::string& stage) {
   bool any = false;
   for (const auto& s : param_specs()) {
     if (!stage.empty() && s.key.rfind(stage + ".", 0) != 0) continue;
     any = true;
-    std::printf("%-30s %-6s %-12s %-22s %s\n", s.key.c_str(), type_name(s.type),
-                format_value(s, s.default_value).c_str(), range_of(s).c_str(), s.doc.c_str());
+    std::printf("%-30s %-6s %-12s %-22s %s\n", s.key.c_str(), param_type_name(s.type),
+                format_value(s, s.default_value).c_str(), param_range(s).c_str(), s.doc.c_str());
   }
   if (!any) throw std::invalid_argument("unknown stage '" + stage + "' (see `plumbago params`)");
 }

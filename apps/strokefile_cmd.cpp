@@ -1,4 +1,4 @@
-// `plumbago strokefile SCENE drawing.svg -o strokes.json`: a stroke file (SPEC 4.9,
+// `plumbago strokefile SCENE drawing.svg -o strokes.json`: a stroke file (Kalnins et al. 2002, §3, §4.5,
 // common/strokes/stroke_file.hpp) from strokes drawn in SVG over `plumbago render SCENE`'s image,
 // with the scene's camera and resolution (common/strokes/svg_strokes.hpp says what is read).
 #include <cstdio>
@@ -55,7 +55,8 @@ void run(const StrokeFileOptions& o) {
 void setup(CLI::App& app) {
   auto o = std::make_shared<StrokeFileOptions>();
   auto* cmd =
-      app.add_subcommand("strokefile", "Make a stroke file (SPEC 4.9) from an SVG drawn over the scene's render");
+      app.add_subcommand("strokefile", "Make a stroke file (Kalnins et al. 2002, §3, §4.5) from an SVG drawn over the "
+                                       "scene's render");
   o->scene.add_to(cmd, true);
   cmd->add_option("svg", o->svg, "the drawing: <polyline> and straight <path> elements over the rendered PNG")
       ->required();
@@ -66,7 +67,8 @@ void setup(CLI::App& app) {
   cmd->add_option("--style", o->style,
                   "the stroke style (preset or file) of decals and hatching where an element has no data-style");
   cmd->add_option("--group", o->group, "hatching: the group where an element has no data-group")->capture_default_str();
-  cmd->add_flag("--free", o->free, "hatching: a free group (SPEC 4.10) where an element has no data-free");
+  cmd->add_flag("--free", o->free, "hatching: a free group (Kalnins et al. 2002, §6) where an element has no "
+                                                   "data-free");
   cmd->callback([o] { run(*o); });
 }
 

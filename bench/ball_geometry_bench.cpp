@@ -1,5 +1,5 @@
-// The exact clipping of the curvature ball (common/curvature/ball_geometry.hpp, SPEC §1.1): what one
-// face or side the sphere cuts costs. The ball's cost is mostly its cut band (docs/curvature.md:
+// The exact clipping of the curvature ball (common/curvature/ball_geometry.hpp, Lee et al. 2006, §5.3; Alliez et al.
+// 2003): what one face or side the sphere cuts costs. The ball's cost is mostly its cut band (docs/curvature.md:
 // 217 cut faces per ball on bunny-1M), so this is the number the 5 s per million target
 // hinges on. Faces with sides of about 1 (some irregular), their centroids within 1 of a
 // sphere of radius 5, as in a ball five edges wide.

@@ -1,4 +1,4 @@
-// Principal curvature (SPEC §1.1), uncached, on the shared models and on a bunny
+// Principal curvature (Lee et al. 2006, §5.3; Alliez et al. 2003), uncached, on the shared models and on a bunny
 // subdivided 1-to-4 until it has at least a million vertices. Reported per run and as
 // seconds per million vertices, next to the targets on 2 cores: 1-ring <= 0.5 s,
 // default ball <= 5 s per million vertices. `topology_ms` is the share spent building

@@ -1,5 +1,5 @@
-// Edge detection (SPEC 2.2) on both backends at 800x800, on the same G-buffer. The GPU
-// pass also writes the lit contours (SPEC 2.3) as its second output.
+// Edge detection (Nienhaus & Döllner 2003, as given in Pacheco §2) on both backends at 800x800, on the same G-buffer.
+// The GPU pass also writes the lit contours (Lee et al. 2006, §4.1, Eq. 1) as its second output.
 // GPU: wall time to glFinish per iteration (manual time) and the GL timer query.
 #include <benchmark/benchmark.h>
 

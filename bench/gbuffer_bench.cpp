@@ -1,4 +1,4 @@
-// Ray-traced G-buffer (SPEC 2.1) at 800x800: BVH build, tracing and channel filling
+// Ray-traced G-buffer (docs/stages.md, gbuffer) at 800x800: BVH build, tracing and channel filling
 // together, reported as ms and primary rays per second. Its raster twin is in
 // bench/gbuffer_gpu_bench.cpp.
 #include <benchmark/benchmark.h>

@@ -1,4 +1,4 @@
-// Rasterized G-buffer (SPEC 2.1) at 800x800: wall time to glFinish per frame and the GL
+// Rasterized G-buffer (docs/stages.md, gbuffer) at 800x800: wall time to glFinish per frame and the GL
 // timer query. Its ray-traced twin is in bench/gbuffer_bench.cpp.
 #include <benchmark/benchmark.h>
 

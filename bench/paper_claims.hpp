@@ -1,4 +1,5 @@
-// The frame rates the papers claim, in one table (../shared/papers/README.md).
+// The frame rates the papers claim, in one table (Lee et al. 2006, "Experimental Results";
+// Nienhaus & Döllner 2004, §3.5; Kalnins et al. 2002, Table 1).
 // `plumbago bench --paper` prints ours for the closest configuration next to them: the
 // scene file named in `plumbago_scene` (relative to the repository root), or, where
 // Plumbago has no such configuration yet, the reason in `plumbago_note`.

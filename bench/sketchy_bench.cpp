@@ -1,4 +1,4 @@
-// Sketchy frames at 800x800 (Nienhaus & Döllner 2004, SPEC 3; the paper: the Ogre at
+// Sketchy frames at 800x800 (Nienhaus & Döllner 2004; the paper: the Ogre at
 // 20 fps, 800x800, GeForce FX 5600), one per style, every object drawn sketchy. The GPU
 // frame ends with glFinish (no readback); the reference frame includes its ray-traced
 // G-buffers. The noise textures are preprocessing, not part of a frame.

@@ -1,4 +1,4 @@
-// Stroke-based rendering at 800x800 (Kalnins et al. 2002, SPEC 4; the paper: 20 fps for a
+// Stroke-based rendering at 800x800 (Kalnins et al. 2002; the paper: 20 fps for a
 // 5K-face cup on a GeForce3): the feature lines alone (CPU, shared by both backends), and
 // whole frames of every object drawn with strokes (base coat, paper, ID image,
 // visibility, strokes) on each backend; the GPU frame also reports each pass's GL timer

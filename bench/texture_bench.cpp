@@ -1,4 +1,5 @@
-// Texture generation (SPEC 1.2-1.4, 3.2) at the default sizes: each generator's time.
+// Texture generation (Lee et al. 2006, §4.2, §5.1, §5.5; Nienhaus & Döllner 2004, §3.2) at the default sizes: each
+// generator's time.
 #include <benchmark/benchmark.h>
 
 #include "common/pencil/distortion.hpp"

@@ -255,7 +255,7 @@ std::vector<const gpu::GpuPassDef*> passes_computing(const std::string& stage) {
   return passes;
 }
 
-// Whole frames (SPEC 5 "end to end"): each backend from its own G-buffer and every pass
+// Whole frames (docs/conventions.md "end to end"): each backend from its own G-buffer and every pass
 // of the scene's effects. Pixels differ where the rasterizer and the tracer disagree on
 // coverage (the band along silhouettes) and wherever that moves a contour copy or a
 // stroke; the share of pixels within 2/255 is what is reported and bounded per scene.

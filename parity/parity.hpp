@@ -1,4 +1,4 @@
-// Stage parity (SPEC §5), from the stage descriptors (common/core/stage.hpp): for each GPU pass
+// Stage parity (docs/conventions.md), from the stage descriptors (common/core/stage.hpp): for each GPU pass
 // that computes a stage (alone, or fused with others as a frame runs it), the reference
 // computes the pass's declared inputs, the GPU pass gets them uploaded, both compute the
 // pass's stages, and every declared output is compared with its declared tolerance and

@@ -1,4 +1,4 @@
-// One source of truth for every parameter (DESIGN.md principle 1).
+// One source of truth for every parameter (docs/design.md, principle 1).
 //
 // Each stage declares one struct with a `visit` template listing its fields once:
 // key, default, valid range and a one-line doc. Everything else derives from it:

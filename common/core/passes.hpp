@@ -1,4 +1,4 @@
-// What runs for a scene (DESIGN.md principle 2): each effect asks for the stages whose
+// What runs for a scene (docs/design.md, principle 2): each effect asks for the stages whose
 // descriptors name it, each stage for the stages whose outputs it reads
 // (common/core/stage.hpp); the pipeline runs exactly that closure, in registry order, on
 // either backend.

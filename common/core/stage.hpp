@@ -1,4 +1,4 @@
-// The stage descriptor (DESIGN.md principle 3, in the spirit of Falcor's reflect()): the
+// The stage descriptor (docs/design.md, principle 3, in the spirit of Falcor's reflect()): the
 // one place that says what a stage is. Everything else follows from the descriptors:
 //  - the pass table: what each effect runs, in which order (common/core/passes.hpp);
 //  - the G-buffer channels a frame writes (the `gbuffer.*` buffers its stages read);
@@ -16,7 +16,7 @@
 //   struct EdgeDetectStage {
 //     using Params = TypeList<EdgeDetectParams>;
 //     static StageDesc describe() {
-//       return {"edge_detect", StageKind::Frame, "contour darkness ... (SPEC 2.2)", {"edge"},
+//       return {"edge_detect", StageKind::Frame, "contour darkness ... (Nienhaus & Döllner 2003)", {"edge"},
 //               {{"gbuffer.normal", smooth_normals}, {"gbuffer.face_normal", face_normals}, {"gbuffer.depth"}},
 //               {{"contour_darkness", 1, Texel::Float, "d", kFloatTolerance}}};
 //     }
@@ -51,14 +51,14 @@ enum class Texel { Float, Unorm8, Uint, Host };
 // How parity compares an output. Stages fed identical inputs compare every pixel
 // (`All`). A stage that rasterizes geometry (the reference traces rays) compares where
 // both backends see the same thing: `Interior`, away from the one-pixel band along depth
-// discontinuities (SPEC 5); `SameTriangle`, where both also hit the same triangle;
+// discontinuities (docs/conventions.md); `SameTriangle`, where both also hit the same triangle;
 // `Covered`, where both cover the pixel and its 3x3 neighborhood (alpha of the output).
 enum class ParityMask { All, Interior, SameTriangle, Covered };
-// What is compared: the values, the normalized depth z of a linear depth (SPEC 0), or
+// What is compared: the values, the normalized depth z of a linear depth (docs/conventions.md), or
 // angles as (cos, sin) pairs so that -pi and pi agree.
 enum class ParityValue { Plain, NormalizedDepth, Angles };
 
-// SPEC 5 tolerances that the descriptors state for their outputs.
+// docs/conventions.md tolerances that the descriptors state for their outputs.
 namespace tolerance {
 // A float stage fed identical inputs (measured ~1e-7).
 constexpr double kFloat = 1e-4;
@@ -66,9 +66,9 @@ constexpr double kByte = 2.0 / 255.0;  // an 8-bit target
 // A float stage that samples textures bilinearly: llvmpipe filters float textures with
 // float weights (tests/util/sampler_test.cpp: 1.2e-6), but the texture coordinates themselves
 // come out of slightly different float expressions; measured max 2e-5 on llvmpipe.
-// Hardware with 8-bit filter weights would need about 1/256 (SPEC 5).
+// Hardware with 8-bit filter weights would need about 1/256 (docs/conventions.md).
 constexpr double kSampled = 1e-3;
-// Raster vs ray (SPEC 5): normalized depth, unit normals.
+// Raster vs ray (docs/conventions.md): normalized depth, unit normals.
 constexpr double kDepth = 1e-4;
 constexpr double kNormal = 1e-3;
 // Barycentrics, raster vs ray: the rasterizer snaps vertices to 1/2^GL_SUBPIXEL_BITS of a
@@ -76,7 +76,7 @@ constexpr double kNormal = 1e-3;
 // (1/256 px) / (the triangle's extent in px): 1e-3 for a 4 px triangle. Measured max on the
 // Stanford bunny at 800x800 (many 2-5 px triangles): 1.08e-3. Allowed: 4e-3 (1 px triangles).
 constexpr double kBary = 4e-3;
-// Corner angles of SPEC 2.7: both backends evaluate the same float formula on the same
+// Corner angles of Lee et al. 2006, §5.3: both backends evaluate the same float formula on the same
 // world-space floats (GPU in the vertex shader); measured on llvmpipe: see the test.
 constexpr double kAngle = 1e-3;
 }  // namespace tolerance

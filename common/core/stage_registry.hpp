@@ -31,14 +31,14 @@
 namespace plumbago {
 
 using AllStages = TypeList<
-    // preprocessing (SPEC 1), made once per scene and parameters
+    // preprocessing (Lee et al. 2006, §4.2, §5), made once per scene and parameters
     DistortionStage,
     PencilTexturesStage,
     ContourTextureStage,
     PaperStage,
     SketchyNoiseStage,
     CurvatureStage,
-    // the pencil pipeline (SPEC 2)
+    // the pencil pipeline (Lee et al. 2006)
     GBufferStage,
     EdgeDetectStage,
     ContourLightStage,
@@ -46,12 +46,12 @@ using AllStages = TypeList<
     PencilInteriorStage,
     MultiContourStage,
     ComposeStage,
-    // sketchy drawing (SPEC 3)
+    // sketchy drawing (Nienhaus & Döllner 2004)
     SketchyGBufferStage,
     SketchyEnlargedStage,
     SketchyMapsStage,
     SketchyCompositeStage,
-    // stroke-based rendering (SPEC 4), over what the others drew
+    // stroke-based rendering (Kalnins et al. 2002), over what the others drew
     BaseCoatStage,
     StrokePaperStage,
     IdImageStage,

@@ -1,5 +1,5 @@
 // Exact measures of mesh pieces inside a ball, for the curvature tensor's |e ∩ B| and
-// |B| (SPEC §1.1).
+// |B| (Lee et al. 2006, §5.3; Alliez et al. 2003).
 #pragma once
 
 #include <glm/glm.hpp>

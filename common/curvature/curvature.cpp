@@ -1,4 +1,4 @@
-// The curvature tensor of Cohen-Steiner & Morvan (Alliez et al. 2003, §3), SPEC §1.1.
+// The curvature tensor of Cohen-Steiner & Morvan (Alliez et al. 2003, §3; Lee et al. 2006, §5.3).
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
@@ -41,7 +41,7 @@ Frame tangent_plane_frame(const SymmetricTensor& t, const glm::dvec3& n) {
   return {n, larger, glm::cross(n, larger), mean - deviation, mean + deviation};
 }
 
-// SPEC's literal reading: the eigenvector of the smallest-magnitude eigenvalue is the
+// The literal reading (Alliez et al. 2003): the eigenvector of the smallest-magnitude eigenvalue is the
 // normal. Where that eigenvalue ties with another (the umbilic test's tolerance: a
 // cylinder's normal and circumferential direction both have ~0, a plane all three), the
 // eigenvectors are any basis of their eigenspace, so n is the ball normal projected into

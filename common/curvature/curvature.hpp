@@ -1,4 +1,4 @@
-// Principal curvature per vertex (SPEC §1.1; Lee §5.3; Pacheco §6; Alliez et al. 2003).
+// Principal curvature per vertex (Lee §5.3; Pacheco §6; Alliez et al. 2003).
 //
 // Sign convention: k > 0 where the surface bends away from its normal (a sphere with
 // outward normals has k_min = k_max = 1/R), k < 0 where it bends towards it.
@@ -20,14 +20,14 @@
 //
 // Readings (docs/curvature.md):
 //  - `normal = ball` (default): n = area-weighted face normal over B and T restricted to
-//    n's tangent plane. SPEC's literal reading, `normal = tensor`, takes the eigenvector
+//    n's tangent plane. The literal reading (Alliez et al. 2003), `normal = tensor`, takes the eigenvector
 //    of the smallest-magnitude eigenvalue; wherever k_min ~ 0 (a cylinder, the torus's
 //    top and bottom circles) two eigenvalues are ~0 and that choice is arbitrary, so
 //    there the ball normal is projected into their eigenspace.
 //  - `ring_fallback = true` (default): where the ball does not reach all of v's
 //    neighbors, the 1-ring is used. The tensor lives on edges, so a ball that cuts the
 //    edges at v short of their far ends overestimates |k| by about (edge length / r).
-//    SPEC's literal ball is `false`.
+//    The literal ball (Alliez et al. 2003) is `false`.
 //
 // `jet`: Monge jet fitting (Cazals & Pouget 2005) of degree `jet_degree` on the
 // `jet_rings`-ring of v (grown until it has twice as many points as the polynomial has
@@ -94,7 +94,7 @@ struct CurvatureParams {
     v.real(radius, "radius", 0.01, 0.0, 0.5,
            "tensor: geodesic ball radius x bbox diagonal (Pacheco: 0.01); 0 = the 1-ring");
     v.choice(normal, "normal", CurvatureNormal::Ball, {"ball", "tensor"},
-             "tensor: normal from the ball's faces, or the tensor's smallest eigenvector (SPEC literal)");
+             "tensor: normal from the ball's faces, or the tensor's smallest eigenvector (Alliez et al. 2003)");
     v.boolean(ring_fallback, "ring_fallback", true,
               "tensor: the 1-ring where the ball misses some of v's neighbors (false: the literal ball)");
     v.choice(ball_clip, "ball_clip", BallClip::Exact, {"exact", "approximate"},

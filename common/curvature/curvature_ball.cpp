@@ -1,5 +1,5 @@
-// The sums of the curvature tensor over each vertex's 1-ring or geodesic ball (SPEC §1.1;
-// curvature.hpp has the definitions).
+// The sums of the curvature tensor over each vertex's 1-ring or geodesic ball (Lee et al. 2006, §5.3; Alliez et al.
+// 2003; curvature.hpp has the definitions).
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 

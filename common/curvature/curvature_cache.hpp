@@ -1,5 +1,5 @@
-// The on-disk cache of compute_curvature (SPEC §1.1): one binary file per (mesh content,
-// method, parameters), named by a hash of all three. A file is used only if its magic,
+// The on-disk cache of compute_curvature (Lee et al. 2006, §5.3; Alliez et al. 2003): one binary file per (mesh
+// content, method, parameters), named by a hash of all three. A file is used only if its magic,
 // format version, full key, size and payload checksum all match and every value is
 // finite; anything else is stale or corrupt and is recomputed and overwritten.
 #pragma once

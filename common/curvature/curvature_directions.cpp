@@ -1,4 +1,4 @@
-// Directions where the estimate has none (Lee §5.3, SPEC §1.1): umbilic and flat
+// Directions where the estimate has none (Lee §5.3): umbilic and flat
 // vertices take d_min from their neighbors, front by front, as the average of the
 // neighbors' directions projected to their tangent plane. Directions are lines, so the
 // average is the main axis of sum w wᵀ over the projected neighbor directions w, signed

@@ -53,7 +53,7 @@ double signed_dihedral_angle(const glm::dvec3& n0, const glm::dvec3& n1, const g
 // n.z = -1 (Duff et al. 2017, "Building an orthonormal basis, revisited").
 void tangent_basis(const glm::dvec3& n, glm::dvec3& t1, glm::dvec3& t2);
 
-// The sums over each vertex's ball (or 1-ring where SPEC or ring_fallback asks for it),
+// The sums over each vertex's ball (or 1-ring where radius = 0 or ring_fallback asks for it),
 // handed to f(v, sums) in parallel.
 void for_each_vertex_sums(const Mesh& mesh, const MeshTopology& topo, const CurvatureParams& p, Progress& progress,
                           const std::function<void(uint32_t, const BallSums&)>& f);
@@ -74,7 +74,7 @@ bool eigen_fit_vertex(const std::vector<glm::dvec3>& points, int degree, const g
 
 Curvature jet_curvature(const Mesh& mesh, const MeshTopology& topo, const CurvatureParams& p, Progress& progress);
 
-// SPEC §1.1's umbilic/flat test: the principal directions are undefined.
+// The umbilic/flat test of Lee et al. 2006, §5.3: the principal directions are undefined.
 bool directions_undefined(float k_min, float k_max, const CurvatureParams& p, float bbox_diagonal);
 
 // Gives every vertex whose directions are undefined a d_min propagated from its

@@ -1,5 +1,5 @@
-// Jet fitting (Cazals & Pouget 2005), SPEC §1.1: the independent estimator the tensor is
-// checked against. The neighborhoods are gathered here; the fit is Eigen's
+// Jet fitting (Cazals & Pouget 2005): the independent estimator the tensor
+// is checked against. The neighborhoods are gathered here; the fit is Eigen's
 // (common/curvature/curvature_jet_eigen.cpp) or CGAL 5.5's Monge_via_jet_fitting, the reference.
 #ifndef CGAL_EIGEN3_ENABLED
 #define CGAL_EIGEN3_ENABLED 1  // CGAL's Eigen SVD; Eigen is a dependency of plumbago_common

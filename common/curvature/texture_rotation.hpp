@@ -1,4 +1,4 @@
-// Texture rotation (SPEC 2.7; Lee §5.3): the window-space angle of a curvature
+// Texture rotation (Lee §5.3): the window-space angle of a curvature
 // direction d at a vertex p, projected with the Jacobian of the projection (not a finite
 // difference):
 //   c = M (p, 1),  e = M (d, 0),  J d = (W/2, H/2) (e.xy c.w - c.xy e.w) / c.w^2
@@ -26,7 +26,7 @@ struct WindowAngle {
 };
 WindowAngle window_angle(const ProjectionInfo& proj, glm::vec3 p, glm::vec3 d, float min_projected);
 
-// theta of `primary`, else of `secondary` + 90 degrees, else 0 (SPEC 2.7's rule).
+// theta of `primary`, else of `secondary` + 90 degrees, else 0 (the rule of Lee et al. 2006, §5.3).
 float stroke_angle(const ProjectionInfo& proj, glm::vec3 p, glm::vec3 primary, glm::vec3 secondary,
                    float min_projected);
 

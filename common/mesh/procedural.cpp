@@ -149,7 +149,7 @@ void add_box(Mesh& m, glm::vec3 lo, glm::vec3 hi) {
   add_fan(m, rings.back(), 4, {center, hi.z}, true);
 }
 
-// The unit cube [-0.5, 0.5]^3: 12 crease edges (SPEC 4.3); flat faces, so the resolution
+// The unit cube [-0.5, 0.5]^3: 12 crease edges (Kalnins et al. 2002, §4.5); flat faces, so the resolution
 // changes nothing.
 Mesh cube(float) {
   Mesh m;

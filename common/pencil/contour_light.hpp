@@ -1,7 +1,7 @@
-// Contour lighting (SPEC 2.3; Lee §4.1, Eq. 1): lit contours are drawn lighter.
+// Contour lighting (Lee §4.1, Eq. 1): lit contours are drawn lighter.
 //   d' = d l_c,   l_c = 1 - lambda min(1, sum_lights intensity max(0, N.L))
 // N the pixel's view-space shading normal (0 on the background: unlit), L the view-space
-// light directions. Reading (SPEC 2.3): Eq. 1 scales darkness, not the gray value.
+// light directions. Reading (Lee et al. 2006, §4.1, Eq. 1): Eq. 1 scales darkness, not the gray value.
 #pragma once
 
 #include "common/core/stage.hpp"

@@ -1,4 +1,4 @@
-// The contour texture (SPEC 1.2, 2.4): the layer `contour.texture_layer` of the pencil
+// The contour texture (Lee et al. 2006, §5.1, Eq. 3-4; §4.2-4.3): the layer `contour.texture_layer` of the pencil
 // stack (the last layer when the stack has fewer), which breaks up the contour copies.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Distorted planes for contour shaking (SPEC 1.4; Lee §4.2, Eq. 2; Pacheco §3).
+// Distorted planes for contour shaking (Lee §4.2, Eq. 2; Pacheco §3).
 // For copy k, at the grid vertex (x, y) (one every grid_cell pixels) the offset is
 //   dx_k = a sin(b y + c_k) + r xi_k(x, y),   dy_k = a sin(b x + c'_k) + r eta_k(x, y)
 // with b = 2 pi / shake_period, phases and xi, eta in [-1, 1] from the seeded RNG. Inside
@@ -19,7 +19,7 @@ namespace plumbago {
 // Offset grid of copy k: RG (dx, dy) in pixels, (ceil(W / cell) + 1) x (ceil(H / cell) + 1).
 std::vector<Image> distortion_grids(const ContourParams& p, int width, int height, uint32_t seed);
 
-// o_k: a seeded shift of copy k's contour texture, in texels (SPEC 2.4).
+// o_k: a seeded shift of copy k's contour texture, in texels (Lee et al. 2006, §4.2-4.3).
 std::vector<glm::vec2> contour_texture_shifts(const ContourParams& p, uint32_t seed);
 
 // The largest |dx| or |dy| of any grid (bilinear interpolation stays within it).

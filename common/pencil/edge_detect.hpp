@@ -1,4 +1,4 @@
-// Edge detection (SPEC 2.2; Nienhaus & Döllner 2003 as given in Pacheco §2).
+// Edge detection (Nienhaus & Döllner 2003 as given in Pacheco §2).
 //   I_n = clamp(1/2 (N_A.N_H + N_C.N_F), 0, 1)
 //   I_z = (1 - min(1, s/2 |z_A - z_H|))^2 (1 - min(1, s/2 |z_C - z_F|))^2
 //   contour darkness d = 1 - I_n I_z
@@ -35,8 +35,8 @@ struct EdgeDetectParams {
   }
 };
 
-// d of a background pixel whose neighbors are background too (SPEC 2.2): 0, or 1 under the
-// literal formula (zero normals disagree).
+// d of a background pixel whose neighbors are background too (Nienhaus & Döllner 2003, as given in Pacheco §2): 0, or 1
+// under the literal formula (zero normals disagree).
 inline float background_darkness(const EdgeDetectParams& p) {
   return p.background_pairs == BackgroundPairs::Continuous ? 0.0f : 1.0f;
 }

@@ -1,4 +1,4 @@
-// Multiple contour drawing (SPEC 2.4; Lee §4.2-4.3, Pacheco §4): the copies of the lit
+// Multiple contour drawing (Lee §4.2-4.3, Pacheco §4): the copies of the lit
 // contours, each read through its distorted plane (common/pencil/distortion.hpp) and broken up
 // by the contour texture (common/pencil/contour_texture.hpp):
 //   d_k = d'(p + offset_k(p)),  t_k = 1 - T_c(p / texture_scale + o_k)
@@ -34,7 +34,7 @@ struct ContourParams {
   }
 };
 
-// Where multiple contour drawing can differ from 0 (SPEC 2.4): a copy reads d' within the
+// Where multiple contour drawing can differ from 0 (Lee et al. 2006, §4.2-4.3): a copy reads d' within the
 // largest offset, d' differs from the background's within the edge filter's pixel of the
 // objects (common/scene/scene.hpp covered_rect), and the bilinear read adds one. The whole
 // window when the background's d is not 0 (edge.background_pairs = formula).

@@ -1,4 +1,4 @@
-// Paper (SPEC 1.3; Lee §5.5, Kalnins §4.4, Curtis et al. 1997): a tileable height field
+// Paper (Lee §5.5, Kalnins §4.4, Curtis et al. 1997): a tileable height field
 // h in [0, 1] from Perlin fBm plus a Worley (cellular) component for fibres, its normal
 // map n = normalize(-dh/dx s, -dh/dy s, 1) with s = bumpiness, and the paper color
 // c_p = mix(color_valley, color_peak, h).

@@ -1,4 +1,4 @@
-// Interior pencil shading (SPEC 2.6-2.10; Lee §5, Pacheco §7-8), one function of the
+// Interior pencil shading (Lee §5, Pacheco §7-8), one function of the
 // G-buffer per pixel:
 //   s = (1 - I') (layers - 1), r = (s + 0.5) / layers                     tone to layer (2.6)
 //   c_k = P(R(-theta_k) p / texture_scale, r)                              texture rotation (2.7)
@@ -34,7 +34,7 @@ inline InteriorOptions interior_options(const std::vector<std::string>& effects)
   return {has("crosshatch"), has("paper")};
 }
 
-// The weights of the corners' textures (SPEC 2.8): the barycentrics `w` for three-way
+// The weights of the corners' textures (Lee et al. 2006, §5.4): the barycentrics `w` for three-way
 // blending; for nearest_corner, 1 for the largest of them (the first on a tie), 0 else.
 glm::vec3 blend_weights(glm::vec3 w, const InteriorParams& p);
 

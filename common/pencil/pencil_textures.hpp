@@ -1,4 +1,4 @@
-// Pencil textures (SPEC 1.2; Lee §5.1, Eq. 3-4): a stack of tileable grayscale layers
+// Pencil textures (Lee §5.1, Eq. 3-4): a stack of tileable grayscale layers
 // (1 = white paper), layer 0 white, each layer the previous one plus strokes until its
 // mean intensity reaches a tone uniformly spaced from 1 down to `darkest`.
 // A stroke updates texel c_t with stroke color c_s (1 = no graphite):

@@ -65,7 +65,7 @@ std::map<std::string, Image> texture_gallery(const ParamSet& params, uint32_t se
     out["contour_offsets_" + std::to_string(k)] = offset_view(grids[k], contour.shake_amplitude + contour.shake_noise);
   auto noise = params.get<NoiseTextureParams>();
   auto sketchy = params.get<SketchyParams>();
-  // What each sketchy style reads (SPEC 3.2, 3.5): Perlin (default, repeat), white noise
+  // What each sketchy style reads (Nienhaus & Döllner 2004, §3.2; §3.4, §4): Perlin (default, repeat), white noise
   // (rough; (u, v) + 0.5 in red and green), the 3D Perlin's first slice (object).
   out["sketchy_noise"] = signed_view(perlin_noise_texture(noise, seed));
   out["sketchy_white_noise"] = rg_view(white_noise_texture(noise.size, seed), 1, 0);

@@ -1,4 +1,4 @@
-// Every texture the pipeline generates on the CPU (SPEC 1.2-1.4), made once per
+// Every texture the pipeline generates on the CPU (Lee et al. 2006, §4.2, §5.1, §5.5), made once per
 // parameter set and uploaded unchanged to the GPU, plus a way to look at them.
 #pragma once
 

@@ -40,7 +40,7 @@ Scene scene_at_frame(const Scene& scene, int frame);
 
 // The camera of frame i of the path `scene` lies on (its own camera without an animation).
 Camera frame_camera(const Scene& scene, int frame);
-// The cameras of frames 0..scene.frame: what time-driven effects (SPEC 4.10's hatching
+// The cameras of frames 0..scene.frame: what time-driven effects (the hatching of Kalnins et al. 2002, §6,
 // transitions) replay, so that a frame does not depend on the frames rendered before it.
 std::vector<Camera> path_cameras(const Scene& scene);
 

@@ -1,4 +1,4 @@
-// The pinhole camera of SPEC §0: right-handed view space looking down -Z, vertical field
+// The pinhole camera of docs/conventions.md: right-handed view space looking down -Z, vertical field
 // of view, pixel centers at (i + 0.5, j + 0.5) from the bottom-left corner.
 #pragma once
 
@@ -19,7 +19,7 @@ struct Camera {
   glm::vec3 forward() const;
 };
 
-// Primary-ray directions of one camera and image size (SPEC 0), the camera basis
+// Primary-ray directions of one camera and image size (docs/conventions.md), the camera basis
 // computed once.
 class PrimaryRays {
  public:

@@ -1,4 +1,4 @@
-// The G-buffer of SPEC §2.1, written alike by the rasterizer (gpu/scene/gbuffer.cpp) and the
+// The G-buffer (docs/stages.md, gbuffer), written alike by the rasterizer (gpu/scene/gbuffer.cpp) and the
 // Embree tracer (reference/scene/gbuffer.cpp), from the same world-space geometry.
 #pragma once
 
@@ -29,8 +29,8 @@ struct GBuffer {
   Image depth;        // 1 ch: linear view depth d = -z_view; `far` for background
   ImageU32 ids;       // 2 ch: object index + 1 (0 = background), triangle index in its mesh
   Image bary;         // 3 ch: barycentric coordinates (w0, w1, w2); 0 for background
-  Image gouraud;      // 1 ch: interpolated Gouraud intensity (SPEC 2.5); 1 for background
-  Image theta_min;    // 3 ch: window-space angle of each corner's min-curvature direction (SPEC 2.7)
+  Image gouraud;      // 1 ch: interpolated Gouraud intensity (Lee et al. 2006, §3, §5.2); 1 for background
+  Image theta_min;    // 3 ch: window-space angle of each corner's min-curvature direction (Lee et al. 2006, §5.3)
   Image theta_max;    // 3 ch: the same for the max-curvature direction; both 0 without curvature
   float near = 0, far = 1;
 
@@ -43,7 +43,7 @@ struct WorldObject {
   std::vector<glm::vec3> positions;    // world space
   std::vector<glm::vec3> normals;      // world space, unit (face normals when flat)
   std::vector<glm::uvec3> triangles;
-  std::vector<float> gouraud;          // per vertex, SPEC 2.5
+  std::vector<float> gouraud;          // per vertex, Lee et al. 2006, §3, §5.2
   std::vector<glm::vec3> d_min, d_max; // world space, unit; empty without curvature
   bool flat = false;
 };
@@ -55,11 +55,11 @@ std::vector<WorldObject> world_geometry(const Scene& scene, const std::vector<Cu
 // zero-area triangle, never NaN.
 glm::vec3 face_normal(const WorldObject& obj, size_t t);
 
-// Normalized depth z = (d - near) / (far - near): 1 for background (SPEC §0).
+// Normalized depth z = (d - near) / (far - near): 1 for background (docs/conventions.md).
 Image normalized_depth(const GBuffer& g);
 
 // The channels of a G-buffer as outputs of a stage (dumps hold the normalized depth), each
-// saying how parity compares raster against ray (SPEC 5); the corner angles of SPEC 2.7
+// saying how parity compares raster against ray (docs/conventions.md); the corner angles of Lee et al. 2006, §5.3
 // `with_angles`.
 std::vector<Output> gbuffer_outputs(const GBufferSlot& g, bool with_angles);
 

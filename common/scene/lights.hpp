@@ -1,4 +1,4 @@
-// Light sums shared by the stages that shade (SPEC 2.3, 2.5).
+// Light sums shared by the stages that shade (Lee et al. 2006, §4.1, Eq. 1; §3, §5.2).
 #pragma once
 
 #include <vector>

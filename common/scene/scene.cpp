@@ -422,8 +422,8 @@ struct PositionedParser : nlohmann::detail::json_sax_dom_parser<json> {
   size_t byte = 0;
 };
 
-// The scene's effects. "sketchy" and "strokes" go with objects of those styles (SPEC 3, 4):
-// on by themselves when one is, refused when none is; so is "basecoat", which coats the
+// The scene's effects. "sketchy" and "strokes" go with objects of those styles (Nienhaus & Döllner 2004; Kalnins et al.
+// 2002): on by themselves when one is, refused when none is; so is "basecoat", which coats the
 // stroke objects. Without "effects": contours for the pencil objects, the base coat for
 // the stroke objects.
 void set_effects(const json& j, const SceneReader& r, Scene& s) {

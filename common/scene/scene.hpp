@@ -20,8 +20,8 @@
 
 namespace plumbago {
 
-// Which pipeline draws an object: the pencil effects (SPEC 2), sketchy drawing (SPEC 3),
-// or stroke-based rendering (SPEC 4). `Shaded` objects are drawn by the pencil effects.
+// Which pipeline draws an object: the pencil effects (Lee et al. 2006), sketchy drawing (Nienhaus & Döllner 2004),
+// or stroke-based rendering (Kalnins et al. 2002). `Shaded` objects are drawn by the pencil effects.
 enum class Style { Pencil, Sketchy, Shaded, Strokes };
 // The scene file's names of the styles, in enum order: pencil, sketchy, shaded, strokes.
 const std::vector<std::string>& style_names();
@@ -34,14 +34,14 @@ struct SceneObject {
   bool flat = false;          // shading normals = face normals
 };
 
-// The stroke style of each kind of feature line of the stroke objects (SPEC 4.6-4.7;
+// The stroke style of each kind of feature line of the stroke objects (Kalnins et al. 2002, §4.1;
 // presets in styles/strokes, common/strokes/stroke_style.hpp). Scene key "strokes".
 struct StrokeStyles {
   StrokeStyle crease = default_stroke_style(), border = default_stroke_style(), silhouette = default_stroke_style();
   // The offset examples drawn in the scene's stroke files (roles "crease" and "silhouette",
   // common/strokes/stroke_file.hpp drawn_offsets), which replace the styles' own: creases and
   // borders take the crease examples. Several are rubber-stamped in turn (run after run)
-  // or make one Markov chain (SPEC 4.8).
+  // or make one Markov chain (Kalnins et al. 2002, §4.3, §5, App. A).
   std::vector<OffsetExample> crease_examples, silhouette_examples;
 };
 
@@ -70,7 +70,7 @@ struct Scene {
   std::optional<Animation> animation;  // a camera path; none: one frame
   int frame = 0;                       // the frame of `animation` this scene shows (scene_at_frame)
   Camera path_start;                   // with frame > 0: the path's first camera (frame_camera)
-  std::vector<StrokeFile> stroke_files;  // the artist's strokes (SPEC 4.9), key "stroke_files"
+  std::vector<StrokeFile> stroke_files;  // the artist's strokes (Kalnins et al. 2002, §3, §4.5), key "stroke_files"
 };
 
 // A scene refused: the message names the file and the JSON path of the offending key.
@@ -98,7 +98,7 @@ Scene parse_scene(const std::string& json_text, const std::string& source, const
 Scene builtin_scene(const std::string& name);
 std::vector<std::string> builtin_scene_names();
 
-// An effect that draws only the objects of one style (SPEC 3, 4; EffectDef::styled):
+// An effect that draws only the objects of one style (Nienhaus & Döllner 2004; Kalnins et al. 2002; EffectDef::styled):
 // "sketchy" the sketchy objects, "strokes" and "basecoat" the stroke objects. A scene
 // lists one only when an object has its style; the `automatic` ones, without which those
 // objects are not drawn at all ("sketchy", "strokes"), are on by themselves then.

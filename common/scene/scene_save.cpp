@@ -85,7 +85,7 @@ void rebase_stroke_styles(json& doc, const Rebase& rebase) {
   }
 }
 
-// Stroke files (SPEC 4.9) are relative to the scene.
+// Stroke files (Kalnins et al. 2002, §3, §4.5) are relative to the scene.
 void rebase_stroke_files(json& doc, const Rebase& rebase) {
   if (!doc.contains("stroke_files") || !doc["stroke_files"].is_array()) return;
   for (json& file : doc["stroke_files"]) rebase(file);

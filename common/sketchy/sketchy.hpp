@@ -1,4 +1,4 @@
-// Sketchy drawing (SPEC §3; Nienhaus & Döllner 2004): its parameters, the split of a
+// Sketchy drawing (Nienhaus & Döllner 2004): its parameters, the split of a
 // scene into sketchy and ordinary objects, and the enlarged geometry of the `object`
 // style. The per-pixel formulas live in reference/sketchy_*.cpp and their GLSL twins
 // shaders/sketchy_*.frag.
@@ -30,9 +30,9 @@ struct SketchyParams {
   template <class V>
   void visit(V& v) {
     v.choice(style, "style", SketchyStyle::Default, {"default", "repeat", "rough", "object"},
-             "SPEC 3.5: default (edges and shade), repeat (edge copies), rough (uncorrelated noise), "
-             "object (3D noise on the enlarged geometry)");
-    v.integer(octaves, "octaves", 4, 1, 8, "octaves of the turbulence T (SPEC 3.2)");
+             "Nienhaus & Döllner 2004, §3.4, §4: default (edges and shade), repeat (edge copies), "
+             "rough (uncorrelated noise), object (3D noise on the enlarged geometry)");
+    v.integer(octaves, "octaves", 4, 1, 8, "octaves of the turbulence T (Nienhaus & Döllner 2004, §3.2)");
     v.real(noise_scale, "noise_scale", 512, 8, 65536, "window pixels per tile of the noise texture: (s,t) = p / noise_scale");
     v.real(edge_a, "edge_a", 6, -64, 64, "M_e = [[a, b], [c, d]] turns (u, v) into the edge offset, pixels (paper Fig. 4)");
     v.real(edge_b, "edge_b", 0, -64, 64, "M_e, b");
@@ -63,7 +63,7 @@ struct SketchyParams {
 Scene sketchy_objects(const Scene& scene);
 Scene ordinary_objects(const Scene& scene);
 
-// The unlit color of each object of `scene` (the shade map's, SPEC 3.1).
+// The unlit color of each object of `scene` (the shade map's, Nienhaus & Döllner 2004, §3.1).
 std::vector<glm::vec3> object_colors(const Scene& scene);
 
 // The `object` style's geometry (paper §4.2): each vertex moved by `distance` along its
@@ -75,7 +75,7 @@ Scene enlarged_scene(const Scene& sketchy);
 // enlarged mesh's bbox diagonal, one per vertex.
 std::vector<glm::vec3> noise_coordinates(const Mesh& enlarged);
 
-// The farthest the composite reads from its pixel (SPEC 3.2): |M (u, v)| <= ||M||_F |(u, v)|
+// The farthest the composite reads from its pixel (Nienhaus & Döllner 2004, §3.2): |M (u, v)| <= ||M||_F |(u, v)|
 // with |u|, |v| <= 1.5 (T < 2), 0.5 for the rough style's white noise; the largest of M_s
 // and M_e, whose turned copies keep the norm.
 float sketch_reach(const SketchyParams& p);
@@ -85,17 +85,17 @@ float sketch_reach(const SketchyParams& p);
 // are exterior and the fragment would be discarded.
 PixelRect composite_rect(const Scene& sketchy, int width, int height);
 
-// M_e and M_s of SPEC 3.2, acting on the column vector (u, v): [[a, b], [c, d]].
+// M_e and M_s of Nienhaus & Döllner 2004, §3.2, acting on the column vector (u, v): [[a, b], [c, d]].
 glm::mat2 edge_matrix(const SketchyParams& p);
 glm::mat2 shade_matrix(const SketchyParams& p);
-// Repeat style (SPEC 3.5), edge copy k: M_e turned by k x copy_rotation_deg; its ink,
+// Repeat style (Nienhaus & Döllner 2004, §3.4, §4), edge copy k: M_e turned by k x copy_rotation_deg; its ink,
 // black for the first copy and the copy color for the last; and where its turbulence is
 // read: (s, t) shifted by k x (0.37, 0.61) of a noise tile, so that copies differ.
 glm::mat2 copy_matrix(const SketchyParams& p, int k);
 glm::vec3 copy_ink(const SketchyParams& p, int k);
 glm::vec2 copy_noise_shift(int k);
 
-// What the uncertainty reads (SPEC 3.2, 3.5), made once per scene ("sketchy_noise"),
+// What the uncertainty reads (Nienhaus & Döllner 2004, §3.2; §3.4, §4), made once per scene ("sketchy_noise"),
 // only what sketchy.style needs.
 struct SketchyNoise {
   Image perlin;                  // default, repeat: noise.size^2 tileable Perlin in [-1, 1]

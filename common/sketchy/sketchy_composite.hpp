@@ -1,4 +1,4 @@
-// Sketchy composite and depth sprite (SPEC 3.2-3.5; Nienhaus & Döllner §3.2-3.4, §4): the
+// Sketchy composite and depth sprite (Nienhaus & Döllner §3.2-3.4, §4): the
 // edge and shade maps read through the uncertainty's offsets, drawn as a depth sprite over
 // what the pencil pipeline drew. The GPU tests the sprite against the G-buffer pass's depth
 // buffer, which parity cannot upload: the composite's parity is over white paper, and the

@@ -1,4 +1,4 @@
-// The `object` style's enlarged geometry (SPEC 3.5; Nienhaus & Döllner §4.2-4.3): each
+// The `object` style's enlarged geometry (Nienhaus & Döllner §4.2-4.3): each
 // pixel holds the 3D noise coordinate of the enlarged surface it sees (common/sketchy/sketchy.hpp).
 #pragma once
 

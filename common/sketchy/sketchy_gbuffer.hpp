@@ -1,4 +1,4 @@
-// The G-buffer of the objects whose style is sketchy (SPEC 3.1): the G-buffer of 2.1 drawn
+// The G-buffer of the objects whose style is sketchy (Nienhaus & Döllner 2004, §3.1): the G-buffer of 2.1 drawn
 // for them alone, which their edge and shade maps read.
 #pragma once
 

@@ -1,5 +1,6 @@
-// Sketchy drawing's maps (SPEC 3.1): the edge map of the sketchy objects (contour
-// darkness of SPEC 2.2 and the depth it belongs to) and their shade map (unlit color).
+// Sketchy drawing's maps (Nienhaus & Döllner 2004, §3.1): the edge map of the sketchy objects (contour
+// darkness of Nienhaus & Döllner 2003, as given in Pacheco §2 and the depth it belongs to) and their shade map (unlit
+// color).
 #pragma once
 
 #include "common/pencil/edge_detect.hpp"

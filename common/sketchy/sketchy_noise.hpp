@@ -1,4 +1,4 @@
-// The noise textures of sketchy drawing's uncertainty (SPEC 3.2, 3.5; common/util/noise.hpp),
+// The noise textures of sketchy drawing's uncertainty (Nienhaus & Döllner 2004, §3.2; §3.4, §4; common/util/noise.hpp),
 // only what sketchy.style reads.
 #pragma once
 

@@ -182,7 +182,7 @@ std::vector<glm::dvec2> vertex_normals(const std::vector<glm::dvec2>& p, bool cy
   return out;
 }
 
-// 5. The factors of SPEC 4.6, each 1 outside its range.
+// 5. The factors of Kalnins et al. 2002, §4.1, each 1 outside its range.
 double taper(double dl, double T) { return dl < T ? std::sqrt(std::max(0.0, 1 - std::pow((T - dl) / T, 2))) : 1.0; }
 double fade(double dl, double F) { return dl < F ? std::pow(std::max(0.0, 1 - std::pow((F - dl) / F, 2)), 1.5) : 1.0; }
 double halo_base(double dh, double H) { return dh < H ? std::max(0.0, 1 - std::pow((H - dh) / H, 2)) : 1.0; }  // 1 - h^2

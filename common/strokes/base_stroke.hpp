@@ -1,15 +1,15 @@
-// Base strokes (SPEC 4.6, 4.8, 4.11; Kalnins et al. 2002 §4.2, §5): a visible run of a
-// path, in window pixels (origin bottom-left, SPEC §0), turned into the triangles of a
+// Base strokes (Kalnins et al. 2002 §4.2, §5): a visible run of a
+// path, in window pixels (origin bottom-left, docs/conventions.md), turned into the triangles of a
 // ribbon that both backends draw: the GPU as GL_TRIANGLES, the reference with its scalar
 // rasterizer, the very same triangles. Geometry is double inside, the output float.
 //
-// 1. Spline (SPEC 4.6). Input points that are not finite are dropped, and repeats (closer
+// 1. Spline (Kalnins et al. 2002, §4.1). Input points that are not finite are dropped, and repeats (closer
 //    than 1e-6 px) merged; a closed run's last point equal to its first is dropped. A
 //    closed run needs 3 distinct points, with fewer it is drawn open. Non-uniform
 //    Catmull-Rom: span p_i -> p_{i+1} of chord d is the cubic Hermite curve with end
 //    tangents d v_i and d v_{i+1}, where
 //      v_i = (p_{i+1} - p_{i-1}) / (|p_{i+1} - p_i| + |p_i - p_{i-1}|)
-//    (SPEC: tangent at p1 = (p2 - p0) |p2-p1| / (|p2-p1| + |p1-p0|)); |v_i| <= 1, so no span
+//    (docs/stages.md: tangent at p1 = (p2 - p0) |p2-p1| / (|p2-p1| + |p1-p0|)); |v_i| <= 1, so no span
 //    overshoots. Parabolic end slopes: an open run's first span takes m0 = 2 (p1 - p0) - m1,
 //    its last span m1 = 2 (p_n - p_{n-1}) - m0, which makes those spans parabolas that join
 //    the next span's tangent. Two points give a straight segment.
@@ -24,8 +24,8 @@
 //    (n + 1 samples, the first and last at the ends; a closed run's last sample is its
 //    first again, at arc length L), so the step is sample_px or a little less. Where the
 //    offsets lift or land the pen, a sample is added at exactly that arc length.
-// 4. Offsets, rubber-stamped (SPEC 4.8, 4.11). At arc length s the example's offset list
-//    is interpolated linearly at t = (s mod L_drawn) / L_drawn, wrapping from its last
+// 4. Offsets, rubber-stamped (Kalnins et al. 2002, §4.3, §5, App. A; Kalnins et al. 2003). At arc length s the
+//    example's offset list is interpolated linearly at t = (s mod L_drawn) / L_drawn, wrapping from its last
 //    offset to its first (period L_drawn); the displacement is scaled by
 //    min(L / L_drawn, 1). An offset with its break flag lifts the pen until the next
 //    offset: the ribbon is not drawn there, so it splits into pieces. A lift of zero

@@ -23,7 +23,7 @@ Image basecoat_texture(const BaseCoatParams& p) {
 
 namespace {
 
-// s = sum_k I_k (n . L_k), or of |n . L_k| (SPEC 4.1).
+// s = sum_k I_k (n . L_k), or of |n . L_k| (Kalnins et al. 2002, §4.2).
 float vertex_shade(glm::vec3 n, const std::vector<Light>& unit_lights, const BaseCoatParams& p) {
   float s = 0;
   for (const Light& l : unit_lights) {

@@ -1,11 +1,11 @@
-// Base coat (SPEC 4.1; Kalnins et al. 2002 §4.2, toon shading after Lake et al. 2000): the
+// Base coat (Kalnins et al. 2002 §4.2, toon shading after Lake et al. 2000): the
 // first layer of stroke-based rendering. Per vertex, from the shading normal n and the
 // scene's unit lights L_k (world space, intensities I_k),
 //   s = sum_k I_k (n . L_k)          (|n . L_k| with abs_n_dot_l)
 // interpolated across the face with the barycentrics, looks up a 1D RGBA texture T at
 // texture coordinate s (LINEAR, CLAMP_TO_EDGE: s <= 0 reads the first texel): the coat is
 // T(s), straight alpha, on the objects whose style is `strokes` and transparent (0)
-// elsewhere. The paper effect of SPEC 4.2
+// elsewhere. The paper effect of Kalnins et al. 2002, §4.4
 // (common/strokes/stroke_paper.hpp) composes it. T is generated here from a preset: `toon`, two tones split at `threshold`; `smooth`, a
 // linear ramp from the dark to the light color; `solid`, the light color alone.
 #pragma once
@@ -33,7 +33,7 @@ struct BaseCoatParams {
   void visit(V& v) {
     v.choice(preset, "preset", BaseCoatPreset::Toon, {"toon", "smooth", "solid"},
              "the 1D texture: two tones (toon), a ramp from dark to light (smooth), or the light color (solid)");
-    v.boolean(abs_n_dot_l, "abs_n_dot_l", false, "s sums |n.L| instead of n.L (SPEC 4.1)");
+    v.boolean(abs_n_dot_l, "abs_n_dot_l", false, "s sums |n.L| instead of n.L (Kalnins et al. 2002, §4.2)");
     v.real(threshold, "threshold", 0.4, 0.0, 1.0, "toon: s below this gets the dark tone");
     v.real(dark_r, "dark_r", 0.55, 0.0, 1.0, "dark tone, red");
     v.real(dark_g, "dark_g", 0.45, 0.0, 1.0, "dark tone, green");

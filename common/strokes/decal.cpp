@@ -1,4 +1,4 @@
-// Decals (SPEC 4.9): see common/strokes/decal.hpp.
+// Decals (Kalnins et al. 2002, §3, §4.5): see common/strokes/decal.hpp.
 #include "common/strokes/decal.hpp"
 
 #include <algorithm>

@@ -1,11 +1,11 @@
-// Decals (SPEC 4.9; Kalnins et al. 2002 §3, "decal strokes"): strokes of the stroke files
+// Decals (Kalnins et al. 2002 §3, "decal strokes"): strokes of the stroke files
 // (common/strokes/stroke_file.hpp) fixed on the surface where they were drawn.
 //
 // 1. Projection, once per renderer. Each decal stroke's polyline is resampled every
 //    kDecalStepPx px of the drawing (its ends kept, pressure interpolated linearly), so
 //    that consecutive surface points lie close on the surface, and each sample p is
 //    projected through the stroke file's camera at its resolution: the ray from the eye
-//    through window point p (SPEC 0, PrimaryRays) meets the nearest face. It is kept as a
+//    through window point p (docs/conventions.md, PrimaryRays) meets the nearest face. It is kept as a
 //    surface point: object, face, barycentrics (weights of the face's corners 0, 1, 2). A
 //    sample whose ray meets nothing is kept as missed and splits the stroke. The backends
 //    find the face each their own way:
@@ -21,7 +21,7 @@
 // 2. Every frame, the surface points are placed in the world (the object's transform) and
 //    projected to the window: a decal path (common/strokes/strokes.hpp, LineKind::Decal), split
 //    where a sample missed, where the object changes and at the near plane. Its samples
-//    are visible where the ID image holds their face's key (SPEC 4.5, SampleKind decal:
+//    are visible where the ID image holds their face's key (Kalnins et al. 2002, §4.6, SampleKind decal:
 //    the face of the nearer path point), and its visible runs are drawn as base strokes
 //    in the decal's style (common/strokes/stroke.hpp), after the feature lines.
 // 3. Pressure: the drawn pressure, carried by the surface points, multiplies the width
@@ -47,7 +47,7 @@ constexpr double kDecalStepPx = 2.0;  // px of the drawing between projected sam
 constexpr uint32_t kMissed = std::numeric_limits<uint32_t>::max();
 
 // A surface stroke's samples in its file's window, before projection: a decal, or a hatch
-// of a hatching group (SPEC 4.10, common/strokes/hatching.hpp), which is projected the same way.
+// of a hatching group (Kalnins et al. 2002, §6, common/strokes/hatching.hpp), which is projected the same way.
 struct DecalSamples {
   const StrokeFile* file;
   const StrokeStyle* style;
@@ -86,7 +86,7 @@ glm::dvec3 decal_point_world(const Scene& scene, const DecalPoint& p);
 // renderer, the reference by rays each frame) and hands window_lines.
 using DecalSurface = std::vector<ProjectedDecal>;
 
-// The ray of window point p of `file`'s camera (SPEC 0): from the eye, unit direction.
+// The ray of window point p of `file`'s camera (docs/conventions.md): from the eye, unit direction.
 struct DecalRay {
   glm::dvec3 origin, direction;
 };

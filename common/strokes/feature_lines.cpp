@@ -1,4 +1,4 @@
-// Feature lines (SPEC 4.3): see common/strokes/feature_lines.hpp for the definitions.
+// Feature lines (Kalnins et al. 2002, §4.5): see common/strokes/feature_lines.hpp for the definitions.
 #include "common/strokes/feature_lines.hpp"
 
 #include <algorithm>
@@ -11,7 +11,7 @@ namespace plumbago {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kZeroG = -1e-8;  // SPEC 4.3: g = 0 exactly is taken as -1e-8
+constexpr double kZeroG = -1e-8;  // Kalnins et al. 2002, §4.5: g = 0 exactly is taken as -1e-8
 constexpr int32_t kNone = -1;
 #ifndef WEIGHTING
 #define WEIGHTING 2
@@ -45,7 +45,7 @@ int corner_of(const Mesh& mesh, uint32_t f, uint32_t v) {
   return -1;
 }
 
-// SPEC 4.3: a crease when n1·n2 < cos(crease_deg); a border when the edge has one face.
+// Kalnins et al. 2002, §4.5: a crease when n1·n2 < cos(crease_deg); a border when the edge has one face.
 EdgeKind classify_edge(const MeshTopology::Edge& e, const std::vector<glm::dvec3>& unit_normals, double cos_crease) {
   if (e.face[1] < 0) return EdgeKind::border;
   glm::dvec3 n1 = unit_normals[size_t(e.face[0])], n2 = unit_normals[size_t(e.face[1])];
@@ -110,7 +110,7 @@ VertexChain walk_chain(const Geometry& g, const std::vector<std::vector<uint32_t
   return chain;
 }
 
-// SPEC 4.3: maximal paths of the crease+border graph; paths start at vertices of degree
+// Kalnins et al. 2002, §4.5: maximal paths of the crease+border graph; paths start at vertices of degree
 // other than 2, and what is left afterwards is closed loops.
 std::vector<VertexChain> chain_feature_edges(const Geometry& g) {
   auto around = feature_edges_of_vertices(g);
@@ -233,7 +233,7 @@ glm::dvec3 weighted_corner_normal(const Geometry& g, uint32_t f, int k) {
   return finite(n) ? n : glm::dvec3(0.0);
 }
 
-// SPEC 4.3 crease-aware vertex normals, one per face corner: the weighted face normals
+// Kalnins et al. 2002, §4.5 crease-aware vertex normals, one per face corner: the weighted face normals
 // (above) summed over the corner's fan, normalized (zero where they sum to zero).
 std::vector<glm::dvec3> crease_aware_corner_normals(const Geometry& g) {
   DisjointSets fans = corner_fans(g);
@@ -245,7 +245,7 @@ std::vector<glm::dvec3> crease_aware_corner_normals(const Geometry& g) {
   return normals;
 }
 
-// SPEC 4.3: g = n · normalize(eye - x), or the paper's n · (eye - x); 0 -> -1e-8.
+// Kalnins et al. 2002, §4.5: g = n · normalize(eye - x), or the paper's n · (eye - x); 0 -> -1e-8.
 double silhouette_test(glm::dvec3 normal, glm::dvec3 x, glm::dvec3 eye, bool normalized) {
   glm::dvec3 to_eye = normalized ? unit_or_zero(eye - x) : eye - x;
   double value = glm::dot(normal, to_eye);
@@ -270,7 +270,7 @@ struct FaceSegment {
   bool exists() const { return slot[0] >= 0; }
 };
 
-// SPEC 4.3: the crossing on the edge in slot `slot` of face f (corners slot, slot + 1),
+// Kalnins et al. 2002, §4.5: the crossing on the edge in slot `slot` of face f (corners slot, slot + 1),
 // p = a + (b - a) g_a / (g_a - g_b), a -> b running the edge's own way (from -> to) so
 // that both faces of the edge give the same point. The slot is one where g changes sign.
 SurfacePoint edge_crossing(const Geometry& g, const std::vector<double>& values, uint32_t f, int slot) {
@@ -309,7 +309,7 @@ FaceSegment face_segment(const Geometry& g, const std::vector<double>& values, g
     if (sign_changes(values, f, k)) s.slot[found++] = k;
   if (found < 2) return FaceSegment{};
   glm::dvec3 mid = 0.5 * (edge_crossing(g, values, f, s.slot[0]).position + edge_crossing(g, values, f, s.slot[1]).position);
-  s.front = glm::dot(scaled_gradient(g, values, f), eye - mid) >= 0;  // SPEC 4.3 front/back
+  s.front = glm::dot(scaled_gradient(g, values, f), eye - mid) >= 0;  // Kalnins et al. 2002, §4.5 front/back
   return s;
 }
 
@@ -375,7 +375,7 @@ FaceChain trace_faces(const Geometry& g, const std::vector<double>& values, cons
   return chain;
 }
 
-// SPEC 4.3 tracing: open paths from their dead ends (a crease, a border, a face without a
+// Kalnins et al. 2002, §4.5 tracing: open paths from their dead ends (a crease, a border, a face without a
 // matching segment), then closed loops from whatever is left.
 std::vector<FaceChain> trace_silhouettes(const Geometry& g, const std::vector<double>& values,
                                          const std::vector<FaceSegment>& segments) {

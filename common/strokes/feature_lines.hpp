@@ -1,4 +1,4 @@
-// Feature lines of a triangle mesh as geometry (SPEC 4.3; Kalnins et al. 2002, §4.5):
+// Feature lines of a triangle mesh as geometry (Kalnins et al. 2002, §4.5):
 // creases, borders and silhouettes, in double precision, with no GL and no ray tracer,
 // so that both backends draw the same paths.
 //
@@ -7,7 +7,7 @@
 // the mesh's own object space. The sign of n·(eye - x) does not change under an affine
 // map (normals go by the inverse transpose), so the silhouette is the same set either way.
 //
-// Creases and borders (SPEC 4.3, first item):
+// Creases and borders (Kalnins et al. 2002, §4.5):
 //   - an edge is a crease when its two face normals satisfy n1·n2 < cos(crease_deg)
 //     (default 60°: n1·n2 < 0.5); an edge next to a zero-area face (no normal) is not;
 //   - a border is an edge with one face (build_topology's face[1] = -1, which includes
@@ -18,7 +18,7 @@
 //     where it changes from crease to border, since they are reported apart.
 //   - a path point at a vertex carries the lowest-index face holding that vertex.
 //
-// Silhouettes (SPEC 4.3, second item; paper §4.5, "the zero set of n·(c - x)"):
+// Silhouettes (Kalnins et al. 2002, §4.5, "the zero set of n·(c - x)"):
 //   - g = n · normalize(eye - x) per face corner (`silhouette_normalized`, the default),
 //     or the paper's literal g = n · (eye - x); n is the crease-aware vertex normal: the
 //     weighted average of the face normals of the fan of faces around the vertex reached
@@ -37,13 +37,13 @@
 //   - orientation: a traced path runs so that the visible side (g > 0) lies on its left,
 //     seen from the side the face normal points to: (n_f × d) · ∇g > 0 for the first
 //     segment with a nonzero gradient.
-//   - front/back (SPEC 4.3, third item). ∇g is the gradient of g interpolated linearly
+//   - front/back (Kalnins et al. 2002, §4.5). ∇g is the gradient of g interpolated linearly
 //     over the face, in the face's plane. A segment is front-facing when ∇g · (eye - m) >= 0,
 //     m its midpoint: g grows towards the eye, i.e. the surface bends away from the viewer
 //     (positive radial curvature), as on the whole silhouette of a convex object seen
-//     from outside; zero-area faces (∇g = 0) count as front-facing. The SPEC's wording
-//     ("the gradient points away from the eye side") describes the same test with g of the
-//     opposite sign, n·(x - c). Paths are cut where the facing changes; back-facing
+//     from outside; zero-area faces (∇g = 0) count as front-facing. The wording "the
+//     gradient points away from the eye side" (docs/readings.md) is the same test with g of
+//     the opposite sign, n·(x - c). Paths are cut where the facing changes; back-facing
 //     pieces are dropped unless `keep_back_facing`, and kept ones say which they are.
 //
 // Robustness: every face and every edge is visited a bounded number of times, so the
@@ -97,11 +97,11 @@ class FeatureLineMesh {
   std::shared_ptr<const Impl> impl_;
 };
 
-// All three kinds of SPEC 4.3 for one mesh and one eye (see above for the frames).
+// All three kinds of feature line (Kalnins et al. 2002, §4.5) for one mesh and one eye (see above for the frames).
 FeatureLines feature_lines(const Mesh& mesh, const glm::dmat4& object_to_world, glm::dvec3 eye_world,
                            const FeatureLineOptions& options = {});
 
-// The silhouette test g of SPEC 4.3 per face corner (index 3 f + k), with the
+// The silhouette test g of Kalnins et al. 2002, §4.5 per face corner (index 3 f + k), with the
 // g = 0 -> -1e-8 rule applied; `eye_object` in object space. Exposed for tests.
 std::vector<double> silhouette_function(const Mesh& mesh, glm::dvec3 eye_object, const FeatureLineOptions& options = {});
 

@@ -1,4 +1,4 @@
-// Hatching groups (SPEC 4.10): see common/strokes/hatching.hpp.
+// Hatching groups (Kalnins et al. 2002, §6): see common/strokes/hatching.hpp.
 #include "common/strokes/hatching.hpp"
 
 #include <algorithm>

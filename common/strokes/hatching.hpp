@@ -1,4 +1,4 @@
-// Hatching groups (SPEC 4.10; Kalnins et al. 2002 §6.1-6.2): strokes of the stroke files
+// Hatching groups (Kalnins et al. 2002 §6.1-6.2): strokes of the stroke files
 // (role "hatching", common/strokes/stroke_file.hpp) drawn on the surface like decals
 // (common/strokes/decal.hpp), whose number follows the group's size on screen.
 //
@@ -55,10 +55,12 @@ struct HatchingParams {
   template <class V>
   void visit(V& v) {
     v.real(t_plus, "t_plus", 1.6, 1.0, 2.0,
-           "t+: up a level when sigma reaches sigma_next t+ / 2 (a structured group doubles at t+, SPEC 4.10)");
+           "t+: up a level when sigma reaches sigma_next t+ / 2 (a structured group doubles at t+, Kalnins et al. "
+           "2002, §6)");
     v.real(t_minus, "t_minus", 1.4, 1.0, 2.0,
            "t-: down a level when sigma falls below sigma_level t- / 2 (hysteresis; above t+ counts as t+)");
-    v.real(fade_s, "fade_s", 0.5, 0.0, 10.0, "seconds of frame time a level transition takes (SPEC 4.10)");
+    v.real(fade_s, "fade_s", 0.5, 0.0, 10.0,
+           "seconds of frame time a level transition takes (Kalnins et al. 2002, §6)");
     v.integer(max_level, "max_level", 2, 0, kMaxHatchLevel,
               "a structured group's highest level (2^level x its hatches); beyond it the strokes only thicken");
   }

@@ -1,4 +1,4 @@
-// The ID image's triangles (SPEC 4.4): see common/strokes/id_image.hpp.
+// The ID image's triangles (Kalnins et al. 2002, §4.6): see common/strokes/id_image.hpp.
 #include "common/strokes/id_image.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// The ID reference image (SPEC 4.4; Kalnins et al. 2002 §4.6): a 32-bit key per pixel,
+// The ID reference image (Kalnins et al. 2002 §4.6): a 32-bit key per pixel,
 // 0 where nothing is drawn, made of triangles both backends draw in the same order and
 // with the same rules:
 //   1. every face of every object (clipped to the near plane), with its face key;
@@ -16,7 +16,7 @@
 // implementation-defined units). A pixel keeps the triangle with the largest z (the
 // nearest; GL_GREATER, the buffer cleared to 0); equal z keeps the first drawn.
 //
-// Rasterization (both backends, SPEC 0): a triangle covers the pixel centers inside it and
+// Rasterization (both backends, docs/conventions.md): a triangle covers the pixel centers inside it and
 // those on its top or left edges; vertices are snapped to 1/256 px (GL_SUBPIXEL_BITS = 8
 // on llvmpipe and the common GPUs); z is interpolated with the barycentrics of the
 // (snapped) window triangle.

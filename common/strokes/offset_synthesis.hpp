@@ -1,4 +1,4 @@
-// Synthesis of stroke offsets by example (SPEC 4.8; Kalnins et al. 2002 §5.3 and
+// Synthesis of stroke offsets by example (Kalnins et al. 2002 §5.3 and
 // Appendix A, which follows the "video textures" of Schödl et al. 2000): a Markov chain
 // whose states are the offsets of a few example strokes, resampled every 4 px, and whose
 // transitions favour the offsets whose neighbourhood looks like the natural next one.
@@ -32,7 +32,7 @@
 //     itself, from state i to state j, with the shift applied once, in C_ij = D'_{i+1,j}^p;
 //     so P_ij ~ exp(-D''_ij / rho) with this D'' is the paper's exp(-D''_{i+1,j} / rho),
 //     and min_k D''_jk is the cheapest transition out of j, as in Schödl et al. 2000.
-//   - Window: SPEC 4.8's window of 4 with weights 1/4 (k = 0..3, sum 1). The appendix's
+//   - Window: Kalnins et al.'s (2002, §4.3, App. A) window of 4 with weights 1/4 (k = 0..3, sum 1). The appendix's
 //     "m = 4, w_i = 1/m, k = 0..m" would be 5 taps summing to 5/4.
 //   - Separators and windows: one separator also precedes the first example, so that all
 //     examples are alike (with the appendix's "out-of-range entries are zero" the first
@@ -86,7 +86,7 @@
 
 namespace plumbago {
 
-// SPEC 4.8's parameters; the defaults are SPEC's (and Appendix A's).
+// Kalnins et al.'s (2002, §4.3, App. A) parameters; the defaults are Appendix A's.
 struct OffsetSynthesisOptions {
   double step_px = 4;           // resampling step (1.)
   int window = 4;               // m taps of weight 1/m (3.)
@@ -159,7 +159,7 @@ class OffsetSynthesizer {
   double last_change_ = 0;
 };
 
-// One-call forms of OffsetSynthesizer::synthesize / synthesize_example with SPEC's options.
+// One-call forms of OffsetSynthesizer::synthesize / synthesize_example with the default options.
 std::vector<double> synthesize_offsets(const OffsetExample& e, double length_px, uint32_t seed, std::string_view name);
 OffsetExample synthesize_offset_example(const OffsetExample& e, double length_px, uint32_t seed, std::string_view name);
 

@@ -1,4 +1,4 @@
-// The stroke raster's triangles (SPEC 4.6-4.7): see common/strokes/stroke.hpp.
+// The stroke raster's triangles (Kalnins et al. 2002, §4.1): see common/strokes/stroke.hpp.
 #include "common/strokes/stroke.hpp"
 
 #include <algorithm>
@@ -52,7 +52,7 @@ StrokeStyle decal_style(const StrokeStyle& decal, const WindowPath& path, const 
 
 StrokeStyle RunStyles::of(const WindowPath& path, const VisibleRun& run, size_t index) {
   if (path.kind == LineKind::Decal) return decal_style(decals_.at(path.decal), path, run);
-  if (path.kind == LineKind::Hatching) {  // SPEC 4.10: faded and thickened by its level of detail
+  if (path.kind == LineKind::Hatching) {  // Kalnins et al. 2002, §6: faded and thickened by its level of detail
     StrokeStyle style = decal_style(decals_.at(path.decal), path, run);
     style.alpha = float(style.alpha * path.alpha_scale);
     style.width_px = float(style.width_px * path.width_scale);

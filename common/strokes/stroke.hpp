@@ -1,13 +1,13 @@
-// The stroke raster (SPEC 4.6-4.7; Kalnins et al. 2002 §4.1, §4.4): each visible run of a
+// The stroke raster (Kalnins et al. 2002 §4.1, §4.4): each visible run of a
 // stroke object's feature lines (common/strokes/visibility.hpp) becomes a base stroke in its line
 // kind's style (common/strokes/base_stroke.hpp, the scene's "strokes" styles), a ribbon of window
 // triangles. Per fragment, with the ribbon's interpolated alpha a_v and texture
 // coordinates (u along, v across; affine in window space), and T the style's stroke
 // texture (common/strokes/stroke_textures.hpp; u REPEAT, v CLAMP_TO_EDGE, LINEAR):
 //   a = a_v T(u, v)
-//   out = color a' + out (1 - a'),  a' = the paper's alpha transfer of a (SPEC 4.2)
+//   out = color a' + out (1 - a'),  a' = the paper's alpha transfer of a (Kalnins et al. 2002, §4.4)
 // premultiplied "over", ribbon after ribbon in path order (creases and borders, then
-// silhouettes, then decals and hatches, SPEC 4.9-4.10), triangle after triangle. Both
+// silhouettes, then decals and hatches, Kalnins et al. 2002, §3, §6), triangle after triangle. Both
 // backends draw the same triangles: the GPU as one draw call, the reference through its
 // scalar rasterizer.
 #pragma once
@@ -37,10 +37,10 @@ static_assert(sizeof(StrokeVertex) == 9 * sizeof(float), "shaders/strokes/stroke
 
 // The style a run is drawn with: its line kind's (its offsets example the scene's drawn
 // examples where it has some, StrokeStyles), with the offsets example synthesized
-// over the run's length (SPEC 4.8) where the style asks for it, seeded by the scene seed
+// over the run's length (Kalnins et al. 2002, §4.3, §5, App. A) where the style asks for it, seeded by the scene seed
 // and the run's name (its path key and its index among the frame's runs); a decal's
-// (SPEC 4.9), with its drawn pressure over the run (common/strokes/decal.hpp 3.); a hatch's the
-// same, its alpha and width times its level-of-detail factors (SPEC 4.10).
+// (Kalnins et al. 2002, §3, §4.5), with its drawn pressure over the run (common/strokes/decal.hpp 3.); a hatch's the
+// same, its alpha and width times its level-of-detail factors (Kalnins et al. 2002, §6).
 class RunStyles {
  public:
   RunStyles(const StrokeStyles& styles, uint32_t seed, const std::vector<StrokeStyle>& decals)
@@ -66,14 +66,14 @@ std::vector<RunStroke> run_strokes(const WindowLines& lines, const Visibility& v
                                    uint32_t seed);
 
 // The ribbons of every visible run (run_strokes), three vertices a triangle, in drawing order; `seed`
-// (the scene's) seeds the offsets a style synthesizes (SPEC 4.8).
+// (the scene's) seeds the offsets a style synthesizes (Kalnins et al. 2002, §4.3, §5, App. A).
 std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visibility& visibility,
                                            const StrokeStyles& styles, uint32_t seed);
 
 // The strokes a frame draws: its visible runs per line kind, keyed "strokes.<kind>", and
 // their sum, "strokes" (what Kalnins et al.'s Table 1 counts); per hatching group N,
-// "hatching.groupN.sigma" and "hatching.groupN.level" (from + progress (to - from), SPEC
-// 4.10); empty without lines or visible runs (a frame without strokes).
+// "hatching.groupN.sigma" and "hatching.groupN.level" (from + progress (to - from),
+// Kalnins et al. 2002, §6); empty without lines or visible runs (a frame without strokes).
 std::map<std::string, double> stroke_counts(const WindowLines* lines, const Visibility* v);
 
 // The stroke textures, one per StrokeTextureKind, from the scene seed.

@@ -1,4 +1,4 @@
-// Stroke files (SPEC 4.9): see common/strokes/stroke_file.hpp.
+// Stroke files (Kalnins et al. 2002, §3, §4.5): see common/strokes/stroke_file.hpp.
 #include "common/strokes/stroke_file.hpp"
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// Stroke files (SPEC 4.9; Kalnins et al. 2002 §3, §4.3): the artist's strokes, drawn
+// Stroke files (Kalnins et al. 2002 §3, §4.3): the artist's strokes, drawn
 // over a rendering instead of on a tablet. A JSON document:
 //   {"camera": {"eye": [x, y, z], "target": [x, y, z], "up": [x, y, z], "fov_deg": F,
 //               "near": N, "far": F},          world coordinates of the scene file
@@ -7,14 +7,14 @@
 //    "strokes": [{"role": ROLE, "points": [[x, y, pressure], ...],
 //                 "style": PRESET_OR_FILE,     optional, decals and hatching
 //                 "group": G,                  hatching only: the group's number (>= 0)
-//                 "free": true}, ...]}         hatching only, optional: a free group (SPEC 4.10)
-// Points are window pixels of SPEC 0 (origin bottom-left), pressure in [0, 1]; a stroke
+//                 "free": true}, ...]}         hatching only, optional: a free group (Kalnins et al. 2002, §6)
+// Points are window pixels of docs/conventions.md (origin bottom-left), pressure in [0, 1]; a stroke
 // has 2 points or more. ROLE is
 //   - "decal": a stroke fixed on the surface where it was drawn (common/strokes/decal.hpp);
-//   - "crease", "silhouette": an offset example for that kind of line (SPEC 4.8;
+//   - "crease", "silhouette": an offset example for that kind of line (Kalnins et al. 2002, §4.3, §5, App. A;
 //     drawn_offsets below): the scene's creases (and borders) or silhouettes take the
 //     examples of its stroke files in place of their style's;
-//   - "hatching": a stroke of hatching group G (SPEC 4.10, common/strokes/hatching.hpp): structured
+//   - "hatching": a stroke of hatching group G (Kalnins et al. 2002, §6, common/strokes/hatching.hpp): structured
 //     unless "free" says otherwise; a group's strokes are all structured or all free.
 // Every role is used.
 // A scene lists its stroke files under "stroke_files" (docs/scene-format.md); a refusal
@@ -59,7 +59,7 @@ struct StrokeFile {
   std::vector<DrawnStroke> strokes;
 };
 
-// A crease or silhouette example as SPEC 4.8's offset list, against its chord (the segment
+// A crease or silhouette example as Kalnins et al.'s (2002, §4.3, App. A) offset list, against its chord (the segment
 // from its first point to its last, of length L_drawn): per point, t = its projection on
 // the chord over L_drawn (never decreasing: a stroke that turns back holds its t), the
 // displacement = its signed distance from the chord, positive to the left of the direction

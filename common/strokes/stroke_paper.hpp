@@ -1,13 +1,13 @@
-// The paper effect of stroke-based rendering (SPEC 4.2; Kalnins et al. 2002 §4.4, after
+// The paper effect of stroke-based rendering (Kalnins et al. 2002 §4.4, after
 // Curtis et al. 1997): a semi-transparent layer (the base coat, and later every stroke
 // fragment) is composed onto the page through a transfer function of its alpha a set by
-// the paper height h (SPEC 1.3's texture, screen aligned, one texel per pixel, wrapping):
+// the paper height h (the texture of Lee et al. 2006, §5.5, screen aligned, one texel per pixel, wrapping):
 //   h' = sat(2 c (sat(2 b h) - 1/2) + 1/2)            brightness b, contrast c
 //   a' = h' sat(2 a) + (1 - h') sat(2 a - 1)          peaks catch pigment, valleys resist
 //   out = rgb a' + out (1 - a')                        premultiplied "over" (ONE, ONE_MINUS_SRC_ALPHA)
 // With b = c = 1/2, h' = h and a' is the paper's t(a). The page is white.
 //
-// The stage draws the page of the objects whose style is `strokes` (SPEC 4): at the
+// The stage draws the page of the objects whose style is `strokes` (Kalnins et al. 2002): at the
 // pixels where the G-buffer shows one, and no sketchy sprite lies in front of it, the
 // frame becomes the coat (with the base coat effect; else nothing) on the white page
 // through the paper; every other pixel keeps what the other pipelines drew (white when
@@ -33,14 +33,16 @@ struct StrokePaperParams {
   float brightness, contrast;
   template <class V>
   void visit(V& v) {
-    v.real(brightness, "brightness", 0.5, 0.0, 1.0, "b of SPEC 4.2: h' = sat(2c (sat(2b h) - 1/2) + 1/2)");
-    v.real(contrast, "contrast", 0.5, 0.0, 1.0, "c of SPEC 4.2 (b = c = 1/2: h' = h, the paper's t(a))");
+    v.real(brightness, "brightness", 0.5, 0.0, 1.0, "b of Kalnins et al. 2002, §4.4: h' = sat(2c (sat(2b h) - 1/2) + "
+                                                    "1/2)");
+    v.real(contrast, "contrast", 0.5, 0.0, 1.0,
+           "c of Kalnins et al. 2002, §4.4 (b = c = 1/2: h' = h, the paper's t(a))");
   }
 };
 
 inline float saturate(float v) { return std::clamp(v, 0.0f, 1.0f); }
 
-// h' of SPEC 4.2.
+// h' of Kalnins et al. 2002, §4.4.
 inline float adjusted_height(float h, const StrokePaperParams& p) {
   return saturate(2.0f * p.contrast * (saturate(2.0f * p.brightness * h) - 0.5f) + 0.5f);
 }

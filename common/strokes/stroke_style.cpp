@@ -42,7 +42,7 @@ struct Refuser {
   }
 };
 
-// SPEC 4.8's offset list: each entry in range, t not decreasing, at least one entry.
+// Kalnins et al.'s (2002, §4.3, App. A) offset list: each entry in range, t not decreasing, at least one entry.
 void check_offsets(const OffsetExample& e, const Refuser& r) {
   r.check_range("/offsets/length_px", e.length_px, 1.0, 1e5);
   if (e.offsets.empty()) r.fail("/offsets/points", "expected at least one offset");

@@ -1,4 +1,4 @@
-// Stroke styles (SPEC 4.6-4.8; Kalnins et al. 2002 §4.2, §5): what a base stroke looks
+// Stroke styles (Kalnins et al. 2002 §4.2, §5): what a base stroke looks
 // like: width, taper, fade, halo, flare, alpha, color, texture, and an optional example
 // of offsets to rubber-stamp along it. Styles are JSON files; the presets live in
 // styles/strokes/ (pencil, charcoal, ink, toon_silhouette).
@@ -9,13 +9,13 @@
 // are those names, plus two that are not scalars:
 //   "description": a string, for the reader of the file;
 //   "offsets": {"length_px": L_drawn, "points": [[t, displacement_px, pressure, break], ...]}
-//     SPEC 4.8's offset list: t in [0, 1] along the example, not decreasing; the
+//     Kalnins et al.'s (2002, §4.3, App. A) offset list: t in [0, 1] along the example, not decreasing; the
 //     displacement in px along the screen normal (to the left of the direction of travel,
 //     towards v = 1); pressure in [0, 1]; break true lifts the pen from this offset to
 //     the next. L_drawn (px) is the example's length when it was drawn: the period of
 //     the rubber stamp (base_stroke.hpp).
 //
-// Readings where SPEC 4.6 is silent:
+// Readings where Kalnins et al. 2002, §4.1 is silent:
 //   - flare: the width is multiplied by (1 + flare (1 - 2 dl / L)), dl the distance to the
 //     nearer end of the run, L the run's length: 1 + flare at the ends, 1 in the middle,
 //     so flare > 0 widens the ends before the taper narrows them (flare in [-1, 10]; a
@@ -39,7 +39,7 @@
 
 namespace plumbago {
 
-// One entry of SPEC 4.8's offset list.
+// One entry of Kalnins et al.'s (2002, §4.3, App. A) offset list.
 struct StrokeOffset {
   double t = 0;                // position along the example, [0, 1]
   double displacement_px = 0;  // along the screen normal, px
@@ -67,7 +67,7 @@ struct StrokeStyle {
 
   template <class V>
   void visit(V& v) {
-    v.real(width_px, "width_px", 4.0, 0.1, 200.0, "width of the stroke, px (SPEC 4.6 `width`)");
+    v.real(width_px, "width_px", 4.0, 0.1, 200.0, "width of the stroke, px (Kalnins et al. 2002, §4.1 `width`)");
     v.real(taper_px, "taper_px", 24.0, 0.0, 1000.0,
            "T: within T px of an end the width is x sqrt(1 - ((T - dl)/T)^2); 0 = no taper");
     v.real(fade_px, "fade_px", 0.0, 0.0, 1000.0, "F: within F px of an end alpha is x (1 - ((F - dl)/F)^2)^1.5; 0 = off");
@@ -78,14 +78,16 @@ struct StrokeStyle {
     v.real(color_r, "color_r", 0.1, 0.0, 1.0, "stroke color, red");
     v.real(color_g, "color_g", 0.1, 0.0, 1.0, "stroke color, green");
     v.real(color_b, "color_b", 0.1, 0.0, 1.0, "stroke color, blue");
-    v.choice(texture, "texture", StrokeTextureKind::Pencil, stroke_texture_names(), "stroke texture (SPEC 4.7)");
+    v.choice(texture, "texture", StrokeTextureKind::Pencil, stroke_texture_names(), "stroke texture (Kalnins et al. "
+                                                                                    "2002, §4.1)");
     v.real(texture_period_px, "texture_period_px", 64.0, 1.0, 10000.0, "px along the stroke that one tile of the texture spans");
-    v.real(sample_px, "sample_px", 3.5, 0.25, 100.0, "resampling step along the spline, px (SPEC 4.6)");
+    v.real(sample_px, "sample_px", 3.5, 0.25, 100.0,
+           "resampling step along the spline, px (Kalnins et al. 2002, §4.1)");
     v.boolean(pressure_width, "pressure_width", true, "the offsets' pressure multiplies the width");
     v.boolean(pressure_alpha, "pressure_alpha", false, "the offsets' pressure multiplies alpha");
     v.choice(synthesis, "synthesis", OffsetSynthesis::Stamp, {"stamp", "markov"},
-             "how the offsets example covers a run: repeated (rubber stamp, SPEC 4.11) or synthesized by the "
-             "Markov chain of SPEC 4.8");
+             "how the offsets example covers a run: repeated (rubber stamp, Kalnins et al. 2003) or synthesized by the "
+             "Markov chain of Kalnins et al. 2002, §4.3, §5, App. A");
   }
 };
 

@@ -1,11 +1,11 @@
-// Stroke textures (SPEC 4.7; Kalnins et al. 2002 §4.2): the generated family of 2D
+// Stroke textures (Kalnins et al. 2002 §4.2): the generated family of 2D
 // textures a stroke ribbon samples, one channel in [0, 1] that multiplies the stroke's
 // alpha. Texel (x, y) covers u = (x + 0.5) / width along the stroke (GL_REPEAT: the
 // texture tiles in u without a seam) and v = (y + 0.5) / height across it (GL_CLAMP_TO_EDGE;
 // v = 0 and v = 1 are the ribbon's two sides, base_stroke.hpp).
 //
 // Every kind is its grain g(u, v) times a cross-section c(v), the soft edge that takes
-// the place of GL_LINE_SMOOTH (SPEC 4.7):
+// the place of GL_LINE_SMOOTH (Kalnins et al. 2002, §4.1):
 //   c(v) = smoothstep(0, e, v) smoothstep(0, e, 1 - v)
 // full value over the middle, falling smoothly to ~0 at both sides over the outer share e
 // of the width. The grains are sums of smooth value noise (random values on a lattice,

@@ -95,7 +95,7 @@ class PathBuilder {
     flush(piece);
   }
 
-  // Adds the pieces of surface stroke `index` (SPEC 4.9-4.10), a decal or a hatch with its
+  // Adds the pieces of surface stroke `index` (Kalnins et al. 2002, §3, §6), a decal or a hatch with its
   // weight: split where a point missed the surface, where the object changes and at the
   // near plane.
   // `object`: a hatch's group's object (points elsewhere count as missed), else kMissed.

@@ -1,18 +1,18 @@
-// The lines of stroke-based rendering in the window (SPEC 4.3-4.5; Kalnins et al. 2002
+// The lines of stroke-based rendering in the window (Kalnins et al. 2002
 // §4.5-4.6): the feature lines of common/strokes/feature_lines.hpp, for one camera, projected to
 // window pixels and keyed for the ID reference image. Both backends draw and test exactly
 // these paths; the `lines` command writes them.
 //
-// Keys (SPEC 4.4; one 32-bit space, 0 = nothing):
+// Keys (Kalnins et al. 2002, §4.6; one 32-bit space, 0 = nothing):
 //   - face f of object o (every object of the scene, in order): first_face[o] + f + 1;
 //   - crease and border path i: face_count + 1 + i;
 //   - silhouette path j: silhouette_base + j, drawn as key << 8 | floor(255 s / L), with
 //     silhouette_base the smallest key whose shifted values lie above every other key;
-//   - decal and hatching paths (SPEC 4.9-4.10, common/strokes/decal.hpp, common/strokes/hatching.hpp) have
-//     none: they are not drawn in the ID image, their samples test their faces' keys.
+//   - decal and hatching paths (Kalnins et al. 2002, §3, §6, common/strokes/decal.hpp, common/strokes/hatching.hpp)
+//     have none: they are not drawn in the ID image, their samples test their faces' keys.
 // A scene whose keys do not fit 32 bits is refused (std::length_error, with the counts).
 //
-// Window coordinates are SPEC 0's (pixels, origin bottom-left); depth is linear view depth
+// Window coordinates are docs/conventions.md's (pixels, origin bottom-left); depth is linear view depth
 // d = -z_view. A path point nearer than the near plane is dropped and splits its path.
 #pragma once
 
@@ -37,16 +37,20 @@ struct StrokesParams {
   template <class V>
   void visit(V& v) {
     v.real(crease_deg, "crease_deg", 60.0, 0.0, 180.0,
-           "an edge is a crease when its face normals differ by more (SPEC 4.3)");
+           "an edge is a crease when its face normals differ by more (Kalnins et al. 2002, §4.5)");
     v.boolean(silhouette_normalized, "silhouette_normalized", true,
-              "g = n.normalize(eye - x); false: the paper's literal n.(eye - x) (SPEC 4.3)");
-    v.boolean(keep_back_facing, "keep_back_facing", false, "keep back-facing silhouettes (hidden-line mode, SPEC 4.3)");
-    v.real(id_crease_px, "id_crease_px", 2.0, 0.5, 16.0, "width of crease and border quads in the ID image (SPEC 4.4)");
+              "g = n.normalize(eye - x); false: the paper's literal n.(eye - x) (Kalnins et al. 2002, §4.5)");
+    v.boolean(keep_back_facing, "keep_back_facing", false, "keep back-facing silhouettes (hidden-line mode, Kalnins et "
+                                                           "al. 2002, §4.5)");
+    v.real(id_crease_px, "id_crease_px", 2.0, 0.5, 16.0, "width of crease and border quads in the ID image (Kalnins et "
+                                                         "al. 2002, §4.6)");
     v.real(id_silhouette_px, "id_silhouette_px", 3.0, 0.5, 16.0,
-           "width of silhouette quads in the ID image (SPEC 4.4)");
+           "width of silhouette quads in the ID image (Kalnins et al. 2002, §4.6)");
     v.real(id_depth_bias, "id_depth_bias", 0.005, 0.0, 0.5,
-           "lines are depth-tested at d (1 - bias) against the faces (SPEC 4.4; relative, linear view depth)");
-    v.real(vis_step_px, "vis_step_px", 2.0, 0.25, 64.0, "visibility samples along a path, pixels apart (SPEC 4.5)");
+           "lines are depth-tested at d (1 - bias) against the faces (Kalnins et al. 2002, §4.6; relative, linear view "
+           "depth)");
+    v.real(vis_step_px, "vis_step_px", 2.0, 0.25, 64.0, "visibility samples along a path, pixels apart (Kalnins et al. "
+                                                        "2002, §4.6)");
   }
 };
 
@@ -98,7 +102,7 @@ struct LineMeshes;
 std::shared_ptr<const LineMeshes> line_meshes(const Scene& scene, const StrokesParams& p, LineObjects which);
 
 // `prepared` (from line_meshes with the same scene, parameters and `which`) or none;
-// `decals`, the surface points of decals and hatches (SPEC 4.9-4.10, common/strokes/decal.hpp),
+// `decals`, the surface points of decals and hatches (Kalnins et al. 2002, §3, §6, common/strokes/decal.hpp),
 // placed after the feature lines, or none; a hatch absent at this frame's level of detail
 // (weight 0) is left out.
 struct ProjectedDecal;
@@ -107,7 +111,7 @@ WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects
                          const LineMeshes* prepared = nullptr, const DecalSurface* decals = nullptr);
 
 
-// The window position and linear depth of a world point (SPEC 0), in double.
+// The window position and linear depth of a world point (docs/conventions.md), in double.
 struct WindowProjection {
   WindowProjection(const Camera& camera, int width, int height);
   glm::dvec3 operator()(glm::dvec3 world) const;  // (x, y, d)

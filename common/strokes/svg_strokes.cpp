@@ -1,4 +1,4 @@
-// Strokes drawn in SVG (SPEC 4.9): see common/strokes/svg_strokes.hpp.
+// Strokes drawn in SVG (Kalnins et al. 2002, §3, §4.5): see common/strokes/svg_strokes.hpp.
 #include "common/strokes/svg_strokes.hpp"
 
 #include <algorithm>

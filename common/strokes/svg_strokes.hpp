@@ -1,4 +1,4 @@
-// Strokes drawn in SVG over a rendering (SPEC 4.9): how a user makes a stroke file
+// Strokes drawn in SVG over a rendering (Kalnins et al. 2002, §3, §4.5): how a user makes a stroke file
 // without a tablet (`plumbago strokefile`, docs/scene-format.md).
 //
 // Read: every <polyline points="..."> and every <path d="..."> made of straight segments
@@ -11,7 +11,7 @@
 //     the command's --role, --style, --group, --free.
 // Coordinates are the SVG's user units: the root's viewBox (else its width and height,
 // else the window) is mapped onto the window, y flipped (SVG's origin is top-left, the
-// window's bottom-left, SPEC 0). Curves (C, S, Q, T, A) and `transform` attributes are
+// window's bottom-left, docs/conventions.md). Curves (C, S, Q, T, A) and `transform` attributes are
 // refused, naming the element: flatten them first.
 #pragma once
 

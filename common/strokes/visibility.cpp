@@ -1,4 +1,4 @@
-// Visibility of stroke samples (SPEC 4.5-4.6): see common/strokes/visibility.hpp.
+// Visibility of stroke samples (Kalnins et al. 2002, §4.6, §4.1): see common/strokes/visibility.hpp.
 #include "common/strokes/visibility.hpp"
 
 #include <algorithm>
@@ -8,7 +8,7 @@ namespace plumbago {
 
 namespace {
 
-constexpr double kLocatedPx = 1.0;  // SPEC 4.6: a visibility change is located within 1 px
+constexpr double kLocatedPx = 1.0;  // Kalnins et al. 2002, §4.1: a visibility change is located within 1 px
 constexpr int kFlagRow = 1024;
 
 // The point at window arc length s of a path (a closed path wraps).
@@ -46,10 +46,10 @@ VisibilitySample sample_at(const WindowPath& p, double s) {
   PathPoint at = point_at(p, s);
   VisibilitySample v{glm::vec2(at.window), p.kind == LineKind::Silhouette ? kSilhouetteSample : kCreaseSample, p.key,
                      {0, 0}, 0, 0};
-  if (p.kind == LineKind::Decal) {  // SPEC 4.9: the face of the nearer end
+  if (p.kind == LineKind::Decal) {  // Kalnins et al. 2002, §3, §4.5: the face of the nearer end
     v.kind = kDecalSample;
     v.faces[0] = at.t < 0.5 ? p.front_faces[at.segment].x : p.front_faces[at.segment].y;
-  } else if (p.kind == LineKind::Hatching) {  // SPEC 4.10: the faces of both ends
+  } else if (p.kind == LineKind::Hatching) {  // Kalnins et al. 2002, §6: the faces of both ends
     v.kind = kHatchingSample;
     v.faces[0] = p.front_faces[at.segment].x, v.faces[1] = p.front_faces[at.segment].y;
   } else if (v.kind == kSilhouetteSample) {

@@ -1,4 +1,4 @@
-// Visibility of stroke samples (SPEC 4.5; Kalnins et al. 2002 §4.6), from the ID image.
+// Visibility of stroke samples (Kalnins et al. 2002 §4.6), from the ID image.
 //
 // Each path of common/strokes/strokes.hpp is sampled every `strokes.vis_step_px` pixels of window
 // arc length from its start (an open path also at its end), where it runs within 4 px of
@@ -8,16 +8,16 @@
 //     ceil(2 max(2, 256 / L_px)) of its own floor(255 s / L) (around the seam of a
 //     closed path, the shorter way);
 //   - a crease or border: its path key, or the key of a front-facing face next to it;
-//   - a decal (a stroke fixed on the surface, SPEC 4.9, common/strokes/decal.hpp): the key of the
+//   - a decal (a stroke fixed on the surface, Kalnins et al. 2002, §3, §4.5, common/strokes/decal.hpp): the key of the
 //     face of the nearer of its segment's two path points;
-//   - a hatch (SPEC 4.10, common/strokes/hatching.hpp), in the 5x5 box (2 px): the key of the face of
-//     either of its segment's two path points. (SPEC's "a face of its group": a hatch lies
+//   - a hatch (Kalnins et al. 2002, §6, common/strokes/hatching.hpp), in the 5x5 box (2 px): the key of the face of
+//     either of its segment's two path points. ("a face of its group", docs/stages.md: a hatch lies
 //     on the faces its own points were projected onto, the interpolated ones too.)
 // Back-facing silhouettes are not in the ID image, so never visible.
 //
 // Where two neighbouring samples disagree, the change is bisected along the path (new
 // samples at the midpoints, tested the same way) until it is located within 1 px
-// (SPEC 4.6). What is visible then makes the runs the strokes draw.
+// (Kalnins et al. 2002, §4.1). What is visible then makes the runs the strokes draw.
 //
 // `sample_visible` is the one test both backends run (the GPU as a compute shader,
 // shaders/strokes/visibility.comp, the formula written twice); the bisection calls a backend's
@@ -59,7 +59,7 @@ glm::dvec3 world_at(const WindowPath& path, double s);
 // The sample of `path` at window arc length s.
 VisibilitySample sample_at(const WindowPath& path, double s);
 
-// The SPEC 4.5 test of one sample against the ID image's keys.
+// The Kalnins et al. 2002, §4.6 test of one sample against the ID image's keys.
 bool sample_visible(const ImageU32& keys, const VisibilitySample& s);
 
 // A visible stretch of a path, in window arc length.

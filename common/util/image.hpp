@@ -1,5 +1,5 @@
 // Images shared by both backends. Row 0 is the BOTTOM row (OpenGL window convention,
-// SPEC §0); files are flipped on write so they look right in a viewer.
+// docs/conventions.md); files are flipped on write so they look right in a viewer.
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-// Pixel-by-pixel comparison of two images, as every parity test reports it (SPEC §5).
+// Pixel-by-pixel comparison of two images, as every parity test reports it (docs/conventions.md).
 #pragma once
 
 #include <string>

@@ -64,10 +64,10 @@ class TileablePerlin3 {
 std::vector<Image> perlin_noise_texture_3d(int size, int period, uint32_t seed);
 
 // size x size, 2 channels of independent uniform values in [0, 1): the uncorrelated
-// offsets of the `rough` style (SPEC 3.5), read with nearest filtering.
+// offsets of the `rough` style (Nienhaus & Döllner 2004, §3.4, §4), read with nearest filtering.
 Image white_noise_texture(int size, uint32_t seed);
 
-// The noise texture sketchy drawing turns into turbulence (SPEC 3.2; Nienhaus & Döllner
+// The noise texture sketchy drawing turns into turbulence (Nienhaus & Döllner
 // 2004 §3.2): one octave of tileable Perlin noise; the octaves of the turbulence are
 // this texture sampled at 2^i times the frequency with GL_REPEAT.
 struct NoiseTextureParams {

@@ -1,6 +1,6 @@
 // Output files written under a temporary name beside the target and renamed into place
 // only by commit(). If the writer throws, the destructor removes the temporary file, so
-// a failed run never leaves a partial output behind (DESIGN.md principle 7).
+// a failed run never leaves a partial output behind (docs/design.md, principle 7).
 #pragma once
 
 #include <filesystem>

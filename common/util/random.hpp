@@ -1,4 +1,4 @@
-// Seeded randomness (SPEC §0): every random choice takes its seed from the scene seed
+// Seeded randomness (docs/conventions.md): every random choice takes its seed from the scene seed
 // and the name of the thing it seeds, so that adding a new random consumer never shifts
 // another one's numbers.
 #pragma once

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Study 3: contour drawing (Lee et al. 2006 §4, SPEC 2.4): how many copies, how fine a
+"""Study 3: contour drawing (Lee et al. 2006 §4): how many copies, how fine a
 distortion grid and how much shake, against frame time.
 
 Reference: the most accurate setting of the stage, 5 copies on the finest grid of the

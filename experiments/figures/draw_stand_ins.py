@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Draws the strokes of the stand-ins for Kalnins et al. 2002's Table 1 scenes over their
-renderings, as SVG, and makes them stroke files with `plumbago strokefile` (SPEC 4.9-4.10):
+renderings, as SVG, and makes them stroke files with `plumbago strokefile` (Kalnins et al. 2002, §3, §6):
 
   draw_stand_ins.py snowman     scenes/drawn/snowman.svg -> snowman.strokes.json: the face
                                 and buttons as decals, structured hatching on the shadow
@@ -32,7 +32,7 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 
 
 class Camera:
-    """SPEC 0's camera: look-at, vertical field of view, window origin bottom-left."""
+    """docs/conventions.md's camera: look-at, vertical field of view, window origin bottom-left."""
 
     def __init__(self, c, width, height):
         self.eye, self.target, self.up = (np.array(c[k], float) for k in ("eye", "target", "up"))

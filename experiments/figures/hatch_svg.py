@@ -2,12 +2,12 @@
 """Draws a hatching group as an SVG over a rendering, the way an artist would over the PNG:
 roughly parallel, evenly spaced strokes, clipped to a disc (or a box) and to the side of a
 line through it (the shadow side), each a little wobbly, pressure rising and falling along
-it. `plumbago strokefile SCENE out.svg --role hatching` makes it a stroke file (SPEC 4.9-4.10).
+it. `plumbago strokefile SCENE out.svg --role hatching` makes it a stroke file (Kalnins et al. 2002, §3, §6).
 
   hatch_svg.py --size 800 600 --disc 400 300 187 --side 0.6 -0.7 40 --angle 30 --spacing 12 \\
       --group 0 > hatches.svg
 
-Window coordinates (origin bottom-left, SPEC 0) on the command line; the SVG's y runs down.
+Window coordinates (origin bottom-left, docs/conventions.md) on the command line; the SVG's y runs down.
 draw_stand_ins.py uses hatches() and svg() for the scenes of Kalnins et al.'s Table 1.
 """
 import argparse

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Study 5: the pencil interior (Lee et al. 2006 §5, SPEC 2.5-2.9): 1-way (one texture per
+"""Study 5: the pencil interior (Lee et al. 2006 §5): 1-way (one texture per
 pixel, from the corner of largest weight: interior.blend=nearest_corner, Lee Fig. 6a),
 3-way blending, 3-way blending + cross hatching, with Gouraud (per-vertex, Lee) or Phong
 (per-pixel) intensity, against frame time. The contours-only frame is the time baseline (what the interior adds).

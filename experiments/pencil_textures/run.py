@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Study 4: the pencil texture stack (Lee et al. 2006 §3, SPEC 1.2): how many tone layers
+"""Study 4: the pencil texture stack (Lee et al. 2006 §3): how many tone layers
 (pencil_textures.layers) and how large a tile (pencil_textures.size), against frame time, generation time and
 memory.
 

@@ -1,5 +1,5 @@
 // The shower-door measure of experiments/shower_door/README.md: how much of a per-pixel
-// pattern (the sketch's (u, v) perturbation, SPEC 3.2 / Nienhaus & Döllner §3.2, or the
+// pattern (the sketch's (u, v) perturbation, Nienhaus & Döllner 2004, §3.2, or the
 // rendered sketch) moves with the surface between two frames and how much stays fixed to
 // the screen.
 #pragma once

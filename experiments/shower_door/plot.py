@@ -25,7 +25,7 @@ def main(path, out):
             if r[key] != "":
                 series[key][r["mode"]].append((int(r["pair"]), float(r[key])))
     fig, axes = plt.subplots(1, 2, figsize=(12, 4.5), sharey=True)
-    titles = {"field_coherence": "(u, v) perturbation field (SPEC 3.2)",
+    titles = {"field_coherence": "(u, v) perturbation field (Nienhaus & Döllner 2004, §3.2)",
               "image_coherence": "rendered sketch (RGB)"}
     for ax, key in zip(axes, ("field_coherence", "image_coherence")):
         for mode, points in series[key].items():

@@ -1,6 +1,6 @@
 // The sketchy drawing of one scene from one camera, in each mode compared by the
-// shower-door experiment: the (u, v) perturbation field (SPEC 3.2, 3.5) and the final
-// sketch (SPEC 3.3), made with the reference passes exactly as reference/core/pipeline.cpp
+// shower-door experiment: the (u, v) perturbation field (Nienhaus & Döllner 2004, §3.2; §3.4, §4) and the final
+// sketch (Nienhaus & Döllner 2004, §3.2), made with the reference passes exactly as reference/core/pipeline.cpp
 // wires them.
 #pragma once
 
@@ -13,7 +13,7 @@
 
 namespace plumbago::shower_door {
 
-// One mode: a sketchy style (SPEC 3.5) or a diagnostic variant of one.
+// One mode: a sketchy style (Nienhaus & Döllner 2004, §3.4, §4) or a diagnostic variant of one.
 struct Mode {
   std::string name;
   Scene scene;         // the sketchy objects with this mode's sketchy.* parameters
@@ -22,7 +22,7 @@ struct Mode {
   bool perturbed = true;
 };
 
-// The modes a name stands for: "default", "repeat", "rough", "object" (SPEC 3.5);
+// The modes a name stands for: "default", "repeat", "rough", "object" (Nienhaus & Döllner 2004, §3.4, §4);
 // "object_enlarge<E>" (object with sketchy.enlarge = E; E = 0: noise read on the true
 // surface);
 // "unperturbed" (default with M_e = M_s = 0: the sketch without any perturbation, a
@@ -30,7 +30,7 @@ struct Mode {
 Mode make_mode(const Scene& sketchy, const std::string& name);
 std::vector<std::string> all_mode_names();
 
-// What every mode shares at one camera: the sketchy G-buffer and maps (SPEC 3.1).
+// What every mode shares at one camera: the sketchy G-buffer and maps (Nienhaus & Döllner 2004, §3.1).
 struct View {
   Scene scene;  // the sketchy objects seen from this camera
   GBuffer gbuffer;

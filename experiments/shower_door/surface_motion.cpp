@@ -58,7 +58,7 @@ bool seen_around(const Image& points, glm::vec2 q, glm::vec3 x, float tolerance)
 Image surface_motion(const Camera& prev, const Image& prev_points, const Image& next_points,
                      const MotionParams& params) {
   int w = next_points.width, h = next_points.height;
-  // World size of one pixel at depth d: 2 d tan(fov / 2) / height (SPEC 0's pinhole).
+  // World size of one pixel at depth d: 2 d tan(fov / 2) / height (docs/conventions.md's pinhole).
   float pixel_per_depth = 2.0f * std::tan(glm::radians(prev.fov_deg) * 0.5f) / float(h);
   Image out(w, h, 3);
   reference::for_each_row(h, [&](int y) {

@@ -19,7 +19,7 @@ Camera orbit(const Camera& c, float degrees);
 // fixed object-space point.
 Image surface_points(const std::vector<WorldObject>& objects, const GBuffer& g);
 
-// Window coordinates (pixel centers at i + 0.5, SPEC 0) of world point `x` seen by `c`
+// Window coordinates (pixel centers at i + 0.5, docs/conventions.md) of world point `x` seen by `c`
 // in a width x height image; .z = linear view depth.
 glm::vec3 project(const Camera& c, int width, int height, glm::vec3 x);
 

@@ -28,7 +28,7 @@ def surface(theta, phi):
 
 
 def window(points, width, height):
-    """Window pixels (origin bottom-left, SPEC 0) of world points through CAMERA."""
+    """Window pixels (origin bottom-left, docs/conventions.md) of world points through CAMERA."""
     eye, target, up = (np.array(CAMERA[k]) for k in ("eye", "target", "up"))
     f = (target - eye) / np.linalg.norm(target - eye)
     s = np.cross(f, up) / np.linalg.norm(np.cross(f, up))

@@ -1,8 +1,8 @@
 #!/usr/bin/python3
-"""Stroke visibility: how right is the ID-image test (SPEC 4.5), and what does it cost?
+"""Stroke visibility: how right is the ID-image test (Kalnins et al. 2002, §4.6), and what does it cost?
 
 Kalnins et al. 2002 decide which parts of a feature line are visible from an ID reference
-image (SPEC 4.4): a sample is visible when its own key is found within a pixel of it. That
+image (Kalnins et al. 2002, §4.6): a sample is visible when its own key is found within a pixel of it. That
 is an approximation. Here every path of every object is also tested by Embree occlusion
 rays from the eye every 0.5 px of window arc length (`plumbago lines --truth`), and the
 visible runs the strokes draw are compared with them:

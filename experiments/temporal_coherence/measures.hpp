@@ -1,4 +1,4 @@
-// The per-frame measures of the temporal-coherence study (SPEC 5, "Temporal coherence";
+// The per-frame measures of the temporal-coherence study (docs/conventions.md, "Temporal coherence";
 // experiments/temporal_coherence/README.md) over the tracked strokes of two consecutive
 // frames, per line kind: texture sliding along strokes, strokes born and dying, and the
 // change of alpha and width at the same point of a stroke. Kinds are whatever the frames'
@@ -22,7 +22,7 @@ struct PairMeasures {
   size_t samples = 0, matched = 0;  // samples of prev, and those that land on next
   // Per sample of prev that lands on next: how far its texture coordinate moved along the
   // stroke (slide()), and |alpha_next - alpha_prev|, |width_next - width_prev| (px) and
-  // |offset_next - offset_prev| (px, window vectors: SPEC 4.8's displacement) there.
+  // |offset_next - offset_prev| (px, window vectors: the displacement of Kalnins et al. 2002, §4.3) there.
   std::vector<double> slide_px, alpha_change, width_change_px, offset_change_px;
 };
 

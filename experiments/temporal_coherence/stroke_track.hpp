@@ -1,4 +1,4 @@
-// The strokes of one frame as the temporal-coherence study follows them (SPEC 5, "Temporal
+// The strokes of one frame as the temporal-coherence study follows them (docs/conventions.md, "Temporal
 // coherence"; experiments/temporal_coherence/README.md): every visible run's base-stroke
 // samples (common/strokes/stroke.hpp run_strokes, what the stroke stage draws), each with the point
 // of its path it draws, and where those points land on the strokes of another frame.
@@ -22,7 +22,8 @@ struct TrackedSample {
   glm::dvec2 window;       // that point in this frame's window (px)
   double depth;            // its linear view depth in this frame
   double s, width, alpha;  // as drawn: arc length from the stroke's start (px; u x period), width (px), alpha
-  glm::dvec2 offset;       // as drawn: the position minus the base curve's (px), the offsets of SPEC 4.8
+  glm::dvec2 offset;       // as drawn: the position minus the base curve's (px), the offsets of Kalnins et al. 2002,
+                           // §4.3, §5, App. A
 };
 
 // A visible run that draws something (2 samples or more).

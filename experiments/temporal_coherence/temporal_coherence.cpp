@@ -1,5 +1,5 @@
 // plumbago_temporal_coherence: the temporal coherence of stroke-based rendering over a
-// camera path (issue 17; SPEC 5, "Temporal coherence"; Kalnins et al. 2002). Renders the
+// camera path (issue 17; docs/conventions.md, "Temporal coherence"; Kalnins et al. 2002). Renders the
 // path's frames on the CPU reference and writes, per pair of consecutive frames and per
 // line kind, texture sliding along the strokes, strokes born and dying, the largest change
 // of alpha and width, and the shower-door coherence of the stroke layer; and the same
@@ -148,7 +148,7 @@ void run(const Options& o) {
 
 int main(int argc, char** argv) {
   Options o;
-  CLI::App app{"Temporal coherence of stroke-based rendering over a camera path (SPEC 5)"};
+  CLI::App app{"Temporal coherence of stroke-based rendering over a camera path (docs/conventions.md)"};
   app.add_option("scene", o.scene_path, "scene file with stroke objects")->required()->check(CLI::ExistingFile);
   app.add_option("--out", o.out, "CSV, one row per frame pair and line kind, and one for all kinds");
   app.add_option("--summary", o.summary, "CSV, one row per line kind and one for all: the pairs pooled");

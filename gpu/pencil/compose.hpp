@@ -1,4 +1,4 @@
-// Composition on the GPU (SPEC 2.11), the twin of reference/pencil/compose.cpp.
+// Composition on the GPU (Lee et al. 2006, §6, Eq. 6), the twin of reference/pencil/compose.cpp.
 #pragma once
 
 #include "common/pencil/compose.hpp"
@@ -24,7 +24,7 @@ class ComposePass {
   // the shader draws once per size and paper and a copy puts in place every frame.
   void run(const Texture& contour_darkness, bool has_contours, const ComposeInputs& in, const ComposeParams& p,
            Texture& out, const PixelRect& inside);
-  // The same, drawing the contours (SPEC 2.4) in this pass rather than reading them: a
+  // The same, drawing the contours (Lee et al. 2006, §4.2-4.3) in this pass rather than reading them: a
   // frame writes and reads no D_c target. `contour_darkness`, if given, receives D_c
   // inside `inside` (a dump).
   void run(const ContourSources& contours, const ComposeInputs& in, const ComposeParams& p, Texture& out,

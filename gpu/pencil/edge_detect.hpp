@@ -1,6 +1,6 @@
-// Edge detection (SPEC 2.2) and contour lighting (SPEC 2.3) on the GPU in one pass, the
-// twins of reference/pencil/edge_detect.cpp and reference/pencil/contour_light.cpp: one fragment
-// shader, two outputs, so both stages stay testable and the frame reads the G-buffer once.
+// Edge detection (Nienhaus & Döllner 2003, as given in Pacheco §2) and contour lighting (Lee et al. 2006, §4.1, Eq. 1)
+// on the GPU in one pass, the twins of reference/pencil/edge_detect.cpp and reference/pencil/contour_light.cpp: one
+// fragment shader, two outputs, so both stages stay testable and the frame reads the G-buffer once.
 #pragma once
 
 #include "common/pencil/contour_light.hpp"

@@ -1,4 +1,4 @@
-// Multiple contour drawing on the GPU (SPEC 2.4), the twin of reference/pencil/multi_contour.cpp.
+// Multiple contour drawing on the GPU (Lee et al. 2006, §4.2-4.3), the twin of reference/pencil/multi_contour.cpp.
 #pragma once
 
 #include <string>

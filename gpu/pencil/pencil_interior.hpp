@@ -1,4 +1,4 @@
-// Interior intensity (SPEC 2.5) and interior pencil shading (SPEC 2.6-2.10) on the GPU in
+// Interior intensity (Lee et al. 2006, §3, §5.2) and interior pencil shading (Lee et al. 2006, §5.1-5.5) on the GPU in
 // one pass with two outputs, the twins of reference/pencil/interior_intensity.cpp and
 // reference/pencil/pencil_interior.cpp.
 #pragma once

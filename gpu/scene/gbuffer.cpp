@@ -22,7 +22,7 @@ struct Corner {
   float gouraud;
 };
 
-// Per mesh vertex, what shaders/scene/corner_angles.comp reads (SPEC 2.7); made only when the
+// Per mesh vertex, what shaders/scene/corner_angles.comp reads (Lee et al. 2006, §5.3); made only when the
 // scene has curvature.
 struct VertexCurvature {
   glm::vec4 position, d_min, d_max;  // world space; w unused

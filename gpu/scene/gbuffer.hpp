@@ -1,4 +1,4 @@
-// Rasterized G-buffer (SPEC 2.1), the twin of reference/scene/gbuffer.cpp.
+// Rasterized G-buffer (docs/stages.md, gbuffer), the twin of reference/scene/gbuffer.cpp.
 #pragma once
 
 #include <climits>
@@ -21,7 +21,7 @@ struct GBufferTargets {
   int height() const { return depth.height; }
 };
 
-// Each triangle's corner angles (SPEC 2.7), what the G-buffer's angle channels hold at its
+// Each triangle's corner angles (Lee et al. 2006, §5.3), what the G-buffer's angle channels hold at its
 // pixels, as one record per triangle: the pencil interior reads them through the ids
 // channel, so a frame writes no angle targets (two float targets less for llvmpipe).
 struct TriangleAngles {
@@ -66,7 +66,7 @@ inline constexpr Shared<TriangleAngles> kTriangleAngles{"gbuffer.triangle_angles
 
 class GBufferPass {
  public:
-  // `curvature`: one per object for the corner angles of SPEC 2.7, or none.
+  // `curvature`: one per object for the corner angles of Lee et al. 2006, §5.3, or none.
   explicit GBufferPass(const Scene& scene, const std::vector<Curvature>& curvature = {});
   void render(const Scene& scene, GBufferTargets& targets, const GBufferChannels& channels = {});
   // The depth buffer of the last render: what later geometry (a depth sprite) is tested against.

@@ -1,4 +1,4 @@
-// Sketchy composite and depth sprite on the GPU (SPEC 3.2-3.5), the twin of
+// Sketchy composite and depth sprite on the GPU (Nienhaus & Döllner 2004, §3.2-3.4), the twin of
 // reference/sketchy/sketchy_composite.cpp.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The `object` style's enlarged geometry on the GPU (SPEC 3.5), the twin of
+// The `object` style's enlarged geometry on the GPU (Nienhaus & Döllner 2004, §3.4, §4), the twin of
 // reference/sketchy/sketchy_enlarged.cpp: each pixel gets the 3D noise coordinate of the
 // enlarged surface it sees.
 #pragma once

@@ -1,4 +1,4 @@
-// Sketchy drawing's maps on the GPU (SPEC 3.1), the twin of reference/sketchy/sketchy_maps.cpp.
+// Sketchy drawing's maps on the GPU (Nienhaus & Döllner 2004, §3.1), the twin of reference/sketchy/sketchy_maps.cpp.
 #pragma once
 
 #include <vector>

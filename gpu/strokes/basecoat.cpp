@@ -1,4 +1,4 @@
-// Base coat on the GPU (SPEC 4.1), the twin of reference/strokes/basecoat.cpp: a full-window pass
+// Base coat on the GPU (Kalnins et al. 2002, §4.2), the twin of reference/strokes/basecoat.cpp: a full-window pass
 // over the G-buffer's ids and barycentrics, with the corners' s as one record per triangle.
 #include "common/strokes/basecoat.hpp"
 

@@ -1,4 +1,4 @@
-// Decals' projection on the GPU (SPEC 4.9, common/strokes/decal.hpp 1.): the G-buffer rendered
+// Decals' projection on the GPU (Kalnins et al. 2002, §3, §4.5, common/strokes/decal.hpp 1.): the G-buffer rendered
 // with the stroke file's camera says which faces are seen around each sample (its ids at
 // the 3x3 pixel centers around it); the ray through the sample picks the nearest of them
 // (else of the faces around them: a sliver may cover no pixel center) and gives the

@@ -1,4 +1,4 @@
-// Decals' projection on the GPU (SPEC 4.9, common/strokes/decal.hpp 1.): through the G-buffer
+// Decals' projection on the GPU (Kalnins et al. 2002, §3, §4.5, common/strokes/decal.hpp 1.): through the G-buffer
 // rendered with each stroke file's camera.
 #pragma once
 

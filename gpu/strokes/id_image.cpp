@@ -1,4 +1,4 @@
-// The ID reference image on the GPU (SPEC 4.4), the twin of reference/strokes/id_image.cpp: the
+// The ID reference image on the GPU (Kalnins et al. 2002, §4.6), the twin of reference/strokes/id_image.cpp: the
 // triangles of common/strokes/id_image.hpp, pulled from a buffer, depth-tested GL_GREATER on
 // z = near / d, written as the fragment's depth.
 #include "common/strokes/id_image.hpp"

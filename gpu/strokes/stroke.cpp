@@ -1,4 +1,4 @@
-// The stroke raster on the GPU (SPEC 4.6-4.7), the twin of reference/strokes/stroke.cpp: the
+// The stroke raster on the GPU (Kalnins et al. 2002, §4.1), the twin of reference/strokes/stroke.cpp: the
 // ribbons' triangles in one draw call, blended premultiplied "over" onto the page.
 #include "common/strokes/stroke.hpp"
 

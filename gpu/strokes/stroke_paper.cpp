@@ -1,4 +1,4 @@
-// The paper effect of stroke-based rendering on the GPU (SPEC 4.2), the twin of
+// The paper effect of stroke-based rendering on the GPU (Kalnins et al. 2002, §4.4), the twin of
 // reference/strokes/stroke_paper.cpp: a full-window pass over the G-buffer's ids, the coat and
 // the paper's height, drawn in place over what the other pipelines drew.
 #include "common/strokes/stroke_paper.hpp"

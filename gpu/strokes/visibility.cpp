@@ -1,4 +1,4 @@
-// Visibility of stroke samples on the GPU (SPEC 4.5), the twin of reference/strokes/visibility.cpp:
+// Visibility of stroke samples on the GPU (Kalnins et al. 2002, §4.6), the twin of reference/strokes/visibility.cpp:
 // a compute shader tests each batch of samples against the ID image where it lies, and
 // only the flags come back (Kalnins et al. read the whole ID image back every frame).
 #include "gpu/strokes/visibility.hpp"

@@ -1,4 +1,4 @@
-// Visibility of stroke samples on the GPU (SPEC 4.5): the test of common/strokes/visibility.hpp
+// Visibility of stroke samples on the GPU (Kalnins et al. 2002, §4.6): the test of common/strokes/visibility.hpp
 // as a compute shader (shaders/strokes/visibility.comp), reading back only the flags.
 #pragma once
 

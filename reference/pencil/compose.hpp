@@ -1,4 +1,4 @@
-// Composition, CPU reference (SPEC 2.11).
+// Composition, CPU reference (Lee et al. 2006, §6, Eq. 6).
 #pragma once
 
 #include "common/pencil/compose.hpp"

@@ -1,4 +1,4 @@
-// Contour lighting, CPU reference (SPEC 2.3).
+// Contour lighting, CPU reference (Lee et al. 2006, §4.1, Eq. 1).
 #pragma once
 
 #include <vector>

@@ -10,7 +10,7 @@ namespace plumbago::reference {
 
 namespace {
 
-// Window-space neighborhood of SPEC 2.2, y up:  A B C / D X E / F G H.
+// Window-space neighborhood of Nienhaus & Döllner 2003, as given in Pacheco §2, y up:  A B C / D X E / F G H.
 struct Diagonals {
   int ax, ay, hx, hy, cx, cy, fx, fy;
 };
@@ -23,7 +23,7 @@ Diagonals diagonals(int x, int y, int w, int h) {
 
 glm::vec3 normal_at(const Image& n, int x, int y) { return {n.at(x, y, 0), n.at(x, y, 1), n.at(x, y, 2)}; }
 
-// z = (d - near) / (far - near) (SPEC 0).
+// z = (d - near) / (far - near) (docs/conventions.md).
 float normalized_depth_at(const GBuffer& g, int x, int y) { return (g.depth.at(x, y) - g.near) / (g.far - g.near); }
 
 // N_1.N_2, with the background reading of common/pencil/edge_detect.hpp.

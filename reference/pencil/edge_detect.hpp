@@ -1,4 +1,4 @@
-// Edge detection, CPU reference (SPEC 2.2).
+// Edge detection, CPU reference (Nienhaus & Döllner 2003, as given in Pacheco §2).
 #pragma once
 
 #include "common/pencil/edge_detect.hpp"

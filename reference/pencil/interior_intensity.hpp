@@ -1,4 +1,4 @@
-// Interior intensity and brightness, CPU reference (SPEC 2.5).
+// Interior intensity and brightness, CPU reference (Lee et al. 2006, §3, §5.2).
 #pragma once
 
 #include "common/scene/gbuffer.hpp"

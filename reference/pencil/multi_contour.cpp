@@ -14,7 +14,7 @@ const SamplerState kRepeat{Filter::Linear, Wrap::Repeat, Wrap::Repeat};
 
 // offset_k(p): the grid vertex (i, j) sits at window position (i, j) * grid_cell, i.e.
 // at texel center i + 1/2 of the grid texture; the texture's bilinear filter interpolates
-// a cell's four corners (SPEC 1.4).
+// a cell's four corners (Lee et al. 2006, §4.2, Eq. 2).
 glm::vec2 offset_at(const Image& grid, glm::vec2 p, float cell) {
   glm::vec2 st = (p / cell + 0.5f) / glm::vec2(grid.width, grid.height);
   return glm::vec2(sample(grid, st, kClamp));

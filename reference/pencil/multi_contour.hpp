@@ -1,4 +1,4 @@
-// Multiple contour drawing, CPU reference (SPEC 2.4; Lee §4.2-4.3, Pacheco §4).
+// Multiple contour drawing, CPU reference (Lee §4.2-4.3, Pacheco §4).
 #pragma once
 
 #include <vector>

@@ -1,4 +1,4 @@
-// Interior pencil shading, CPU reference (SPEC 2.6-2.10; formulas in
+// Interior pencil shading, CPU reference (Lee et al. 2006, §5.1-5.5; formulas in
 // common/pencil/pencil_interior.hpp).
 #pragma once
 

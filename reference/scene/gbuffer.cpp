@@ -35,7 +35,7 @@ void trace_tile(RTCScene scene, const Camera& cam, const PrimaryRays& primary, i
   for (int i = 0; i < 16; ++i) {
     int x = x0 + i % 4, y = y0 + i / 4;
     valid[i] = x < w && y < h ? -1 : 0;
-    dirs[i] = primary.direction(float(x) + 0.5f, float(y) + 0.5f);  // pixel center (SPEC 0)
+    dirs[i] = primary.direction(float(x) + 0.5f, float(y) + 0.5f);  // pixel center (docs/conventions.md)
     rays.ray.org_x[i] = cam.eye.x, rays.ray.org_y[i] = cam.eye.y, rays.ray.org_z[i] = cam.eye.z;
     rays.ray.dir_x[i] = dirs[i].x, rays.ray.dir_y[i] = dirs[i].y, rays.ray.dir_z[i] = dirs[i].z;
     rays.ray.tnear[i] = 0.0f;
@@ -54,7 +54,7 @@ void set3(Image& img, int x, int y, glm::vec3 v) {
   for (int c = 0; c < 3; ++c) img.at(x, y, c) = v[c];
 }
 
-// SPEC 2.7: each corner's stroke angles, min and max curvature, at the corner itself.
+// Lee et al. 2006, §5.3: each corner's stroke angles, min and max curvature, at the corner itself.
 void corner_angles(const WorldObject& obj, const glm::uvec3& tri, const ProjectionInfo& proj, float min_projected,
                    int x, int y, GBuffer& g) {
   for (int k = 0; k < 3; ++k) {

@@ -17,14 +17,14 @@ namespace {
 const SamplerState kRepeat{Filter::Linear, Wrap::Repeat, Wrap::Repeat, Wrap::Repeat};
 const SamplerState kClamp{Filter::Linear, Wrap::ClampToEdge, Wrap::ClampToEdge, Wrap::ClampToEdge};
 
-// T(s, t) = sum_i |N(2^i (s, t))| / 2^i (SPEC 3.2)
+// T(s, t) = sum_i |N(2^i (s, t))| / 2^i (Nienhaus & Döllner 2004, §3.2)
 float turbulence(const Image& noise, glm::vec2 st, int octaves) {
   float t = 0, f = 1;
   for (int i = 0; i < octaves; ++i, f *= 2) t += std::abs(sample(noise, st * f, kRepeat).x) / f;
   return t;
 }
 
-// The same over a 3D noise texture (object style, SPEC 3.5).
+// The same over a 3D noise texture (object style, Nienhaus & Döllner 2004, §3.4, §4).
 float turbulence(const std::vector<Image>& noise, glm::vec3 q, int octaves) {
   float t = 0, f = 1;
   for (int i = 0; i < octaves; ++i, f *= 2) t += std::abs(sample(noise, q * f, kRepeat).x) / f;
@@ -55,7 +55,8 @@ struct Sketch {
 };
 
 // Default, rough and object styles: e * c.rgb inside the shade map, e * white outside
-// (SPEC 3.3); the sprite takes the nearer of the drawn samples' depths (SPEC 3.4).
+// (Nienhaus & Döllner 2004, §3.2); the sprite takes the nearer of the drawn samples' depths (Nienhaus & Döllner 2004,
+// §3.3).
 Sketch edge_and_shade(const SketchyInputs& in, const SketchyParams& p, glm::vec2 center) {
   glm::vec2 uv = uncertainty(in, p, center, 0);
   EdgeSample e = edge_sample(in, p, center + edge_matrix(p) * uv);
@@ -70,7 +71,7 @@ Sketch edge_and_shade(const SketchyInputs& in, const SketchyParams& p, glm::vec2
   return out;
 }
 
-// Repeat style: edge copy k drawn with its own matrix and ink, no shade map (SPEC 3.5).
+// Repeat style: edge copy k drawn with its own matrix and ink, no shade map (Nienhaus & Döllner 2004, §3.4, §4).
 Sketch repeated_edges(const SketchyInputs& in, const SketchyParams& p, glm::vec2 center) {
   Sketch out;
   out.depth = in.gbuffer.far;

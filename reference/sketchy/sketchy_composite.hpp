@@ -1,4 +1,4 @@
-// Sketchy composite and depth sprite (SPEC 3.2-3.5; Nienhaus & Döllner §3.2-3.4, §4),
+// Sketchy composite and depth sprite (Nienhaus & Döllner §3.2-3.4, §4),
 // CPU reference; the twin of shaders/sketchy/sketchy_composite.frag.
 #pragma once
 
@@ -23,16 +23,16 @@ struct SketchyInputs {
   const Image& noise_coordinates;
 };
 
-// (u, v) of SPEC 3.2 at pixel center `center` for edge copy `copy`, centered on 0: the
+// (u, v) of Nienhaus & Döllner 2004, §3.2 at pixel center `center` for edge copy `copy`, centered on 0: the
 // sketch's perturbation before M_e and M_s turn it into pixel offsets.
 glm::vec2 uncertainty(const SketchyInputs& in, const SketchyParams& p, glm::vec2 center, int copy);
 
 // `under_color` (3 ch; empty = white paper) and `under_depth` (linear; empty = nothing)
-// are what the ordinary objects drew; the sketch composes with them by depth (SPEC 3.4).
+// are what the ordinary objects drew; the sketch composes with them by depth (Nienhaus & Döllner 2004, §3.3).
 SketchyFrame sketchy_composite(const SketchyInputs& in, const SketchyParams& p, const Image& under_color,
                                const Image& under_depth);
 
-// Parity (SPEC §5). The sprite's depth is read at nearest texels, floor(p + M (u, v)), a
+// Parity (docs/conventions.md). The sprite's depth is read at nearest texels, floor(p + M (u, v)), a
 // discrete choice: where a sample position lies on a texel edge, positions a rounding
 // apart read adjacent texels. The backends round differently, both within what GL
 // allows: GLSL may contract p + M_s (u, v) into fmas (llvmpipe does; the CPU adds the

@@ -1,4 +1,4 @@
-// The `object` style's geometry buffer (SPEC 3.5; Nienhaus & Döllner §4.2-4.3), CPU
+// The `object` style's geometry buffer (Nienhaus & Döllner §4.2-4.3), CPU
 // reference: the enlarged sketchy objects traced, each pixel holding the 3D noise
 // coordinate of the surface it sees. The twin of gpu/sketchy/sketchy_enlarged.cpp.
 #pragma once

@@ -1,4 +1,4 @@
-// Sketchy drawing's maps (SPEC 3.1), CPU reference: the edge map of the sketchy objects
+// Sketchy drawing's maps (Nienhaus & Döllner 2004, §3.1), CPU reference: the edge map of the sketchy objects
 // and their shade map. The twin of gpu/sketchy/sketchy_maps.cpp.
 #pragma once
 
@@ -10,8 +10,8 @@
 namespace plumbago::reference {
 
 struct SketchyMaps {
-  // 2 ch: contour darkness d (SPEC 2.2), and the linear depth d belongs to: the nearest of
-  // the pixel and its diagonal neighbors A, C, F, H (the pixels d is made of); `far`
+  // 2 ch: contour darkness d (Nienhaus & Döllner 2003, as given in Pacheco §2), and the linear depth d belongs to: the
+  // nearest of the pixel and its diagonal neighbors A, C, F, H (the pixels d is made of); `far`
   // where all five are background.
   Image edge;
   Image shade;  // 4 ch: the object's unlit color, alpha = coverage (0 or 1)

@@ -1,4 +1,4 @@
-// Base coat, CPU reference (SPEC 4.1; formula in common/strokes/basecoat.hpp).
+// Base coat, CPU reference (Kalnins et al. 2002, §4.2; formula in common/strokes/basecoat.hpp).
 #include "common/strokes/basecoat.hpp"
 
 #include "reference/util/rows.hpp"

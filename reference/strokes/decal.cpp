@@ -1,4 +1,4 @@
-// Decals' projection, CPU reference (SPEC 4.9, common/strokes/decal.hpp 1.): the ray from the
+// Decals' projection, CPU reference (Kalnins et al. 2002, §3, §4.5, common/strokes/decal.hpp 1.): the ray from the
 // stroke file's eye through each sample, traced by Embree over the scene's world geometry;
 // the face it meets first and where, as barycentrics (1 - u - v, u, v).
 #include "reference/strokes/decal.hpp"

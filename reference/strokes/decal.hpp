@@ -1,4 +1,4 @@
-// Decals' projection, CPU reference (SPEC 4.9, common/strokes/decal.hpp 1.): an Embree ray through
+// Decals' projection, CPU reference (Kalnins et al. 2002, §3, §4.5, common/strokes/decal.hpp 1.): an Embree ray through
 // each sample.
 #pragma once
 

@@ -1,4 +1,4 @@
-// The ID reference image, CPU reference (SPEC 4.4): the triangles of common/strokes/id_image.hpp
+// The ID reference image, CPU reference (Kalnins et al. 2002, §4.6): the triangles of common/strokes/id_image.hpp
 // through the scalar rasterizer, each pixel keeping the nearest (largest z = near / d).
 #include "common/strokes/id_image.hpp"
 
@@ -73,7 +73,7 @@ IdRaster id_raster(const std::vector<IdVertex>& v, int width, int height) {
 
 PLUMBAGO_REFERENCE_STAGE(id_image, [](ReferenceFrame& f) {
   auto p = f.params<StrokesParams>();
-  DecalSurface decals = has_decals(f.scene) ? project_decals_by_rays(f.scene) : DecalSurface{};  // by rays
+  DecalSurface decals = has_decals(f.scene) ? project_decals_by_rays(f.scene) : DecalSurface{};  // by rays (Kalnins et al. 2002, §3)
   auto meshes = line_meshes(f.scene, p, LineObjects::Strokes);
   f.put(kWindowLines, window_lines(f.scene, p, LineObjects::Strokes, meshes.get(), has_decals(f.scene) ? &decals : nullptr));
   IdRaster r = id_raster(id_triangles(f.scene, f.get(kWindowLines), p), f.scene.width, f.scene.height);

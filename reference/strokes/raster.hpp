@@ -1,5 +1,5 @@
-// The scalar triangle rasterizer of the reference (SPEC 0, 4.4, 4.7): what a GPU does with
-// a window-space triangle, written out so that the reference draws exactly the triangles
+// The scalar triangle rasterizer of the reference (docs/conventions.md; Kalnins et al. 2002, §4.6; §4.1): what a GPU
+// does with a window-space triangle, written out so that the reference draws exactly the triangles
 // the GPU draws (the ID image, the stroke ribbons).
 //   - vertices snapped to 1/2^kSubpixelBits px (common/strokes/id_image.hpp);
 //   - a pixel is covered when its center lies inside, or on a top or left edge (window

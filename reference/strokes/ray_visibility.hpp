@@ -1,4 +1,4 @@
-// What the ID-image test of stroke visibility approximates (SPEC 5 "ID image and
+// What the ID-image test of stroke visibility approximates (docs/conventions.md "ID image and
 // visibility"): whether a world point of a feature line is seen from the eye, by Embree
 // rays from the eye to it. A hit within `ignore[k]` of point k does not occlude it: the
 // surface the point lies on. A silhouette point is on the smooth (interpolated-normal)

@@ -1,4 +1,4 @@
-// The stroke raster, CPU reference (SPEC 4.6-4.7; formula in common/strokes/stroke.hpp): the
+// The stroke raster, CPU reference (Kalnins et al. 2002, §4.1; formula in common/strokes/stroke.hpp): the
 // ribbons' triangles through the scalar rasterizer, each fragment blended in order.
 #include "common/strokes/stroke.hpp"
 
@@ -60,7 +60,7 @@ PLUMBAGO_REFERENCE_STAGE(stroke, [](ReferenceFrame& f) {
 });
 
 // What the GPU may add to each fragment (derived, not fitted): its alpha comes from a
-// bilinear lookup whose sample position llvmpipe quantizes to 1/256 of a texel (SPEC 5: 8-bit
+// bilinear lookup whose sample position llvmpipe quantizes to 1/256 of a texel (docs/conventions.md: 8-bit
 // weights), up to 1/256 of a [0, 1] texture's step in u and in v, doubled by the paper
 // transfer's slope: 4/256 of alpha, so of color; and its blend into the 8-bit target
 // rounds by up to half a step. 4.5/255 a fragment, less the declared tolerance. At the

@@ -1,4 +1,4 @@
-// The paper effect of stroke-based rendering, CPU reference (SPEC 4.2; formula in
+// The paper effect of stroke-based rendering, CPU reference (Kalnins et al. 2002, §4.4; formula in
 // common/strokes/stroke_paper.hpp).
 #include "common/strokes/stroke_paper.hpp"
 

@@ -1,4 +1,4 @@
-// Visibility of stroke samples, CPU reference (SPEC 4.5): the test of
+// Visibility of stroke samples, CPU reference (Kalnins et al. 2002, §4.6): the test of
 // common/strokes/visibility.hpp on the ID image, sample by sample.
 #include "common/strokes/visibility.hpp"
 

@@ -1,4 +1,4 @@
-// Reference passes loop over pixels; rows may run on several threads (DESIGN.md
+// Reference passes loop over pixels; rows may run on several threads (docs/design.md,
 // principle 4), each pixel computed exactly as alone.
 #pragma once
 

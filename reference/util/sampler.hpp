@@ -1,4 +1,4 @@
-// The GL-exact texture sampler every reference pass uses (SPEC §0): texel centers at
+// The GL-exact texture sampler every reference pass uses (docs/conventions.md): texel centers at
 // (k + 0.5) / size, GL_NEAREST and GL_LINEAR (bilinear; trilinear across the layers of
 // a 3D texture), GL_REPEAT and GL_CLAMP_TO_EDGE, following the formulas of the OpenGL
 // 4.5 core specification §8.14 (u = s * size - 1/2, i0 = floor(u), alpha = frac(u)).

@@ -1,5 +1,5 @@
-// Edge detection (SPEC 2.2) at one pixel: contour darkness d = 1 - I_n I_z from the
-// diagonal neighbors A C / F H, y up (window coordinates), clamp-to-edge. Shared by
+// Edge detection (Nienhaus & Döllner 2003, as given in Pacheco §2) at one pixel: contour darkness d = 1 - I_n I_z from
+// the diagonal neighbors A C / F H, y up (window coordinates), clamp-to-edge. Shared by
 // edge_detect.frag and sketchy_maps.frag.
 uniform sampler2D normals;  // view-space normals (shading or face, chosen on the CPU), w: linear view depth
 uniform float near_plane;

@@ -1,4 +1,4 @@
-// Multiple contour drawing (SPEC 2.4; Lee §4.2-4.3) at one pixel, shared by
+// Multiple contour drawing (Lee §4.2-4.3) at one pixel, shared by
 // multi_contour.frag and compose.frag (which draws the contours itself in a frame):
 //   d_k = d'(p + offset_k(p)),  t_k = 1 - T_c(p / texture_scale + o_k)
 //   D_c = 1 - prod_k (1 - alpha d_k mix(1, t_k, texture_strength))

@@ -1,4 +1,4 @@
-// Texture rotation (SPEC 2.7), the formula of common/curvature/texture_rotation.cpp:
+// Texture rotation (Lee et al. 2006, §5.3), the formula of common/curvature/texture_rotation.cpp:
 //   c = M (p, 1), e = M (d, 0), J d = (W/2, H/2) (e.xy c.w - c.xy e.w) / c.w^2
 // A direction shorter than min_projected x H / (2 tan(fov/2) c.w) is not trusted.
 uniform mat4 view_projection;

@@ -1,6 +1,6 @@
 #version 450 core
-// Composition and enhancement (SPEC 2.11, Lee Eq. 6). With MULTI_CONTOUR on, this pass
-// draws the contours itself (SPEC 2.4, common_multi_contour.glsl) instead of reading D_c:
+// Composition and enhancement (Lee Eq. 6). With MULTI_CONTOUR on, this pass
+// draws the contours itself (Lee et al. 2006, §4.2-4.3, common_multi_contour.glsl) instead of reading D_c:
 // a frame then writes and reads no D_c target (gpu/pencil/compose.hpp).
 uniform sampler2D interior_darkness;
 uniform sampler2D paper_color;  // read texel for pixel, wrapping

@@ -1,7 +1,7 @@
 #version 450 core
 // The mark of each CONTOUR_BLOCK x CONTOUR_BLOCK block of pixels: 1 where some d' > 0, else
 // 0, for multi_contour.frag to find the pixels no copy can darken (a GPU shortcut, not a
-// stage of SPEC: the reference computes every pixel). A frame marks the blocks while it
+// stage of docs/stages.md: the reference computes every pixel). A frame marks the blocks while it
 // draws d' instead (edge_detect.frag).
 uniform sampler2D lit_contour_darkness;
 

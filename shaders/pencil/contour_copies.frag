@@ -1,5 +1,5 @@
 #version 450 core
-// What multiple contour drawing (multi_contour.frag, SPEC 2.4) reads for copy k at a
+// What multiple contour drawing (multi_contour.frag, Lee et al. 2006, §4.2-4.3) reads for copy k at a
 // pixel that does not change from frame to frame, computed once per window size and
 // parameters: the copy's offset (Eq. 2, bilinear between the grid's vertices) and its
 // texture factor mix(1, t_k, texture_strength), t_k = 1 - T_c(p / texture_scale + o_k).

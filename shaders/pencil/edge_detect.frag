@@ -1,6 +1,6 @@
 #version 450 core
-// Edge detection (SPEC 2.2): contour darkness d = 1 - I_n I_z (common_edge.glsl).
-// Also contour lighting (SPEC 2.3, Lee Eq. 1) in the same pass:
+// Edge detection (Nienhaus & Döllner 2003, as given in Pacheco §2): contour darkness d = 1 - I_n I_z
+// (common_edge.glsl). Also contour lighting (Lee Eq. 1) in the same pass:
 // d' = d (1 - lambda min(1, sum intensity max(0, N.L))), N the shading normal.
 // A frame keeps only d'; d is a second output for a dump and the parity runs.
 #include "scene/common_lights.glsl"

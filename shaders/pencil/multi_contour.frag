@@ -1,5 +1,5 @@
 #version 450 core
-// Multiple contour drawing (SPEC 2.4), common_multi_contour.glsl, as a stage of its own:
+// Multiple contour drawing (Lee et al. 2006, §4.2-4.3), common_multi_contour.glsl, as a stage of its own:
 // D_c into a float target (a frame fuses it into compose.frag instead).
 #include "pencil/common_multi_contour.glsl"
 

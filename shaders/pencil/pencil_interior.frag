@@ -1,5 +1,5 @@
 #version 450 core
-// Interior intensity and brightness (SPEC 2.5) and interior pencil shading (SPEC 2.6-2.10)
+// Interior intensity and brightness (Lee et al. 2006, §3, §5.2) and interior pencil shading (Lee et al. 2006, §5.1-5.5)
 // in one pass: D_i is the output, and I' a second one for a dump. Formulas in common/pencil/interior_intensity.hpp
 // and common/pencil/pencil_interior.hpp.
 #include "scene/common_lights.glsl"
@@ -25,7 +25,7 @@ layout(location = 0) out float interior_darkness;
 layout(location = 1) out float interior_intensity;  // for a dump: a frame does not keep I'
 #endif
 
-// I' = sqrt(I), I Gouraud or Phong (SPEC 2.5)
+// I' = sqrt(I), I Gouraud or Phong (Lee et al. 2006, §3, §5.2)
 float adjusted_intensity(ivec2 x, float gouraud) {
   float i = phong ? clamp(interior.ambient + interior.diffuse * light_sum(texelFetch(normals, x, 0).xyz), 0.0, 1.0)
                   : gouraud;

@@ -1,5 +1,5 @@
 #version 450 core
-// Texture rotation (SPEC 2.7), once a frame before the G-buffer: per mesh vertex, the
+// Texture rotation (Lee et al. 2006, §5.3), once a frame before the G-buffer: per mesh vertex, the
 // window-space angles of its min- and max-curvature strokes (common_rotation.glsl), which
 // triangle_angles.comp gathers per triangle.
 layout(local_size_x = 64) in;

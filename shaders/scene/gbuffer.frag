@@ -1,5 +1,5 @@
 #version 450 core
-// G-buffer (SPEC 2.1). Perspective-correct interpolation gives the same barycentrics as
+// G-buffer (docs/stages.md, gbuffer). Perspective-correct interpolation gives the same barycentrics as
 // the ray tracer's hit coordinates; normals are normalized after interpolation.
 in vec3 v_normal;
 flat in vec3 v_face_normal;

@@ -1,5 +1,5 @@
 #version 450 core
-// The G-buffer's background values (SPEC 2.1), drawn where no object is: after the objects,
+// The G-buffer's background values (docs/stages.md, gbuffer), drawn where no object is: after the objects,
 // at the far plane, with GL_LEQUAL (gpu/scene/gbuffer.cpp draw_background).
 uniform float far_plane;
 

@@ -1,5 +1,5 @@
 #version 450 core
-// Texture rotation (SPEC 2.7), after corner_angles.comp: each triangle's record of its
+// Texture rotation (Lee et al. 2006, §5.3), after corner_angles.comp: each triangle's record of its
 // three corners' stroke angles, what the G-buffer's theta channels hold at its pixels. The
 // G-buffer's vertices and the pencil interior read these records.
 layout(local_size_x = 64) in;

@@ -1,5 +1,5 @@
 #version 450 core
-// Sketchy composite and depth sprite (SPEC 3.2-3.5; Nienhaus & Döllner §3.2-3.4, §4),
+// Sketchy composite and depth sprite (Nienhaus & Döllner §3.2-3.4, §4),
 // the twin of reference/sketchy/sketchy_composite.cpp. Drawn over what the ordinary objects left
 // in the color and depth buffers; the depth test orders the two.
 uniform sampler2D edge_map;           // RG: contour darkness (filtered), edge depth (nearest)
@@ -20,7 +20,7 @@ uniform vec2 copy_shifts[8];
 layout(location = 0) out vec4 color;
 layout(location = 1) out float sprite_depth;  // normalized, where drawn
 
-// T(s, t) = sum_i |N(2^i (s, t))| / 2^i (SPEC 3.2)
+// T(s, t) = sum_i |N(2^i (s, t))| / 2^i (Nienhaus & Döllner 2004, §3.2)
 float turbulence(vec2 st) {
   float t = 0.0, f = 1.0;
   for (int i = 0; i < sketchy.octaves; ++i, f *= 2.0) t += abs(texture(noise, st * f).r) / f;
@@ -33,7 +33,7 @@ float turbulence(vec3 q) {
   return t;
 }
 
-// (u, v) of SPEC 3.2 at the pixel for edge copy k, centered on 0.
+// (u, v) of Nienhaus & Döllner 2004, §3.2 at the pixel for edge copy k, centered on 0.
 vec2 uncertainty(vec2 center, int k) {
   ivec2 x = ivec2(center);
   if (sketchy.style == SKETCHY_STYLE_ROUGH)
@@ -83,7 +83,7 @@ void main() {
       d = min(d, e.depth);
       c *= mix(copy_inks[k], vec3(1.0), 1.0 - e.darkness);
     }
-  } else {  // e * c.rgb inside the shade map, e * white outside (SPEC 3.3)
+  } else {  // e * c.rgb inside the shade map, e * white outside (Nienhaus & Döllner 2004, §3.2)
     vec2 uv = uncertainty(center, 0);
     EdgeSample e = edge_sample(center + copy_matrices[0] * uv);
     ivec2 s = nearest_texel(shade_map, center + shade_matrix * uv);
@@ -96,5 +96,5 @@ void main() {
   if (!drawn || !(d < far_plane)) discard;  // both samples exterior: rejected early
   color = vec4(c, 1.0);
   sprite_depth = (d - near_plane) / (far_plane - near_plane);
-  gl_FragDepth = window_depth(d);  // the depth sprite (SPEC 3.4)
+  gl_FragDepth = window_depth(d);  // the depth sprite (Nienhaus & Döllner 2004, §3.3)
 }

@@ -1,5 +1,5 @@
 #version 450 core
-// The `object` style's enlarged geometry (SPEC 3.5; Nienhaus & Döllner §4.2-4.3): world
+// The `object` style's enlarged geometry (Nienhaus & Döllner §4.2-4.3): world
 // positions of the enlarged triangle soup and each corner's 3D noise coordinate.
 layout(location = 0) in vec3 position;          // world
 layout(location = 1) in vec3 noise_coordinate;  // enlarged object space / bbox diagonal

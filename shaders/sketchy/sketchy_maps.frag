@@ -1,5 +1,5 @@
 #version 450 core
-// Sketchy drawing's maps (SPEC 3.1), the twin of reference/sketchy/sketchy_maps.cpp: the edge
+// Sketchy drawing's maps (Nienhaus & Döllner 2004, §3.1), the twin of reference/sketchy/sketchy_maps.cpp: the edge
 // map with the depth its darkness belongs to, and the shade map.
 #include "pencil/common_edge.glsl"
 

@@ -1,5 +1,5 @@
 #version 450 core
-// Base coat (SPEC 4.1): s interpolated from the triangle's corners with the barycentrics
+// Base coat (Kalnins et al. 2002, §4.2): s interpolated from the triangle's corners with the barycentrics
 // looks up the 1D texture: the coat, straight alpha, on the stroke objects only.
 // Formula in common/strokes/basecoat.hpp.
 

@@ -1,5 +1,5 @@
 #version 450 core
-// The ID image's triangles (SPEC 4.4), pulled from a buffer of window-space vertices
+// The ID image's triangles (Kalnins et al. 2002, §4.6), pulled from a buffer of window-space vertices
 // (common/strokes/id_image.hpp IdVertex). z = near / d is interpolated affinely (noperspective)
 // and written as the fragment's depth as it is (no [-1, 1] round trip, whose 2z - 1 would
 // lose the precision of small z), then tested GL_GREATER.

@@ -1,6 +1,6 @@
 #version 450 core
-// A stroke fragment (SPEC 4.7): the ribbon's alpha times its stroke texture, through the
-// paper's alpha transfer (SPEC 4.2), premultiplied for the ONE, ONE_MINUS_SRC_ALPHA blend.
+// A stroke fragment (Kalnins et al. 2002, §4.1): the ribbon's alpha times its stroke texture, through the
+// paper's alpha transfer (Kalnins et al. 2002, §4.4), premultiplied for the ONE, ONE_MINUS_SRC_ALPHA blend.
 // Formula in common/strokes/stroke.hpp and common/strokes/stroke_paper.hpp.
 #include "util/common_wrap.glsl"
 

@@ -1,5 +1,5 @@
 #version 450 core
-// The stroke ribbons' triangles (SPEC 4.6-4.7), pulled from a buffer of window-space
+// The stroke ribbons' triangles (Kalnins et al. 2002, §4.1), pulled from a buffer of window-space
 // vertices (common/strokes/stroke.hpp StrokeVertex: 9 floats). Attributes are affine in the window.
 layout(std430, binding = 0) readonly buffer Vertices { float vertices[]; };
 uniform vec2 window_size;

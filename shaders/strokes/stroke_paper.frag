@@ -1,5 +1,5 @@
 #version 450 core
-// The paper effect of stroke-based rendering (SPEC 4.2): at the stroke objects' pixels,
+// The paper effect of stroke-based rendering (Kalnins et al. 2002, §4.4): at the stroke objects' pixels,
 // the coat onto the white page through the paper's alpha transfer; every other pixel is
 // left as the other pipelines drew it. Formula in common/strokes/stroke_paper.hpp.
 #include "util/common_wrap.glsl"

@@ -1,5 +1,5 @@
 #version 450 core
-// Visibility of stroke samples (SPEC 4.5), one invocation per sample: the test of
+// Visibility of stroke samples (Kalnins et al. 2002, §4.6), one invocation per sample: the test of
 // common/strokes/visibility.cpp (sample_visible) on the ID image's keys.
 layout(local_size_x = 64) in;
 

@@ -1,5 +1,5 @@
 // The command line as a user meets it: exit codes, messages naming file/line/key, and no
-// output file left behind by a failed run (DESIGN.md principle 7).
+// output file left behind by a failed run (docs/design.md, principle 7).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 

@@ -1,4 +1,4 @@
-// End to end (SPEC 5): whole frames from both backends, each from its own G-buffer.
+// End to end (docs/conventions.md): whole frames from both backends, each from its own G-buffer.
 #include <gtest/gtest.h>
 
 #include "parity/parity.hpp"

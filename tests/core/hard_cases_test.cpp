@@ -1,4 +1,4 @@
-// Hard cases (SPEC 5 "numerical stability"): every buffer of every stage stays free of
+// Hard cases (docs/conventions.md "numerical stability"): every buffer of every stage stays free of
 // NaN and Inf, on both backends, with every effect of the pencil pipeline on, drawn with
 // strokes, and drawn sketchy.
 #include <gtest/gtest.h>
@@ -29,8 +29,8 @@ void expect_finite_frames(const Scene& scene, const std::string& label) {
 }
 
 // The scene with every effect of the pencil pipeline, then with every object drawn with
-// strokes (SPEC 4), then sketchy (SPEC 3) in the styles with their own geometry and noise:
-// object, repeat, rough.
+// strokes (Kalnins et al. 2002), then sketchy (Nienhaus & Döllner 2004) in the styles with their own geometry and
+// noise: object, repeat, rough.
 void expect_finite_everywhere(const Scene& scene, const std::string& label) {
   expect_finite_frames(scene, label);
   expect_finite_frames(testing::drawn_with_strokes(scene), label + ", strokes");

@@ -100,7 +100,7 @@ TEST(Params, DefaultsComeFromTheTable) {
   // A default ParamSet gives each key the table's default.
   ParamSet defaults;
   for (const auto& s : param_specs()) EXPECT_EQ(defaults.value(s.key), s.default_value) << s.key;
-  // A few defaults as the headers write them (and SPEC names them).
+  // A few defaults as the headers write them (and docs/stages.md lists them).
   EXPECT_EQ(param_spec("edge.depth_scale").default_value, 10.0);                  // common/pencil/edge_detect.hpp
   EXPECT_EQ(param_spec("edge.normals").default_value, 0.0);                       // interpolated
   EXPECT_EQ(param_spec("edge.background_pairs").default_value, 0.0);              // continuous

@@ -1,5 +1,5 @@
-// The ball of SPEC §1.1 (common/curvature/ball_geometry.hpp): the length of a segment and the
-// area of a triangle clipped to a ball, and the sums the tensor grows over the ball
+// The ball of Lee et al. 2006, §5.3; Alliez et al. 2003 (common/curvature/ball_geometry.hpp): the length of a segment
+// and the area of a triangle clipped to a ball, and the sums the tensor grows over the ball
 // (and over the 1-ring), each checked against a plain version of the same.
 #include <gtest/gtest.h>
 
@@ -159,8 +159,8 @@ TEST(BallGeometry, TriangleAreaInBallIsThePieceByPieceSumOnDegenerateTriangles) 
   }
 }
 
-// The ball's sums the plain way (SPEC §1.1): faces grown from v's across edges that reach
-// into the ball, each edge counted once (marked), each face and edge clipped. Also the
+// The ball's sums the plain way (Lee et al. 2006, §5.3; Alliez et al. 2003): faces grown from v's across edges that
+// reach into the ball, each edge counted once (marked), each face and edge clipped. Also the
 // sum of the tensor terms' magnitudes, the scale its rounding is measured against.
 struct PlainBall {
   curvature::BallSums sums;
@@ -266,8 +266,8 @@ TEST(CurvatureBall, SumsAreThoseOfThePlainBall) {
   expect_plain_ball_sums(load_mesh(teapot), 0.05, "teapot");
 }
 
-// The 1-ring's sums the plain way (SPEC §1.1, docs/curvature.md): the faces around v whole,
-// each distinct edge of those faces once (marked), edges at v whole and the others half.
+// The 1-ring's sums the plain way (Lee et al. 2006, §5.3; Alliez et al. 2003, docs/curvature.md): the faces around v
+// whole, each distinct edge of those faces once (marked), edges at v whole and the others half.
 curvature::BallSums plain_one_ring_sums(const Mesh& m, const MeshTopology& topo, uint32_t v, double& tensor_scale) {
   auto corner = [&](uint32_t f, int k) { return glm::dvec3(m.positions[m.triangles[f][k % 3]]); };
   auto twice_area_normal = [&](uint32_t f) { return glm::cross(corner(f, 1) - corner(f, 0), corner(f, 2) - corner(f, 0)); };

@@ -1,4 +1,4 @@
-// Principal curvature (SPEC §1.1): the dihedral angle in the tensor, the min/max roles
+// Principal curvature (Lee et al. 2006, §5.3; Alliez et al. 2003): the dihedral angle in the tensor, the min/max roles
 // and the sign convention, accuracy on analytic surfaces, and the propagation of
 // undefined directions. The ball and its sums: ball_geometry_test.cpp; the cache:
 // curvature_cache_test.cpp; `plumbago curvature`: curvature_cli_test.cpp.
@@ -154,8 +154,9 @@ std::vector<size_t> away_from_boundary(const AnalyticSurface& s, double margin) 
 }
 
 // Vertices within `margin` of an open boundary are left out. Direction errors are taken
-// where the true directions are defined (SPEC's umbilic test on the exact curvatures). The error of k is relative to |k|, or to a
-// tenth of the larger |k| where |k| is smaller than that (a cylinder's k_min = 0).
+// where the true directions are defined (the umbilic test, `curvature.umbilic_ratio`, on the exact
+// curvatures). The error of k is relative to |k|, or to a tenth of the larger |k| where |k| is smaller than that (a
+// cylinder's k_min = 0).
 Accuracy measure_accuracy(const AnalyticSurface& s, const Curvature& c, double margin) {
   CurvatureParams defaults = curvature_params();
   std::vector<double> direction, k_min, k_max;
@@ -301,7 +302,7 @@ TEST(CurvatureAccuracy, EverySurfaceWithBothMethods) {
 }
 
 // ---------------------------------------------------------------------------------
-// Umbilic and flat regions (SPEC §1.1): a smooth, deterministic field everywhere
+// Umbilic and flat regions (Lee et al. 2006, §5.3; Alliez et al. 2003): a smooth, deterministic field everywhere
 
 // Angle between the directions at the two ends of each edge, the first projected to the
 // second's tangent plane.
@@ -417,8 +418,8 @@ struct Smoothness {
   size_t edges;
 };
 
-// Over the edges whose ends both have undefined directions (SPEC's umbilic test on the
-// estimated curvature: their directions are filled in, not estimated).
+// Over the edges whose ends both have undefined directions (the umbilic test on
+// the estimated curvature: their directions are filled in, not estimated).
 Smoothness filled_in_smoothness(const Mesh& mesh, const Curvature& c, const CurvatureParams& p) {
   std::vector<uint8_t> filled(c.size());
   for (size_t v = 0; v < c.size(); ++v)

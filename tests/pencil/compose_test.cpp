@@ -1,4 +1,4 @@
-// Composition and enhancement (SPEC 2.11, stage `compose`): GPU vs reference on the same
+// Composition and enhancement (Lee et al. 2006, §6, Eq. 6, stage `compose`): GPU vs reference on the same
 // inputs, and the formula of common/pencil/compose.hpp on hand-made images with known answers:
 //   D_i' = D_i (1 - a D_c),  I = (1 - D_c)(1 - D_i'),
 //   I'' = mix(I, smoothstep(0, 1, I), contrast),  out = I'' c_p.

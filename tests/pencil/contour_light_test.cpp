@@ -1,4 +1,4 @@
-// Contour lighting (SPEC 2.3): GPU vs reference on the same inputs, and Eq. 1 itself.
+// Contour lighting (Lee et al. 2006, §4.1, Eq. 1): GPU vs reference on the same inputs, and Eq. 1 itself.
 #include <gtest/gtest.h>
 
 #include "parity/parity.hpp"

@@ -1,4 +1,4 @@
-// Distorted planes (SPEC 1.4, Lee Eq. 2): bounded offsets, the requested period, the
+// Distorted planes (Lee Eq. 2): bounded offsets, the requested period, the
 // noise term's spread, distinct and reproducible copies.
 #include <gtest/gtest.h>
 

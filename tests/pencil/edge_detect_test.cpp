@@ -1,5 +1,5 @@
-// Edge detection (SPEC 2.2): parity of the GPU pass and the reference on the same
-// G-buffer, in both normal modes, plus the formula's own properties.
+// Edge detection (Nienhaus & Döllner 2003, as given in Pacheco §2): parity of the GPU pass and the reference on the
+// same G-buffer, in both normal modes, plus the formula's own properties.
 #include <gtest/gtest.h>
 
 #include "parity/parity.hpp"
@@ -17,7 +17,7 @@ class EdgeDetectParity : public GlTest, public ::testing::WithParamInterface<std
 
 // Both backends evaluate the same float expression on the same float inputs; the only
 // difference is the GPU's instruction selection (fused multiply-add). Measured max abs
-// on llvmpipe: ~1e-7. Tolerance 1e-4 (SPEC §5 float target, 1e-3) leaves no pixel over.
+// on llvmpipe: ~1e-7. Tolerance 1e-4 (docs/conventions.md float target, 1e-3) leaves no pixel over.
 TEST_P(EdgeDetectParity, GpuMatchesReferenceOnTheSameGBuffer) {
   auto [scene_name, mode] = GetParam();
   Scene scene = testing::builtin_at(scene_name, 320, 240);

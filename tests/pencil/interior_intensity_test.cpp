@@ -1,4 +1,4 @@
-// Interior intensity and brightness (SPEC 2.5): GPU vs reference on the same G-buffer,
+// Interior intensity and brightness (Lee et al. 2006, §3, §5.2): GPU vs reference on the same G-buffer,
 // Gouraud and Phong, with and without the brightness adjustment.
 #include <gtest/gtest.h>
 

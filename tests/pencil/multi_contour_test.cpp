@@ -1,4 +1,4 @@
-// Multiple contour drawing (SPEC 2.4): GPU vs reference on the same inputs, and the
+// Multiple contour drawing (Lee et al. 2006, §4.2-4.3): GPU vs reference on the same inputs, and the
 // formula's own properties.
 #include <gtest/gtest.h>
 

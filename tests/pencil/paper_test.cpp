@@ -1,4 +1,4 @@
-// Paper (SPEC 1.3): height range and spread, tiling, normals as the formula says,
+// Paper (Lee et al. 2006, §5.5): height range and spread, tiling, normals as the formula says,
 // color between its two ends, roughness that follows the parameters, determinism.
 #include <gtest/gtest.h>
 

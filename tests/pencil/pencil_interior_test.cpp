@@ -1,4 +1,4 @@
-// Interior pencil shading (SPEC 2.6-2.10): GPU vs reference on the same inputs, and the
+// Interior pencil shading (Lee et al. 2006, §5.1-5.5): GPU vs reference on the same inputs, and the
 // effect switches. The composition with interior and paper: compose_test.cpp.
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@ namespace plumbago {
 namespace {
 
 const std::vector<std::string>& kPencilInteriorResults = testing::kInteriorResults;
-// SPEC 2.6-2.8 alone, then with cross hatching (2.9) and the paper effect (2.10).
+// Lee et al. 2006, §5.1-5.4 alone, then with cross hatching (2.9) and the paper effect (2.10).
 const std::vector<std::vector<std::string>> kInteriorEffects = {{"contours", "interior"},
                                                                 {"contours", "interior", "crosshatch", "paper"}};
 

@@ -1,4 +1,4 @@
-// Pencil textures (SPEC 1.2; Lee Eq. 3-4): tones, tiling, white preservation,
+// Pencil textures (Lee Eq. 3-4): tones, tiling, white preservation,
 // determinism. Small tiles keep the suite fast where the formula does not depend on size.
 #include <gtest/gtest.h>
 
@@ -40,7 +40,7 @@ TEST(PencilTexture, LayerZeroIsWhiteAndTonesFallUniformly) {
   std::printf("[pencil] darkest layer mean %.4f (target %.4f)\n", mean(layers.back()), layer_target(p, p.layers - 1));
 }
 
-// Eq. 3-4 as SPEC 1.2 writes them, on numbers worked by hand (mu_b 0.2, mu_w 0.4,
+// Eq. 3-4 as Lee et al. 2006, §5.1, Eq. 3-4 writes them, on numbers worked by hand (mu_b 0.2, mu_w 0.4,
 // white_level 0.9).
 TEST(PencilTexture, GraphiteUpdateIsEquations3And4) {
   auto p = ParamSet{}.get<PencilTexturesParams>();

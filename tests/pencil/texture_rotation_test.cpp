@@ -1,4 +1,4 @@
-// Texture rotation (SPEC 2.7): corner angles raster vs ray, and the hard cases.
+// Texture rotation (Lee et al. 2006, §5.3): corner angles raster vs ray, and the hard cases.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,7 +12,7 @@
 namespace plumbago {
 namespace {
 
-// The corner angles of SPEC 2.7 are G-buffer channels: raster vs ray on the same curvature,
+// The corner angles of Lee et al. 2006, §5.3 are G-buffer channels: raster vs ray on the same curvature,
 // where both backends see the same triangle away from depth discontinuities.
 const std::vector<std::string> kGBufferWithAngles = {"gbuffer.normal", "gbuffer.face_normal", "gbuffer.depth",
                                                      "gbuffer.bary",   "gbuffer.gouraud",     "gbuffer.theta_min",

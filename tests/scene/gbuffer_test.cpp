@@ -1,5 +1,5 @@
 // G-buffer parity, raster (gpu/scene/gbuffer.cpp) vs ray tracing (reference/scene/gbuffer.cpp),
-// SPEC §5: interior pixels agree within 1e-4 in depth and 1e-3 in normals; differences
+// docs/conventions.md: interior pixels agree within 1e-4 in depth and 1e-3 in normals; differences
 // only in the one-pixel band along depth discontinuities, whose share is printed.
 #include <gtest/gtest.h>
 
@@ -138,7 +138,7 @@ TEST_F(GBufferCulling, NothingIsCulledWhereTheInsideCanShow) {
 
 // Renders the sphere, then the same sphere from a camera moved sideways, into the same
 // targets: the pixels the first render covered and the second does not must hold the
-// background values of SPEC 2.1 again. Returns how many such pixels there were.
+// background values (docs/stages.md, gbuffer) again. Returns how many such pixels there were.
 int expect_second_render_leaves_no_trace(const gpu::GBufferChannels& channels, const std::string& label) {
   Scene scene = testing::builtin_at("sphere", 200, 150);
   gpu::GBufferTargets targets = gpu::make_gbuffer_targets(scene.width, scene.height, GBufferFormat::RGBA32F);

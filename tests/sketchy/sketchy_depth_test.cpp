@@ -1,5 +1,5 @@
-// The sketchy depth sprite's parity at texel-edge ties (SPEC 3.4, §5): the sprite's depth
-// comes from nearest texels, and where a sample position p + M (u, v) lies on a texel
+// The sketchy depth sprite's parity at texel-edge ties (Nienhaus & Döllner 2004, §3.3; docs/conventions.md): the
+// sprite's depth comes from nearest texels, and where a sample position p + M (u, v) lies on a texel
 // edge the two backends' float roundings can pick adjacent texels. The report: a sketchy
 // torus of 120 x 48 segments next to a box failed sketchy_composite.depth at one pixel.
 #include <gtest/gtest.h>

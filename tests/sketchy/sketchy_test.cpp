@@ -1,4 +1,4 @@
-// Sketchy drawing (SPEC 3): stage parity per style, occlusion against ordinary objects
+// Sketchy drawing (Nienhaus & Döllner 2004): stage parity per style, occlusion against ordinary objects
 // both ways on both backends, the effect's passes, and the scene rules.
 #include <gtest/gtest.h>
 

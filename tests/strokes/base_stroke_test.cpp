@@ -1,5 +1,5 @@
-// Base strokes (SPEC 4.6, 4.8, 4.11): the resampled spline against lines and circles, the
-// width and alpha profiles against their formulas, offsets and the rubber stamp, pen
+// Base strokes (Kalnins et al. 2002, §4.1; §4.3, §5, App. A; Kalnins et al. 2003): the resampled spline against lines
+// and circles, the width and alpha profiles against their formulas, offsets and the rubber stamp, pen
 // lifts, and degenerate runs. The ribbons are read back through GL's strip order.
 #include <gtest/gtest.h>
 
@@ -94,7 +94,7 @@ void expect_profile(const Strip& strip, double step, const Profile& w_expected, 
 
 // --- the spline -------------------------------------------------------------------
 
-// On a line the tangents of SPEC 4.6 all have the length of their span's chord: the
+// On a line the tangents of Kalnins et al. 2002, §4.1 all have the length of their span's chord: the
 // spline is the line at constant speed, whatever the spacing of the input points.
 TEST(BaseStroke, ResamplingALineGivesEvenCollinearPoints) {
   glm::dvec2 origin(20, 30), dir(std::cos(0.5), std::sin(0.5));
@@ -155,7 +155,7 @@ TEST(BaseStroke, OpenEndsAreParabolic) {
   for (glm::dvec2 p : r) EXPECT_NEAR(p.y, 10 - p.x * p.x / 10, 0.75 * 0.75 / 40) << p.x;
 }
 
-// SPEC 4.6's tangents have |v_i| <= 1, so a span's Bézier control points lie within a
+// The tangents of Kalnins et al. 2002, §4.1 have |v_i| <= 1, so a span's Bézier control points lie within a
 // third of its chord of its ends (a parabolic end's within the chord): next to a 1.4 px
 // span between two 100 px ones the curve stays within 0.5 px of the corner's box. The
 // uniform spline's tangent (p2 - p0) / 2 would swing about 15 px beyond it.
@@ -199,7 +199,7 @@ TEST(BaseStroke, ResamplingRepeatedFewAndNonFinitePoints) {
   EXPECT_THROW(catmull_rom_resample({p, q}, nan, false), std::invalid_argument);
 }
 
-// --- width and alpha (SPEC 4.6) ------------------------------------------------------
+// --- width and alpha (Kalnins et al. 2002, §4.1) ------------------------------------------------------
 
 TEST(BaseStroke, TaperFollowsItsFormula) {
   StrokeStyle st = plain_style();
@@ -272,7 +272,8 @@ TEST(BaseStroke, ThinStrokesAreDrawnTwoPixelsWideAndFainter) {
   }
 }
 
-// --- offsets (SPEC 4.8, 4.11) -------------------------------------------------------
+// --- offsets (Kalnins et al. 2002, §4.3, §5, App. A; Kalnins et al. 2003)
+// -------------------------------------------------------
 
 // A constant displacement d moves every sample by d along the left normal, times
 // min(L / L_drawn, 1).

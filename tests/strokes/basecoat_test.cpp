@@ -1,4 +1,4 @@
-// Base coat (SPEC 4.1): parity on the built-in scenes, the formula on hand-made inputs,
+// Base coat (Kalnins et al. 2002, §4.2): parity on the built-in scenes, the formula on hand-made inputs,
 // and what a frame of it looks like.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Stroke files and decals (SPEC 4.9): the file's reading and refusals, the two backends'
+// Stroke files and decals (Kalnins et al. 2002, §3, §4.5): the file's reading and refusals, the two backends'
 // projections onto the surface, decal parity, decals hidden behind the surface.
 #include <gtest/gtest.h>
 
@@ -101,7 +101,7 @@ TEST(StrokeFile, ScenesListThemRelativeToTheirFolder) {
   }
 }
 
-// A crease example drawn in a stroke file becomes the creases' offsets (SPEC 4.8-4.9):
+// A crease example drawn in a stroke file becomes the creases' offsets (Kalnins et al. 2002, §3, §4.3, §5):
 // measured from its chord, to the left of its direction of travel, its pressure kept; the
 // rubber stamp takes the drawn examples in turn, the Markov chain draws from them.
 TEST(StrokeFile, DrawnExamplesStyleTheCreases) {
@@ -304,7 +304,7 @@ TEST(StrokeFileCommand, SvgOverTheRenderBecomesAStrokeFile) {
   ASSERT_EQ(f.strokes.size(), 3u);
   EXPECT_EQ(f.width, 800);
   EXPECT_NEAR(glm::distance(glm::dvec3(f.camera.eye), glm::dvec3(scene.camera.eye)), 0.0, 1e-5);
-  EXPECT_EQ(f.strokes[0].points[1].window, glm::dvec2(200, 450));  // y flipped: SPEC 0's window
+  EXPECT_EQ(f.strokes[0].points[1].window, glm::dvec2(200, 450));  // y flipped: docs/conventions.md's window
   EXPECT_DOUBLE_EQ(f.strokes[0].points[0].pressure, 1.0);          // the widest stroke
   EXPECT_EQ(f.strokes[0].style_name, "ink");
   ASSERT_EQ(f.strokes[1].points.size(), 4u);  // M, l, v, Z back to the start

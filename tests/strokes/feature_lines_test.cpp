@@ -1,5 +1,5 @@
-// Feature lines (common/strokes/feature_lines.cpp, SPEC 4.3) checked as geometry (SPEC 5): on
-// analytic shapes the silhouette lies on the true silhouette within the mesh's chord
+// Feature lines (common/strokes/feature_lines.cpp, Kalnins et al. 2002, §4.5) checked as geometry
+// (docs/conventions.md): on analytic shapes the silhouette lies on the true silhouette within the mesh's chord
 // error, a cube has 12 crease paths, an open sheet one border loop, and tracing ends on
 // degenerate input.
 #include <gtest/gtest.h>
@@ -79,7 +79,7 @@ double distance_to_sphere_silhouette(glm::dvec3 p, double r, glm::dvec3 eye) {
   return std::sqrt(h * h + (radial - rho) * (radial - rho));
 }
 
-// SPEC 5: a sphere's silhouette is the circle where the view cone touches it. Bound, for
+// docs/conventions.md: a sphere's silhouette is the circle where the view cone touches it. Bound, for
 // the largest edge angle theta: the chord error r (1 - cos(theta/2)) (points on edges lie
 // inside the sphere by up to that) plus the error of interpolating g linearly along an
 // edge, r (theta^2 / 8) |g''/g'| with |g''/g'| = cot(alpha) = r / sqrt(D^2 - r^2) at the
@@ -126,7 +126,7 @@ std::array<glm::dvec2, 2> cylinder_rulings(double r, glm::dvec3 eye) {
   return {glm::dvec2(r * std::cos(phi + a), r * std::sin(phi + a)), glm::dvec2(r * std::cos(phi - a), r * std::sin(phi - a))};
 }
 
-// SPEC 5: a capped cylinder seen from the side has two silhouette rulings (open paths
+// docs/conventions.md: a capped cylinder seen from the side has two silhouette rulings (open paths
 // from rim to rim, parallel to the axis) and two closed cap-rim crease loops. Bound: the
 // chord error r (1 - cos(pi / n)) of its n = 64 sides, plus 1e-6.
 TEST(FeatureLines, CylinderHasTwoRulingsAndTwoRimLoops) {
@@ -186,7 +186,7 @@ Mesh cube() {
   return m;
 }
 
-// SPEC 5: a cube has 12 crease paths: every corner has crease degree 3, so each edge is
+// docs/conventions.md: a cube has 12 crease paths: every corner has crease degree 3, so each edge is
 // a path of its own; the face diagonals are flat. No borders. With crease_deg = 100
 // (n1·n2 = 0 is not below cos 100°) there are none.
 TEST(FeatureLines, CubeHasTwelveCreasePaths) {
@@ -346,7 +346,7 @@ void expect_bounded_and_finite(const Mesh& m, const FeatureLines& lines, size_t 
   EXPECT_LE(point_count(lines.creases) + point_count(lines.borders), 2 * edges_bound);
 }
 
-// Termination (SPEC 4.3): vertices where g = 0 exactly, a non-manifold edge (three
+// Termination (Kalnins et al. 2002, §4.5): vertices where g = 0 exactly, a non-manifold edge (three
 // faces), a repeated face, zero-area faces (collinear corners, a repeated corner), and
 // the eye on a vertex.
 TEST(FeatureLines, TracingEndsOnDegenerateInput) {

@@ -1,4 +1,4 @@
-// Hatching groups (SPEC 4.10): the level-of-detail rule (hysteresis, one level at a time,
+// Hatching groups (Kalnins et al. 2002, §6): the level-of-detail rule (hysteresis, one level at a time,
 // the transitions' duration), the groups' hatches (order, interpolation, refusals), the
 // density as a camera approaches, and parity of the stages that draw them.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Synthesis of stroke offsets by example (SPEC 4.8, Kalnins et al. 2002 Appendix A):
+// Synthesis of stroke offsets by example (Kalnins et al. 2002 Appendix A):
 // resampling, seeding, the statistics the chain keeps (mean, variance, autocorrelation,
 // period) over long strokes, the Q-learning's avoidance of a dead end, the offset list for
 // rubber_stamp, degenerate examples, and controls showing that the statistical checks

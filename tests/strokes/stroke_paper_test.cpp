@@ -1,4 +1,4 @@
-// The paper effect of stroke-based rendering (SPEC 4.2): the transfer function, parity on
+// The paper effect of stroke-based rendering (Kalnins et al. 2002, §4.4): the transfer function, parity on
 // a half-transparent coat, and the paper showing through it in a frame.
 #include <gtest/gtest.h>
 

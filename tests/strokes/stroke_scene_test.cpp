@@ -1,4 +1,4 @@
-// The scene's stroke keys (SPEC 4): "style": "strokes" with its effects, and "strokes" styles
+// The scene's stroke keys (Kalnins et al. 2002): "style": "strokes" with its effects, and "strokes" styles
 // by preset or file, refused with the scene file and key when wrong.
 #include <gtest/gtest.h>
 

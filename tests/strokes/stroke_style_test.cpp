@@ -1,4 +1,4 @@
-// Stroke styles (SPEC 4.6-4.8): defaults, values and offsets read from JSON, every refusal
+// Stroke styles (Kalnins et al. 2002, §4.1, §4.3): defaults, values and offsets read from JSON, every refusal
 // naming the file and the key, the presets and where they are found.
 #include <gtest/gtest.h>
 
@@ -171,7 +171,8 @@ TEST(StrokeStyle, PresetsLoadByName) {
   StrokeStyle pencil = load_stroke_style("pencil");
   EXPECT_EQ(pencil.texture, StrokeTextureKind::Pencil);
   EXPECT_TRUE(pencil.offsets.has_value());
-  StrokeStyle sketchy = load_stroke_style("sketchy_pencil");  // offsets synthesized (SPEC 4.8)
+  StrokeStyle sketchy = load_stroke_style("sketchy_pencil");  // offsets synthesized (Kalnins et al. 2002,
+                                                              // App. A)
   EXPECT_EQ(sketchy.synthesis, OffsetSynthesis::Markov);
   EXPECT_TRUE(sketchy.offsets.has_value());
   StrokeStyle toon = load_stroke_style("toon_silhouette");  // Kalnins Fig. 1/3: wide, dark, small halo

@@ -1,4 +1,4 @@
-// Stroke textures (SPEC 4.7): determinism, range, tiling in u, the soft cross-section,
+// Stroke textures (Kalnins et al. 2002, §4.1): determinism, range, tiling in u, the soft cross-section,
 // and the three kinds' order in mean and variance.
 #include <gtest/gtest.h>
 

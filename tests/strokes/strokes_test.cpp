@@ -1,4 +1,4 @@
-// Stroke-based rendering (SPEC 4.4-4.7): the ID image, visibility and the stroke raster on
+// Stroke-based rendering (Kalnins et al. 2002, §4.1, §4.6): the ID image, visibility and the stroke raster on
 // both backends, fed the same inputs; visibility against what is analytically hidden.
 #include <gtest/gtest.h>
 
@@ -41,7 +41,7 @@ INSTANTIATE_TEST_SUITE_P(Models, StrokeModelParity,
                          ::testing::Values("fandisk.obj", "ogre.obj", "stanford-bunny.obj", "teapot.obj", "spot.obj",
                                            "cow.obj", "rocker-arm.obj", "igea.ply"));
 
-// A unit cube seen from a generic direction near a corner: 12 crease paths (SPEC 5), of which
+// A unit cube seen from a generic direction near a corner: 12 crease paths (docs/conventions.md), of which
 // the 9 around the three faces that face the eye are visible and the 3 meeting at the far
 // corner are hidden, on both backends' ID images.
 Scene cube_from_a_corner() {
@@ -112,7 +112,7 @@ TEST_F(StrokeVisibility, AHiddenHalfOfASilhouette) {
 }
 
 // The runs end where the silhouette goes behind the plane, within the 1 px of the bisection
-// (SPEC 4.6), and those ends are occlusion ends (they get the halo).
+// (Kalnins et al. 2002, §4.1), and those ends are occlusion ends (they get the halo).
 TEST_F(StrokeVisibility, RunsEndAtTheOccluderWithinAPixel) {
   Scene scene = sphere_behind_a_plane();
   auto p = scene.params.get<StrokesParams>();
@@ -140,7 +140,7 @@ TEST_F(StrokeVisibility, RunsEndAtTheOccluderWithinAPixel) {
 namespace plumbago {
 namespace {
 
-// A style whose offsets the Markov chain synthesizes (SPEC 4.8): the same seed draws the
+// A style whose offsets the Markov chain synthesizes (Kalnins et al. 2002, §4.3, §5, App. A): the same seed draws the
 // same strokes, another seed other ones, and both backends draw them alike.
 TEST(StrokeSynthesis, SeededDeterministicAndOnBothBackends) {
   auto scene_with_seed = [](uint32_t seed) {

@@ -1,5 +1,5 @@
-// The temporal-coherence measures of stroke rendering (experiments/temporal_coherence, SPEC
-// 5): strokes with known motion give known sliding, births, deaths and changes; a static
+// The temporal-coherence measures of stroke rendering (experiments/temporal_coherence,
+// docs/conventions.md): strokes with known motion give known sliding, births, deaths and changes; a static
 // camera gives none, and no stroke-layer score (nothing moved).
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The SPEC 4.5 test of one sample against an ID image, by hand (every kind of sample) and
+// The Kalnins et al. 2002, §4.6 test of one sample against an ID image, by hand (every kind of sample) and
 // on both backends (the C++ function and the compute shader) over random images and
 // samples.
 #include <gtest/gtest.h>
@@ -50,7 +50,7 @@ TEST(Visibility, EachKindOfSampleByHand) {
   EXPECT_FALSE(sample_visible(k, sample(-5.0f, 1.5f, kDecalSample, 0, kFace)));  // off the image
   float nan = std::numeric_limits<float>::quiet_NaN();
   EXPECT_FALSE(sample_visible(k, sample(nan, 1.5f, kDecalSample, 0, kFace)));
-  // A hatch reaches 2 px (SPEC 4.10), either of its two faces.
+  // A hatch reaches 2 px (Kalnins et al. 2002, §6), either of its two faces.
   EXPECT_TRUE(sample_visible(k, sample(10.5f, 4.5f, kHatchingSample, 0, kCreasePath)));   // 2 px from the column
   EXPECT_FALSE(sample_visible(k, sample(11.5f, 4.5f, kHatchingSample, 0, kCreasePath)));  // 3 px
   EXPECT_FALSE(sample_visible(k, sample(10.5f, 4.5f, kDecalSample, 0, kCreasePath)));     // a decal reaches 1

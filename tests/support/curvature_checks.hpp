@@ -1,4 +1,4 @@
-// What every curvature result must satisfy (SPEC §1.1), for the curvature tests.
+// What every curvature result must satisfy (Lee et al. 2006, §5.3; Alliez et al. 2003), for the curvature tests.
 #pragma once
 
 #include <gtest/gtest.h>

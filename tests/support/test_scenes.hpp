@@ -30,7 +30,7 @@ inline Scene builtin_at(const std::string& name, int width, int height) {
   return s;
 }
 
-// `s` with every object drawn by stroke-based rendering (SPEC 4): base coat and strokes.
+// `s` with every object drawn by stroke-based rendering (Kalnins et al. 2002): base coat and strokes.
 inline Scene drawn_with_strokes(Scene s) {
   for (SceneObject& o : s.objects) o.style = Style::Strokes;
   s.effects = {"basecoat", "strokes"};
