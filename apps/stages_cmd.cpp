@@ -77,7 +77,7 @@ void print_plain(const StageDesc& s) {
   std::printf("%s (%s): %s\n", s.name.c_str(), kind_name(s.kind), s.doc.c_str());
   std::printf("  effects: %s\n", joined(effects_running(s)).c_str());
   for (const Input& in : s.inputs)
-    std::printf("  input   %s %s\n", in.buffer.c_str(), condition_note(in.used).c_str());
+    std::printf("  input   %s %s\n", in.buffer().c_str(), condition_note(in.used).c_str());
   for (const Output& o : s.outputs)
     std::printf("  output  %s: %d ch %s, tolerance %s; %s %s\n", s.output_name(o).c_str(), o.channels,
                 texel_name(o.texel), tolerance_text(o).c_str(), o.tolerance_why.c_str(),
@@ -111,7 +111,7 @@ void markdown_inputs(const StageDesc& s) {
   std::printf("\nInputs:\n\n");
   for (const Input& in : s.inputs) {
     std::string note = condition_note(in.used);
-    std::printf("- `%s`%s\n", in.buffer.c_str(), note.empty() ? "" : (" (" + note + ")").c_str());
+    std::printf("- `%s`%s\n", in.buffer().c_str(), note.empty() ? "" : (" (" + note + ")").c_str());
   }
 }
 

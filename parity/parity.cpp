@@ -134,12 +134,12 @@ std::vector<std::string> fed_inputs(const gpu::GpuPassDef& pass, const StageConf
   std::vector<std::string> fed;
   for (const std::string& name : pass.stages)
     for (const Input& in : find_stage(name).inputs) {
-      const StageDesc& from = stage_of(in.buffer);
+      const StageDesc& from = stage_of(in.buffer());
       bool read = !in.used || in.used(config);
-      bool image = find_output(in.buffer).texel != Texel::Host;  // CPU data is handed over as it is
+      bool image = find_output(in.buffer()).texel != Texel::Host;  // CPU data is handed over as it is
       if (read && image && in.fed_in_parity && from.kind == StageKind::Frame && !contains(pass.stages, from.name) &&
-          !contains(fed, in.buffer))
-        fed.push_back(in.buffer);
+          !contains(fed, in.buffer()))
+        fed.push_back(in.buffer());
     }
   return fed;
 }

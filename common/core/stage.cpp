@@ -31,7 +31,7 @@ std::vector<StageDesc> describe_all(TypeList<Stages...>) {
 
 const Output* output_in(const StageDesc& stage, const std::string& name) {
   for (const Output& o : stage.outputs)
-    if (o.name == name) return &o;
+    if (o.name() == name) return &o;
   return nullptr;
 }
 
@@ -45,15 +45,15 @@ void check(const std::vector<StageDesc>& table) {
   for (const StageDesc& s : table) {
     auto fail = [&](const std::string& what) { throw std::logic_error("stage '" + s.name + "': " + what); };
     for (const Input& in : s.inputs) {
-      size_t dot = in.buffer.find('.');
-      std::string producer = in.buffer.substr(0, dot);
+      size_t dot = in.buffer().find('.');
+      std::string producer = in.buffer().substr(0, dot);
       if (dot == std::string::npos || !seen.count(producer))
-        fail("reads '" + in.buffer + "', which no earlier stage declares");
+        fail("reads '" + in.buffer() + "', which no earlier stage declares");
       const StageDesc& from = *std::find_if(table.begin(), table.end(), [&](const StageDesc& d) { return d.name == producer; });
-      if (!output_in(from, in.buffer.substr(dot + 1))) fail("reads '" + in.buffer + "', which '" + producer + "' does not write");
+      if (!output_in(from, in.buffer().substr(dot + 1))) fail("reads '" + in.buffer() + "', which '" + producer + "' does not write");
     }
     for (const Output& o : s.outputs)
-      if (o.producer != s.name) fail("declares '" + o.producer + "." + o.name + "', another stage's handle");
+      if (o.producer() != s.name) fail("declares '" + o.buffer() + "', another stage's handle");
     for (const std::string& e : s.effects)
       if (!effects.count(e)) fail("names an unknown effect '" + e + "'");
     for (const std::string& p : s.params)
@@ -80,7 +80,7 @@ namespace {
 bool declares(const StageDesc& s, const std::string& buffer) {
   auto named = [&](const std::string& name) { return name == buffer || name.rfind(buffer + ".", 0) == 0; };
   for (const Input& in : s.inputs)
-    if (named(in.buffer)) return true;
+    if (named(in.buffer())) return true;
   for (const Output& o : s.outputs)
     if (named(s.output_name(o))) return true;
   return false;
@@ -94,13 +94,6 @@ void check_declared(const std::vector<std::string>& stages, const std::string& b
   std::string names;
   for (const std::string& s : stages) names += (names.empty() ? "" : "+") + s;
   throw std::logic_error("stage " + names + " reads '" + buffer + "', which it does not declare");
-}
-
-StageDesc preprocessing_stage(std::string name, std::string doc, std::vector<std::string> params,
-                              std::vector<Output> outputs, void (*make)(const Scene&, Preprocessed&)) {
-  StageDesc d{std::move(name), StageKind::Preprocessing, std::move(doc), std::move(params), {}, std::move(outputs)};
-  d.preprocess = make;
-  return d;
 }
 
 bool is_stage(const std::string& name) {
@@ -132,7 +125,7 @@ const Output& find_output(const std::string& buffer) {
 std::vector<std::string> inputs_read(const StageDesc& stage, const StageConfig& config) {
   std::vector<std::string> read;
   for (const Input& in : stage.inputs)
-    if (!in.used || in.used(config)) read.push_back(in.buffer);
+    if (!in.used || in.used(config)) read.push_back(in.buffer());
   return read;
 }
 
@@ -168,7 +161,7 @@ std::string frame_color_buffer(const std::vector<std::string>& stages) {
   std::string color;
   for (const std::string& name : stages)
     for (const Output& o : find_stage(name).outputs)
-      if (o.frame_color) color = name + "." + o.name;
+      if (o.frame_color) color = o.buffer();
   return color;
 }
 

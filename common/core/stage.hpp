@@ -16,14 +16,16 @@
 //   struct EdgeDetectStage {
 //     using Params = TypeList<EdgeDetectParams>;
 //     static StageDesc describe() {
-//       return {"edge_detect", StageKind::Frame, "contour darkness ... (Nienhaus & Döllner 2003)", {"edge"},
-//               {{"gbuffer.normal", smooth_normals}, {"gbuffer.face_normal", face_normals}, {"gbuffer.depth"}},
-//               {{"contour_darkness", 1, Texel::Float, "d", kFloatTolerance}}};
+//       return {.name = "edge_detect", .kind = StageKind::Frame,
+//               .doc = "contour darkness ... (Nienhaus & Döllner 2003)", .params = {"edge"},
+//               .inputs = {{.handle = kGBuffer.normal, .used = smooth_normals}, {.handle = kGBuffer.depth}},
+//               .outputs = {{.handle = kContourDarkness, .doc = "d", .tolerance = tolerance::kFloat}}};
 //     }
 //   };
 //
-// Buffers are named "<stage>.<output>". An input names another stage's output; reading it
-// makes that stage run first (and only when the input's condition holds).
+// Inputs and outputs are typed handles (common/core/handle.hpp) whose printed names are
+// "<stage>.<output>". An input is another stage's handle; reading it makes that stage run
+// first (and only when the input's condition holds).
 #pragma once
 
 #include <string>
@@ -98,23 +100,16 @@ struct HandleName {
   const char* name;
 };
 
+// One output of a stage: its handle and how parity compares it.
 struct Output {
-  Output(HandleName handle, int channels, Texel texel, std::string doc, double tolerance = 0, std::string tolerance_why = {},
-         ParityMask mask = ParityMask::All, ParityValue value = ParityValue::Plain)
-      : producer(std::string(handle.name).substr(0, std::string(handle.name).find('.'))),
-        name(std::string(handle.name).substr(producer.size() + 1)),
-        channels(channels), texel(texel), doc(std::move(doc)), tolerance(tolerance),
-        tolerance_why(std::move(tolerance_why)), mask(mask), value(value) {}
-
-  std::string producer;  // the handle's part before "." (the registry checks it is the stage)
-  std::string name;      // the part after "<stage>."
-  int channels;  // in a dump (a GPU target may hold more, e.g. depth in the normals' w)
-  Texel texel;
+  HandleName handle;  // "<stage>.<output>": the stage's own handle (the registry checks)
+  int channels = 1;   // in a dump (a GPU target may hold more, e.g. depth in the normals' w)
+  Texel texel = Texel::Float;
   std::string doc;
-  double tolerance;           // parity: the largest difference allowed at a compared pixel
+  double tolerance = 0;       // parity: the largest difference allowed at a compared pixel
   std::string tolerance_why;  // what was measured, or the bound it comes from
-  ParityMask mask;
-  ParityValue value;
+  ParityMask mask = ParityMask::All;
+  ParityValue value = ParityValue::Plain;
   // The frame's color: the last stage that ran with such an output made the image.
   bool frame_color = false;
   // Drawn in place over another stage's output (the same GPU target): the first of these
@@ -124,17 +119,21 @@ struct Output {
   // Written only when a condition holds (e.g. the corner angles need curvature).
   Condition written = nullptr;
   bool compared = true;  // false: not a parity output (the note in tolerance_why says why)
+
+  std::string buffer() const { return handle.name; }
+  std::string name() const { return buffer().substr(buffer().find('.') + 1); }  // after "<stage>."
+  std::string producer() const { return buffer().substr(0, buffer().find('.')); }
 };
 
+// One input of a stage: another stage's handle, read where a condition holds.
 struct Input {
-  Input(HandleName handle, Condition used = nullptr, bool fed_in_parity = true)
-      : buffer(handle.name), used(used), fed_in_parity(fed_in_parity) {}
-
-  std::string buffer;          // "<stage>.<output>"
-  Condition used;  // read only where this holds (null: always)
+  HandleName handle;
+  Condition used = nullptr;  // read only where this holds (null: always)
   // Parity feeds both backends this input from the reference; false where the GPU reads
   // it in a form parity cannot upload (then both compute without it).
-  bool fed_in_parity;
+  bool fed_in_parity = true;
+
+  std::string buffer() const { return handle.name; }  // "<stage>.<output>"
 };
 
 // An effect a scene can ask for ("effects" in a scene file), declared by the stage that
@@ -147,30 +146,25 @@ struct EffectDef {
   bool styled = false;
 };
 
+// A stage's descriptor, written with designated initializers:
+//   return {.name = "edge_detect", .kind = StageKind::Frame, .doc = "... (paper, section)",
+//           .params = {"edge"}, .inputs = {{.handle = kGBuffer.depth}},
+//           .outputs = {{.handle = kContourDarkness, .tolerance = tolerance::kFloat, ...}}};
 struct StageDesc {
-  StageDesc(std::string name, StageKind kind, std::string doc, std::vector<std::string> params, std::vector<Input> inputs,
-            std::vector<Output> outputs, std::vector<std::string> effects = {})
-      : name(std::move(name)), kind(kind), doc(std::move(doc)), params(std::move(params)), inputs(std::move(inputs)),
-        outputs(std::move(outputs)), effects(std::move(effects)) {}
-
-  std::string name;  // the stem: common/<name>.hpp, reference/<name>.cpp, gpu/<name>.cpp, ...
-  StageKind kind;
-  std::string doc;
+  std::string name;  // the stem: common/<subsystem>/<name>.hpp, reference/<subsystem>/<name>.cpp, ...
+  StageKind kind = StageKind::Frame;
+  std::string doc;  // what it computes, then its paper, section and equation in parentheses
   std::vector<std::string> params;  // the prefixes of the parameter structs it reads
   std::vector<Input> inputs;
   std::vector<Output> outputs;
   std::vector<std::string> effects;  // effects that ask for it (what it reads runs too)
   std::vector<EffectDef> declared_effects;  // the effects it introduces
-  // Preprocessing only: the implementation both backends share.
+  // Preprocessing only (it reads only the scene, made once on the CPU for both backends):
+  // the implementation, which puts its outputs' Slots into Preprocessed.
   void (*preprocess)(const Scene&, Preprocessed&) = nullptr;
 
-  std::string output_name(const Output& o) const { return name + "." + o.name; }
+  std::string output_name(const Output& o) const { return o.buffer(); }
 };
-
-// A preprocessing stage: reads only the scene, made once on the CPU by `make` for both
-// backends; its outputs are host data (Texel::Host) the stages that read them upload.
-StageDesc preprocessing_stage(std::string name, std::string doc, std::vector<std::string> params,
-                              std::vector<Output> outputs, void (*make)(const Scene&, Preprocessed&));
 
 // Every stage, in registry order (common/core/stage_registry.hpp), which is also the order they
 // run in. Checked when first called: unique names and parameter prefixes, inputs that
@@ -186,10 +180,10 @@ const Output& find_output(const std::string& buffer);
 std::vector<std::string> inputs_read(const StageDesc& stage, const StageConfig& config);
 // The outputs of `stage` that `config` writes.
 std::vector<const Output*> outputs_written(const StageDesc& stage, const StageConfig& config);
-std::string stage_names();
+std::string stage_names();  // "gbuffer, edge_detect, ..." for messages
 // Throws std::logic_error unless one of `stages` declares `buffer` as an input or an output
 // (a G-buffer's name: one of its channels). Frames check every read of a running stage.
-void check_declared(const std::vector<std::string>& stages, const std::string& buffer);  // "gbuffer, edge_detect, ..." for messages
+void check_declared(const std::vector<std::string>& stages, const std::string& buffer);
 
 // The buffers a dump of a frame that ran `stages` holds: every output the frame stages
 // write, less those another stage that ran drew over in place.

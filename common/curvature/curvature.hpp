@@ -159,9 +159,13 @@ struct CurvatureStage {
   using Params = TypeList<CurvatureParams>;
   static void make(const Scene& scene, Preprocessed& out);
   static StageDesc describe() {
-    return preprocessing_stage("curvature", "principal curvature per vertex (SPEC 1.1)", {"curvature"},
-                               {{kCurvature, 8, Texel::Host, "k_min, k_max and their directions, per vertex of each object"}},
-                               make);
+    return {.name = "curvature",
+            .kind = StageKind::Preprocessing,
+            .doc = "principal curvature per vertex (Lee et al. 2006, §5.3; Alliez et al. 2003)",
+            .params = {"curvature"},
+            .outputs = {{.handle = kCurvature, .channels = 8, .texel = Texel::Host,
+                         .doc = "k_min, k_max and their directions, per vertex of each object"}},
+            .preprocess = make};
   }
 };
 

@@ -28,19 +28,23 @@ inline constexpr Buffer kComposeColor{"compose.color"};
 struct ComposeStage {
   using Params = TypeList<ComposeParams>;
   static StageDesc describe() {
-    StageDesc d{"compose", StageKind::Frame, "contours, interior and paper into the final image (SPEC 2.11)", {"compose"},
-                {{kCopiesDarkness, when::effect_contours},
-                 {kInteriorDarkness, when::effect_interior},
-                 {kPaperColor, when::effect_paper},
-                 {kOffsetGrids, when::effect_contours}},  // the GPU: the contours' reach bounds the pixels drawn
-                {{kComposeColor, 3, Texel::Unorm8, "RGB", tolerance::kByte, "fed the same D_c, D_i and paper color; 8-bit target"}},
-                {"contours", "interior", "crosshatch", "paper"}};
-    d.outputs[0].frame_color = true;
-    d.declared_effects = {{"contours", "image-space contours (Lee 2006 §4)"},
-                          {"interior", "pencil textures along curvature directions (Lee 2006 §5)"},
-                          {"crosshatch", "cross hatching in dark regions (Lee 2006 Fig. 7)"},
-                          {"paper", "stroke/paper interaction and paper color (Lee 2006 §5.5)"}};
-    return d;
+    return {.name = "compose",
+            .kind = StageKind::Frame,
+            .doc = "contours, interior and paper into the final image (Lee et al. 2006, §6, Eq. 6)",
+            .params = {"compose"},
+            .inputs = {{.handle = kCopiesDarkness, .used = when::effect_contours},
+                       {.handle = kInteriorDarkness, .used = when::effect_interior},
+                       {.handle = kPaperColor, .used = when::effect_paper},
+                       // the GPU: the contours' reach bounds the pixels drawn
+                       {.handle = kOffsetGrids, .used = when::effect_contours}},
+            .outputs = {{.handle = kComposeColor, .channels = 3, .texel = Texel::Unorm8, .doc = "RGB",
+                         .tolerance = tolerance::kByte, .tolerance_why = "fed the same D_c, D_i and paper color; 8-bit target",
+                         .frame_color = true}},
+            .effects = {"contours", "interior", "crosshatch", "paper"},
+            .declared_effects = {{"contours", "image-space contours (Lee 2006 §4)"},
+                                 {"interior", "pencil textures along curvature directions (Lee 2006 §5)"},
+                                 {"crosshatch", "cross hatching in dark regions (Lee 2006 Fig. 7)"},
+                                 {"paper", "stroke/paper interaction and paper color (Lee 2006 §5.5)"}}};
   }
 };
 

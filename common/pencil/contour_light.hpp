@@ -25,10 +25,13 @@ inline constexpr Buffer kLitContourDarkness{"contour_light.lit_contour_darkness"
 struct ContourLightStage {
   using Params = TypeList<ContourLightParams>;
   static StageDesc describe() {
-    return {"contour_light", StageKind::Frame, "lit contours drawn lighter (SPEC 2.3, Lee Eq. 1)", {"contour_light"},
-            {{kContourDarkness}, {kGBuffer.normal}},
-            {{kLitContourDarkness, 1, Texel::Float, "d' = d l_c", tolerance::kFloat,
-              "fed the same d and G-buffer; float target"}}};
+    return {.name = "contour_light",
+            .kind = StageKind::Frame,
+            .doc = "lit contours drawn lighter (Lee et al. 2006, §4.1, Eq. 1)",
+            .params = {"contour_light"},
+            .inputs = {{.handle = kContourDarkness}, {.handle = kGBuffer.normal}},
+            .outputs = {{.handle = kLitContourDarkness, .doc = "d' = d l_c", .tolerance = tolerance::kFloat,
+                         .tolerance_why = "fed the same d and G-buffer; float target"}}};
   }
 };
 

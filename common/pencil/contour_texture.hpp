@@ -18,8 +18,12 @@ struct ContourTextureStage {
   // The layer: contour.texture_layer, or the stack's last when it has fewer.
   static int layer(const ParamSet& params);
   static StageDesc describe() {
-    return preprocessing_stage("contour_texture", "the pencil layer used as contour texture (SPEC 1.2)",
-                               {"contour", "pencil_textures"}, {{kContourTexture, 1, Texel::Host, "T_c"}}, make);
+    return {.name = "contour_texture",
+            .kind = StageKind::Preprocessing,
+            .doc = "the pencil layer used as contour texture (Lee et al. 2006, §5.1)",
+            .params = {"contour", "pencil_textures"},
+            .outputs = {{.handle = kContourTexture, .texel = Texel::Host, .doc = "T_c"}},
+            .preprocess = make};
   }
 };
 

@@ -31,10 +31,15 @@ struct DistortionStage {
   using Params = TypeList<>;
   static void make(const Scene& scene, Preprocessed& out);
   static StageDesc describe() {
-    return preprocessing_stage("distortion", "offset grids of the contour copies (SPEC 1.4, Lee Eq. 2)", {"contour"},
-                               {{kOffsetGrids, 2, Texel::Host, "one RG grid of pixel offsets per contour copy"},
-                                {kTextureShifts, 2, Texel::Host, "o_k: the shift of copy k's contour texture, texels"}},
-                               make);
+    return {.name = "distortion",
+            .kind = StageKind::Preprocessing,
+            .doc = "offset grids of the contour copies (Lee et al. 2006, §4.2, Eq. 2)",
+            .params = {"contour"},
+            .outputs = {{.handle = kOffsetGrids, .channels = 2, .texel = Texel::Host,
+                         .doc = "one RG grid of pixel offsets per contour copy"},
+                        {.handle = kTextureShifts, .channels = 2, .texel = Texel::Host,
+                         .doc = "o_k: the shift of copy k's contour texture, texels"}},
+            .preprocess = make};
   }
 };
 

@@ -48,9 +48,15 @@ struct EdgeDetectStage {
   static bool face_normals(const StageConfig& c) { return c.params.get<EdgeDetectParams>().normals == EdgeNormals::Face; }
   static bool smooth_normals(const StageConfig& c) { return !face_normals(c); }
   static StageDesc describe() {
-    return {"edge_detect", StageKind::Frame, "contour darkness from normal and depth discontinuities (SPEC 2.2)", {"edge"},
-            {{kGBuffer.normal, smooth_normals}, {kGBuffer.face_normal, face_normals}, {kGBuffer.depth}},
-            {{kContourDarkness, 1, Texel::Float, "d = 1 - I_n I_z", tolerance::kFloat, "fed the same G-buffer; float target"}}};
+    return {.name = "edge_detect",
+            .kind = StageKind::Frame,
+            .doc = "contour darkness from normal and depth discontinuities (Nienhaus & Döllner 2003, as in Pacheco §2)",
+            .params = {"edge"},
+            .inputs = {{.handle = kGBuffer.normal, .used = smooth_normals},
+                       {.handle = kGBuffer.face_normal, .used = face_normals},
+                       {.handle = kGBuffer.depth}},
+            .outputs = {{.handle = kContourDarkness, .doc = "d = 1 - I_n I_z", .tolerance = tolerance::kFloat,
+                         .tolerance_why = "fed the same G-buffer; float target"}}};
   }
 };
 

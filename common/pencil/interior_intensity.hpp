@@ -59,10 +59,14 @@ struct InteriorIntensityStage {
   static bool gouraud(const StageConfig& c) { return c.params.get<InteriorParams>().shading == InteriorShading::Gouraud; }
   static bool phong(const StageConfig& c) { return !gouraud(c); }
   static StageDesc describe() {
-    return {"interior_intensity", StageKind::Frame, "interior intensity and brightness (SPEC 2.5)", {"interior"},
-            {{kGBuffer.ids}, {kGBuffer.gouraud, gouraud}, {kGBuffer.normal, phong}},
-            {{kIntensity, 1, Texel::Float, "I'; 1 on the background", tolerance::kFloat,
-              "fed the same G-buffer; float target"}}};
+    return {.name = "interior_intensity",
+            .kind = StageKind::Frame,
+            .doc = "interior intensity and brightness (Lee et al. 2006, §3, §5.2)",
+            .params = {"interior"},
+            .inputs = {{.handle = kGBuffer.ids}, {.handle = kGBuffer.gouraud, .used = gouraud},
+                       {.handle = kGBuffer.normal, .used = phong}},
+            .outputs = {{.handle = kIntensity, .doc = "I'; 1 on the background", .tolerance = tolerance::kFloat,
+                         .tolerance_why = "fed the same G-buffer; float target"}}};
   }
 };
 

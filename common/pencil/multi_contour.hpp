@@ -48,11 +48,14 @@ inline constexpr Buffer kCopiesDarkness{"multi_contour.contour_darkness"};  // D
 struct MultiContourStage {
   using Params = TypeList<ContourParams>;
   static StageDesc describe() {
-    return {"multi_contour", StageKind::Frame, "contour copies on distorted planes with the contour texture (SPEC 2.4)",
-            {"contour"},
-            {{kLitContourDarkness}, {kOffsetGrids}, {kTextureShifts}, {kContourTexture}},
-            {{kCopiesDarkness, 1, Texel::Float, "D_c of all copies", tolerance::kSampled,
-              "fed the same d', offset grids and contour texture; bilinear lookups"}}};
+    return {.name = "multi_contour",
+            .kind = StageKind::Frame,
+            .doc = "contour copies on distorted planes with the contour texture (Lee et al. 2006, §4.2-4.3)",
+            .params = {"contour"},
+            .inputs = {{.handle = kLitContourDarkness}, {.handle = kOffsetGrids}, {.handle = kTextureShifts},
+                       {.handle = kContourTexture}},
+            .outputs = {{.handle = kCopiesDarkness, .doc = "D_c of all copies", .tolerance = tolerance::kSampled,
+                         .tolerance_why = "fed the same d', offset grids and contour texture; bilinear lookups"}}};
   }
 };
 

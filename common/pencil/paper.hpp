@@ -52,11 +52,14 @@ struct PaperStage {
   using Params = TypeList<PaperParams>;
   static void make(const Scene& scene, Preprocessed& out);
   static StageDesc describe() {
-    return preprocessing_stage("paper", "paper height, normal map and color (SPEC 1.3)", {"paper"},
-                               {{kPaperHeight, 1, Texel::Host, "h in [0, 1]"},
-                                {kPaperNormal, 3, Texel::Host, "unit normal map"},
-                                {kPaperColor, 3, Texel::Host, "c_p"}},
-                               make);
+    return {.name = "paper",
+            .kind = StageKind::Preprocessing,
+            .doc = "paper height, normal map and color (Lee et al. 2006, §5.5)",
+            .params = {"paper"},
+            .outputs = {{.handle = kPaperHeight, .texel = Texel::Host, .doc = "h in [0, 1]"},
+                        {.handle = kPaperNormal, .channels = 3, .texel = Texel::Host, .doc = "unit normal map"},
+                        {.handle = kPaperColor, .channels = 3, .texel = Texel::Host, .doc = "c_p"}},
+            .preprocess = make};
   }
 };
 

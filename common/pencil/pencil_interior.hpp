@@ -43,13 +43,17 @@ inline constexpr Buffer kInteriorDarkness{"pencil_interior.interior_darkness"}; 
 struct PencilInteriorStage {
   using Params = TypeList<>;
   static StageDesc describe() {
-    return {"pencil_interior", StageKind::Frame,
-            "tone to layer, rotated pencil textures, 3-way blending, cross hatching, paper effect (SPEC 2.6-2.10)",
-            {"interior", "paper"},
-            {{kIntensity}, {kGBuffer.ids}, {kGBuffer.bary}, {kGBuffer.theta_min}, {kGBuffer.theta_max}, {kPencilStack},
-             {kPaperNormal, when::effect_paper}},
-            {{kInteriorDarkness, 1, Texel::Float, "D_i; 0 on the background", tolerance::kSampled,
-              "fed the same G-buffer (the GPU its corner angles as triangle records), I', pencil stack and paper"}}};
+    return {.name = "pencil_interior",
+            .kind = StageKind::Frame,
+            .doc = "tone to layer, rotated pencil textures, 3-way blending, cross hatching, paper effect "
+                   "(Lee et al. 2006, §5.1-5.5)",
+            .params = {"interior", "paper"},
+            .inputs = {{.handle = kIntensity}, {.handle = kGBuffer.ids}, {.handle = kGBuffer.bary},
+                       {.handle = kGBuffer.theta_min}, {.handle = kGBuffer.theta_max}, {.handle = kPencilStack},
+                       {.handle = kPaperNormal, .used = when::effect_paper}},
+            .outputs = {{.handle = kInteriorDarkness, .doc = "D_i; 0 on the background", .tolerance = tolerance::kSampled,
+                         .tolerance_why = "fed the same G-buffer (the GPU its corner angles as triangle records), I', "
+                                          "pencil stack and paper"}}};
   }
 };
 

@@ -60,8 +60,12 @@ struct PencilTexturesStage {
   using Params = TypeList<PencilTexturesParams>;
   static void make(const Scene& scene, Preprocessed& out);
   static StageDesc describe() {
-    return preprocessing_stage("pencil_textures", "the pencil tone stack (SPEC 1.2, Lee Eq. 3-4)", {"pencil_textures"},
-                               {{kPencilStack, 1, Texel::Host, "the layers, white first"}}, make);
+    return {.name = "pencil_textures",
+            .kind = StageKind::Preprocessing,
+            .doc = "the pencil tone stack (Lee et al. 2006, §5.1, Eq. 3-4)",
+            .params = {"pencil_textures"},
+            .outputs = {{.handle = kPencilStack, .texel = Texel::Host, .doc = "the layers, white first"}},
+            .preprocess = make};
   }
 };
 

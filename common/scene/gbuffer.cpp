@@ -82,27 +82,27 @@ void add_gbuffer_buffers(const GBuffer& g, std::map<std::string, Image>& out, co
 std::vector<Output> gbuffer_outputs(const GBufferSlot& g, bool with_angles) {
   const char* interior = "raster vs ray on interior pixels; the band along depth discontinuities excluded";
   const char* same = "raster vs ray on interior pixels that both backends give the same triangle";
+  const char* angles = "(cos, sin) of each corner's angle; interior pixels on the same triangle";
   std::vector<Output> out = {
-      {g.normal, 3, Texel::Float, "unit view-space shading normal", tolerance::kNormal, interior, ParityMask::Interior},
-      {g.face_normal, 3, Texel::Float, "unit view-space geometric normal", tolerance::kNormal, same,
-       ParityMask::SameTriangle},
-      {g.depth, 1, Texel::Float, "linear view depth (dumps: normalized)", tolerance::kDepth, interior,
-       ParityMask::Interior},
-      {g.ids, 2, Texel::Uint, "object index + 1, triangle index", 0, "coverage: the band's share is reported"},
-      {g.bary, 3, Texel::Float, "barycentrics", tolerance::kBary, same, ParityMask::SameTriangle},
-      {g.gouraud, 1, Texel::Float, "Gouraud intensity (Lee et al. 2006, §3, §5.2)", tolerance::kNormal, interior,
-       ParityMask::Interior},
-      {g.theta_min, 3, Texel::Float, "corner angles of the min-curvature direction (Lee et al. 2006, §5.3)",
-       tolerance::kAngle,
-       "(cos, sin) of each corner's angle; interior pixels on the same triangle", ParityMask::SameTriangle,
-       ParityValue::Angles},
-      {g.theta_max, 3, Texel::Float, "corner angles of the max-curvature direction (Lee et al. 2006, §5.3)",
-       tolerance::kAngle,
-       "(cos, sin) of each corner's angle; interior pixels on the same triangle", ParityMask::SameTriangle,
-       ParityValue::Angles},
+      {.handle = g.normal, .channels = 3, .doc = "unit view-space shading normal", .tolerance = tolerance::kNormal,
+       .tolerance_why = interior, .mask = ParityMask::Interior},
+      {.handle = g.face_normal, .channels = 3, .doc = "unit view-space geometric normal", .tolerance = tolerance::kNormal,
+       .tolerance_why = same, .mask = ParityMask::SameTriangle},
+      {.handle = g.depth, .doc = "linear view depth (dumps: normalized)", .tolerance = tolerance::kDepth,
+       .tolerance_why = interior, .mask = ParityMask::Interior},
+      {.handle = g.ids, .channels = 2, .texel = Texel::Uint, .doc = "object index + 1, triangle index",
+       .tolerance_why = "coverage: the band's share is reported", .compared = false},
+      {.handle = g.bary, .channels = 3, .doc = "barycentrics", .tolerance = tolerance::kBary, .tolerance_why = same,
+       .mask = ParityMask::SameTriangle},
+      {.handle = g.gouraud, .doc = "Gouraud intensity (Lee et al. 2006, §3, §5.2)", .tolerance = tolerance::kNormal,
+       .tolerance_why = interior, .mask = ParityMask::Interior},
+      {.handle = g.theta_min, .channels = 3, .doc = "corner angles of the min-curvature direction (Lee et al. 2006, §5.3)",
+       .tolerance = tolerance::kAngle, .tolerance_why = angles, .mask = ParityMask::SameTriangle,
+       .value = ParityValue::Angles, .written = when::effect_interior},
+      {.handle = g.theta_max, .channels = 3, .doc = "corner angles of the max-curvature direction (Lee et al. 2006, §5.3)",
+       .tolerance = tolerance::kAngle, .tolerance_why = angles, .mask = ParityMask::SameTriangle,
+       .value = ParityValue::Angles, .written = when::effect_interior},
   };
-  out[3].compared = false;
-  for (size_t k : {6, 7}) out[k].written = when::effect_interior;
   if (!with_angles) out.erase(out.begin() + 6, out.end());
   return out;
 }

@@ -68,8 +68,12 @@ inline constexpr GBufferSlot kGBuffer{"gbuffer", {"gbuffer.normal"}, {"gbuffer.f
 struct GBufferStage {
   using Params = TypeList<GBufferParams>;
   static StageDesc describe() {
-    return {"gbuffer", StageKind::Frame, "G-buffer: normals, depth, ids, barycentrics, Gouraud (SPEC 2.1)",
-            {"gbuffer", "interior"}, {{kCurvature, when::effect_interior}}, gbuffer_outputs(kGBuffer, true)};
+    return {.name = "gbuffer",
+            .kind = StageKind::Frame,
+            .doc = "G-buffer: normals, depth, ids, barycentrics, Gouraud (docs/conventions.md)",
+            .params = {"gbuffer", "interior"},
+            .inputs = {{.handle = kCurvature, .used = when::effect_interior}},
+            .outputs = gbuffer_outputs(kGBuffer, true)};
   }
 };
 

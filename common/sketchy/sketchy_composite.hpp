@@ -21,21 +21,26 @@ struct SketchyCompositeStage {
   using Params = TypeList<SketchyParams>;
   static bool object_style(const StageConfig& c) { return c.params.get<SketchyParams>().style == SketchyStyle::Object; }
   static StageDesc describe() {
-    StageDesc d{"sketchy_composite", StageKind::Frame,
-                "perturbed edges and shade, drawn as a depth sprite over the ordinary objects (SPEC 3.2-3.4)", {"sketchy"},
-                {{kSketchyEdge}, {kSketchyShade}, {kSketchyGBuffer.depth}, {kSketchyNoise},
-                 {kNoiseCoordinates, object_style}, {kComposeColor, when::pencil_effects, false},
-                 {kGBuffer.depth, when::ordinary_drawn, false}},
-                {{kSketchColor, 3, Texel::Unorm8, "the sketch over what the ordinary objects drew", tolerance::kByte,
-                  "fed the same maps, sketchy G-buffer, noise and noise coordinates; 8-bit target"},
-                 {kSketchDepth, 1, Texel::Float, "the sprite's normalized depth where the sketch was drawn, 1 elsewhere",
-                  tolerance::kFloat, "fed the same maps, sketchy G-buffer, noise and noise coordinates; float target"}},
-                {"sketchy"}};
-    d.outputs[0].frame_color = true;
-    d.outputs[0].draws_over = {kComposeColor.name};
-    d.declared_effects = {{"sketchy", "sketchy drawing of the objects whose style is sketchy (Nienhaus & Doellner 2004); "
-                                      "on by itself when one is", true}};
-    return d;
+    const char* fed = "fed the same maps, sketchy G-buffer, noise and noise coordinates";
+    return {.name = "sketchy_composite",
+            .kind = StageKind::Frame,
+            .doc = "perturbed edges and shade, drawn as a depth sprite over the ordinary objects "
+                   "(Nienhaus & Döllner 2004, §3.2-3.3)",
+            .params = {"sketchy"},
+            .inputs = {{.handle = kSketchyEdge}, {.handle = kSketchyShade}, {.handle = kSketchyGBuffer.depth},
+                       {.handle = kSketchyNoise}, {.handle = kNoiseCoordinates, .used = object_style},
+                       {.handle = kComposeColor, .used = when::pencil_effects, .fed_in_parity = false},
+                       {.handle = kGBuffer.depth, .used = when::ordinary_drawn, .fed_in_parity = false}},
+            .outputs = {{.handle = kSketchColor, .channels = 3, .texel = Texel::Unorm8,
+                         .doc = "the sketch over what the ordinary objects drew", .tolerance = tolerance::kByte,
+                         .tolerance_why = std::string(fed) + "; 8-bit target", .frame_color = true,
+                         .draws_over = {kComposeColor.name}},
+                        {.handle = kSketchDepth,
+                         .doc = "the sprite's normalized depth where the sketch was drawn, 1 elsewhere",
+                         .tolerance = tolerance::kFloat, .tolerance_why = std::string(fed) + "; float target"}},
+            .effects = {"sketchy"},
+            .declared_effects = {{"sketchy", "sketchy drawing of the objects whose style is sketchy (Nienhaus & Doellner "
+                                             "2004); on by itself when one is", true}}};
   }
 };
 

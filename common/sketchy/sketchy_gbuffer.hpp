@@ -12,8 +12,11 @@ inline constexpr GBufferSlot kSketchyGBuffer{"sketchy_gbuffer", {"sketchy_gbuffe
 struct SketchyGBufferStage {
   using Params = TypeList<>;
   static StageDesc describe() {
-    return {"sketchy_gbuffer", StageKind::Frame, "G-buffer of the objects whose style is sketchy (SPEC 3.1)", {"gbuffer"}, {},
-            gbuffer_outputs(kSketchyGBuffer, false)};
+    return {.name = "sketchy_gbuffer",
+            .kind = StageKind::Frame,
+            .doc = "G-buffer of the objects whose style is sketchy (Nienhaus & Döllner 2004, §3.1)",
+            .params = {"gbuffer"},
+            .outputs = gbuffer_outputs(kSketchyGBuffer, false)};
   }
 };
 

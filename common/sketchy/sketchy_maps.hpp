@@ -15,14 +15,18 @@ inline constexpr Buffer kSketchyShade{"sketchy_maps.shade"};
 struct SketchyMapsStage {
   using Params = TypeList<>;
   static StageDesc describe() {
-    return {"sketchy_maps", StageKind::Frame, "edge and shade maps of the sketchy objects (SPEC 3.1)", {"edge"},
-            {{kSketchyGBuffer.normal, EdgeDetectStage::smooth_normals},
-             {kSketchyGBuffer.face_normal, EdgeDetectStage::face_normals},
-             {kSketchyGBuffer.depth}, {kSketchyGBuffer.ids}},
-            {{kSketchyEdge, 2, Texel::Float, "contour darkness d and the linear depth it belongs to", tolerance::kFloat,
-              "fed the same sketchy G-buffer; float target"},
-             {kSketchyShade, 4, Texel::Unorm8, "the object's unlit color, alpha = coverage", tolerance::kByte,
-              "object colors and coverage; 8-bit target"}}};
+    return {.name = "sketchy_maps",
+            .kind = StageKind::Frame,
+            .doc = "edge and shade maps of the sketchy objects (Nienhaus & Döllner 2004, §3.1)",
+            .params = {"edge"},
+            .inputs = {{.handle = kSketchyGBuffer.normal, .used = EdgeDetectStage::smooth_normals},
+                       {.handle = kSketchyGBuffer.face_normal, .used = EdgeDetectStage::face_normals},
+                       {.handle = kSketchyGBuffer.depth}, {.handle = kSketchyGBuffer.ids}},
+            .outputs = {{.handle = kSketchyEdge, .channels = 2, .doc = "contour darkness d and the linear depth it belongs to",
+                         .tolerance = tolerance::kFloat, .tolerance_why = "fed the same sketchy G-buffer; float target"},
+                        {.handle = kSketchyShade, .channels = 4, .texel = Texel::Unorm8,
+                         .doc = "the object's unlit color, alpha = coverage", .tolerance = tolerance::kByte,
+                         .tolerance_why = "object colors and coverage; 8-bit target"}}};
   }
 };
 

@@ -16,9 +16,13 @@ struct SketchyNoiseStage {
   using Params = TypeList<NoiseTextureParams>;
   static void make(const Scene& scene, Preprocessed& out);
   static StageDesc describe() {
-    return preprocessing_stage("sketchy_noise", "noise textures of the sketchy uncertainty (SPEC 3.2, 3.5)",
-                               {"noise", "sketchy"},
-                               {{kSketchyNoise, 2, Texel::Host, "2D Perlin, white noise or 3D Perlin, as the style reads"}}, make);
+    return {.name = "sketchy_noise",
+            .kind = StageKind::Preprocessing,
+            .doc = "noise textures of the sketchy uncertainty (Nienhaus & Döllner 2004, §3.2, §3.4)",
+            .params = {"noise", "sketchy"},
+            .outputs = {{.handle = kSketchyNoise, .channels = 2, .texel = Texel::Host,
+                         .doc = "2D Perlin, white noise or 3D Perlin, as the style reads"}},
+            .preprocess = make};
   }
 };
 

@@ -66,14 +66,18 @@ inline constexpr Buffer kCoat{"basecoat.coat"};
 struct BaseCoatStage {
   using Params = TypeList<BaseCoatParams>;
   static StageDesc describe() {
-    StageDesc d{"basecoat", StageKind::Frame, "toon or solid base coat from a 1D texture (SPEC 4.1, Kalnins §4.2)",
-                {"basecoat"}, {{kGBuffer.ids}, {kGBuffer.bary}},
-                {{kCoat, 4, Texel::Unorm8, "T(s), straight alpha, on the stroke objects; 0 elsewhere", tolerance::kByte,
-                  "fed the same G-buffer and per-vertex s; bilinear lookup of the 1D texture; 8-bit target"}},
-                {"basecoat"}};
-    d.declared_effects = {{"basecoat", "the base coat of the objects whose style is strokes (Kalnins 2002 §4.2), through "
-                                       "the paper effect (§4.4); on by default for them", true}};
-    return d;
+    return {.name = "basecoat",
+            .kind = StageKind::Frame,
+            .doc = "toon or solid base coat from a 1D texture (Kalnins et al. 2002, §4.2)",
+            .params = {"basecoat"},
+            .inputs = {{.handle = kGBuffer.ids}, {.handle = kGBuffer.bary}},
+            .outputs = {{.handle = kCoat, .channels = 4, .texel = Texel::Unorm8,
+                         .doc = "T(s), straight alpha, on the stroke objects; 0 elsewhere", .tolerance = tolerance::kByte,
+                         .tolerance_why = "fed the same G-buffer and per-vertex s; bilinear lookup of the 1D texture; "
+                                          "8-bit target"}},
+            .effects = {"basecoat"},
+            .declared_effects = {{"basecoat", "the base coat of the objects whose style is strokes (Kalnins 2002 §4.2), "
+                                              "through the paper effect (§4.4); on by default for them", true}}};
   }
 };
 

@@ -87,23 +87,23 @@ inline constexpr Slot<Image> kRibbonEdges{"stroke.ribbon_edges"};
 struct StrokeStage {
   using Params = TypeList<>;
   static StageDesc describe() {
-    StageDesc d{
-        "stroke",
-        StageKind::Frame,
-        "stylized strokes of the visible feature lines (SPEC 4.6-4.7)",
-        {"stroke_paper"},
-        {{kWindowLines}, {kVisibleRuns}, {kPage}, {kPaperHeight}},
-        {{kStrokeColor, 3, Texel::Unorm8, "the strokes over the page", tolerance::kByte,
-          "fed the same page, visible runs and paper; the same triangles; the GPU filters the stroke texture with "
-          "8-bit weights and blends each fragment into an 8-bit target: a derived bound allows 4.5/255 per "
-          "fragment less the tolerance, and anything in the 1-px band where a ribbon's edge passes within a "
-          "subpixel of the pixel center (measured max 0.0128 on the teapot where ribbons overlap)"},
-         {kStrokeFragments, 1, Texel::Host, "reference only: fragments per pixel"},
-         {kRibbonEdges, 1, Texel::Host, "reference only: 1 where a ribbon edge passes near the pixel center"}},
-        {"strokes"}};
-    d.outputs[0].frame_color = true;
-    d.outputs[0].draws_over = {kPage.name};
-    return d;
+    return {.name = "stroke",
+            .kind = StageKind::Frame,
+            .doc = "stylized strokes of the visible feature lines (Kalnins et al. 2002, §4.1)",
+            .params = {"stroke_paper"},
+            .inputs = {{.handle = kWindowLines}, {.handle = kVisibleRuns}, {.handle = kPage}, {.handle = kPaperHeight}},
+            .outputs = {{.handle = kStrokeColor, .channels = 3, .texel = Texel::Unorm8, .doc = "the strokes over the page",
+                         .tolerance = tolerance::kByte,
+                         .tolerance_why = "fed the same page, visible runs and paper; the same triangles; the GPU filters "
+                                          "the stroke texture with 8-bit weights and blends each fragment into an 8-bit "
+                                          "target: a derived bound allows 4.5/255 per fragment less the tolerance, and "
+                                          "anything in the 1-px band where a ribbon's edge passes within a subpixel of "
+                                          "the pixel center (measured max 0.0128 on the teapot where ribbons overlap)",
+                         .frame_color = true, .draws_over = {kPage.name}},
+                        {.handle = kStrokeFragments, .texel = Texel::Host, .doc = "reference only: fragments per pixel"},
+                        {.handle = kRibbonEdges, .texel = Texel::Host,
+                         .doc = "reference only: 1 where a ribbon edge passes near the pixel center"}},
+            .effects = {"strokes"}};
   }
 };
 

@@ -70,21 +70,24 @@ inline constexpr Buffer kPage{"stroke_paper.color"};
 struct StrokePaperStage {
   using Params = TypeList<StrokePaperParams>;
   static StageDesc describe() {
-    StageDesc d{"stroke_paper", StageKind::Frame,
-                "the stroke objects' page: the base coat through the paper effect (SPEC 4.2)", {"stroke_paper"},
-                {{kCoat, when::effect_basecoat}, {kPaperHeight}, {kGBuffer.ids},
-                 {kComposeColor, when::pencil_effects, false},
-                 {kSketchColor, when::effect_sketchy, false},
-                 {kSketchDepth, when::effect_sketchy, false}},
-                {{kPage, 3, Texel::Unorm8, "the page with the coat over the stroke objects", tolerance::kByte,
-                  "fed the same coat and paper height; the GPU's coat is 8-bit: alpha off by half a step, doubled by the "
-                  "transfer's slope, plus half an output step: 1.5/255 at most (measured 1.05/255)"}},
-                {"strokes"}};
-    d.outputs[0].frame_color = true;
-    d.outputs[0].draws_over = {kSketchColor.name, kComposeColor.name};
-    d.declared_effects = {{"strokes", "stroke-based rendering of the objects whose style is strokes (Kalnins et al. 2002): "
-                                      "paper, feature-line strokes; on by itself when one is", true}};
-    return d;
+    return {.name = "stroke_paper",
+            .kind = StageKind::Frame,
+            .doc = "the stroke objects' page: the base coat through the paper effect (Kalnins et al. 2002, §4.4)",
+            .params = {"stroke_paper"},
+            .inputs = {{.handle = kCoat, .used = when::effect_basecoat}, {.handle = kPaperHeight},
+                       {.handle = kGBuffer.ids},
+                       {.handle = kComposeColor, .used = when::pencil_effects, .fed_in_parity = false},
+                       {.handle = kSketchColor, .used = when::effect_sketchy, .fed_in_parity = false},
+                       {.handle = kSketchDepth, .used = when::effect_sketchy, .fed_in_parity = false}},
+            .outputs = {{.handle = kPage, .channels = 3, .texel = Texel::Unorm8,
+                         .doc = "the page with the coat over the stroke objects", .tolerance = tolerance::kByte,
+                         .tolerance_why = "fed the same coat and paper height; the GPU's coat is 8-bit: alpha off by half "
+                                          "a step, doubled by the transfer's slope, plus half an output step: 1.5/255 at "
+                                          "most (measured 1.05/255)",
+                         .frame_color = true, .draws_over = {kSketchColor.name, kComposeColor.name}}},
+            .effects = {"strokes"},
+            .declared_effects = {{"strokes", "stroke-based rendering of the objects whose style is strokes (Kalnins et "
+                                             "al. 2002): paper, feature-line strokes; on by itself when one is", true}}};
   }
 };
 

@@ -90,16 +90,17 @@ inline constexpr Slot<Visibility> kVisibleRuns{"visibility.runs"};
 struct VisibilityStage {
   using Params = TypeList<>;  // reads strokes.*, which the ID image declares
   static StageDesc describe() {
-    StageDesc d{"visibility",
-                StageKind::Frame,
-                "visibility of stroke samples from the ID image (SPEC 4.5)",
-                {"strokes"},
-                {{kIds}, {kWindowLines}},
-                {{kFlags, 1, Texel::Unorm8, "1 where a sample is visible: one texel per sample, 1024 a row", 0.0,
-                  "fed the same ID image: the same integer test on both"},
-                 {kVisibleRuns, 0, Texel::Host, "the visible runs of every path, ends bisected to 1 px (CPU)"}},
-                {"strokes"}};
-    return d;
+    return {.name = "visibility",
+            .kind = StageKind::Frame,
+            .doc = "visibility of stroke samples from the ID image (Kalnins et al. 2002, §4.6)",
+            .params = {"strokes"},
+            .inputs = {{.handle = kIds}, {.handle = kWindowLines}},
+            .outputs = {{.handle = kFlags, .texel = Texel::Unorm8,
+                         .doc = "1 where a sample is visible: one texel per sample, 1024 a row",
+                         .tolerance_why = "fed the same ID image: the same integer test on both"},
+                        {.handle = kVisibleRuns, .channels = 0, .texel = Texel::Host,
+                         .doc = "the visible runs of every path, ends bisected to 1 px (CPU)"}},
+            .effects = {"strokes"}};
   }
 };
 

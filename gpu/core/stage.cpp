@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "common/sketchy/sketchy.hpp"
+#include "common/sketchy/sketchy_gbuffer.hpp"
 
 namespace plumbago::gpu {
 
@@ -86,6 +87,12 @@ void GpuFrame::read_gbuffer(const std::string& stage, const GBufferChannels& c) 
   r.read_region = bounding(r.read_region, c.read_region);
 }
 
+void GpuFrame::read_region(GBufferSlot gbuffer, PixelRect region) {
+  GBufferChannels c = GBufferChannels::none();
+  c.read_region = region;
+  read_gbuffer(gbuffer.name, c);
+}
+
 GBufferChannels GpuFrame::gbuffer_channels(const std::string& stage) const {
   if (dump) return {};
   auto it = gbuffer_reads_.find(stage);
@@ -101,7 +108,34 @@ void GpuPass::dump(GpuFrame& f, const std::vector<std::string>& stages, std::map
   }
 }
 
+namespace {
+
+// The targets of `g` that `stages` read, from the channels they declare as inputs. Where
+// they are kept (gpu/scene/gbuffer.hpp): the linear depth rides in the w of a normal target
+// (its own target only for a pass that reads no normals), the Gouraud intensity in the
+// barycentrics' w, the corner angles in TriangleAngles; an input the GPU reads in another
+// form (fed_in_parity false: the sketchy sprite tests the depth buffer) reads no target.
+GBufferChannels channels_read(const GBufferSlot& g, const std::vector<std::string>& stages, const StageConfig& c) {
+  auto reads = [&](plumbago::Buffer channel) {
+    for (const std::string& s : stages)
+      for (const Input& in : find_stage(s).inputs)
+        if (in.buffer() == channel.name && in.fed_in_parity && (!in.used || in.used(c))) return true;
+    return false;
+  };
+  GBufferChannels r = GBufferChannels::none();
+  r.normal = reads(g.normal);
+  r.face_normal = reads(g.face_normal);
+  r.bary = reads(g.bary) || reads(g.gouraud);
+  r.triangle_angles = reads(g.theta_min) || reads(g.theta_max);
+  r.depth = reads(g.depth) && !r.normal && !r.face_normal;
+  return r;
+}
+
+}  // namespace
+
 std::unique_ptr<GpuPass> make_checked(const GpuPassDef& def, GpuFrame& f) {
+  for (const GBufferSlot& g : {kGBuffer, kSketchyGBuffer})
+    f.read_gbuffer(g.name, channels_read(g, def.stages, f.config()));
   f.running = def.stages;
   std::unique_ptr<GpuPass> pass = def.make(f);
   f.running.clear();
@@ -188,7 +222,7 @@ GLenum texture_format(const Output& o) {
     case Texel::Host:
       break;
   }
-  throw std::logic_error("'" + o.name + "' is CPU data, not a GPU texture");
+  throw std::logic_error("'" + o.buffer() + "' is CPU data, not a GPU texture");
 }
 
 }  // namespace plumbago::gpu

@@ -98,9 +98,11 @@ class GpuFrame {
   // The dumps' and the frame color's access by a descriptor's name (not for stages).
   Texture& texture_named(const std::string& name);
 
-  // What the frame's passes sample of a G-buffer ("gbuffer", "sketchy_gbuffer"): each
-  // pass says so when it is made, and the G-buffer writes only that (a dump: everything).
+  // What the frame's passes sample of a G-buffer ("gbuffer", "sketchy_gbuffer"): the targets
+  // follow from the channels their stages declare as inputs (make_checked adds them); a pass
+  // says where it reads them when it is made. The G-buffer writes only that (a dump: everything).
   void read_gbuffer(const std::string& stage, const GBufferChannels& channels);
+  void read_region(GBufferSlot gbuffer, PixelRect region);
   GBufferChannels gbuffer_channels(const std::string& stage) const;
 
   DataTable data;  // the frame's CPU data

@@ -41,12 +41,7 @@ namespace {
 class EdgeAndLightPass : public GpuPass {
  public:
   explicit EdgeAndLightPass(GpuFrame& f) {
-    GBufferChannels read = GBufferChannels::none();
-    bool face = EdgeDetectStage::face_normals(f.config());
-    read.normal = true;  // contour lighting reads the shading normals, whatever the edges compare
-    read.face_normal = face;
-    read.read_region = filter_rect(f.ordinary, 2);  // the filter runs within 1 pixel and reads 1 more
-    f.read_gbuffer("gbuffer", read);
+    f.read_region(kGBuffer, filter_rect(f.ordinary, 2));  // the filter runs within 1 pixel and reads 1 more
     if (f.ran("multi_contour")) {
       marks_ = make_contour_block_marks(f.scene.width, f.scene.height);
       f.put(kContourBlockMarks, marks_);

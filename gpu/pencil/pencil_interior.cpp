@@ -45,12 +45,7 @@ class InteriorPass : public GpuPass {
       : stack_(upload_texture_3d(f.get(kPencilStack), GL_R32F)),
         paper_normal_(f.get(maybe(kPaperNormal)) ? upload_texture(f.get(kPaperNormal), GL_RGBA32F)
                                                  : make_texture(1, 1, GL_RGBA32F)) {
-    GBufferChannels read = GBufferChannels::none();
-    read.normal = InteriorIntensityStage::phong(f.config());
-    read.bary = true;  // w: the Gouraud intensity
-    read.triangle_angles = true;
-    read.read_region = filter_rect(f.ordinary, 0);
-    f.read_gbuffer("gbuffer", read);
+    f.read_region(kGBuffer, filter_rect(f.ordinary, 0));
   }
   void run(GpuFrame& f) override {
     std::vector<Light> lights = view_space_lights(f.scene);

@@ -96,10 +96,7 @@ class SketchyCompositeStagePass : public GpuPass {
  public:
   explicit SketchyCompositeStagePass(GpuFrame& f)
       : noise_(upload_sketchy_noise(f.get(kSketchyNoise))), none_(make_texture(1, 1, GL_RGBA32F)) {
-    GBufferChannels read = GBufferChannels::none();
-    read.depth = true;  // read at the uncertainty's offsets
-    read.read_region = {0, 0, f.scene.width, f.scene.height};
-    f.read_gbuffer("sketchy_gbuffer", read);
+    f.read_region(kSketchyGBuffer, {0, 0, f.scene.width, f.scene.height});  // depth at the uncertainty's offsets
   }
   void run(GpuFrame& f) override {
     const Texture* coordinates = f.get(maybe(kNoiseCoordinates));

@@ -36,11 +36,7 @@ namespace {
 class SketchyMapsStagePass : public GpuPass {
  public:
   explicit SketchyMapsStagePass(GpuFrame& f) : pass_(object_colors(f.sketchy)) {
-    GBufferChannels read = GBufferChannels::none();
-    read.face_normal = EdgeDetectStage::face_normals(f.config());
-    read.normal = !read.face_normal;
-    read.read_region = {0, 0, f.scene.width, f.scene.height};
-    f.read_gbuffer("sketchy_gbuffer", read);
+    f.read_region(kSketchyGBuffer, {0, 0, f.scene.width, f.scene.height});
   }
   void run(GpuFrame& f) override {
     pass_.run(f.get(kSketchyGBuffer), f.params<EdgeDetectParams>(), f.put(kSketchyEdge), f.put(kSketchyShade),

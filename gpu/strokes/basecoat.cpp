@@ -20,10 +20,7 @@ class BaseCoatPass : public GpuPass {
     first_ = make_buffer(shades.first_triangle.data(), shades.first_triangle.size() * sizeof(uint32_t));
     texture_ = upload_texture(basecoat_texture(p), GL_RGBA32F);
     set_sampling(texture_, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
-    GBufferChannels read = GBufferChannels::none();
-    read.bary = true;
-    read.read_region = filter_rect(f.ordinary, 0);
-    f.read_gbuffer("gbuffer", read);
+    f.read_region(kGBuffer, filter_rect(f.ordinary, 0));
   }
   void run(GpuFrame& f) override {
     const GBufferTargets& g = f.get(kGBuffer);

@@ -19,9 +19,7 @@ class StrokePaperPass : public GpuPass {
     std::vector<uint32_t> flags = stroke_object_flags(f.ordinary);
     flags.push_back(0);  // never empty
     strokes_ = make_buffer(flags.data(), flags.size() * sizeof(uint32_t));
-    GBufferChannels read = GBufferChannels::none();
-    read.read_region = {0, 0, f.scene.width, f.scene.height};
-    f.read_gbuffer("gbuffer", read);
+    f.read_region(kGBuffer, {0, 0, f.scene.width, f.scene.height});
   }
   void run(GpuFrame& f) override {
     Texture& target = f.put(kPage);

@@ -24,8 +24,8 @@ TEST(Stages, EveryInputIsAnOutputOfAnEarlierStage) {
   ASSERT_GE(stage_table().size(), 17u);
   for (const StageDesc& s : stage_table())
     for (const Input& in : s.inputs) {
-      EXPECT_NO_THROW(find_output(in.buffer)) << s.name << " reads " << in.buffer;
-      EXPECT_LT(position(stage_of(in.buffer).name), position(s.name)) << s.name << " reads " << in.buffer;
+      EXPECT_NO_THROW(find_output(in.buffer())) << s.name << " reads " << in.buffer();
+      EXPECT_LT(position(stage_of(in.buffer()).name), position(s.name)) << s.name << " reads " << in.buffer();
     }
 }
 
