@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <numbers>
 
 #include "common/strokes/base_stroke.hpp"
 
@@ -70,7 +71,7 @@ StrokeRun horizontal(double length, bool occluded_start = false, bool occluded_e
 std::vector<glm::dvec2> circle(int n, double radius, glm::dvec2 center = {100, 100}) {
   std::vector<glm::dvec2> p;
   for (int i = 0; i < n; ++i) {
-    double a = 2 * M_PI * i / n;
+    double a = 2 * std::numbers::pi * i / n;
     p.push_back(center + radius * glm::dvec2(std::cos(a), std::sin(a)));
   }
   return p;
@@ -121,7 +122,7 @@ TEST(BaseStroke, ResamplingALineGivesEvenCollinearPoints) {
 TEST(BaseStroke, ResampledCircleStaysOnTheCircle) {
   const double R = 40;
   for (int n : {24, 48}) {
-    double theta = 2 * M_PI / n;
+    double theta = 2 * std::numbers::pi / n;
     double spline = R * (1 - std::cos(theta / 2) - std::sin(theta) * std::sin(theta / 2) / 4);
     double chords = 0.75 * 0.75 / (8 * R);
     auto r = catmull_rom_resample(circle(n, R), 2.0, true);
@@ -138,7 +139,7 @@ TEST(BaseStroke, ResampledCircleStaysOnTheCircle) {
       EXPECT_GE(deepest, 0.9 * spline);  // samples within 1 px of a span's middle
     }
     // Closed: no repeat of the first point, and the last step (back to it) as long as the others.
-    double L = 2 * M_PI * R;
+    double L = 2 * std::numbers::pi * R;
     ASSERT_EQ(r.size(), size_t(std::ceil(L / 2.0 - 0.01)));
     for (size_t i = 0; i < r.size(); ++i)
       EXPECT_NEAR(glm::distance(r[i], r[(i + 1) % r.size()]), L / double(r.size()), 0.01 * L / double(r.size()));
@@ -365,7 +366,7 @@ TEST(BaseStroke, ClosedRunWrapsAround) {
     EXPECT_EQ(p.right.alpha, 1.0f);
   }
   EXPECT_EQ(strip.front().s(), 0.0);
-  EXPECT_NEAR(strip.back().s(), 2 * M_PI * 40, 0.001 * 2 * M_PI * 40);
+  EXPECT_NEAR(strip.back().s(), 2 * std::numbers::pi * 40, 0.001 * 2 * std::numbers::pi * 40);
   EXPECT_NEAR(glm::distance(glm::dvec2(strip.front().right.position), glm::dvec2(strip.back().right.position)), 0, 1e-4);
   EXPECT_NEAR(glm::distance(glm::dvec2(strip.front().left.position), glm::dvec2(strip.back().left.position)), 0, 1e-4);
 }
