@@ -13,9 +13,6 @@ namespace {
 
 constexpr double kZeroG = -1e-8;  // SPEC 4.3: g = 0 exactly is taken as -1e-8
 constexpr int32_t kNone = -1;
-#ifndef WEIGHTING
-#define WEIGHTING 2
-#endif
 
 enum class EdgeKind : uint8_t { smooth, crease, border };
 
