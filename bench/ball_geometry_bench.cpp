@@ -5,6 +5,7 @@
 // sphere of radius 5, as in a ball five edges wide.
 #include <benchmark/benchmark.h>
 
+#include <numbers>
 #include <vector>
 
 #include "common/curvature/ball_geometry.hpp"
@@ -33,7 +34,7 @@ std::vector<CutFace> cut_faces(size_t n) {
     const glm::dvec3 y = glm::normalize(across);  // x and y span the face's plane
     CutFace f;
     for (int k = 0; k < 3; ++k) {
-      const double angle = 2 * M_PI / 3 * k + rng.uniform(-0.4, 0.4);
+      const double angle = 2 * std::numbers::pi / 3 * k + rng.uniform(-0.4, 0.4);
       f.p[k] = centroid + 0.6 * (std::cos(angle) * x + std::sin(angle) * y);
     }
     int inside = 0;

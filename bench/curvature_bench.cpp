@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <numbers>
 
 #include "common/curvature/curvature.hpp"
 #include "common/core/frame.hpp"
@@ -91,7 +92,7 @@ void curvature(benchmark::State& state, const std::string& model, const std::vec
   state.counters["s_per_1M_vertices"] =
       benchmark::Counter(vertices / 1e6, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
   double r = p.radius * mesh->bbox_diagonal();
-  state.counters["uniform_faces_per_ball"] = r > 0 ? M_PI * r * r / mean_face_area(*mesh) : 0.0;
+  state.counters["uniform_faces_per_ball"] = r > 0 ? std::numbers::pi * r * r / mean_face_area(*mesh) : 0.0;
 }
 
 const bool registered = [] {

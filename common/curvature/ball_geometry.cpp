@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace plumbago {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double cross2(glm::dvec2 u, glm::dvec2 v) { return u.x * v.y - u.y * v.x; }
 
@@ -31,8 +30,8 @@ double angle2(glm::dvec2 u, glm::dvec2 v) { return std::atan2(cross2(u, v), glm:
 double rough_angle2(glm::dvec2 u, glm::dvec2 v) {
   double x = glm::dot(u, v), y = cross2(u, v), norm = std::abs(x) + std::abs(y);
   if (!(norm > 0)) return 0;
-  double quarter = 0.5 * kPi * y / norm;  // in [-pi/2, pi/2]
-  return x >= 0 ? quarter : std::copysign(kPi, y) - quarter;
+  double quarter = 0.5 * std::numbers::pi * y / norm;  // in [-pi/2, pi/2]
+  return x >= 0 ? quarter : std::copysign(std::numbers::pi, y) - quarter;
 }
 
 // Twice the signed area of triangle ∩ disk (disk at the origin, radius r), summed along
@@ -75,7 +74,7 @@ class BoundaryWalk {
   void end_run() {
     if (pieces_ == 0) return;
     double angle = angle2(from_, to_);
-    if (pieces_ > 1) angle += 2 * kPi * std::nearbyint((rough_ - angle) / (2 * kPi));
+    if (pieces_ > 1) angle += 2 * std::numbers::pi * std::nearbyint((rough_ - angle) / (2 * std::numbers::pi));
     twice_area_ += r2_ * angle;
     pieces_ = 0, rough_ = 0;
   }

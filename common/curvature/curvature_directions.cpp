@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 
 #include "common/curvature/curvature_internal.hpp"
@@ -184,7 +185,7 @@ void smooth_directions(const MeshTopology& topo, const CurvatureParams& p, float
     free.push_back(v), hold.push_back(f), estimate.push_back(c.d_min[v]);
   }
   std::vector<glm::vec3> next(free.size());
-  const double still = std::cos(0.01 * 3.14159265358979323846 / 180);
+  const double still = std::cos(0.01 * std::numbers::pi / 180);
   for (int sweep = 0; sweep < p.direction_smoothing && !free.empty(); ++sweep) {
     std::vector<uint8_t> turned(free.size(), 0);
     tbb::parallel_for(size_t(0), free.size(), [&](size_t i) {

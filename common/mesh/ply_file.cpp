@@ -13,6 +13,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <string_view>
 #include <vector>
 
 namespace plumbago {
@@ -52,114 +53,156 @@ bool is_integral_type(const std::string& t) {
 
 constexpr size_t kMaxHeaderBytes = 64 * 1024;
 
-// The whole header checked before anything else reads the file (OpenMesh's PLY reader
-// crashes on a 'property' before any 'element', loops forever without 'end_header' or on
-// an element without properties, and trusts counts of billions): known keywords and
-// types only, 'end_header' within 64 KiB, and every element's count small enough for the
-// bytes after the header to hold (binary: its minimum record size; ASCII: one value per
-// property, a value taking at least two bytes with its separator). Leaves `in` at the
-// first byte after the header.
-PlyHeader read_header(std::istream& in, const std::string& path) {
-  PlyHeader h;
+// "path: line N: what".
+[[noreturn]] void header_error(const std::string& path, size_t line, const std::string& what) {
+  throw MeshError(path + ": line " + std::to_string(line) + ": " + what);
+}
+
+// The first bytes of the file, at most kMaxHeaderBytes (where the header must end), and
+// the file's size.
+std::string read_header_bytes(std::istream& in, const std::string& path, uint64_t& file_size) {
   in.seekg(0, std::ios::end);
   std::streamoff end = in.tellg();
   if (end < 0) throw MeshError(path + ": cannot be read");
-  uint64_t file_size = uint64_t(end);
+  file_size = uint64_t(end);
   in.seekg(0);
   std::string buf(size_t(std::min<uint64_t>(file_size, kMaxHeaderBytes)), '\0');
   in.read(buf.data(), std::streamsize(buf.size()));
   if (!in) throw MeshError(path + ": cannot be read");
-  auto fail = [&](const std::string& what) {
-    throw MeshError(path + ": line " + std::to_string(h.lines) + ": " + what);
-  };
-  std::vector<size_t> element_lines;
-  auto check_last_element = [&] {
-    if (!h.elements.empty() && h.elements.back().properties.empty())
-      throw MeshError(path + ": line " + std::to_string(element_lines.back()) + ": element '" +
-                      h.elements.back().name + "' has no properties");
-  };
-  size_t pos = 0;
-  bool ended = false, have_format = false;
-  while (!ended) {
-    size_t nl = buf.find('\n', pos);
-    if (nl == std::string::npos) {
-      if (h.lines == 0) throw MeshError(path + ": not a PLY file (no 'ply' line)");
-      if (file_size > kMaxHeaderBytes)
-        throw MeshError(path + ": line " + std::to_string(h.lines) + ": no 'end_header' within the first " +
-                        std::to_string(kMaxHeaderBytes) + " bytes");
-      throw MeshError(path + ": line " + std::to_string(h.lines) + ": the header has no 'end_header'");
+  return buf;
+}
+
+// The words of the header line that starts at pos (after line lines_read), pos moved past
+// it. Throws when no line ends within buf: the header has no 'end_header'.
+std::vector<std::string> next_header_line(const std::string& buf, size_t& pos, size_t lines_read, uint64_t file_size,
+                                          const std::string& path) {
+  size_t nl = buf.find('\n', pos);
+  if (nl == std::string::npos) {
+    if (lines_read == 0) throw MeshError(path + ": not a PLY file (no 'ply' line)");
+    if (file_size > kMaxHeaderBytes)
+      header_error(path, lines_read, "no 'end_header' within the first " + std::to_string(kMaxHeaderBytes) + " bytes");
+    header_error(path, lines_read, "the header has no 'end_header'");
+  }
+  std::string line = buf.substr(pos, nl - pos);
+  pos = nl + 1;
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  std::istringstream ss(line);
+  std::vector<std::string> w;
+  for (std::string word; ss >> word;) w.push_back(word);
+  return w;
+}
+
+// The header's lines in turn, into h: known keywords and types only, 'format' first and
+// once, no element without properties, no name twice. Errors name the line read last.
+class HeaderParser {
+ public:
+  explicit HeaderParser(const std::string& path) : path_(path) {}
+
+  // Line h.lines + 1, split into words; false once it is 'end_header'.
+  bool read_line(const std::vector<std::string>& w) {
+    ++h_.lines;
+    if (h_.lines == 1) {
+      if (w.size() != 1 || w[0] != "ply") throw MeshError(path_ + ": not a PLY file (the first line is not 'ply')");
+      return true;
     }
-    std::string line = buf.substr(pos, nl - pos);
-    pos = nl + 1;
-    ++h.lines;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    std::istringstream ss(line);
-    std::vector<std::string> w;
-    for (std::string word; ss >> word;) w.push_back(word);
-    if (h.lines == 1) {
-      if (w.size() != 1 || w[0] != "ply") throw MeshError(path + ": not a PLY file (the first line is not 'ply')");
-      continue;
-    }
-    if (w.empty()) continue;
+    if (w.empty()) return true;
     const std::string& key = w[0];
-    if (key == "comment" || key == "obj_info") continue;
+    if (key == "comment" || key == "obj_info") return true;
     if (key == "format") {
-      if (have_format) fail("a second 'format' line");
-      if (!h.elements.empty()) fail("'format' after an 'element'");
-      if (w.size() != 3) fail("malformed 'format' line (format ascii|binary_little_endian|binary_big_endian 1.0)");
-      if (w[1] != "ascii" && w[1] != "binary_little_endian" && w[1] != "binary_big_endian")
-        fail("unknown PLY format '" + w[1] + "'");
-      if (w[2] != "1.0") fail("unsupported PLY version '" + w[2] + "' (1.0 only)");
-      h.format = w[1];
-      have_format = true;
+      format(w);
     } else if (key == "element") {
-      if (!have_format) fail("'element' before the 'format' line");
-      check_last_element();
-      if (w.size() != 3) fail("malformed 'element' line (element NAME COUNT)");
-      const std::string& c = w[2];
-      if (c[0] == '-') fail("element '" + w[1] + "' has a negative count " + c);
-      uint64_t count = 0;
-      auto [ptr, ec] = std::from_chars(c.data(), c.data() + c.size(), count);
-      if (ec == std::errc::result_out_of_range) fail("element '" + w[1] + "' count " + c + " is out of range");
-      if (ec != std::errc() || ptr != c.data() + c.size())
-        fail("element '" + w[1] + "' count '" + c + "' is not a count");
-      for (const PlyElement& e : h.elements)
-        if (e.name == w[1]) fail("a second element '" + w[1] + "'");
-      h.elements.push_back({w[1], size_t(count), {}});
-      element_lines.push_back(h.lines);
+      element(w);
     } else if (key == "property") {
-      if (h.elements.empty()) fail("'property' before any 'element'");
-      PlyProperty p;
-      if (w.size() >= 2 && w[1] == "list") {
-        if (w.size() != 5) fail("malformed list property (property list COUNT_TYPE ITEM_TYPE NAME)");
-        if (!is_integral_type(w[2])) fail("list count type '" + w[2] + "' is not an integer type");
-        if (!type_sizes().count(w[3])) fail("unknown property type '" + w[3] + "'");
-        p = {w[4], w[3], w[2]};
-      } else {
-        if (w.size() != 3) fail("malformed property (property TYPE NAME)");
-        if (!type_sizes().count(w[1])) fail("unknown property type '" + w[1] + "'");
-        p = {w[2], w[1], ""};
-      }
-      for (const PlyProperty& q : h.elements.back().properties)
-        if (q.name == p.name) fail("a second property '" + p.name + "' in element '" + h.elements.back().name + "'");
-      h.elements.back().properties.push_back(p);
+      property(w);
     } else if (key == "end_header") {
       if (w.size() != 1) fail("malformed 'end_header' line");
       check_last_element();
-      ended = true;
+      return false;
     } else {
       fail("unknown header keyword '" + key + "' (or no 'end_header' before it)");
     }
+    return true;
   }
-  if (!have_format) fail("no 'format' line");
-  auto has = [&](const char* name) {
-    return std::any_of(h.elements.begin(), h.elements.end(), [&](const PlyElement& e) { return e.name == name; });
-  };
-  if (!has("vertex")) fail("no 'element vertex'");
-  if (!has("face") && !has("tristrips")) fail("no 'element face' (nor 'element tristrips')");
 
-  // Counts against what the rest of the file can hold, before anything is allocated.
-  const uint64_t body = file_size - pos;
+  const PlyHeader& header() const { return h_; }
+
+  // After 'end_header': a format, a vertex element and a face (or tristrips) element.
+  void check_complete() const {
+    if (!have_format_) fail("no 'format' line");
+    if (!has_element("vertex")) fail("no 'element vertex'");
+    if (!has_element("face") && !has_element("tristrips")) fail("no 'element face' (nor 'element tristrips')");
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const { header_error(path_, h_.lines, what); }
+
+  bool has_element(std::string_view name) const {
+    return std::any_of(h_.elements.begin(), h_.elements.end(), [&](const PlyElement& e) { return e.name == name; });
+  }
+
+  void check_last_element() const {
+    if (!h_.elements.empty() && h_.elements.back().properties.empty())
+      header_error(path_, element_lines_.back(), "element '" + h_.elements.back().name + "' has no properties");
+  }
+
+  // format ascii|binary_little_endian|binary_big_endian 1.0
+  void format(const std::vector<std::string>& w) {
+    if (have_format_) fail("a second 'format' line");
+    if (!h_.elements.empty()) fail("'format' after an 'element'");
+    if (w.size() != 3) fail("malformed 'format' line (format ascii|binary_little_endian|binary_big_endian 1.0)");
+    if (w[1] != "ascii" && w[1] != "binary_little_endian" && w[1] != "binary_big_endian")
+      fail("unknown PLY format '" + w[1] + "'");
+    if (w[2] != "1.0") fail("unsupported PLY version '" + w[2] + "' (1.0 only)");
+    h_.format = w[1];
+    have_format_ = true;
+  }
+
+  // element NAME COUNT
+  void element(const std::vector<std::string>& w) {
+    if (!have_format_) fail("'element' before the 'format' line");
+    check_last_element();
+    if (w.size() != 3) fail("malformed 'element' line (element NAME COUNT)");
+    const std::string& c = w[2];
+    if (c[0] == '-') fail("element '" + w[1] + "' has a negative count " + c);
+    uint64_t count = 0;
+    auto [ptr, ec] = std::from_chars(c.data(), c.data() + c.size(), count);
+    if (ec == std::errc::result_out_of_range) fail("element '" + w[1] + "' count " + c + " is out of range");
+    if (ec != std::errc() || ptr != c.data() + c.size())
+      fail("element '" + w[1] + "' count '" + c + "' is not a count");
+    if (has_element(w[1])) fail("a second element '" + w[1] + "'");
+    h_.elements.push_back({w[1], size_t(count), {}});
+    element_lines_.push_back(h_.lines);
+  }
+
+  // property TYPE NAME, or property list COUNT_TYPE ITEM_TYPE NAME
+  void property(const std::vector<std::string>& w) {
+    if (h_.elements.empty()) fail("'property' before any 'element'");
+    PlyProperty p;
+    if (w.size() >= 2 && w[1] == "list") {
+      if (w.size() != 5) fail("malformed list property (property list COUNT_TYPE ITEM_TYPE NAME)");
+      if (!is_integral_type(w[2])) fail("list count type '" + w[2] + "' is not an integer type");
+      if (!type_sizes().count(w[3])) fail("unknown property type '" + w[3] + "'");
+      p = {w[4], w[3], w[2]};
+    } else {
+      if (w.size() != 3) fail("malformed property (property TYPE NAME)");
+      if (!type_sizes().count(w[1])) fail("unknown property type '" + w[1] + "'");
+      p = {w[2], w[1], ""};
+    }
+    for (const PlyProperty& q : h_.elements.back().properties)
+      if (q.name == p.name) fail("a second property '" + p.name + "' in element '" + h_.elements.back().name + "'");
+    h_.elements.back().properties.push_back(p);
+  }
+
+  const std::string& path_;
+  PlyHeader h_;
+  std::vector<size_t> element_lines_;  // the line of each element's 'element'
+  bool have_format_ = false;
+};
+
+// Every element's count against the body bytes after the header (binary: its minimum
+// record size; ASCII: one value per property, a value taking at least two bytes with its
+// separator), before anything is allocated.
+void check_counts_fit(const PlyHeader& h, uint64_t body, const std::string& path) {
   uint64_t left = body;
   const bool ascii = h.format == "ascii";
   for (const PlyElement& e : h.elements) {
@@ -178,13 +221,35 @@ PlyHeader read_header(std::istream& in, const std::string& path) {
     }
     left -= ascii ? std::min<uint64_t>(left, 2 * e.count * least) : e.count * least;
   }
-  // The mesh the counts make, against the memory budget (a face is at least a triangle).
+}
+
+// The mesh the counts make, against the memory budget (a face is at least a triangle).
+void check_header_budget(const PlyHeader& h, const std::string& path) {
   auto count_of = [&](const char* name) {
     for (const PlyElement& e : h.elements)
       if (e.name == name) return double(e.count);
     return 0.0;
   };
   mesh_text::check_mesh_budget(path, 0, count_of("vertex"), count_of("face"));
+}
+
+// The whole header checked before anything else reads the file (OpenMesh's PLY reader
+// crashes on a 'property' before any 'element', loops forever without 'end_header' or on
+// an element without properties, and trusts counts of billions): known keywords and
+// types only, 'end_header' within 64 KiB, and every element's count small enough for the
+// bytes after the header to hold (check_counts_fit). Leaves `in` at the first byte after
+// the header.
+PlyHeader read_header(std::istream& in, const std::string& path) {
+  uint64_t file_size = 0;
+  const std::string buf = read_header_bytes(in, path, file_size);
+  HeaderParser parser(path);
+  size_t pos = 0;
+  bool more = true;
+  while (more) more = parser.read_line(next_header_line(buf, pos, parser.header().lines, file_size, path));
+  parser.check_complete();
+  const PlyHeader& h = parser.header();
+  check_counts_fit(h, file_size - pos, path);
+  check_header_budget(h, path);
   in.clear();
   in.seekg(std::streamoff(pos));
   return h;

@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <stdexcept>
 
 namespace plumbago {
 
 namespace {
-
-constexpr float kPi = 3.14159265358979f;
 
 int segments(float base, float resolution) { return std::max(3, int(std::lround(base * resolution))); }
 
@@ -31,7 +30,7 @@ Mesh grid_surface(int nu, int nv, bool wrap_u, bool wrap_v, Surface surface) {
 
 Mesh torus(float res) {
   return grid_surface(segments(96, res), segments(48, res), true, true, [](float u, float v) {
-    float th = 2 * kPi * u, ph = 2 * kPi * v, R = 1.0f, r = 0.4f;
+    float th = 2 * std::numbers::pi_v<float> * u, ph = 2 * std::numbers::pi_v<float> * v, R = 1.0f, r = 0.4f;
     return glm::vec3((R + r * std::cos(ph)) * std::cos(th), (R + r * std::cos(ph)) * std::sin(th), r * std::sin(ph));
   });
 }
@@ -112,7 +111,8 @@ glm::vec2 direction(float angle) { return {std::cos(angle), std::sin(angle)}; }
 
 std::vector<glm::vec2> circle(glm::vec2 center, float radius, int n) {
   std::vector<glm::vec2> p;
-  for (int i = 0; i < n; ++i) p.push_back(center + radius * direction(2 * kPi * float(i) / float(n)));
+  for (int i = 0; i < n; ++i)
+    p.push_back(center + radius * direction(2 * std::numbers::pi_v<float> * float(i) / float(n)));
   return p;
 }
 
@@ -212,7 +212,7 @@ Mesh cad_part(float res) {
   const unsigned n = 8 * unsigned(segments(12, res));
   std::vector<glm::vec2> outline, boss;
   for (unsigned k = 0; k < n; ++k) {
-    float angle = 2 * kPi * float(k) / float(n);
+    float angle = 2 * std::numbers::pi_v<float> * float(k) / float(n);
     outline.push_back(slab_outline(axis, angle));
     boss.push_back(axis + 0.3f * direction(angle));
   }

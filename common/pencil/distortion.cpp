@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "common/core/preprocess.hpp"
 #include "common/util/random.hpp"
@@ -13,8 +14,8 @@ namespace {
 // Offsets of copy k at every grid vertex (Eq. 2).
 Image distortion_grid(const ContourParams& p, int width, int height, Rng& rng) {
   int nx = (width + p.grid_cell - 1) / p.grid_cell + 1, ny = (height + p.grid_cell - 1) / p.grid_cell + 1;
-  float b = 2.0f * float(M_PI) / p.shake_period;
-  float phase_x = float(rng.uniform(0, 2 * M_PI)), phase_y = float(rng.uniform(0, 2 * M_PI));
+  float b = 2.0f * std::numbers::pi_v<float> / p.shake_period;
+  float phase_x = float(rng.uniform(0, 2 * std::numbers::pi)), phase_y = float(rng.uniform(0, 2 * std::numbers::pi));
   Image grid(nx, ny, 2);
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {

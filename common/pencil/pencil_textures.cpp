@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <glm/glm.hpp>
@@ -14,7 +15,6 @@ namespace plumbago {
 
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
 constexpr int kFibrePeriod = 64;  // lattice of the fibre noise, in its own units
 
 // A slightly curved line of graphite: chord from `start` in direction `dir`, bent
@@ -28,7 +28,7 @@ struct Stroke {
 
 Stroke random_stroke(const PencilTexturesParams& p, Rng& rng) {
   float size = float(p.size);
-  float angle = float(rng.uniform(-1, 1)) * p.angle_jitter_deg * kPi / 180;
+  float angle = float(rng.uniform(-1, 1)) * p.angle_jitter_deg * std::numbers::pi_v<float> / 180;
   float length = p.stroke_length * size * float(rng.uniform(0.7, 1.3));
   Stroke s;
   s.start = {float(rng.uniform(0, size)), float(rng.uniform(0, size))};

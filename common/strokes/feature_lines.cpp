@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 
 #include "common/mesh/mesh_topology.hpp"
@@ -10,12 +11,8 @@
 namespace plumbago {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kZeroG = -1e-8;  // Kalnins et al. 2002, §4.5: g = 0 exactly is taken as -1e-8
 constexpr int32_t kNone = -1;
-#ifndef WEIGHTING
-#define WEIGHTING 2
-#endif
 
 enum class EdgeKind : uint8_t { smooth, crease, border };
 
@@ -61,7 +58,7 @@ Geometry build_geometry(const Mesh& mesh, double crease_deg) {
     g.face_area_normals.push_back(glm::cross(b - a, c - a));
     g.face_unit_normals.push_back(unit_or_zero(g.face_area_normals.back()));
   }
-  double cos_crease = std::cos(crease_deg * kPi / 180.0);
+  double cos_crease = std::cos(crease_deg * std::numbers::pi / 180.0);
   for (const auto& e : g.topology.edges) g.edge_kinds.push_back(classify_edge(e, g.face_unit_normals, cos_crease));
   return g;
 }

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace plumbago {
 
@@ -82,6 +84,166 @@ size_t offset_count(double length_px, double step) {
   return size_t(std::ceil(q * (1 - 1e-12))) + 1;
 }
 
+// 2. The vector y: the examples' samples (1.) concatenated, a separator before and after
+// each example. Every sample is a state, numbered in the order of y.
+struct StateSequence {
+  std::vector<double> y{0.0};
+  std::vector<char> separator{1};
+  std::vector<ptrdiff_t> pos_of;           // position in y of each state
+  std::vector<double> values, pressures;   // displacement and pressure of each state
+  std::vector<size_t> starts;              // first state of each example that has one
+};
+
+StateSequence concatenate_examples(std::span<const OffsetExample> examples, double step) {
+  StateSequence q;
+  for (const OffsetExample& e : examples) {
+    Resampled r = resample(e, step);
+    if (r.displacement.empty()) continue;
+    if (q.values.size() + r.displacement.size() > kMaxStates)
+      throw std::invalid_argument("OffsetSynthesizer: more than " + std::to_string(kMaxStates) + " states (" +
+                                  std::to_string(kMaxStates * step) + " px of examples)");
+    q.starts.push_back(q.values.size());
+    for (size_t k = 0; k < r.displacement.size(); ++k) {
+      q.pos_of.push_back(ptrdiff_t(q.y.size()));
+      q.y.push_back(r.displacement[k]);
+      q.separator.push_back(0);
+      q.values.push_back(r.displacement[k]);
+      q.pressures.push_back(r.pressure[k]);
+    }
+    q.y.push_back(0.0);
+    q.separator.push_back(1);
+  }
+  return q;
+}
+
+// The rubber stamp's next state (when there is no chain): the next sample of the example,
+// after its last the first of the next example, cyclically.
+std::vector<size_t> natural_successors(const std::vector<size_t>& starts, size_t n) {
+  std::vector<size_t> successor(n);
+  for (size_t e = 0; e < starts.size(); ++e) {
+    size_t end = e + 1 < starts.size() ? starts[e + 1] : n;
+    for (size_t s = starts[e]; s < end; ++s) successor[s] = s + 1 < end ? s + 1 : starts[(e + 1) % starts.size()];
+  }
+  return successor;
+}
+
+// 3. m D'_{i+1,j} (Appendix A, windows ended by the separators as read in the header):
+// sum_{k<m} |y_a - y_b| for a = pos(i) + 1 - k, b = pos(j) - k; nothing for K (forbidden).
+std::optional<double> window_distance(const StateSequence& q, size_t i, size_t j, int m) {
+  double sum = 0;
+  for (int k = 0; k < m; ++k) {
+    ptrdiff_t a = q.pos_of[i] + 1 - k, b = q.pos_of[j] - k;
+    if (a < 0 || q.separator[a]) {
+      if (k == 0) continue;  // i ends its example: no natural successor to compare
+      break;                 // the source's window ends: the rest is 0
+    }
+    if (b < 0 || q.separator[b]) return std::nullopt;  // K: the target's window ends before the source's
+    sum += std::abs(q.y[a] - q.y[b]);
+  }
+  return sum;
+}
+
+struct TransitionCosts {
+  std::vector<double> cost;     // C_ij at i n + j, +inf where forbidden
+  std::vector<size_t> sources;  // allowed transitions into each state
+};
+
+// 4. C_ij = (D'_{i+1,j})^p (Appendix A). Nothing when some state has no allowed
+// transition at all: then there is no chain.
+std::optional<TransitionCosts> transition_costs(const StateSequence& q, const OffsetSynthesisOptions& o) {
+  const size_t n = q.pos_of.size();
+  const int m = o.window;
+  const double w = 1.0 / m;
+  TransitionCosts t{std::vector<double>(n * n), std::vector<size_t>(n, 0)};
+  for (size_t i = 0; i < n; ++i) {
+    bool any = false;
+    for (size_t j = 0; j < n; ++j) {
+      std::optional<double> sum = window_distance(q, i, j, m);
+      t.cost[i * n + j] = sum ? std::pow(w * *sum, o.p) : kInf;
+      if (sum) {
+        any = true;
+        ++t.sources[j];
+      }
+    }
+    if (!any) return std::nullopt;
+  }
+  return t;
+}
+
+struct FutureCosts {
+  std::vector<double> v;  // V_j = min_k D''_jk of the last iteration
+  int iterations = 0;
+  double last_change = 0;
+};
+
+// 5. Q-learning (Appendix A). D''^(t) = C + alpha V^(t-1) (V^(-1) = 0), V^(t)_j = min_k
+// D''^(t)_jk, so the change from D''^(t) to D''^(t+1) is sum_j sources_j alpha |V^(t)_j -
+// V^(t-1)_j|; until it is below total_change, at most max_iterations times.
+FutureCosts q_learning(const TransitionCosts& t, const OffsetSynthesisOptions& o) {
+  const size_t n = t.sources.size();
+  const double alpha = o.alpha;
+  FutureCosts f{std::vector<double>(n, 0.0)};
+  std::vector<double> v(n);
+  while (f.iterations < o.max_iterations) {
+    for (size_t j = 0; j < n; ++j) {
+      double best = kInf;
+      const double* row = &t.cost[j * n];
+      for (size_t k = 0; k < n; ++k) best = std::min(best, row[k] + alpha * f.v[k]);
+      v[j] = best;  // finite: every row has an allowed entry
+    }
+    double change = 0;
+    for (size_t j = 0; j < n; ++j) change += double(t.sources[j]) * alpha * std::abs(v[j] - f.v[j]);
+    f.v.swap(v);
+    ++f.iterations;
+    f.last_change = change;
+    if (change < o.total_change) break;
+  }
+  return f;
+}
+
+// D''_ij = C_ij + alpha V_j (5.).
+double total_cost(const TransitionCosts& t, const FutureCosts& f, double alpha, size_t i, size_t j) {
+  return t.cost[i * f.v.size() + j] + alpha * f.v[j];
+}
+
+// 6. rho = rho_factor x the mean of D'' over its nonzero allowed entries; 1 when that is
+// not positive and finite (no such entry).
+double temperature(const TransitionCosts& t, const FutureCosts& f, const OffsetSynthesisOptions& o) {
+  const size_t n = f.v.size();
+  double total = 0;
+  size_t count = 0;
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = 0; j < n; ++j) {
+      double d = total_cost(t, f, o.alpha, i, j);
+      if (std::isfinite(d) && d > 0) {
+        total += d;
+        ++count;
+      }
+    }
+  double mean = count ? total / double(count) : 0.0;
+  double rho = o.rho_factor * mean;
+  return std::isfinite(rho) && rho > 0 ? rho : 1;
+}
+
+// 6. Row i of P_ij ~ exp(-D''_ij / rho), as the cumulative weights exp(-(D''_ij - min_j
+// D''_ij) / rho) of its allowed targets j (increasing), weights below kDroppedWeight dropped.
+void transition_row(const TransitionCosts& t, const FutureCosts& f, double alpha, double rho, size_t i,
+                    std::vector<uint32_t>& to, std::vector<double>& cdf) {
+  const size_t n = f.v.size();
+  double low = kInf;
+  for (size_t j = 0; j < n; ++j) low = std::min(low, total_cost(t, f, alpha, i, j));
+  double cumulative = 0;
+  for (size_t j = 0; j < n; ++j) {
+    double d = total_cost(t, f, alpha, i, j);
+    if (!std::isfinite(d)) continue;
+    double weight = std::exp(-(d - low) / rho);
+    if (!(weight >= kDroppedWeight)) continue;
+    cumulative += weight;
+    to.push_back(uint32_t(j));
+    cdf.push_back(cumulative);
+  }
+}
+
 }  // namespace
 
 std::vector<double> resample_offsets(const OffsetExample& e, double step_px) {
@@ -95,118 +257,22 @@ OffsetSynthesizer::OffsetSynthesizer(const OffsetExample& example, const OffsetS
 OffsetSynthesizer::OffsetSynthesizer(std::span<const OffsetExample> examples, const OffsetSynthesisOptions& options)
     : options_(options) {
   check_options(options_);
-  // 2. y with its separators; pos_of[state] = position of the state in y.
-  std::vector<double> y{0.0};
-  std::vector<char> separator{1};
-  std::vector<ptrdiff_t> pos_of;
-  for (const OffsetExample& e : examples) {
-    Resampled r = resample(e, options_.step_px);
-    if (r.displacement.empty()) continue;
-    if (values_.size() + r.displacement.size() > kMaxStates)
-      throw std::invalid_argument("OffsetSynthesizer: more than " + std::to_string(kMaxStates) + " states (" +
-                                  std::to_string(kMaxStates * options_.step_px) + " px of examples)");
-    starts_.push_back(values_.size());
-    for (size_t k = 0; k < r.displacement.size(); ++k) {
-      pos_of.push_back(ptrdiff_t(y.size()));
-      y.push_back(r.displacement[k]);
-      separator.push_back(0);
-      values_.push_back(r.displacement[k]);
-      pressures_.push_back(r.pressure[k]);
-    }
-    y.push_back(0.0);
-    separator.push_back(1);
-  }
+  StateSequence states = concatenate_examples(examples, options_.step_px);
+  values_ = std::move(states.values);
+  pressures_ = std::move(states.pressures);
+  starts_ = std::move(states.starts);
   const size_t n = values_.size();
   if (n == 0) return;
-  successor_.resize(n);
-  for (size_t e = 0; e < starts_.size(); ++e) {
-    size_t end = e + 1 < starts_.size() ? starts_[e + 1] : n;
-    for (size_t s = starts_[e]; s < end; ++s) successor_[s] = s + 1 < end ? s + 1 : starts_[(e + 1) % starts_.size()];
-  }
-
-  // 3.-4. C_ij = (D'_{i+1,j})^p, +inf where forbidden.
-  const int m = options_.window;
-  const double w = 1.0 / m;
-  std::vector<double> cost(n * n);
-  std::vector<size_t> sources(n, 0);  // allowed transitions into each state
-  for (size_t i = 0; i < n; ++i) {
-    bool any = false;
-    for (size_t j = 0; j < n; ++j) {
-      double sum = 0;
-      bool forbidden = false;
-      for (int k = 0; k < m; ++k) {
-        ptrdiff_t a = pos_of[i] + 1 - k, b = pos_of[j] - k;
-        if (a < 0 || separator[a]) {
-          if (k == 0) continue;  // i ends its example: no natural successor to compare
-          break;                 // the source's window ends: the rest is 0
-        }
-        if (b < 0 || separator[b]) {
-          forbidden = true;  // K: the target's window ends before the source's
-          break;
-        }
-        sum += std::abs(y[a] - y[b]);
-      }
-      double c = forbidden ? kInf : std::pow(w * sum, options_.p);
-      cost[i * n + j] = c;
-      if (!forbidden) {
-        any = true;
-        ++sources[j];
-      }
-    }
-    if (!any) return;  // a state with no way on: rubber-stamp instead
-  }
+  successor_ = natural_successors(starts_, n);
+  std::optional<TransitionCosts> costs = transition_costs(states, options_);
+  if (!costs) return;  // a state with no way on: rubber-stamp instead
   markov_ = true;
-
-  // 5. Q-learning. D''^(t) = C + alpha V^(t-1) (V^(-1) = 0), V^(t)_j = min_k D''^(t)_jk, so
-  // the change from D''^(t) to D''^(t+1) is sum_j sources_j alpha |V^(t)_j - V^(t-1)_j|.
-  const double alpha = options_.alpha;
-  std::vector<double> v_prev(n, 0.0), v(n);
-  for (iterations_ = 0; iterations_ < options_.max_iterations;) {
-    for (size_t j = 0; j < n; ++j) {
-      double best = kInf;
-      const double* row = &cost[j * n];
-      for (size_t k = 0; k < n; ++k) best = std::min(best, row[k] + alpha * v_prev[k]);
-      v[j] = best;  // finite: every row has an allowed entry
-    }
-    double change = 0;
-    for (size_t j = 0; j < n; ++j) change += double(sources[j]) * alpha * std::abs(v[j] - v_prev[j]);
-    v_prev.swap(v);
-    ++iterations_;
-    last_change_ = change;
-    if (change < options_.total_change) break;
-  }
-
-  // 6. rho from the nonzero allowed entries of D'' = C + alpha v_prev.
-  double total = 0;
-  size_t count = 0;
-  for (size_t i = 0; i < n; ++i)
-    for (size_t j = 0; j < n; ++j) {
-      double d = cost[i * n + j] + alpha * v_prev[j];
-      if (std::isfinite(d) && d > 0) {
-        total += d;
-        ++count;
-      }
-    }
-  double mean = count ? total / double(count) : 0.0;
-  rho_ = options_.rho_factor * mean;
-  if (!(std::isfinite(rho_) && rho_ > 0)) rho_ = 1;
-
+  FutureCosts future = q_learning(*costs, options_);
+  iterations_ = future.iterations;
+  last_change_ = future.last_change;
+  rho_ = temperature(*costs, future, options_);
   rows_.resize(n);
-  for (size_t i = 0; i < n; ++i) {
-    double low = kInf;
-    for (size_t j = 0; j < n; ++j) low = std::min(low, cost[i * n + j] + alpha * v_prev[j]);
-    Row& row = rows_[i];
-    double cumulative = 0;
-    for (size_t j = 0; j < n; ++j) {
-      double d = cost[i * n + j] + alpha * v_prev[j];
-      if (!std::isfinite(d)) continue;
-      double weight = std::exp(-(d - low) / rho_);
-      if (!(weight >= kDroppedWeight)) continue;
-      cumulative += weight;
-      row.to.push_back(uint32_t(j));
-      row.cdf.push_back(cumulative);
-    }
-  }
+  for (size_t i = 0; i < n; ++i) transition_row(*costs, future, options_.alpha, rho_, i, rows_[i].to, rows_[i].cdf);
 }
 
 size_t OffsetSynthesizer::next_state(size_t i, Rng& rng) const {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "common/util/random.hpp"
 
@@ -22,7 +23,7 @@ TileablePerlin::TileablePerlin(int period, uint32_t seed, const std::string& nam
   Rng rng(seed, name);
   gradients_.resize(size_t(period_) * period_);
   for (auto& g : gradients_) {
-    double a = rng.uniform(0, 2 * M_PI);
+    double a = rng.uniform(0, 2 * std::numbers::pi);
     g = {float(std::cos(a)), float(std::sin(a))};
   }
 }
@@ -87,7 +88,7 @@ TileablePerlin3::TileablePerlin3(int period, uint32_t seed, const std::string& n
   Rng rng(seed, name);
   gradients_.resize(size_t(period_) * period_ * period_);
   for (auto& g : gradients_) {  // uniform on the sphere
-    double z = rng.uniform(-1, 1), a = rng.uniform(0, 2 * M_PI), r = std::sqrt(1 - z * z);
+    double z = rng.uniform(-1, 1), a = rng.uniform(0, 2 * std::numbers::pi), r = std::sqrt(1 - z * z);
     g = {float(r * std::cos(a)), float(r * std::sin(a)), float(z)};
   }
 }

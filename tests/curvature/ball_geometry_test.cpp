@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <set>
 #include <string>
 #include <vector>
@@ -33,7 +34,7 @@ TEST(BallGeometry, SegmentLengthInBall) {
 }
 
 TEST(BallGeometry, TriangleAreaInBallExactCases) {
-  const double pi = 3.14159265358979323846;
+  const double pi = std::numbers::pi;
   glm::dvec3 a(-10, -10, 0), b(10, -10, 0), d(0, 20, 0);
   EXPECT_NEAR(triangle_area_in_ball(a, b, d, {0, 0, 0}, 1), pi, 1e-12);             // disk inside
   EXPECT_NEAR(triangle_area_in_ball(a, b, d, {0, 0, 0.6}, 1), pi * 0.64, 1e-12);    // ball above the plane

@@ -11,6 +11,7 @@
 #include <functional>
 #include <glm/gtc/matrix_transform.hpp>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -26,7 +27,7 @@ namespace {
 
 using namespace plumbago::testing;
 
-constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+constexpr double kDegrees = 180.0 / std::numbers::pi;
 
 double median(std::vector<double> v) {
   if (v.empty()) return 0;

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <numeric>
 
 #include "common/mesh/procedural.hpp"
@@ -65,7 +66,7 @@ TEST(Procedural, ClosedKindsAreWatertightOutwardAndInOnePiece) {
 }
 
 TEST(Procedural, VolumesApproachTheAnalyticSolids) {
-  const double pi = 3.14159265358979;
+  const double pi = std::numbers::pi;
   EXPECT_NEAR(signed_volume(make_procedural("torus", 2)), 2 * pi * pi * 1.0 * 0.4 * 0.4, 0.01);
   EXPECT_NEAR(signed_volume(make_procedural("sphere", 2)), 4.0 / 3.0 * pi, 0.01);
   EXPECT_NEAR(signed_volume(make_procedural("cylinder", 2)), pi * 0.25 * 2, 0.01);

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <sstream>
 
 #include "parity/parity.hpp"
@@ -24,7 +25,7 @@ namespace {
 std::string torus_obj(int nu, int nv) {
   std::ostringstream out;
   out.precision(9);
-  const double pi = 3.14159265358979323846;
+  const double pi = std::numbers::pi;
   for (int j = 0; j < nv; ++j)
     for (int i = 0; i < nu; ++i) {
       double th = 2 * pi * i / nu, ph = 2 * pi * j / nv;

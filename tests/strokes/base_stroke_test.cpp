@@ -1,12 +1,14 @@
-// Base strokes (Kalnins et al. 2002, §4.1; §4.3, §5, App. A; Kalnins et al. 2003): the resampled spline against lines
-// and circles, the width and alpha profiles against their formulas, offsets and the rubber stamp, pen
-// lifts, and degenerate runs. The ribbons are read back through GL's strip order.
+// Base strokes (Kalnins et al. 2002, §4.1, §4.3, §5, App. A; Kalnins et al. 2003): the resampled
+// spline against lines and circles, the width and alpha profiles by their known values and
+// shapes, offsets and the rubber stamp, pen lifts, and degenerate runs. The ribbons are read
+// back through GL's strip order.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <functional>
+#include <numbers>
+#include <tuple>
 
 #include "common/strokes/base_stroke.hpp"
 
@@ -70,26 +72,10 @@ StrokeRun horizontal(double length, bool occluded_start = false, bool occluded_e
 std::vector<glm::dvec2> circle(int n, double radius, glm::dvec2 center = {100, 100}) {
   std::vector<glm::dvec2> p;
   for (int i = 0; i < n; ++i) {
-    double a = 2 * M_PI * i / n;
+    double a = 2 * std::numbers::pi * i / n;
     p.push_back(center + radius * glm::dvec2(std::cos(a), std::sin(a)));
   }
   return p;
-}
-
-// The drawn width and alpha of a sample of nominal width w and alpha a (thin-stroke rule).
-std::pair<double, double> drawn(double w, double a) { return w < 2 ? std::pair{2.0, a * w * w / 4} : std::pair{w, a}; }
-
-using Profile = std::function<double(double)>;  // of the arc length s
-
-void expect_profile(const Strip& strip, double step, const Profile& w_expected, const Profile& a_expected) {
-  for (size_t j = 0; j < strip.size(); ++j) {
-    double s = step * double(j);
-    auto [w, a] = drawn(w_expected(s), a_expected(s));
-    EXPECT_NEAR(strip[j].s(), s, 1e-4);
-    EXPECT_NEAR(strip[j].width(), w, 1e-4) << "s = " << s;
-    EXPECT_NEAR(strip[j].right.alpha, a, 1e-6) << "s = " << s;
-    EXPECT_EQ(strip[j].right.alpha, strip[j].left.alpha);
-  }
 }
 
 // --- the spline -------------------------------------------------------------------
@@ -121,7 +107,7 @@ TEST(BaseStroke, ResamplingALineGivesEvenCollinearPoints) {
 TEST(BaseStroke, ResampledCircleStaysOnTheCircle) {
   const double R = 40;
   for (int n : {24, 48}) {
-    double theta = 2 * M_PI / n;
+    double theta = 2 * std::numbers::pi / n;
     double spline = R * (1 - std::cos(theta / 2) - std::sin(theta) * std::sin(theta / 2) / 4);
     double chords = 0.75 * 0.75 / (8 * R);
     auto r = catmull_rom_resample(circle(n, R), 2.0, true);
@@ -138,7 +124,7 @@ TEST(BaseStroke, ResampledCircleStaysOnTheCircle) {
       EXPECT_GE(deepest, 0.9 * spline);  // samples within 1 px of a span's middle
     }
     // Closed: no repeat of the first point, and the last step (back to it) as long as the others.
-    double L = 2 * M_PI * R;
+    double L = 2 * std::numbers::pi * R;
     ASSERT_EQ(r.size(), size_t(std::ceil(L / 2.0 - 0.01)));
     for (size_t i = 0; i < r.size(); ++i)
       EXPECT_NEAR(glm::distance(r[i], r[(i + 1) % r.size()]), L / double(r.size()), 0.01 * L / double(r.size()));
@@ -199,75 +185,135 @@ TEST(BaseStroke, ResamplingRepeatedFewAndNonFinitePoints) {
   EXPECT_THROW(catmull_rom_resample({p, q}, nan, false), std::invalid_argument);
 }
 
-// --- width and alpha (Kalnins et al. 2002, §4.1) ------------------------------------------------------
+// --- width and alpha (Kalnins et al. 2002, §4.1) ----------------------------------------
+//
+// Checked by values worked out by hand at chosen samples (a run of 140 px sampled every
+// 3.5 px, the lengths chosen so that the points lie on samples) and by their shape: 0 at
+// the end, rising to the plateau, symmetric; not by their formulas. Width 8 px.
 
-TEST(BaseStroke, TaperFollowsItsFormula) {
+// The sample at arc length s.
+const Pair& sample_at(const Strip& strip, double s) {
+  for (const Pair& p : strip)
+    if (std::abs(p.s() - s) < 1e-4) return p;
+  ADD_FAILURE() << "no sample at s = " << s;
+  return strip.front();
+}
+
+void expect_width_and_alpha(const Strip& strip, double s, double width, double alpha) {
+  const Pair& p = sample_at(strip, s);
+  EXPECT_NEAR(p.width(), width, 1e-4) << "s = " << s;
+  EXPECT_NEAR(p.right.alpha, alpha, 1e-6) << "s = " << s;
+  EXPECT_EQ(p.right.alpha, p.left.alpha) << "s = " << s;
+}
+
+// The same width and alpha at both ends, neither falling from an end to the middle.
+void expect_symmetric_and_rising_inwards(const Strip& strip) {
+  const size_t n = strip.size();
+  for (size_t j = 0; j < n; ++j) {
+    EXPECT_NEAR(strip[j].width(), strip[n - 1 - j].width(), 1e-4) << j;
+    EXPECT_NEAR(strip[j].right.alpha, strip[n - 1 - j].right.alpha, 1e-6) << j;
+    if (j < n / 2) {
+      EXPECT_LE(strip[j].width(), strip[j + 1].width() + 1e-4) << j;
+      EXPECT_LE(strip[j].right.alpha, strip[j + 1].right.alpha + 1e-6) << j;
+    }
+  }
+}
+
+// Taper T = 21 px, a quarter ellipse: no width at the end (drawn 2 px wide with alpha 0 by
+// the thin-stroke rule), sqrt(3)/2 of it at T/2 (a unit circle's height at 60 degrees),
+// all of it from T on; concave in between. Alpha is untouched.
+TEST(BaseStroke, TaperHasItsKnownValuesAndShape) {
   StrokeStyle st = plain_style();
-  st.taper_px = 24;
+  st.taper_px = 21;
   Ribbon r = base_stroke(horizontal(140), st);
   EXPECT_EQ(r.color, glm::vec3(0.1f));
   Strip strip = single_strip(r);
   ASSERT_EQ(strip.size(), 41u);  // 140 / 3.5 = 40 steps
-  expect_profile(
-      strip, 3.5,
-      [](double s) {
-        double dl = std::min(s, 140 - s);
-        return dl < 24 ? 8 * std::sqrt(1 - std::pow((24 - dl) / 24, 2)) : 8.0;
-      },
-      [](double) { return 1.0; });
+  expect_width_and_alpha(strip, 0, 2, 0);
+  expect_width_and_alpha(strip, 10.5, 4 * std::sqrt(3.0), 1);
+  for (double s = 21; s <= 119; s += 3.5) expect_width_and_alpha(strip, s, 8, 1);
+  expect_symmetric_and_rising_inwards(strip);
+  for (size_t j = 2; j < 6; ++j)  // from the first sample wider than 2 px up to T
+    EXPECT_LT(strip[j + 1].width() - strip[j].width(), strip[j].width() - strip[j - 1].width()) << j;
   for (const Pair& p : strip) EXPECT_NEAR(p.center().y, 50.0, 1e-5);
 }
 
-TEST(BaseStroke, FadeFollowsItsFormula) {
+// Fade F = 21 px: alpha 0 at the end, (3/4)^1.5 = 3 sqrt(3) / 8 at F/2, 1 from F on. The
+// width is untouched.
+TEST(BaseStroke, FadeHasItsKnownValuesAndShape) {
   StrokeStyle st = plain_style();
-  st.fade_px = 20;
-  expect_profile(
-      single_strip(base_stroke(horizontal(140), st)), 3.5, [](double) { return 8.0; },
-      [](double s) {
-        double dl = std::min(s, 140 - s);
-        return dl < 20 ? std::pow(1 - std::pow((20 - dl) / 20, 2), 1.5) : 1.0;
-      });
+  st.fade_px = 21;
+  Strip strip = single_strip(base_stroke(horizontal(140), st));
+  ASSERT_EQ(strip.size(), 41u);
+  expect_width_and_alpha(strip, 0, 8, 0);
+  expect_width_and_alpha(strip, 10.5, 8, 3 * std::sqrt(3.0) / 8);
+  for (double s = 21; s <= 119; s += 3.5) expect_width_and_alpha(strip, s, 8, 1);
+  expect_symmetric_and_rising_inwards(strip);
 }
 
-// The halo trims only the ends caused by occlusion, and none of a closed run.
+// Halo H = 7 px, only at the ends caused by occlusion and at none of a closed run: at an
+// occluded end no width (drawn 2 px wide) and alpha 0; at H/2, h = 1/2, 1 - h^2 = 3/4, the
+// width x (3/4)^(1/4) and alpha (3/4)^5 = 243/1024; from H on untouched.
 TEST(BaseStroke, HaloOnlyAtOccludedEnds) {
   StrokeStyle st = plain_style();
-  st.halo_px = 10;
-  auto halo_w = [](double d) { return d < 10 ? 8 * std::pow(1 - std::pow((10 - d) / 10, 2), 0.25) : 8.0; };
-  auto halo_a = [](double d) { return d < 10 ? std::pow(1 - std::pow((10 - d) / 10, 2), 5) : 1.0; };
-  auto check = [&](bool start, bool end) {
-    expect_profile(
-        single_strip(base_stroke(horizontal(140, start, end), st)), 3.5,
-        [&](double s) { return (start ? halo_w(s) : 8.0) * (end ? halo_w(140 - s) : 8.0) / 8; },
-        [&](double s) { return (start ? halo_a(s) : 1.0) * (end ? halo_a(140 - s) : 1.0); });
+  st.halo_px = 7;
+  auto strip_of = [&](bool start, bool end) {
+    Strip strip = single_strip(base_stroke(horizontal(140, start, end), st));
+    EXPECT_EQ(strip.size(), 41u);
+    return strip;
   };
-  check(false, false);
-  check(true, false);
-  check(false, true);
-  check(true, true);
+  auto expect_halo_at = [](const Strip& strip, double s_end, double s_half) {
+    expect_width_and_alpha(strip, s_end, 2, 0);
+    expect_width_and_alpha(strip, s_half, 8 * std::sqrt(std::sqrt(0.75)), 243.0 / 1024);
+  };
+  for (const Pair& p : strip_of(false, false)) {
+    EXPECT_NEAR(p.width(), 8.0, 1e-4);
+    EXPECT_EQ(p.right.alpha, 1.0f);
+  }
+  Strip start = strip_of(true, false), end = strip_of(false, true), both = strip_of(true, true);
+  expect_halo_at(start, 0, 3.5);
+  for (double s = 7; s <= 140; s += 3.5) expect_width_and_alpha(start, s, 8, 1);
+  expect_halo_at(end, 140, 136.5);
+  for (double s = 0; s <= 133; s += 3.5) expect_width_and_alpha(end, s, 8, 1);
+  for (size_t j = 0; j < start.size() && j < end.size(); ++j) {
+    EXPECT_NEAR(start[j].width(), end[end.size() - 1 - j].width(), 1e-4) << j;
+    EXPECT_EQ(start[j].right.alpha, end[end.size() - 1 - j].right.alpha) << j;
+  }
+  expect_halo_at(both, 0, 3.5);
+  expect_halo_at(both, 140, 136.5);
+  expect_symmetric_and_rising_inwards(both);
   for (const Pair& p : single_strip(base_stroke({circle(48, 40), true, true, true}, st))) {
     EXPECT_NEAR(p.width(), 8.0, 1e-4);
     EXPECT_EQ(p.right.alpha, 1.0f);
   }
 }
 
-// Reading (stroke_style.hpp): width x (1 + flare (1 - 2 dl / L)).
+// Reading (stroke_style.hpp): flare 1 doubles the width at the ends, leaves it at the
+// middle and is linear in between (16, 12 and 8 px at 0, L/4 and L/2); alpha untouched.
 TEST(BaseStroke, FlareWidensTheEnds) {
   StrokeStyle st = plain_style();
   st.flare = 1;
-  expect_profile(
-      single_strip(base_stroke(horizontal(140), st)), 3.5,
-      [](double s) { return 8 * (2 - 2 * std::min(s, 140 - s) / 140); }, [](double) { return 1.0; });
+  Strip strip = single_strip(base_stroke(horizontal(140), st));
+  ASSERT_EQ(strip.size(), 41u);
+  expect_width_and_alpha(strip, 0, 16, 1);
+  expect_width_and_alpha(strip, 35, 12, 1);
+  expect_width_and_alpha(strip, 70, 8, 1);
+  expect_width_and_alpha(strip, 140, 16, 1);
+  for (size_t j = 0; j + 1 < strip.size(); ++j)
+    EXPECT_NEAR(std::abs(strip[j + 1].width() - strip[j].width()), 8.0 / 20, 1e-4) << j;
 }
 
+// Below 2 px a stroke is drawn 2 px wide, its alpha x (width / 2)^2; from 2 px on as it is.
 TEST(BaseStroke, ThinStrokesAreDrawnTwoPixelsWideAndFainter) {
   StrokeStyle st = plain_style();
   st.alpha = 0.8f;
-  for (double width : {1.0, 1.5, 0.5}) {
+  const std::tuple<double, double, double> cases[] = {  // width, drawn width, alpha
+      {1.0, 2.0, 0.2}, {1.5, 2.0, 0.45}, {0.5, 2.0, 0.05}, {2.0, 2.0, 0.8}, {2.25, 2.25, 0.8}, {3.0, 3.0, 0.8}};
+  for (auto [width, drawn, alpha] : cases) {
     st.width_px = float(width);
     for (const Pair& p : single_strip(base_stroke(horizontal(70), st))) {
-      EXPECT_NEAR(p.width(), 2.0, 1e-4);
-      EXPECT_NEAR(p.right.alpha, 0.8 * width * width / 4, 1e-6);
+      EXPECT_NEAR(p.width(), drawn, 1e-4) << width;
+      EXPECT_NEAR(p.right.alpha, alpha, 1e-6) << width;
     }
   }
 }
@@ -366,7 +412,7 @@ TEST(BaseStroke, ClosedRunWrapsAround) {
     EXPECT_EQ(p.right.alpha, 1.0f);
   }
   EXPECT_EQ(strip.front().s(), 0.0);
-  EXPECT_NEAR(strip.back().s(), 2 * M_PI * 40, 0.001 * 2 * M_PI * 40);
+  EXPECT_NEAR(strip.back().s(), 2 * std::numbers::pi * 40, 0.001 * 2 * std::numbers::pi * 40);
   EXPECT_NEAR(glm::distance(glm::dvec2(strip.front().right.position), glm::dvec2(strip.back().right.position)), 0, 1e-4);
   EXPECT_NEAR(glm::distance(glm::dvec2(strip.front().left.position), glm::dvec2(strip.back().left.position)), 0, 1e-4);
 }

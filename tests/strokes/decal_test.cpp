@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 
 #include <nlohmann/json.hpp>
 
@@ -108,8 +109,8 @@ TEST(StrokeFile, DrawnExamplesStyleTheCreases) {
   testing::TempDir dir;
   std::string wave;
   for (int k = 0; k <= 40; ++k)
-    wave += (k ? ", [" : "[") + std::to_string(100 + 2.5 * k) + ", " + std::to_string(50 + 3 * std::sin(k * M_PI / 10)) +
-            ", 0.5]";
+    wave += (k ? ", [" : "[") + std::to_string(100 + 2.5 * k) + ", " +
+            std::to_string(50 + 3 * std::sin(k * std::numbers::pi / 10)) + ", 0.5]";
   dir.write("e.strokes.json", R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0],
       "fov_deg": 40, "near": 1, "far": 10}, "resolution": [320, 240], "strokes": [
       {"role": "crease", "points": [)" + wave + R"(]}, {"role": "crease", "points": [[0, 0, 1], [0, 30, 1]]}]})");
@@ -122,7 +123,7 @@ TEST(StrokeFile, DrawnExamplesStyleTheCreases) {
   ASSERT_EQ(e.offsets.size(), 41u);
   for (size_t k = 0; k < e.offsets.size(); ++k) {
     EXPECT_NEAR(e.offsets[k].t, k / 40.0, 1e-6);
-    EXPECT_NEAR(e.offsets[k].displacement_px, 3 * std::sin(k * M_PI / 10), 1e-5);  // to_string: 6 decimals
+    EXPECT_NEAR(e.offsets[k].displacement_px, 3 * std::sin(k * std::numbers::pi / 10), 1e-5);  // to_string: 6 decimals
     EXPECT_DOUBLE_EQ(e.offsets[k].pressure, 0.5);
   }
   WindowPath path{LineKind::Crease, 0, false, true, 7, {}, {}, {}, {}, {}, {}, 0, {}, 0};
@@ -202,7 +203,7 @@ std::vector<uint8_t> near_silhouette(const Scene& scene, const std::vector<Decal
                                std::tan(glm::radians(double(d.file->camera.fov_deg)) / 2) / d.file->height;
       bool near = false;
       for (int k = 0; k < 8 && !near; ++k) {
-        glm::dvec2 offset(std::cos(k * M_PI / 4), std::sin(k * M_PI / 4));
+        glm::dvec2 offset(std::cos(k * std::numbers::pi / 4), std::sin(k * std::numbers::pi / 4));
         DecalPoint q = reference::first_surface_hit(rays.get(), *d.file, {p.window + offset, 1.0});
         near = q.object != c.object || (c.object != kMissed && glm::distance(at(q), at(c)) > 3 * footprint);
       }

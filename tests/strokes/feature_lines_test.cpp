@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
+#include <numbers>
 #include <random>
 
 #include "common/strokes/feature_lines.hpp"
@@ -131,7 +132,7 @@ std::array<glm::dvec2, 2> cylinder_rulings(double r, glm::dvec3 eye) {
 // chord error r (1 - cos(pi / n)) of its n = 64 sides, plus 1e-6.
 TEST(FeatureLines, CylinderHasTwoRulingsAndTwoRimLoops) {
   Mesh cylinder = make_procedural("cylinder", 1.0f);  // radius 0.5, z in [-1, 1], 64 sides
-  const double r = 0.5, bound = r * (1 - std::cos(3.14159265358979 / 64)) + 1e-6;
+  const double r = 0.5, bound = r * (1 - std::cos(std::numbers::pi / 64)) + 1e-6;
   glm::dvec3 eye(4 * std::cos(0.3), 4 * std::sin(0.3), 0.2);
   FeatureLines lines = feature_lines(cylinder, kIdentity, eye, {});
   expect_surface_points(cylinder, lines);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <tuple>
 
 #include "common/util/random.hpp"
@@ -9,7 +10,8 @@
 namespace plumbago::testing {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using std::numbers::pi;
+
 // Of a cell, per grid direction. A triangle of a jittered unit grid keeps at least
 // 1 - 6 kJitter of its doubled area, so below 1/6 none flips.
 constexpr double kJitter = 0.15;
@@ -125,7 +127,7 @@ AnalyticSurface analytic_ellipsoid(glm::dvec3 semi_axes, double edge, Meshing me
   std::string name = std::string("ellipsoid/") + meshing_name(meshing);
   Rng rng(seed, name);
   double largest = std::max({semi_axes.x, semi_axes.y, semi_axes.z});
-  Mesh mesh = unit_cube_sphere(cells(0.5 * kPi * largest, edge), meshing, rng);
+  Mesh mesh = unit_cube_sphere(cells(0.5 * pi * largest, edge), meshing, rng);
   for (auto& p : mesh.positions) p = glm::vec3(glm::dvec3(p) * semi_axes);
   compute_normals(mesh);
   mesh.name = "procedural:" + name;
@@ -149,10 +151,10 @@ AnalyticSurface analytic_cylinder(double radius, double height, double edge, Mes
   std::string name = std::string("cylinder/") + meshing_name(meshing);
   Rng rng(seed, name);
   auto map = [&](double u, double v) {
-    double phi = 2 * kPi * u;
+    double phi = 2 * pi * u;
     return glm::dvec3(radius * std::cos(phi), radius * std::sin(phi), height * v);
   };
-  Mesh mesh = grid_mesh(cells(2 * kPi * radius, edge), cells(height, edge), true, false, map, meshing, rng);
+  Mesh mesh = grid_mesh(cells(2 * pi * radius, edge), cells(height, edge), true, false, map, meshing, rng);
   mesh.name = "procedural:" + name;
   auto truth = [radius](const glm::dvec3& p) {
     glm::dvec3 n = glm::normalize(glm::dvec3(p.x, p.y, 0));
@@ -165,11 +167,11 @@ AnalyticSurface analytic_torus(double R, double r, double edge, Meshing meshing,
   std::string name = std::string("torus/") + meshing_name(meshing);
   Rng rng(seed, name);
   auto map = [&](double u, double v) {
-    double phi = 2 * kPi * u, theta = 2 * kPi * v;
+    double phi = 2 * pi * u, theta = 2 * pi * v;
     double w = R + r * std::cos(theta);
     return glm::dvec3(w * std::cos(phi), w * std::sin(phi), r * std::sin(theta));
   };
-  Mesh mesh = grid_mesh(cells(2 * kPi * R, edge), cells(2 * kPi * r, edge), true, true, map, meshing, rng);
+  Mesh mesh = grid_mesh(cells(2 * pi * R, edge), cells(2 * pi * r, edge), true, true, map, meshing, rng);
   mesh.name = "procedural:" + name;
   // Around the tube k = 1/r; along the parallels k = cos(theta) / (R + r cos(theta)).
   auto truth = [R, r](const glm::dvec3& p) {
@@ -210,7 +212,7 @@ Mesh schwarz_lantern(double radius, double height, int around, int rings) {
   mesh.name = "procedural:schwarz-lantern";
   for (int j = 0; j <= rings; ++j)
     for (int i = 0; i < around; ++i) {
-      double phi = (2 * kPi * i + kPi * (j % 2)) / around;
+      double phi = (2 * pi * i + pi * (j % 2)) / around;
       mesh.positions.emplace_back(radius * std::cos(phi), radius * std::sin(phi), height * j / rings);
     }
   auto index = [&](int i, int j) { return uint32_t(j * around + (i % around)); };
