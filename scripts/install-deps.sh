@@ -12,6 +12,7 @@ packages=(
   snakemake
   libglfw3-dev libimgui-dev xvfb xauth
   clang-14 libclang-rt-14-dev llvm-14  # scripts/sanitize.sh: ASan, UBSan, libFuzzer, llvm-symbolizer
+  clang-format-14  # scripts/format.sh --check (CI)
 )
 
 sudo_cmd=()
