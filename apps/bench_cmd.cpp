@@ -18,19 +18,19 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <thread>
 
 #include "apps/command.hpp"
 #include "apps/path_frames.hpp"
 #include "apps/scene_options.hpp"
 #include "bench/paper_claims.hpp"
+#include "common/core/passes.hpp"
 #include "common/util/image_compare.hpp"
 #include "common/util/output_file.hpp"
-#include "common/core/passes.hpp"
-#include "gpu/gl/context.hpp"
 #include "gpu/core/pipeline.hpp"
+#include "gpu/gl/context.hpp"
 #include "reference/core/pipeline.hpp"
 
 namespace plumbago {
@@ -78,8 +78,10 @@ double median(std::vector<double> v) {
 
 void add_pass_times(const Frame& f, int frames, BenchResult& r) {
   for (const auto& p : f.ran) {
-    if (is_preprocessing(p.name)) r.preprocessing[p.name] = p.ms;
-    else r.stages[p.name] += p.ms / frames;
+    if (is_preprocessing(p.name))
+      r.preprocessing[p.name] = p.ms;
+    else
+      r.stages[p.name] += p.ms / frames;
   }
 }
 
@@ -122,8 +124,7 @@ void save(const std::map<std::string, Image>& buffers, const fs::path& dir, Outp
 }
 
 void save_and_compare(const BenchOptions& o, std::map<std::string, Image> buffers, BenchResult& r, OutputFiles& out) {
-  for (auto it = buffers.begin(); it != buffers.end();)
-    it = wanted(o, it->first) ? std::next(it) : buffers.erase(it);
+  for (auto it = buffers.begin(); it != buffers.end();) it = wanted(o, it->first) ? std::next(it) : buffers.erase(it);
   if (!o.save_dir.empty()) save(buffers, fs::path(o.save_dir) / r.backend, out);
   if (!o.against_dir.empty()) {
     for (const auto& [name, img] : buffers) {
@@ -141,7 +142,8 @@ void save_and_compare(const BenchOptions& o, std::map<std::string, Image> buffer
       if (ref.channels != img.channels) {
         Image same(ref.width, ref.height, img.channels);
         for (size_t i = 0; i < same.pixels(); ++i)
-          for (int c = 0; c < img.channels; ++c) same.data[i * img.channels + c] = ref.data[i * ref.channels + std::min(c, ref.channels - 1)];
+          for (int c = 0; c < img.channels; ++c)
+            same.data[i * img.channels + c] = ref.data[i * ref.channels + std::min(c, ref.channels - 1)];
         ref = std::move(same);
       }
       r.errors[name] = buffer_error(img, ref, o.tolerance);
@@ -149,7 +151,9 @@ void save_and_compare(const BenchOptions& o, std::map<std::string, Image> buffer
   }
 }
 
-int reference_frames(const BenchOptions& o) { return o.reference_frames ? o.reference_frames : std::max(1, o.frames / 10); }
+int reference_frames(const BenchOptions& o) {
+  return o.reference_frames ? o.reference_frames : std::max(1, o.frames / 10);
+}
 
 bool keeps_buffers(const BenchOptions& o) { return !o.save_dir.empty() || !o.against_dir.empty(); }
 
@@ -237,20 +241,26 @@ std::string machine_name() {
 
 std::string fps_range(const PaperClaim& c) {
   char buf[64];
-  if (c.fps_low == c.fps_high) std::snprintf(buf, sizeof buf, "%g", c.fps_low);
-  else std::snprintf(buf, sizeof buf, "%g-%g", c.fps_low, c.fps_high);
+  if (c.fps_low == c.fps_high)
+    std::snprintf(buf, sizeof buf, "%g", c.fps_low);
+  else
+    std::snprintf(buf, sizeof buf, "%g-%g", c.fps_low, c.fps_high);
   return buf;
 }
 
 void print_text(const std::vector<BenchResult>& results) {
   std::printf("renderer: %s\n", gpu::Context::get().renderer().c_str());
   for (const auto& r : results) {
-    std::printf("%s [%s]: %.2f ms/frame = %.1f fps\n", r.scene.c_str(), r.backend.c_str(), r.frame_ms, 1000 / r.frame_ms);
+    std::printf("%s [%s]: %.2f ms/frame = %.1f fps\n", r.scene.c_str(), r.backend.c_str(), r.frame_ms,
+                1000 / r.frame_ms);
     if (r.path_frames)
-      std::printf("  camera path: %d frames in %.1f ms, slowest %.2f ms; making a frame's renderer %.2f ms (not in "
-                  "the frame)\n", r.path_frames, r.path_ms, r.slowest_ms, r.setup_ms);
+      std::printf(
+          "  camera path: %d frames in %.1f ms, slowest %.2f ms; making a frame's renderer %.2f ms (not in "
+          "the frame)\n",
+          r.path_frames, r.path_ms, r.slowest_ms, r.setup_ms);
     for (const auto& [name, ms] : r.stages) std::printf("  %-24s %9.3f ms\n", name.c_str(), ms);
-    for (const auto& [name, ms] : r.preprocessing) std::printf("  preprocessing %-10s %9.3f ms (once, not in the frame)\n", name.c_str(), ms);
+    for (const auto& [name, ms] : r.preprocessing)
+      std::printf("  preprocessing %-10s %9.3f ms (once, not in the frame)\n", name.c_str(), ms);
     for (const auto& [name, e] : r.errors)
       std::printf("  error %-36s max %.4g  mean %.4g  rmse %.4g  over tolerance %.3g%%\n", name.c_str(), e.max_abs,
                   e.mean_abs, e.rmse, 100 * e.over_tolerance);
@@ -267,16 +277,16 @@ void print_text(const std::vector<BenchResult>& results) {
 }
 
 nlohmann::json result_json(const BenchResult& r) {
-  nlohmann::json j{{"scene", r.scene}, {"backend", r.backend}, {"faces", r.faces}, {"strokes", r.strokes},
-                   {"size", {r.width, r.height}},
-                   {"fps", 1000 / r.frame_ms}, {"frame_ms", r.frame_ms}, {"stages", r.stages},
-                   {"preprocessing", r.preprocessing}};
+  nlohmann::json j{{"scene", r.scene},       {"backend", r.backend},        {"faces", r.faces},
+                   {"strokes", r.strokes},   {"size", {r.width, r.height}}, {"fps", 1000 / r.frame_ms},
+                   {"frame_ms", r.frame_ms}, {"stages", r.stages},          {"preprocessing", r.preprocessing}};
   if (r.path_frames)
     j["path"] = {{"frames", r.path_frames}, {"ms", r.path_ms}, {"slowest_ms", r.slowest_ms}, {"setup_ms", r.setup_ms}};
   if (!r.errors.empty() || !r.missing.empty()) {
     nlohmann::json e = nlohmann::json::object();
     for (const auto& [name, x] : r.errors)
-      e[name] = {{"max_abs", x.max_abs}, {"mean_abs", x.mean_abs}, {"rmse", x.rmse}, {"over_tolerance", x.over_tolerance}};
+      e[name] = {
+          {"max_abs", x.max_abs}, {"mean_abs", x.mean_abs}, {"rmse", x.rmse}, {"over_tolerance", x.over_tolerance}};
     j["errors"] = e;
     j["missing"] = r.missing;
   }
@@ -284,8 +294,8 @@ nlohmann::json result_json(const BenchResult& r) {
 }
 
 void print_json(const BenchOptions& o, const std::vector<BenchResult>& results) {
-  nlohmann::json j{{"renderer", gpu::Context::get().renderer()}, {"machine", machine_name()},
-                   {"results", nlohmann::json::array()}};
+  nlohmann::json j{
+      {"renderer", gpu::Context::get().renderer()}, {"machine", machine_name()}, {"results", nlohmann::json::array()}};
   if (!o.against_dir.empty()) j["against"] = o.against_dir, j["tolerance"] = o.tolerance;
   for (const auto& r : results) j["results"].push_back(result_json(r));
   std::printf("%s\n", j.dump(2).c_str());
@@ -299,7 +309,6 @@ struct ClaimRun {
   std::optional<BenchResult> gpu, ref;  // absent when not run
   std::string note;                     // why not run
 };
-
 
 std::vector<ClaimRun> run_paper(const BenchOptions& o, OutputFiles& out) {
   std::vector<ClaimRun> runs;
@@ -333,9 +342,10 @@ void print_paper(const BenchOptions& o, const std::vector<ClaimRun>& runs) {
     nlohmann::json j{{"machine", machine}, {"renderer", renderer}, {"claims", nlohmann::json::array()}};
     for (const auto& r : runs) {
       const PaperClaim& c = *r.claim;
-      nlohmann::json x{{"paper", c.paper}, {"scene", c.scene}, {"faces", c.faces}, {"resolution", c.resolution},
-                       {"fps_low", c.fps_low}, {"fps_high", c.fps_high}, {"hardware", c.hardware},
-                       {"style", c.style}, {"ours_scene", r.ours}, {"note", r.note}};
+      nlohmann::json x{
+          {"paper", c.paper},     {"scene", c.scene},       {"faces", c.faces},       {"resolution", c.resolution},
+          {"fps_low", c.fps_low}, {"fps_high", c.fps_high}, {"hardware", c.hardware}, {"style", c.style},
+          {"ours_scene", r.ours}, {"note", r.note}};
       x["ours_gpu"] = r.gpu ? result_json(*r.gpu) : nlohmann::json();
       x["ours_reference"] = r.ref ? result_json(*r.ref) : nlohmann::json();
       j["claims"].push_back(x);
@@ -380,7 +390,8 @@ void run(const BenchOptions& o) {
   OutputFiles out;
   check_folders(o, out);
   if (o.paper) {
-    if (!o.scenes.empty()) throw std::invalid_argument("--paper runs the scenes bench/paper_claims.hpp names; give no SCENE");
+    if (!o.scenes.empty())
+      throw std::invalid_argument("--paper runs the scenes bench/paper_claims.hpp names; give no SCENE");
     auto runs = run_paper(o, out);
     out.commit();
     print_paper(o, runs);
@@ -412,18 +423,22 @@ void setup(CLI::App& app) {
                   "Frames to time on the GPU (the reference times a tenth); a scene's camera path times its own")
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
-  cmd->add_option("--reference-frames", o->reference_frames, "Frames to time on the reference (default: a tenth of --frames)")
+  cmd->add_option("--reference-frames", o->reference_frames,
+                  "Frames to time on the reference (default: a tenth of --frames)")
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--backend", o->backend, "gpu, reference or both")
       ->check(CLI::IsMember({"gpu", "reference", "both"}))
       ->capture_default_str();
   cmd->add_option("--size", o->size, "Image size WxH");
   cmd->add_option("--set", o->assignments, "Override a parameter: stage.name=value");
-  cmd->add_flag("--json", o->json, "One JSON object {machine, renderer, results: [{scene, backend, fps, stages, errors}]}");
-  cmd->add_flag("--paper", o->paper, "The papers' claimed fps next to ours for the closest scenes (bench/paper_claims.hpp)");
+  cmd->add_flag("--json", o->json,
+                "One JSON object {machine, renderer, results: [{scene, backend, fps, stages, errors}]}");
+  cmd->add_flag("--paper", o->paper,
+                "The papers' claimed fps next to ours for the closest scenes (bench/paper_claims.hpp)");
   cmd->add_option("--save", o->save_dir, "After timing, write one frame's buffers as DIR/<backend>/<buffer>.exr");
   cmd->add_option("--against", o->against_dir, "After timing, compare one frame's buffers with DIR/<buffer>.exr");
-  cmd->add_option("--buffers", o->buffers, "Only these buffers for --save/--against (e.g. compose.color)")->delimiter(',');
+  cmd->add_option("--buffers", o->buffers, "Only these buffers for --save/--against (e.g. compose.color)")
+      ->delimiter(',');
   cmd->add_option("--tolerance", o->tolerance, "--against: a pixel differs where any channel differs by more")
       ->check(CLI::Range(0.0, 1e9))
       ->capture_default_str();

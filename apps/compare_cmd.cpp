@@ -4,9 +4,9 @@
 #include <filesystem>
 
 #include "apps/command.hpp"
-#include "parity/parity.hpp"
 #include "apps/scene_options.hpp"
 #include "common/util/visualize.hpp"
+#include "parity/parity.hpp"
 
 namespace plumbago {
 namespace {

@@ -10,9 +10,9 @@
 #include <optional>
 
 #include "apps/command.hpp"
+#include "common/core/params.hpp"
 #include "common/curvature/curvature.hpp"
 #include "common/util/output_file.hpp"
-#include "common/core/params.hpp"
 
 namespace plumbago {
 namespace {
@@ -92,14 +92,17 @@ void run(const CurvatureCommandOptions& o) {
 
 void setup(CLI::App& app) {
   auto o = std::make_shared<CurvatureCommandOptions>();
-  auto* cmd = app.add_subcommand("curvature", "Principal curvature per vertex of a mesh, as CSV (Lee et al. 2006, "
-                                              "§5.3; Alliez et al. 2003)");
+  auto* cmd = app.add_subcommand("curvature",
+                                 "Principal curvature per vertex of a mesh, as CSV (Lee et al. 2006, "
+                                 "§5.3; Alliez et al. 2003)");
   cmd->add_option("mesh", o->mesh, "Mesh file (OBJ, OFF, PLY, STL)")->required();
-  cmd->add_option("--method", o->method,
-                  "auto (the default: tensor, or jet on folded meshes), tensor (Cohen-Steiner/Morvan, the paper's) or jet");
+  cmd->add_option(
+      "--method", o->method,
+      "auto (the default: tensor, or jet on folded meshes), tensor (Cohen-Steiner/Morvan, the paper's) or jet");
   cmd->add_option("--radius", o->radius, "tensor ball radius x bbox diagonal; 0 = 1-ring (curvature.radius)");
   cmd->add_option("-o,--output", o->output, "CSV file to write (default: standard output)");
-  cmd->add_option("--set", o->assignments, "Override a parameter: curvature.name=value (see `plumbago params curvature`)");
+  cmd->add_option("--set", o->assignments,
+                  "Override a parameter: curvature.name=value (see `plumbago params curvature`)");
   cmd->add_flag("--quiet", o->quiet, "No progress or summary on standard error");
   cmd->add_flag("--no-cache", o->no_cache, "Neither read nor write the curvature cache");
   cmd->callback([o] { run(*o); });

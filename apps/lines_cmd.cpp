@@ -16,22 +16,22 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
-#include <set>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "apps/command.hpp"
 #include "apps/scene_options.hpp"
 #include "common/strokes/base_stroke.hpp"
 #include "common/strokes/decal.hpp"
-#include "common/strokes/stroke.hpp"
 #include "common/strokes/id_image.hpp"
-#include "common/util/output_file.hpp"
+#include "common/strokes/stroke.hpp"
 #include "common/strokes/visibility.hpp"
+#include "common/util/output_file.hpp"
+#include "gpu/core/pipeline.hpp"
 #include "gpu/gl/context.hpp"
 #include "gpu/strokes/decal.hpp"
-#include "gpu/core/pipeline.hpp"
-#include "reference/strokes/decal.hpp"
 #include "reference/core/pipeline.hpp"
+#include "reference/strokes/decal.hpp"
 #include "reference/strokes/ray_visibility.hpp"
 
 namespace plumbago {

@@ -23,11 +23,10 @@ int main(int argc, char** argv) {
   CLI::App app{"Plumbago: real-time pencil and sketch rendering, with a CPU reference for every stage"};
   app.require_subcommand(1);
   app.fallthrough();  // the global options may also follow the command
-  app.add_option_function<double>(
-         "--memory-budget-gb", plumbago::set_memory_budget_gb,
-         "The memory a command may plan to use, in GB (default " +
-             std::to_string(int(plumbago::kDefaultMemoryBudgetGb)) +
-             "): larger meshes, images and textures are refused (docs/bad-input.md)");
+  app.add_option_function<double>("--memory-budget-gb", plumbago::set_memory_budget_gb,
+                                  "The memory a command may plan to use, in GB (default " +
+                                      std::to_string(int(plumbago::kDefaultMemoryBudgetGb)) +
+                                      "): larger meshes, images and textures are refused (docs/bad-input.md)");
   for (auto setup : plumbago::command_registry()) setup(app);
   try {
     app.parse(argc, argv);

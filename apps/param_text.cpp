@@ -4,10 +4,14 @@ namespace plumbago {
 
 const char* param_type_name(ParamType t) {
   switch (t) {
-    case ParamType::Real: return "real";
-    case ParamType::Integer: return "int";
-    case ParamType::Boolean: return "bool";
-    default: return "choice";
+    case ParamType::Real:
+      return "real";
+    case ParamType::Integer:
+      return "int";
+    case ParamType::Boolean:
+      return "bool";
+    default:
+      return "choice";
   }
 }
 

@@ -1,7 +1,7 @@
 #include "apps/path_frames.hpp"
 
-#include "common/scene/animation.hpp"
 #include "common/core/passes.hpp"
+#include "common/scene/animation.hpp"
 #include "gpu/core/pipeline.hpp"
 #include "reference/core/pipeline.hpp"
 

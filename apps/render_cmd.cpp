@@ -9,8 +9,8 @@
 #include "apps/path_frames.hpp"
 #include "apps/scene_options.hpp"
 #include "common/util/visualize.hpp"
-#include "gpu/gl/context.hpp"
 #include "gpu/core/pipeline.hpp"
+#include "gpu/gl/context.hpp"
 #include "reference/core/pipeline.hpp"
 
 namespace plumbago {
@@ -52,8 +52,8 @@ void print_stats(const RenderOptions& o, const Scene& scene, const Frame& frame)
     std::printf("%s\n", j.dump(2).c_str());
     return;
   }
-  std::printf("scene     %s (%dx%d)\nbackend   %s\nrenderer  %s\n", scene.source.c_str(), scene.width,
-              scene.height, o.backend.c_str(), renderer.c_str());
+  std::printf("scene     %s (%dx%d)\nbackend   %s\nrenderer  %s\n", scene.source.c_str(), scene.width, scene.height,
+              o.backend.c_str(), renderer.c_str());
   for (const auto& p : frame.ran) std::printf("  %-24s %10.3f ms\n", p.name.c_str(), p.ms);
   for (const auto& [name, n] : frame.counts) std::printf("  %-24s %10.0f\n", name.c_str(), n);
   for (const auto& m : gl_messages) std::printf("GL: %s\n", m.c_str());
@@ -62,7 +62,8 @@ void print_stats(const RenderOptions& o, const Scene& scene, const Frame& frame)
 // `-o DIR` for a scene with a camera path: every frame as DIR/frame_0000.png, ...
 void write_path(const RenderOptions& o, const Scene& scene) {
   if (o.frame != 0 || !o.dump_dir.empty())
-    throw std::invalid_argument("-o " + o.output + ": a folder takes every frame; --frame and --dump-stages take an image file");
+    throw std::invalid_argument("-o " + o.output +
+                                ": a folder takes every frame; --frame and --dump-stages take an image file");
   OutputFiles out;
   out.folder(o.output);
   PathFrames path(scene, o.backend);

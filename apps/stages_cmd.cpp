@@ -25,10 +25,14 @@ const char* kind_name(StageKind k) { return k == StageKind::Preprocessing ? "pre
 
 const char* texel_name(Texel t) {
   switch (t) {
-    case Texel::Float: return "float32";
-    case Texel::Unorm8: return "unorm8";
-    case Texel::Uint: return "uint";
-    default: return "host";
+    case Texel::Float:
+      return "float32";
+    case Texel::Unorm8:
+      return "unorm8";
+    case Texel::Uint:
+      return "uint";
+    default:
+      return "host";
   }
 }
 
@@ -102,8 +106,7 @@ void markdown_summary() {
   std::printf("Effects, and the inputs and outputs a condition decides, are given for the default parameters.\n\n");
   std::printf("| stage | kind | what it computes |\n|---|---|---|\n");
   for (const StageDesc& s : stage_table())
-    std::printf("| [`%s`](#%s) | %s | %s |\n", s.name.c_str(), s.name.c_str(), kind_name(s.kind),
-                cell(s.doc).c_str());
+    std::printf("| [`%s`](#%s) | %s | %s |\n", s.name.c_str(), s.name.c_str(), kind_name(s.kind), cell(s.doc).c_str());
 }
 
 void markdown_inputs(const StageDesc& s) {

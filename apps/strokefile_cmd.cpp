@@ -10,8 +10,8 @@
 
 #include "apps/command.hpp"
 #include "apps/scene_options.hpp"
-#include "common/util/output_file.hpp"
 #include "common/strokes/svg_strokes.hpp"
+#include "common/util/output_file.hpp"
 
 namespace plumbago {
 namespace {
@@ -54,9 +54,9 @@ void run(const StrokeFileOptions& o) {
 
 void setup(CLI::App& app) {
   auto o = std::make_shared<StrokeFileOptions>();
-  auto* cmd =
-      app.add_subcommand("strokefile", "Make a stroke file (Kalnins et al. 2002, §3, §4.5) from an SVG drawn over the "
-                                       "scene's render");
+  auto* cmd = app.add_subcommand("strokefile",
+                                 "Make a stroke file (Kalnins et al. 2002, §3, §4.5) from an SVG drawn over the "
+                                 "scene's render");
   o->scene.add_to(cmd, true);
   cmd->add_option("svg", o->svg, "the drawing: <polyline> and straight <path> elements over the rendered PNG")
       ->required();
@@ -67,8 +67,9 @@ void setup(CLI::App& app) {
   cmd->add_option("--style", o->style,
                   "the stroke style (preset or file) of decals and hatching where an element has no data-style");
   cmd->add_option("--group", o->group, "hatching: the group where an element has no data-group")->capture_default_str();
-  cmd->add_flag("--free", o->free, "hatching: a free group (Kalnins et al. 2002, §6) where an element has no "
-                                                   "data-free");
+  cmd->add_flag("--free", o->free,
+                "hatching: a free group (Kalnins et al. 2002, §6) where an element has no "
+                "data-free");
   cmd->callback([o] { run(*o); });
 }
 

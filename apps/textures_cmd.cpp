@@ -7,8 +7,8 @@
 #include "apps/command.hpp"
 #include "apps/scene_options.hpp"
 #include "common/core/frame.hpp"
-#include "common/util/output_file.hpp"
 #include "common/pencil/textures.hpp"
+#include "common/util/output_file.hpp"
 
 namespace plumbago {
 namespace {
@@ -36,7 +36,8 @@ void run(const TexturesOptions& o) {
 
 void setup(CLI::App& app) {
   auto o = std::make_shared<TexturesOptions>();
-  auto* cmd = app.add_subcommand("textures", "Write every generated texture (pencil stack, paper, offsets, sketchy noise) as PNG");
+  auto* cmd = app.add_subcommand("textures",
+                                 "Write every generated texture (pencil stack, paper, offsets, sketchy noise) as PNG");
   cmd->add_option("--out", o->out_dir, "Folder for the PNGs")->capture_default_str();
   cmd->add_option("--seed", o->seed, "Scene seed the textures are generated from")->capture_default_str();
   cmd->add_option("--size", o->scene.size, "Window size WxH the contour offset grids cover");

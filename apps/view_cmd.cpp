@@ -10,9 +10,10 @@ void run(const ViewerOptions& o) {
   run_viewer(o);
 #else
   (void)o;
-  throw std::runtime_error("view: this plumbago was built without the viewer, which needs GLFW and Dear ImGui "
-                           "(Debian packages 'libglfw3-dev libimgui-dev', scripts/install-deps.sh) and the EGL "
-                           "build; cmake says which was missing");
+  throw std::runtime_error(
+      "view: this plumbago was built without the viewer, which needs GLFW and Dear ImGui "
+      "(Debian packages 'libglfw3-dev libimgui-dev', scripts/install-deps.sh) and the EGL "
+      "build; cmake says which was missing");
 #endif
 }
 

@@ -14,10 +14,10 @@
 #include <memory>
 #include <numbers>
 
-#include "common/curvature/curvature.hpp"
 #include "common/core/frame.hpp"
-#include "common/mesh/mesh_topology.hpp"
 #include "common/core/params.hpp"
+#include "common/curvature/curvature.hpp"
+#include "common/mesh/mesh_topology.hpp"
 
 namespace plumbago::bench {
 namespace {
@@ -106,8 +106,9 @@ const bool registered = [] {
   for (const std::string model : {"fandisk.obj", "stanford-bunny.obj", "ogre.obj", "bunny-1M"})
     for (const auto& [name, assignments] : variants) {
       std::string stem = std::filesystem::path(model).stem().string();
-      auto* b = benchmark::RegisterBenchmark(("BM_Curvature/" + stem + "/" + name).c_str(),
-                                             [model, assignments](benchmark::State& s) { curvature(s, model, assignments); });
+      auto* b =
+          benchmark::RegisterBenchmark(("BM_Curvature/" + stem + "/" + name).c_str(),
+                                       [model, assignments](benchmark::State& s) { curvature(s, model, assignments); });
       b->Unit(benchmark::kMillisecond)->UseManualTime();
       if (model == "bunny-1M") b->Iterations(1);
     }

@@ -7,8 +7,8 @@
 #include "common/core/frame.hpp"
 #include "common/scene/lights.hpp"
 #include "gpu/gl/context.hpp"
-#include "gpu/pencil/edge_detect.hpp"
 #include "gpu/gl/timer.hpp"
+#include "gpu/pencil/edge_detect.hpp"
 #include "reference/pencil/edge_detect.hpp"
 #include "reference/scene/gbuffer.hpp"
 

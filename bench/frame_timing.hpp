@@ -5,8 +5,8 @@
 #include <benchmark/benchmark.h>
 
 #include "common/core/frame.hpp"
-#include "gpu/gl/context.hpp"
 #include "gpu/core/pipeline.hpp"
+#include "gpu/gl/context.hpp"
 #include "reference/core/pipeline.hpp"
 
 namespace plumbago::bench {

@@ -5,8 +5,8 @@
 #include "bench/bench_scenes.hpp"
 #include "common/core/frame.hpp"
 #include "gpu/gl/context.hpp"
-#include "gpu/scene/gbuffer.hpp"
 #include "gpu/gl/timer.hpp"
+#include "gpu/scene/gbuffer.hpp"
 
 namespace plumbago::bench {
 namespace {

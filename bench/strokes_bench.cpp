@@ -6,9 +6,9 @@
 // the whole ID image back every frame; Plumbago reads back only the sample flags.
 #include <benchmark/benchmark.h>
 
+#include <map>
 #include "bench/bench_scenes.hpp"
 #include "bench/frame_timing.hpp"
-#include <map>
 
 #include "common/strokes/strokes.hpp"
 #include "gpu/gl/gl_objects.hpp"
@@ -71,7 +71,8 @@ void readback(benchmark::State& state, bool whole_image) {
   std::vector<uint32_t> read(static_cast<size_t>(samples));
   for (auto _ : state) {
     Stopwatch w;
-    if (whole_image) benchmark::DoNotOptimize(gpu::download_texture_u32(ids, 2));
+    if (whole_image)
+      benchmark::DoNotOptimize(gpu::download_texture_u32(ids, 2));
     else {
       glBindBuffer(GL_SHADER_STORAGE_BUFFER, flags.id());  // as gpu/strokes/visibility.cpp reads the flags
       glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(read.size() * sizeof(uint32_t)), read.data());

@@ -2,11 +2,11 @@
 // generator's time.
 #include <benchmark/benchmark.h>
 
-#include "common/pencil/distortion.hpp"
-#include "common/util/noise.hpp"
-#include "common/pencil/paper.hpp"
 #include "common/core/params.hpp"
+#include "common/pencil/distortion.hpp"
+#include "common/pencil/paper.hpp"
 #include "common/pencil/pencil_textures.hpp"
+#include "common/util/noise.hpp"
 
 namespace plumbago::bench {
 namespace {

@@ -6,11 +6,11 @@
 #include <map>
 #include <stdexcept>
 
-#include "common/scene/gbuffer.hpp"
 #include "common/core/passes.hpp"
-#include "gpu/gl/context.hpp"
+#include "common/scene/gbuffer.hpp"
 #include "gpu/core/pipeline.hpp"
 #include "gpu/core/stage.hpp"
+#include "gpu/gl/context.hpp"
 #include "reference/core/pipeline.hpp"
 
 namespace plumbago {
@@ -150,7 +150,7 @@ class PassParity {
  public:
   PassParity(const Scene& scene, const reference::ReferenceFrame& ref, const gpu::GpuPassDef& pass)
       : pass_(pass), rf_(scene, ref.pre, pass.stages), gf_(scene, rf_.pre, pass.stages) {
-    gf_.dump = true;  // every output, the skipped ones too, in the whole window
+    gf_.dump = true;                 // every output, the skipped ones too, in the whole window
     rf_.data = gf_.data = ref.data;  // CPU data (the window lines, the visible runs) as it is
     for (const std::string& buffer : fed_inputs(pass, rf_.config())) feed(ref, buffer);
     for (const std::string& stage : pass_.stages) reference::run_stage(rf_, stage);
@@ -195,8 +195,8 @@ class PassParity {
     auto it = masks_.find(stage);
     if (it == masks_.end())
       it = masks_
-               .emplace(stage,
-                        raster_masks(rf_.gbuffers.at(stage), gpu::download_gbuffer(gf_.get(GBufferSlot{stage.c_str()}))))
+               .emplace(stage, raster_masks(rf_.gbuffers.at(stage),
+                                            gpu::download_gbuffer(gf_.get(GBufferSlot{stage.c_str()}))))
                .first;
     return it->second;
   }
@@ -382,9 +382,14 @@ nlohmann::json parity_report(const std::vector<StageParity>& results) {
   nlohmann::json j{
       {"pass", all_pass}, {"renderer", gpu::Context::get().renderer()}, {"stages", nlohmann::json::array()}};
   for (const auto& s : results)
-    j["stages"].push_back({{"name", s.name}, {"pass", s.pass}, {"max_abs", s.diff.max_abs}, {"rmse", s.diff.rmse},
-                           {"over_tolerance", s.diff.over_tolerance}, {"tolerance", s.diff.tolerance},
-                           {"compared_pixels", s.diff.compared}, {"note", s.note}});
+    j["stages"].push_back({{"name", s.name},
+                           {"pass", s.pass},
+                           {"max_abs", s.diff.max_abs},
+                           {"rmse", s.diff.rmse},
+                           {"over_tolerance", s.diff.over_tolerance},
+                           {"tolerance", s.diff.tolerance},
+                           {"compared_pixels", s.diff.compared},
+                           {"note", s.note}});
   return j;
 }
 

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "common/util/image_compare.hpp"
 #include "common/scene/scene.hpp"
+#include "common/util/image_compare.hpp"
 
 namespace plumbago {
 

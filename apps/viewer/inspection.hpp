@@ -12,9 +12,7 @@ struct Inspection {
   ReferenceCheck check;
   int heatmap = -1;  // the result of the check shown as its heat map, or none
 
-  Image image(const Frame& frame) const {
-    return heatmap >= 0 ? check.heatmap(size_t(heatmap)) : stage.image(frame);
-  }
+  Image image(const Frame& frame) const { return heatmap >= 0 ? check.heatmap(size_t(heatmap)) : stage.image(frame); }
 };
 
 }  // namespace plumbago

@@ -41,7 +41,9 @@ bool param_widget(const ParamSpec& spec, const char* label, double& value) {
     case ParamType::Integer:
       changed = ImGui::SliderInt(label, &i, int(spec.min), int(spec.max), "%d", slider_flags(spec));
       break;
-    case ParamType::Choice: changed = combo(label, i, spec.choices); break;
+    case ParamType::Choice:
+      changed = combo(label, i, spec.choices);
+      break;
     case ParamType::Boolean:
       changed = ImGui::Checkbox(label, &b);
       i = b;
@@ -204,8 +206,9 @@ void Panels::stage_section(Session& session, Inspection& in) {
       if (ImGui::Selectable(name.c_str(), name == shown)) select_stage(in, name);
     ImGui::EndCombo();
   }
-  tooltip("Any intermediate buffer of this frame in place of the final image, as `render --dump-stages` writes its "
-          "PNG; the cursor over the frame shows the buffer's raw values");
+  tooltip(
+      "Any intermediate buffer of this frame in place of the final image, as `render --dump-stages` writes its "
+      "PNG; the cursor over the frame shows the buffer's raw values");
   session.keep_buffers(open || !in.stage.buffer().empty());  // an open list needs the names
   if (in.heatmap >= 0 && ImGui::Button("Back to the frame (the heat map is shown)")) in.heatmap = -1;
 }
@@ -217,8 +220,9 @@ void Panels::reference_section(const Session& session, Inspection& in) {
     in.heatmap = -1;
   }
   ImGui::EndDisabled();
-  tooltip("`plumbago compare` of this view: every stage on both backends, fed the same inputs, and whole frames; the "
-          "CPU reference computes in the background");
+  tooltip(
+      "`plumbago compare` of this view: every stage on both backends, fed the same inputs, and whole frames; the "
+      "CPU reference computes in the background");
   if (in.check.running()) ImGui::ProgressBar(float(in.check.progress()));
   if (!in.check.error().empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", in.check.error().c_str());
   results_table(in);

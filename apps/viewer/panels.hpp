@@ -19,7 +19,7 @@ class Panels {
   void draw(Session& session, Inspection& inspection, glm::ivec2 framebuffer, float width);
 
   Timing timing;
-  bool continuous = false;        // render every frame (for timing), not only after a change
+  bool continuous = false;         // render every frame (for timing), not only after a change
   bool screenshot_wanted = false;  // the viewer writes `screenshot_path` after drawing
   std::string screenshot_path = "plumbago-view.png";
 

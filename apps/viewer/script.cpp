@@ -67,8 +67,10 @@ json read_json(const std::string& path) {
 double param_value(const std::string& key, const json& value) {
   require(value.is_number() || value.is_string() || value.is_boolean(), key + ": a number, string or boolean");
   ParamSet scratch;  // the value as --set takes it: name, type and range checked
-  if (value.is_string()) scratch.set(key, value.get<std::string>());
-  else scratch.set(key, value.get<double>());
+  if (value.is_string())
+    scratch.set(key, value.get<std::string>());
+  else
+    scratch.set(key, value.get<double>());
   return scratch.value(key);
 }
 

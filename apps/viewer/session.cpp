@@ -4,8 +4,8 @@
 #include <optional>
 #include <utility>
 
-#include "common/sketchy/sketchy.hpp"
 #include "common/core/passes.hpp"
+#include "common/sketchy/sketchy.hpp"
 
 namespace plumbago {
 namespace {
@@ -125,7 +125,7 @@ bool Session::render() {
     return true;
   } catch (const std::exception& e) {
     if (gpu) renderer_.reset();  // in its own context, or (none to be had) left alone
-    stale_ = false;             // tried again after the next change
+    stale_ = false;              // tried again after the next change
     error_ = e.what();
     return false;
   }

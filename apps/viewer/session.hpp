@@ -13,9 +13,9 @@
 
 #include "apps/viewer/window.hpp"
 #include "common/core/frame.hpp"
+#include "common/core/preprocess.hpp"
 #include "common/scene/orbit.hpp"
 #include "common/scene/scene.hpp"
-#include "common/core/preprocess.hpp"
 #include "gpu/core/pipeline.hpp"
 
 namespace plumbago {
@@ -73,8 +73,8 @@ class Session {
   OrbitCamera orbit_;
   std::unique_ptr<gpu::Renderer> renderer_;
   std::shared_ptr<const Preprocessed> preprocessed_;
-  std::vector<std::string> preprocessed_passes_;  // the passes preprocessed_ was made for
-  long generation_ = 0;                            // counts the drops of preprocessed_
+  std::vector<std::string> preprocessed_passes_;              // the passes preprocessed_ was made for
+  long generation_ = 0;                                       // counts the drops of preprocessed_
   std::future<std::shared_ptr<const Preprocessed>> pending_;  // made in the worker
   std::vector<std::string> pending_passes_;
   long pending_generation_ = 0;

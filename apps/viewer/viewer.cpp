@@ -24,8 +24,8 @@
 namespace plumbago {
 namespace {
 
-constexpr float kPanelWidth = 440;      // pixels right of the frame
-constexpr int kPanelHeight = 720;       // the window's least height with the panel
+constexpr float kPanelWidth = 440;  // pixels right of the frame
+constexpr int kPanelHeight = 720;   // the window's least height with the panel
 constexpr float kDegreesPerPixel = 0.4f;
 constexpr float kZoomPerNotch = 0.9f;
 
@@ -155,7 +155,7 @@ class Viewer {
       session_.replace(open_source(source, session_.scene()), keep_camera);
       watch_.watch(source);
       ++reloads_;
-    } catch (const std::exception& e) {  // a file half written, a mesh that is no mesh
+    } catch (const std::exception& e) {         // a file half written, a mesh that is no mesh
       session_.fail(source + ": " + e.what());  // the last frame stays; the next edit may fix it
     }
   }

@@ -69,8 +69,10 @@ Window::~Window() {
 bool Window::should_close() const { return glfwWindowShouldClose(window_); }
 
 void Window::begin_frame(double timeout_s) {
-  if (timeout_s > 0) glfwWaitEventsTimeout(timeout_s);
-  else glfwPollEvents();
+  if (timeout_s > 0)
+    glfwWaitEventsTimeout(timeout_s);
+  else
+    glfwPollEvents();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();

@@ -17,9 +17,9 @@ struct PassTime {
 };
 
 struct Frame {
-  Image color;                          // RGB, row 0 = bottom
-  std::vector<PassTime> ran;            // every pass that ran, in order
-  std::map<std::string, Image> buffers; // intermediate buffers when asked for
+  Image color;                           // RGB, row 0 = bottom
+  std::vector<PassTime> ran;             // every pass that ran, in order
+  std::map<std::string, Image> buffers;  // intermediate buffers when asked for
   // What the frame drew, by name: the visible strokes per line kind ("strokes.crease", ...)
   // and the hatching groups' scale and level (common/strokes/stroke.hpp stroke_counts); empty
   // without strokes.

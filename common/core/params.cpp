@@ -54,11 +54,14 @@ std::string number_text(double v) {
 std::string range_text(const ParamSpec& s) {
   std::ostringstream os;
   switch (s.type) {
-    case ParamType::Boolean: return "true or false";
+    case ParamType::Boolean:
+      return "true or false";
     case ParamType::Choice:
       for (size_t i = 0; i < s.choices.size(); ++i) os << (i ? "|" : "") << s.choices[i];
       return os.str();
-    default: os << "[" << s.min << ", " << s.max << "]"; return os.str();
+    default:
+      os << "[" << s.min << ", " << s.max << "]";
+      return os.str();
   }
 }
 
@@ -71,8 +74,7 @@ double parse_number(const ParamSpec& spec, const std::string& text) {
     used = 0;
   }
   if (used != text.size() || text.empty() || !std::isfinite(v))
-    throw ParamError("parameter '" + spec.key + "': '" + text + "' is not a number (valid: " +
-                     range_text(spec) + ")");
+    throw ParamError("parameter '" + spec.key + "': '" + text + "' is not a number (valid: " + range_text(spec) + ")");
   return v;
 }
 
@@ -85,8 +87,7 @@ double parse_value(const ParamSpec& spec, const std::string& text) {
   if (spec.type == ParamType::Choice) {
     for (size_t i = 0; i < spec.choices.size(); ++i)
       if (spec.choices[i] == text) return double(i);
-    throw ParamError("parameter '" + spec.key + "': '" + text + "' is not one of " +
-                     range_text(spec));
+    throw ParamError("parameter '" + spec.key + "': '" + text + "' is not one of " + range_text(spec));
   }
   return parse_number(spec, text);
 }
@@ -114,19 +115,16 @@ void ParamSet::set(const std::string& key, double v) {
   const ParamSpec& spec = param_spec(key);
   bool integral = spec.type != ParamType::Real;
   if (!std::isfinite(v) || v < spec.min || v > spec.max || (integral && v != std::floor(v)))
-    throw ParamError("parameter '" + key + "': " + number_text(v) + " is out of range (valid: " +
-                     range_text(spec) + ")");
+    throw ParamError("parameter '" + key + "': " + number_text(v) + " is out of range (valid: " + range_text(spec) +
+                     ")");
   overrides_[key] = v;
 }
 
-void ParamSet::set(const std::string& key, const std::string& text) {
-  set(key, parse_value(param_spec(key), text));
-}
+void ParamSet::set(const std::string& key, const std::string& text) { set(key, parse_value(param_spec(key), text)); }
 
 void ParamSet::set_assignment(const std::string& assignment) {
   auto eq = assignment.find('=');
-  if (eq == std::string::npos || eq == 0)
-    throw ParamError("'" + assignment + "' is not of the form stage.name=value");
+  if (eq == std::string::npos || eq == 0) throw ParamError("'" + assignment + "' is not of the form stage.name=value");
   set(assignment.substr(0, eq), assignment.substr(eq + 1));
 }
 

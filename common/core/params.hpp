@@ -63,8 +63,8 @@ class SpecCollector {
   }
 
  private:
-  void add(const char* name, ParamType t, double def, double lo, double hi,
-           std::vector<std::string> choices, const char* doc);
+  void add(const char* name, ParamType t, double def, double lo, double hi, std::vector<std::string> choices,
+           const char* doc);
   std::string stage_;
   std::vector<ParamSpec>& out_;
 };

@@ -38,7 +38,8 @@ void add_with_inputs(const StageDesc& stage, const StageConfig& config, std::set
 
 std::vector<std::string> passes_for(const std::vector<std::string>& effects, const ParamSet& params) {
   for (const auto& effect : effects)
-    if (!is_effect(effect)) throw std::invalid_argument("unknown effect '" + effect + "' (known: " + effect_names() + ")");
+    if (!is_effect(effect))
+      throw std::invalid_argument("unknown effect '" + effect + "' (known: " + effect_names() + ")");
   StageConfig config{params, effects};
   std::set<std::string> chosen;
   for (const StageDesc& stage : stage_table())

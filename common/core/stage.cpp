@@ -49,8 +49,10 @@ void check(const std::vector<StageDesc>& table) {
       std::string producer = in.buffer().substr(0, dot);
       if (dot == std::string::npos || !seen.count(producer))
         fail("reads '" + in.buffer() + "', which no earlier stage declares");
-      const StageDesc& from = *std::find_if(table.begin(), table.end(), [&](const StageDesc& d) { return d.name == producer; });
-      if (!output_in(from, in.buffer().substr(dot + 1))) fail("reads '" + in.buffer() + "', which '" + producer + "' does not write");
+      const StageDesc& from =
+          *std::find_if(table.begin(), table.end(), [&](const StageDesc& d) { return d.name == producer; });
+      if (!output_in(from, in.buffer().substr(dot + 1)))
+        fail("reads '" + in.buffer() + "', which '" + producer + "' does not write");
     }
     for (const Output& o : s.outputs)
       if (o.producer() != s.name) fail("declares '" + o.buffer() + "', another stage's handle");

@@ -153,11 +153,11 @@ struct EffectDef {
 struct StageDesc {
   std::string name;  // the stem: common/<subsystem>/<name>.hpp, reference/<subsystem>/<name>.cpp, ...
   StageKind kind = StageKind::Frame;
-  std::string doc;  // what it computes, then its paper, section and equation in parentheses
+  std::string doc;                  // what it computes, then its paper, section and equation in parentheses
   std::vector<std::string> params;  // the prefixes of the parameter structs it reads
   std::vector<Input> inputs;
   std::vector<Output> outputs;
-  std::vector<std::string> effects;  // effects that ask for it (what it reads runs too)
+  std::vector<std::string> effects;         // effects that ask for it (what it reads runs too)
   std::vector<EffectDef> declared_effects;  // the effects it introduces
   // Preprocessing only (it reads only the scene, made once on the CPU for both backends):
   // the implementation, which puts its outputs' Slots into Preprocessed.
@@ -198,9 +198,9 @@ namespace when {
 bool effect_contours(const StageConfig& c);
 bool effect_interior(const StageConfig& c);  // interior or crosshatch
 bool effect_paper(const StageConfig& c);
-bool pencil_effects(const StageConfig& c);   // any effect of the pencil pipeline
+bool pencil_effects(const StageConfig& c);  // any effect of the pencil pipeline
 bool effect_sketchy(const StageConfig& c);
-bool ordinary_drawn(const StageConfig& c);   // the G-buffer's objects are drawn (pencil or strokes)
+bool ordinary_drawn(const StageConfig& c);  // the G-buffer's objects are drawn (pencil or strokes)
 bool effect_basecoat(const StageConfig& c);
 }  // namespace when
 

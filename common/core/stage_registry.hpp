@@ -5,25 +5,25 @@
 // (common/core/stage.hpp).
 #pragma once
 
-#include "common/strokes/basecoat.hpp"
+#include "common/curvature/curvature.hpp"
 #include "common/pencil/compose.hpp"
 #include "common/pencil/contour_light.hpp"
 #include "common/pencil/contour_texture.hpp"
-#include "common/curvature/curvature.hpp"
 #include "common/pencil/distortion.hpp"
 #include "common/pencil/edge_detect.hpp"
-#include "common/scene/gbuffer.hpp"
-#include "common/strokes/id_image.hpp"
 #include "common/pencil/interior_intensity.hpp"
 #include "common/pencil/multi_contour.hpp"
 #include "common/pencil/paper.hpp"
 #include "common/pencil/pencil_interior.hpp"
 #include "common/pencil/pencil_textures.hpp"
+#include "common/scene/gbuffer.hpp"
 #include "common/sketchy/sketchy_composite.hpp"
 #include "common/sketchy/sketchy_enlarged.hpp"
 #include "common/sketchy/sketchy_gbuffer.hpp"
 #include "common/sketchy/sketchy_maps.hpp"
 #include "common/sketchy/sketchy_noise.hpp"
+#include "common/strokes/basecoat.hpp"
+#include "common/strokes/id_image.hpp"
 #include "common/strokes/stroke.hpp"
 #include "common/strokes/stroke_paper.hpp"
 #include "common/strokes/visibility.hpp"
@@ -32,30 +32,13 @@ namespace plumbago {
 
 using AllStages = TypeList<
     // preprocessing (Lee et al. 2006, §4.2, §5), made once per scene and parameters
-    DistortionStage,
-    PencilTexturesStage,
-    ContourTextureStage,
-    PaperStage,
-    SketchyNoiseStage,
-    CurvatureStage,
+    DistortionStage, PencilTexturesStage, ContourTextureStage, PaperStage, SketchyNoiseStage, CurvatureStage,
     // the pencil pipeline (Lee et al. 2006)
-    GBufferStage,
-    EdgeDetectStage,
-    ContourLightStage,
-    InteriorIntensityStage,
-    PencilInteriorStage,
-    MultiContourStage,
+    GBufferStage, EdgeDetectStage, ContourLightStage, InteriorIntensityStage, PencilInteriorStage, MultiContourStage,
     ComposeStage,
     // sketchy drawing (Nienhaus & Döllner 2004)
-    SketchyGBufferStage,
-    SketchyEnlargedStage,
-    SketchyMapsStage,
-    SketchyCompositeStage,
+    SketchyGBufferStage, SketchyEnlargedStage, SketchyMapsStage, SketchyCompositeStage,
     // stroke-based rendering (Kalnins et al. 2002), over what the others drew
-    BaseCoatStage,
-    StrokePaperStage,
-    IdImageStage,
-    VisibilityStage,
-    StrokeStage>;
+    BaseCoatStage, StrokePaperStage, IdImageStage, VisibilityStage, StrokeStage>;
 
 }  // namespace plumbago

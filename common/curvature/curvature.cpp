@@ -4,9 +4,9 @@
 #include <array>
 #include <cmath>
 
+#include "common/core/preprocess.hpp"
 #include "common/curvature/curvature_internal.hpp"
 #include "common/curvature/curvature_memory.hpp"
-#include "common/core/preprocess.hpp"
 
 namespace plumbago {
 namespace curvature {
@@ -116,9 +116,12 @@ CurvatureMethod resolved_method(const Mesh& mesh, const CurvatureParams& p) {
 
 const char* method_name(CurvatureMethod method) {
   switch (method) {
-    case CurvatureMethod::Auto: return "auto";
-    case CurvatureMethod::Tensor: return "tensor";
-    case CurvatureMethod::Jet: return "jet";
+    case CurvatureMethod::Auto:
+      return "auto";
+    case CurvatureMethod::Tensor:
+      return "tensor";
+    case CurvatureMethod::Jet:
+      return "jet";
   }
   return "?";
 }

@@ -61,8 +61,8 @@
 #include <string>
 #include <vector>
 
-#include "common/mesh/mesh.hpp"
 #include "common/core/stage.hpp"
+#include "common/mesh/mesh.hpp"
 
 namespace plumbago {
 
@@ -163,7 +163,9 @@ struct CurvatureStage {
             .kind = StageKind::Preprocessing,
             .doc = "principal curvature per vertex (Lee et al. 2006, §5.3; Alliez et al. 2003)",
             .params = {"curvature"},
-            .outputs = {{.handle = kCurvature, .channels = 8, .texel = Texel::Host,
+            .outputs = {{.handle = kCurvature,
+                         .channels = 8,
+                         .texel = Texel::Host,
                          .doc = "k_min, k_max and their directions, per vertex of each object"}},
             .preprocess = make};
   }

@@ -88,9 +88,9 @@ struct Scratch {
 // its edge, and each side knows the face across it, so the ball never reads an edge.
 struct BallFace {
   glm::vec3 corner[3];
-  int32_t neighbor[3];             // the face across side k (corner k to k + 1), -1 if none
-  double beta_per_length[3];       // of side k's edge
-  glm::dvec3 twice_area_normal;    // N
+  int32_t neighbor[3];           // the face across side k (corner k to k + 1), -1 if none
+  double beta_per_length[3];     // of side k's edge
+  glm::dvec3 twice_area_normal;  // N
   double N_length;
 };
 
@@ -136,8 +136,7 @@ BallSums one_ring_sums(uint32_t v, const Surface& g) {
       const auto& edge = g.topo.edges[e];
       const int32_t across = edge.face[0] == int32_t(f) ? edge.face[1] : edge.face[0];
       const bool at_v = t[k] == v || t[(k + 1) % 3] == v;
-      if (across >= 0 && uint32_t(across) < f && (at_v || has_corner(g.mesh.triangles[uint32_t(across)], v)))
-        continue;
+      if (across >= 0 && uint32_t(across) < f && (at_v || has_corner(g.mesh.triangles[uint32_t(across)], v))) continue;
       sums.tensor.add((at_v ? 1.0 : 0.5) * g.beta_per_length[e], tri.side(k));
     }
   }
@@ -173,7 +172,8 @@ double area_in_ball(const BallFace& face, const glm::dvec3 (&p)[3], const glm::d
 // The face at queue position i, clipped to the ball (c, r), exactly or approximately: its
 // area, and the sides it counts (see Scratch::counts_side) that reach into the ball; the
 // faces across those sides are queued.
-void add_face_in_ball(uint32_t i, const glm::dvec3& c, double r, bool exact, const Surface& g, Scratch& s, BallSums& sums) {
+void add_face_in_ball(uint32_t i, const glm::dvec3& c, double r, bool exact, const Surface& g, Scratch& s,
+                      BallSums& sums) {
   const BallFace& face = g.faces[s.queue[i]];
   const glm::dvec3 p[3] = {face.corner[0], face.corner[1], face.corner[2]};
   bool inside[3];
@@ -214,7 +214,7 @@ double ring_radius(uint32_t v, const Mesh& mesh, const MeshTopology& topo) {
 }  // namespace
 
 void for_each_vertex_sums(const Mesh& mesh, const MeshTopology& topo, const CurvatureParams& p, Progress& progress,
-                           const std::function<void(uint32_t, const BallSums&)>& f) {
+                          const std::function<void(uint32_t, const BallSums&)>& f) {
   const bool ball = p.radius > 0;
   Surface g{mesh, topo, edge_beta_per_length(mesh, topo), {}};
   if (ball) fill_ball_records(g);

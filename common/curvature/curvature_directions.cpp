@@ -146,7 +146,6 @@ void propagate_fronts(const MeshTopology& topo, Curvature& c, std::vector<uint8_
   }
 }
 
-
 // The mean line in v's tangent plane of its own d_min, its neighbors' (as they are now)
 // and, with weight `hold` x (neighbors + 1), its estimated direction: the main axis of
 // sum w wᵀ, signed like its own. False where they cancel.

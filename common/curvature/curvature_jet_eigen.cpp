@@ -52,7 +52,8 @@ Eigen::VectorXd monomials(const Eigen::Vector3d& q, int degree, double scale) {
   Eigen::VectorXd row((degree + 1) * (degree + 2) / 2);
   for (int k = 0; k <= degree; ++k)
     for (int i = 0; i <= k; ++i)
-      row(k * (k + 1) / 2 + i) = std::pow(q.x(), k - i) * std::pow(q.y(), i) / (factorial(i) * factorial(k - i) * std::pow(scale, k));
+      row(k * (k + 1) / 2 + i) =
+          std::pow(q.x(), k - i) * std::pow(q.y(), i) / (factorial(i) * factorial(k - i) * std::pow(scale, k));
   return row;
 }
 
@@ -77,7 +78,8 @@ Eigen::VectorXd least_squares(const std::vector<Eigen::Vector3d>& local, int deg
   }
   Eigen::MatrixXd m(local.size(), unknowns);
   Eigen::VectorXd z(local.size());
-  for (size_t r = 0; r < local.size(); ++r) m.row(Eigen::Index(r)) = monomials(local[r], degree, scale), z(Eigen::Index(r)) = local[r].z();
+  for (size_t r = 0; r < local.size(); ++r)
+    m.row(Eigen::Index(r)) = monomials(local[r], degree, scale), z(Eigen::Index(r)) = local[r].z();
   return Eigen::JacobiSVD<Eigen::MatrixXd>(m, Eigen::ComputeThinU | Eigen::ComputeThinV).solve(z);
 }
 
@@ -132,7 +134,8 @@ bool jet_fit_finite(const JetFit& f) {
 bool eigen_fit_vertex(const std::vector<glm::dvec3>& points, int degree, const glm::vec3& mesh_normal, JetFit& out) {
   FittingFrame frame = principal_frame(points);
   std::vector<Eigen::Vector3d> local;
-  for (const glm::dvec3& p : points) local.push_back(frame.axes * Eigen::Vector3d(p.x - points[0].x, p.y - points[0].y, p.z - points[0].z));
+  for (const glm::dvec3& p : points)
+    local.push_back(frame.axes * Eigen::Vector3d(p.x - points[0].x, p.y - points[0].y, p.z - points[0].z));
   Eigen::VectorXd a;
   if (!fit_coefficients(local, degree, a)) return false;
   out = monge_form(frame, a);

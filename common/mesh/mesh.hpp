@@ -9,10 +9,10 @@
 namespace plumbago {
 
 struct Mesh {
-  std::string name;                  // file path or "procedural:<kind>"
-  std::vector<glm::vec3> positions;  // welded: no two vertices share a position
-  std::vector<glm::vec3> normals;    // unit, area-weighted average of face normals
-  std::vector<glm::uvec3> triangles; // counter-clockwise seen from outside
+  std::string name;                   // file path or "procedural:<kind>"
+  std::vector<glm::vec3> positions;   // welded: no two vertices share a position
+  std::vector<glm::vec3> normals;     // unit, area-weighted average of face normals
+  std::vector<glm::uvec3> triangles;  // counter-clockwise seen from outside
 
   glm::vec3 bbox_min() const;
   glm::vec3 bbox_max() const;

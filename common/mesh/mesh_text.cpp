@@ -3,8 +3,8 @@
 #include <filesystem>
 #include <sstream>
 
-#include "common/util/memory_budget.hpp"
 #include "common/mesh/mesh_formats.hpp"
+#include "common/util/memory_budget.hpp"
 
 namespace plumbago::mesh_text {
 

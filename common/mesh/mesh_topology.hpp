@@ -36,8 +36,8 @@ struct MeshTopology {
  private:
   friend MeshTopology vertex_topology(const Mesh& mesh);
   friend MeshTopology build_topology(const Mesh& mesh);
-  std::vector<uint32_t> face_start_, vertex_faces_;    // CSR: faces around each vertex, sorted
-  std::vector<uint32_t> neighbor_start_, neighbors_;   // CSR: vertices sharing an edge, sorted
+  std::vector<uint32_t> face_start_, vertex_faces_;   // CSR: faces around each vertex, sorted
+  std::vector<uint32_t> neighbor_start_, neighbors_;  // CSR: vertices sharing an edge, sorted
 };
 
 // Refuses (MeshError) only what validate_mesh refuses; any triangle soup is accepted.

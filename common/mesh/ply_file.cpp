@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <bit>
-#include <charconv>
-#include <cfloat>
-#include <cstdint>
 #include <cctype>
+#include <cfloat>
+#include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -40,10 +40,10 @@ struct PlyHeader {
 
 // Sizes of the PLY scalar types, under both their old and their sized names.
 const std::map<std::string, size_t>& type_sizes() {
-  static const std::map<std::string, size_t> sizes = {
-      {"char", 1},  {"uchar", 1},  {"int8", 1},  {"uint8", 1},  {"short", 2},   {"ushort", 2},
-      {"int16", 2}, {"uint16", 2}, {"int", 4},   {"uint", 4},   {"int32", 4},   {"uint32", 4},
-      {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
+  static const std::map<std::string, size_t> sizes = {{"char", 1},  {"uchar", 1},   {"int8", 1},   {"uint8", 1},
+                                                      {"short", 2}, {"ushort", 2},  {"int16", 2},  {"uint16", 2},
+                                                      {"int", 4},   {"uint", 4},    {"int32", 4},  {"uint32", 4},
+                                                      {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
   return sizes;
 }
 
@@ -259,7 +259,10 @@ PlyHeader read_header(std::istream& in, const std::string& path) {
 class PlyValues {
  public:
   PlyValues(std::istream& in, const PlyHeader& h, const std::string& path)
-      : in_(in), path_(path), ascii_(h.format == "ascii"), big_endian_(h.format == "binary_big_endian"),
+      : in_(in),
+        path_(path),
+        ascii_(h.format == "ascii"),
+        big_endian_(h.format == "binary_big_endian"),
         line_(h.lines + 1) {}
 
   double next(const std::string& type) { return ascii_ ? next_word() : next_binary(type); }

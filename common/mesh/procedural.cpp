@@ -45,11 +45,11 @@ Mesh plane(float res) {
 Mesh sphere(float res) {
   const float t = (1.0f + std::sqrt(5.0f)) / 2;
   Mesh m;
-  m.positions = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                 {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-  m.triangles = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                 {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
-                 {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+  m.positions = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
+                 {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
+  m.triangles = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                 {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                 {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
   int levels = std::clamp(int(std::lround(4 + std::log2(std::max(res, 0.0625f)))), 0, 7);
   for (int l = 0; l < levels; ++l) {
     std::map<std::pair<unsigned, unsigned>, unsigned> midpoint;
@@ -229,8 +229,8 @@ using Maker = Mesh (*)(float resolution);
 
 const std::vector<std::pair<std::string, Maker>>& makers() {
   static const std::vector<std::pair<std::string, Maker>> table = {
-      {"torus", torus}, {"sphere", sphere}, {"cad", cad_part}, {"plane", plane}, {"cylinder", cylinder}, {"cube", cube},
-      {"storefront", storefront}, {"cone", cone}};
+      {"torus", torus},       {"sphere", sphere}, {"cad", cad_part},          {"plane", plane},
+      {"cylinder", cylinder}, {"cube", cube},     {"storefront", storefront}, {"cone", cone}};
   return table;
 }
 

@@ -124,8 +124,9 @@ Mesh read_stl(const std::string& path) {
                       std::to_string(n) + " = " + std::to_string(kBinaryHeader + kBinaryFacet * uint64_t(n)) +
                       " bytes, the file has " + std::to_string(size) + " (truncated, or not an STL file)");
   }
-  if (!ascii) throw MeshError(path + ": not an STL file (no 'solid' line, and " + std::to_string(size) +
-                              " bytes are too few for a binary STL's 84-byte header)");
+  if (!ascii)
+    throw MeshError(path + ": not an STL file (no 'solid' line, and " + std::to_string(size) +
+                    " bytes are too few for a binary STL's 84-byte header)");
   return AsciiStlReader(path, in).read();
 }
 

@@ -7,8 +7,8 @@
 
 #include "common/core/stage.hpp"
 #include "common/pencil/multi_contour.hpp"
-#include "common/pencil/pencil_interior.hpp"
 #include "common/pencil/paper.hpp"
+#include "common/pencil/pencil_interior.hpp"
 
 namespace plumbago {
 
@@ -37,8 +37,12 @@ struct ComposeStage {
                        {.handle = kPaperColor, .used = when::effect_paper},
                        // the GPU: the contours' reach bounds the pixels drawn
                        {.handle = kOffsetGrids, .used = when::effect_contours}},
-            .outputs = {{.handle = kComposeColor, .channels = 3, .texel = Texel::Unorm8, .doc = "RGB",
-                         .tolerance = tolerance::kByte, .tolerance_why = "fed the same D_c, D_i and paper color; 8-bit target",
+            .outputs = {{.handle = kComposeColor,
+                         .channels = 3,
+                         .texel = Texel::Unorm8,
+                         .doc = "RGB",
+                         .tolerance = tolerance::kByte,
+                         .tolerance_why = "fed the same D_c, D_i and paper color; 8-bit target",
                          .frame_color = true}},
             .effects = {"contours", "interior", "crosshatch", "paper"},
             .declared_effects = {{"contours", "image-space contours (Lee 2006 §4)"},

@@ -30,7 +30,9 @@ struct ContourLightStage {
             .doc = "lit contours drawn lighter (Lee et al. 2006, §4.1, Eq. 1)",
             .params = {"contour_light"},
             .inputs = {{.handle = kContourDarkness}, {.handle = kGBuffer.normal}},
-            .outputs = {{.handle = kLitContourDarkness, .doc = "d' = d l_c", .tolerance = tolerance::kFloat,
+            .outputs = {{.handle = kLitContourDarkness,
+                         .doc = "d' = d l_c",
+                         .tolerance = tolerance::kFloat,
                          .tolerance_why = "fed the same d and G-buffer; float target"}}};
   }
 };

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
+#include "common/core/preprocess.hpp"
 #include "common/pencil/multi_contour.hpp"
 #include "common/pencil/pencil_textures.hpp"
-#include "common/core/preprocess.hpp"
 
 namespace plumbago {
 
@@ -15,8 +15,8 @@ int ContourTextureStage::layer(const ParamSet& params) {
 void ContourTextureStage::make(const Scene& scene, Preprocessed& out) {
   int l = layer(scene.params);
   const std::vector<Image>* stack = out.get(maybe(kPencilStack));
-  out.put(kContourTexture, stack ? (*stack)[size_t(l)]
-                                 : pencil_layers(scene.params.get<PencilTexturesParams>(), scene.seed, l).back());
+  out.put(kContourTexture,
+          stack ? (*stack)[size_t(l)] : pencil_layers(scene.params.get<PencilTexturesParams>(), scene.seed, l).back());
 }
 
 }  // namespace plumbago

@@ -10,9 +10,9 @@
 
 #include <glm/glm.hpp>
 
-#include "common/util/image.hpp"
 #include "common/pencil/multi_contour.hpp"
 #include "common/scene/scene.hpp"
+#include "common/util/image.hpp"
 
 namespace plumbago {
 
@@ -35,9 +35,13 @@ struct DistortionStage {
             .kind = StageKind::Preprocessing,
             .doc = "offset grids of the contour copies (Lee et al. 2006, §4.2, Eq. 2)",
             .params = {"contour"},
-            .outputs = {{.handle = kOffsetGrids, .channels = 2, .texel = Texel::Host,
+            .outputs = {{.handle = kOffsetGrids,
+                         .channels = 2,
+                         .texel = Texel::Host,
                          .doc = "one RG grid of pixel offsets per contour copy"},
-                        {.handle = kTextureShifts, .channels = 2, .texel = Texel::Host,
+                        {.handle = kTextureShifts,
+                         .channels = 2,
+                         .texel = Texel::Host,
                          .doc = "o_k: the shift of copy k's contour texture, texels"}},
             .preprocess = make};
   }

@@ -45,7 +45,9 @@ inline constexpr Buffer kContourDarkness{"edge_detect.contour_darkness"};  // d
 
 struct EdgeDetectStage {
   using Params = TypeList<EdgeDetectParams>;
-  static bool face_normals(const StageConfig& c) { return c.params.get<EdgeDetectParams>().normals == EdgeNormals::Face; }
+  static bool face_normals(const StageConfig& c) {
+    return c.params.get<EdgeDetectParams>().normals == EdgeNormals::Face;
+  }
   static bool smooth_normals(const StageConfig& c) { return !face_normals(c); }
   static StageDesc describe() {
     return {.name = "edge_detect",
@@ -55,7 +57,9 @@ struct EdgeDetectStage {
             .inputs = {{.handle = kGBuffer.normal, .used = smooth_normals},
                        {.handle = kGBuffer.face_normal, .used = face_normals},
                        {.handle = kGBuffer.depth}},
-            .outputs = {{.handle = kContourDarkness, .doc = "d = 1 - I_n I_z", .tolerance = tolerance::kFloat,
+            .outputs = {{.handle = kContourDarkness,
+                         .doc = "d = 1 - I_n I_z",
+                         .tolerance = tolerance::kFloat,
                          .tolerance_why = "fed the same G-buffer; float target"}}};
   }
 };

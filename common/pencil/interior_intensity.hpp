@@ -6,9 +6,9 @@
 #include <glm/glm.hpp>
 #include <vector>
 
-#include "common/scene/scene.hpp"
 #include "common/core/stage.hpp"
 #include "common/scene/gbuffer.hpp"
+#include "common/scene/scene.hpp"
 
 namespace plumbago {
 
@@ -35,12 +35,14 @@ struct InteriorParams {
              "only the texture of the corner with the largest weight (the ablation of Lee Fig. 6)");
     v.boolean(brightness_sqrt, "brightness_sqrt", true,
               "brightness adjustment I' = sqrt(I) (Lee §5.2; Pacheco turns it off)");
-    v.real(texture_scale, "texture_scale", 1.0, 0.05, 64.0, "window pixels per pencil-texture texel (Lee et al. 2006, "
-                                                            "§5.3)");
+    v.real(texture_scale, "texture_scale", 1.0, 0.05, 64.0,
+           "window pixels per pencil-texture texel (Lee et al. 2006, "
+           "§5.3)");
     v.real(min_projected, "min_projected", 0.05, 0.0, 1.0,
            "a projected curvature direction shorter than this (relative) is not trusted (Lee et al. 2006, §5.3)");
-    v.real(crosshatch_below, "crosshatch_below", 0.45, 0.0, 1.0, "T: cross hatching where I' < T (Lee et al. 2006, "
-                                                                 "§5.4, Fig. 7)");
+    v.real(crosshatch_below, "crosshatch_below", 0.45, 0.0, 1.0,
+           "T: cross hatching where I' < T (Lee et al. 2006, "
+           "§5.4, Fig. 7)");
     v.real(crosshatch_band, "crosshatch_band", 0.1, 0.0, 1.0, "width of the smoothstep that fades hatching in");
   }
 };
@@ -56,16 +58,21 @@ inline constexpr Buffer kIntensity{"interior_intensity.intensity"};  // I'
 
 struct InteriorIntensityStage {
   using Params = TypeList<InteriorParams>;
-  static bool gouraud(const StageConfig& c) { return c.params.get<InteriorParams>().shading == InteriorShading::Gouraud; }
+  static bool gouraud(const StageConfig& c) {
+    return c.params.get<InteriorParams>().shading == InteriorShading::Gouraud;
+  }
   static bool phong(const StageConfig& c) { return !gouraud(c); }
   static StageDesc describe() {
     return {.name = "interior_intensity",
             .kind = StageKind::Frame,
             .doc = "interior intensity and brightness (Lee et al. 2006, §3, §5.2)",
             .params = {"interior"},
-            .inputs = {{.handle = kGBuffer.ids}, {.handle = kGBuffer.gouraud, .used = gouraud},
+            .inputs = {{.handle = kGBuffer.ids},
+                       {.handle = kGBuffer.gouraud, .used = gouraud},
                        {.handle = kGBuffer.normal, .used = phong}},
-            .outputs = {{.handle = kIntensity, .doc = "I'; 1 on the background", .tolerance = tolerance::kFloat,
+            .outputs = {{.handle = kIntensity,
+                         .doc = "I'; 1 on the background",
+                         .tolerance = tolerance::kFloat,
                          .tolerance_why = "fed the same G-buffer; float target"}}};
   }
 };

@@ -7,11 +7,11 @@
 
 #include <vector>
 
-#include "common/util/image.hpp"
-#include "common/scene/scene.hpp"
 #include "common/core/stage.hpp"
 #include "common/pencil/contour_light.hpp"
 #include "common/pencil/contour_texture.hpp"
+#include "common/scene/scene.hpp"
+#include "common/util/image.hpp"
 
 namespace plumbago {
 
@@ -43,7 +43,7 @@ PixelRect contour_rect(const Scene& scene, const std::vector<Image>& grids);
 // What the distortion preprocessing (common/pencil/distortion.hpp) makes of ContourParams.
 inline constexpr Slot<std::vector<Image>> kOffsetGrids{"distortion.offset_grids"};
 inline constexpr Slot<std::vector<glm::vec2>> kTextureShifts{"distortion.texture_shifts"};  // o_k
-inline constexpr Buffer kCopiesDarkness{"multi_contour.contour_darkness"};  // D_c
+inline constexpr Buffer kCopiesDarkness{"multi_contour.contour_darkness"};                  // D_c
 
 struct MultiContourStage {
   using Params = TypeList<ContourParams>;
@@ -52,9 +52,13 @@ struct MultiContourStage {
             .kind = StageKind::Frame,
             .doc = "contour copies on distorted planes with the contour texture (Lee et al. 2006, §4.2-4.3)",
             .params = {"contour"},
-            .inputs = {{.handle = kLitContourDarkness}, {.handle = kOffsetGrids}, {.handle = kTextureShifts},
+            .inputs = {{.handle = kLitContourDarkness},
+                       {.handle = kOffsetGrids},
+                       {.handle = kTextureShifts},
                        {.handle = kContourTexture}},
-            .outputs = {{.handle = kCopiesDarkness, .doc = "D_c of all copies", .tolerance = tolerance::kSampled,
+            .outputs = {{.handle = kCopiesDarkness,
+                         .doc = "D_c of all copies",
+                         .tolerance = tolerance::kSampled,
                          .tolerance_why = "fed the same d', offset grids and contour texture; bilinear lookups"}}};
   }
 };

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <glm/glm.hpp>
 
-#include "common/util/noise.hpp"
 #include "common/core/preprocess.hpp"
+#include "common/util/noise.hpp"
 
 namespace plumbago {
 

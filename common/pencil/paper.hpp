@@ -6,8 +6,8 @@
 
 #include <cstdint>
 
-#include "common/util/image.hpp"
 #include "common/core/stage.hpp"
+#include "common/util/image.hpp"
 
 namespace plumbago {
 

@@ -8,5 +8,4 @@ glm::vec3 blend_weights(glm::vec3 w, const InteriorParams& p) {
   return w.y >= w.z ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1);
 }
 
-
 }  // namespace plumbago

@@ -15,10 +15,10 @@
 #include <string>
 #include <vector>
 
-#include "common/pencil/interior_intensity.hpp"
 #include "common/core/stage.hpp"
-#include "common/pencil/pencil_textures.hpp"
+#include "common/pencil/interior_intensity.hpp"
 #include "common/pencil/paper.hpp"
+#include "common/pencil/pencil_textures.hpp"
 #include "common/scene/gbuffer.hpp"
 
 namespace plumbago {
@@ -45,13 +45,20 @@ struct PencilInteriorStage {
   static StageDesc describe() {
     return {.name = "pencil_interior",
             .kind = StageKind::Frame,
-            .doc = "tone to layer, rotated pencil textures, 3-way blending, cross hatching, paper effect "
-                   "(Lee et al. 2006, §5.1-5.5)",
+            .doc =
+                "tone to layer, rotated pencil textures, 3-way blending, cross hatching, paper effect "
+                "(Lee et al. 2006, §5.1-5.5)",
             .params = {"interior", "paper"},
-            .inputs = {{.handle = kIntensity}, {.handle = kGBuffer.ids}, {.handle = kGBuffer.bary},
-                       {.handle = kGBuffer.theta_min}, {.handle = kGBuffer.theta_max}, {.handle = kPencilStack},
+            .inputs = {{.handle = kIntensity},
+                       {.handle = kGBuffer.ids},
+                       {.handle = kGBuffer.bary},
+                       {.handle = kGBuffer.theta_min},
+                       {.handle = kGBuffer.theta_max},
+                       {.handle = kPencilStack},
                        {.handle = kPaperNormal, .used = when::effect_paper}},
-            .outputs = {{.handle = kInteriorDarkness, .doc = "D_i; 0 on the background", .tolerance = tolerance::kSampled,
+            .outputs = {{.handle = kInteriorDarkness,
+                         .doc = "D_i; 0 on the background",
+                         .tolerance = tolerance::kSampled,
                          .tolerance_why = "fed the same G-buffer (the GPU its corner angles as triangle records), I', "
                                           "pencil stack and paper"}}};
   }

@@ -2,14 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/glm.hpp>
 #include <numbers>
 #include <stdexcept>
 #include <string>
-#include <glm/glm.hpp>
 
+#include "common/core/preprocess.hpp"
 #include "common/util/noise.hpp"
 #include "common/util/random.hpp"
-#include "common/core/preprocess.hpp"
 
 namespace plumbago {
 
@@ -78,7 +78,8 @@ int wrap(int i, int n) { return ((i % n) + n) % n; }
 
 // Eq. 3-4 at every texel the stroke touches (the tile wraps); returns the change of the
 // layer's sum of intensities.
-double draw_stroke(const Stroke& s, const PencilTexturesParams& p, const Fibres& fibres, const Image& tooth, Image& layer) {
+double draw_stroke(const Stroke& s, const PencilTexturesParams& p, const Fibres& fibres, const Image& tooth,
+                   Image& layer) {
   glm::vec2 normal(-s.dir.y, s.dir.x);
   float reach = std::abs(s.bend) + p.stroke_width + 1;
   glm::vec2 a = s.start, b = s.start + s.dir * s.length;
@@ -132,7 +133,8 @@ std::vector<Image> pencil_layers(const PencilTexturesParams& p, uint32_t seed, i
       if (n % covering != 0) continue;
       if ((before - sum) / texels < kLeastProgress)
         throw std::runtime_error("pencil layer " + std::to_string(l) + " cannot reach mean " +
-                                 std::to_string(layer_target(p, l)) + ": raise pencil_textures.mu_b or pencil_textures.darkest");
+                                 std::to_string(layer_target(p, l)) +
+                                 ": raise pencil_textures.mu_b or pencil_textures.darkest");
       before = sum;
     }
     layers.push_back(std::move(next));

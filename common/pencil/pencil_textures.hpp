@@ -8,8 +8,8 @@
 // streaks from the lead's fibres, and a few texels of paper tooth it skips.
 #pragma once
 
-#include "common/scene/scene.hpp"
 #include "common/core/stage.hpp"
+#include "common/scene/scene.hpp"
 
 #include <cstdint>
 #include <vector>

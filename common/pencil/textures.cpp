@@ -4,10 +4,10 @@
 
 #include "common/pencil/contour_texture.hpp"
 #include "common/pencil/distortion.hpp"
-#include "common/util/noise.hpp"
-#include "common/sketchy/sketchy.hpp"
 #include "common/pencil/paper.hpp"
 #include "common/pencil/pencil_textures.hpp"
+#include "common/sketchy/sketchy.hpp"
+#include "common/util/noise.hpp"
 
 namespace plumbago {
 

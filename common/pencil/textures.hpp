@@ -5,8 +5,8 @@
 #include <map>
 #include <string>
 
-#include "common/util/image.hpp"
 #include "common/core/params.hpp"
+#include "common/util/image.hpp"
 
 namespace plumbago {
 

@@ -9,9 +9,7 @@ namespace plumbago {
 
 glm::mat4 Camera::view() const { return glm::lookAt(eye, target, up); }
 
-glm::mat4 Camera::projection(float aspect) const {
-  return glm::perspective(glm::radians(fov_deg), aspect, near, far);
-}
+glm::mat4 Camera::projection(float aspect) const { return glm::perspective(glm::radians(fov_deg), aspect, near, far); }
 
 glm::vec3 Camera::forward() const { return glm::normalize(target - eye); }
 

@@ -4,10 +4,10 @@
 
 #include <vector>
 
-#include "common/curvature/curvature.hpp"
-#include "common/util/image.hpp"
-#include "common/scene/scene.hpp"
 #include "common/core/stage.hpp"
+#include "common/curvature/curvature.hpp"
+#include "common/scene/scene.hpp"
+#include "common/util/image.hpp"
 
 namespace plumbago {
 
@@ -40,11 +40,11 @@ struct GBuffer {
 // One object's geometry in world space, shared by both backends so that they rasterize
 // and trace the same floats.
 struct WorldObject {
-  std::vector<glm::vec3> positions;    // world space
-  std::vector<glm::vec3> normals;      // world space, unit (face normals when flat)
+  std::vector<glm::vec3> positions;  // world space
+  std::vector<glm::vec3> normals;    // world space, unit (face normals when flat)
   std::vector<glm::uvec3> triangles;
-  std::vector<float> gouraud;          // per vertex, Lee et al. 2006, §3, §5.2
-  std::vector<glm::vec3> d_min, d_max; // world space, unit; empty without curvature
+  std::vector<float> gouraud;           // per vertex, Lee et al. 2006, §3, §5.2
+  std::vector<glm::vec3> d_min, d_max;  // world space, unit; empty without curvature
   bool flat = false;
 };
 
@@ -63,7 +63,9 @@ Image normalized_depth(const GBuffer& g);
 // `with_angles`.
 std::vector<Output> gbuffer_outputs(const GBufferSlot& g, bool with_angles);
 
-inline constexpr GBufferSlot kGBuffer{"gbuffer", {"gbuffer.normal"}, {"gbuffer.face_normal"}, {"gbuffer.depth"}, {"gbuffer.ids"}, {"gbuffer.bary"}, {"gbuffer.gouraud"}, {"gbuffer.theta_min"}, {"gbuffer.theta_max"}};
+inline constexpr GBufferSlot kGBuffer{"gbuffer",           {"gbuffer.normal"},    {"gbuffer.face_normal"},
+                                      {"gbuffer.depth"},   {"gbuffer.ids"},       {"gbuffer.bary"},
+                                      {"gbuffer.gouraud"}, {"gbuffer.theta_min"}, {"gbuffer.theta_max"}};
 
 struct GBufferStage {
   using Params = TypeList<GBufferParams>;

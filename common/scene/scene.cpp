@@ -1,6 +1,6 @@
 // Scene files (docs/scene-format.md, scenes/scene.schema.json) and the built-in scenes.
-#include "common/scene/json_position.hpp"
 #include "common/scene/scene.hpp"
+#include "common/scene/json_position.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -279,10 +279,14 @@ class SceneReader {
     for (const auto& [key, value] : j.items()) {
       std::string p = path + "/" + key;
       try {
-        if (value.is_boolean()) set.set(key, value.get<bool>() ? 1.0 : 0.0);
-        else if (value.is_number()) set.set(key, value.get<double>());
-        else if (value.is_string()) set.set(key, value.get<std::string>());
-        else fail(p, "expected a number, a boolean or a choice name");
+        if (value.is_boolean())
+          set.set(key, value.get<bool>() ? 1.0 : 0.0);
+        else if (value.is_number())
+          set.set(key, value.get<double>());
+        else if (value.is_string())
+          set.set(key, value.get<std::string>());
+        else
+          fail(p, "expected a number, a boolean or a choice name");
       } catch (const ParamError& e) {
         fail(p, e.what());
       }
@@ -361,8 +365,8 @@ class SceneReader {
     for (int i = 0; i < 16; ++i) m[i / 4][i % 4] = exact_number(j[size_t(i)], path + "/" + std::to_string(i));
     for (int i : {3, 7, 11, 15})
       if (m[i / 4][3] != (i == 15 ? 1.0 : 0.0))
-        fail(path + "/" + std::to_string(i), std::string("must be ") + (i == 15 ? "1" : "0") +
-                                                 " (the last row of an affine transform is 0, 0, 0, 1)");
+        fail(path + "/" + std::to_string(i),
+             std::string("must be ") + (i == 15 ? "1" : "0") + " (the last row of an affine transform is 0, 0, 0, 1)");
     check_linear_part(glm::dmat3(m), path);
     return m;
   }
@@ -428,7 +432,8 @@ struct PositionedParser : nlohmann::detail::json_sax_dom_parser<json> {
 // the stroke objects.
 void set_effects(const json& j, const SceneReader& r, Scene& s) {
   s.effects.clear();
-  if (j.contains("effects")) s.effects = r.effects(j["effects"], "/effects");
+  if (j.contains("effects"))
+    s.effects = r.effects(j["effects"], "/effects");
   else {
     if (has_style(s, Style::Pencil) || has_style(s, Style::Shaded)) s.effects.push_back("contours");
     if (has_style(s, Style::Strokes)) s.effects.push_back("basecoat");

@@ -10,13 +10,13 @@
 #include <string>
 #include <vector>
 
+#include "common/core/params.hpp"
+#include "common/mesh/mesh.hpp"
 #include "common/scene/animation.hpp"
 #include "common/scene/camera.hpp"
-#include "common/util/image.hpp"
-#include "common/mesh/mesh.hpp"
-#include "common/core/params.hpp"
 #include "common/strokes/stroke_file.hpp"
 #include "common/strokes/stroke_style.hpp"
+#include "common/util/image.hpp"
 
 namespace plumbago {
 
@@ -31,7 +31,7 @@ struct SceneObject {
   glm::mat4 transform{1.0f};  // object to world, relative to Scene::origin
   Style style = Style::Pencil;
   glm::vec3 color{1.0f};
-  bool flat = false;          // shading normals = face normals
+  bool flat = false;  // shading normals = face normals
 };
 
 // The stroke style of each kind of feature line of the stroke objects (Kalnins et al. 2002, §4.1;
@@ -67,9 +67,9 @@ struct Scene {
   std::vector<std::string> effects{"contours"};
   ParamSet params;
   StrokeStyles strokes;
-  std::optional<Animation> animation;  // a camera path; none: one frame
-  int frame = 0;                       // the frame of `animation` this scene shows (scene_at_frame)
-  Camera path_start;                   // with frame > 0: the path's first camera (frame_camera)
+  std::optional<Animation> animation;    // a camera path; none: one frame
+  int frame = 0;                         // the frame of `animation` this scene shows (scene_at_frame)
+  Camera path_start;                     // with frame > 0: the path's first camera (frame_camera)
   std::vector<StrokeFile> stroke_files;  // the artist's strokes (Kalnins et al. 2002, §3, §4.5), key "stroke_files"
 };
 

@@ -6,13 +6,13 @@
 #include <stdexcept>
 #include <vector>
 
-#include "common/util/memory_budget.hpp"
-#include "common/util/noise.hpp"
+#include "common/core/stage.hpp"
 #include "common/pencil/paper.hpp"
 #include "common/pencil/pencil_textures.hpp"
 #include "common/scene/scene.hpp"
 #include "common/sketchy/sketchy.hpp"
-#include "common/core/stage.hpp"
+#include "common/util/memory_budget.hpp"
+#include "common/util/noise.hpp"
 
 namespace plumbago {
 

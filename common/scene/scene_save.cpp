@@ -4,8 +4,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "common/util/output_file.hpp"
 #include "common/scene/scene.hpp"
+#include "common/util/output_file.hpp"
 
 namespace plumbago {
 namespace {
@@ -36,10 +36,18 @@ json params_json(const ParamSet& params) {
   for (const auto& [key, value] : params.overrides()) {
     const ParamSpec& spec = param_spec(key);
     switch (spec.type) {
-      case ParamType::Boolean: out[key] = value != 0; break;
-      case ParamType::Choice: out[key] = spec.choices.at(size_t(value)); break;
-      case ParamType::Integer: out[key] = int64_t(value); break;
-      case ParamType::Real: out[key] = value; break;
+      case ParamType::Boolean:
+        out[key] = value != 0;
+        break;
+      case ParamType::Choice:
+        out[key] = spec.choices.at(size_t(value));
+        break;
+      case ParamType::Integer:
+        out[key] = int64_t(value);
+        break;
+      case ParamType::Real:
+        out[key] = value;
+        break;
     }
   }
   return out;

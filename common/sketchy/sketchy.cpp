@@ -40,7 +40,8 @@ Mesh enlarged_mesh(const Mesh& mesh, float distance) {
 Scene enlarged_scene(const Scene& sketchy) {
   float enlarge = sketchy.params.get<SketchyParams>().enlarge;
   Scene out = sketchy;
-  for (SceneObject& o : out.objects) o.mesh = std::make_shared<Mesh>(enlarged_mesh(*o.mesh, enlarge * o.mesh->bbox_diagonal()));
+  for (SceneObject& o : out.objects)
+    o.mesh = std::make_shared<Mesh>(enlarged_mesh(*o.mesh, enlarge * o.mesh->bbox_diagonal()));
   return out;
 }
 
@@ -82,9 +83,12 @@ SketchyNoise make_sketchy_noise(const ParamSet& params, uint32_t seed) {
   auto p = params.get<SketchyParams>();
   auto n = params.get<NoiseTextureParams>();
   SketchyNoise out;
-  if (p.style == SketchyStyle::Rough) out.white = white_noise_texture(n.size, seed);
-  else if (p.style == SketchyStyle::Object) out.perlin_3d = perlin_noise_texture_3d(p.noise3d_size, p.noise3d_period, seed);
-  else out.perlin = perlin_noise_texture(n, seed);
+  if (p.style == SketchyStyle::Rough)
+    out.white = white_noise_texture(n.size, seed);
+  else if (p.style == SketchyStyle::Object)
+    out.perlin_3d = perlin_noise_texture_3d(p.noise3d_size, p.noise3d_period, seed);
+  else
+    out.perlin = perlin_noise_texture(n, seed);
   return out;
 }
 

@@ -8,8 +8,8 @@
 
 #include <glm/glm.hpp>
 
-#include "common/util/image.hpp"
 #include "common/scene/scene.hpp"
+#include "common/util/image.hpp"
 
 namespace plumbago {
 
@@ -33,8 +33,10 @@ struct SketchyParams {
              "Nienhaus & Döllner 2004, §3.4, §4: default (edges and shade), repeat (edge copies), "
              "rough (uncorrelated noise), object (3D noise on the enlarged geometry)");
     v.integer(octaves, "octaves", 4, 1, 8, "octaves of the turbulence T (Nienhaus & Döllner 2004, §3.2)");
-    v.real(noise_scale, "noise_scale", 512, 8, 65536, "window pixels per tile of the noise texture: (s,t) = p / noise_scale");
-    v.real(edge_a, "edge_a", 6, -64, 64, "M_e = [[a, b], [c, d]] turns (u, v) into the edge offset, pixels (paper Fig. 4)");
+    v.real(noise_scale, "noise_scale", 512, 8, 65536,
+           "window pixels per tile of the noise texture: (s,t) = p / noise_scale");
+    v.real(edge_a, "edge_a", 6, -64, 64,
+           "M_e = [[a, b], [c, d]] turns (u, v) into the edge offset, pixels (paper Fig. 4)");
     v.real(edge_b, "edge_b", 0, -64, 64, "M_e, b");
     v.real(edge_c, "edge_c", 0, -64, 64, "M_e, c");
     v.real(edge_d, "edge_d", 6, -64, 64, "M_e, d");
@@ -45,7 +47,8 @@ struct SketchyParams {
     v.real(dark_edge, "dark_edge", 0.1, 0.0, 1.0,
            "an edge sample is drawn (and sets the depth sprite) where its contour darkness exceeds this");
     v.integer(edge_copies, "edge_copies", 2, 1, 8, "repeat style: how many times the edges are drawn");
-    v.real(copy_rotation_deg, "copy_rotation_deg", 90, -180, 180, "repeat style: copy k uses M_e turned by k x this angle");
+    v.real(copy_rotation_deg, "copy_rotation_deg", 90, -180, 180,
+           "repeat style: copy k uses M_e turned by k x this angle");
     v.real(copy_red, "copy_red", 0.25, 0.0, 1.0, "repeat style: red of the last copy's ink (the first copy is black)");
     v.real(copy_green, "copy_green", 0.35, 0.0, 1.0, "repeat style: green of the last copy's ink");
     v.real(copy_blue, "copy_blue", 0.6, 0.0, 1.0, "repeat style: blue of the last copy's ink");

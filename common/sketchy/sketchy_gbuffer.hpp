@@ -2,12 +2,15 @@
 // for them alone, which their edge and shade maps read.
 #pragma once
 
-#include "common/scene/gbuffer.hpp"
 #include "common/core/stage.hpp"
+#include "common/scene/gbuffer.hpp"
 
 namespace plumbago {
 
-inline constexpr GBufferSlot kSketchyGBuffer{"sketchy_gbuffer", {"sketchy_gbuffer.normal"}, {"sketchy_gbuffer.face_normal"}, {"sketchy_gbuffer.depth"}, {"sketchy_gbuffer.ids"}, {"sketchy_gbuffer.bary"}, {"sketchy_gbuffer.gouraud"}, {"sketchy_gbuffer.theta_min"}, {"sketchy_gbuffer.theta_max"}};
+inline constexpr GBufferSlot kSketchyGBuffer{
+    "sketchy_gbuffer",           {"sketchy_gbuffer.normal"},    {"sketchy_gbuffer.face_normal"},
+    {"sketchy_gbuffer.depth"},   {"sketchy_gbuffer.ids"},       {"sketchy_gbuffer.bary"},
+    {"sketchy_gbuffer.gouraud"}, {"sketchy_gbuffer.theta_min"}, {"sketchy_gbuffer.theta_max"}};
 
 struct SketchyGBufferStage {
   using Params = TypeList<>;

@@ -3,8 +3,8 @@
 // color).
 #pragma once
 
-#include "common/pencil/edge_detect.hpp"
 #include "common/core/stage.hpp"
+#include "common/pencil/edge_detect.hpp"
 #include "common/sketchy/sketchy_gbuffer.hpp"
 
 namespace plumbago {
@@ -21,11 +21,18 @@ struct SketchyMapsStage {
             .params = {"edge"},
             .inputs = {{.handle = kSketchyGBuffer.normal, .used = EdgeDetectStage::smooth_normals},
                        {.handle = kSketchyGBuffer.face_normal, .used = EdgeDetectStage::face_normals},
-                       {.handle = kSketchyGBuffer.depth}, {.handle = kSketchyGBuffer.ids}},
-            .outputs = {{.handle = kSketchyEdge, .channels = 2, .doc = "contour darkness d and the linear depth it belongs to",
-                         .tolerance = tolerance::kFloat, .tolerance_why = "fed the same sketchy G-buffer; float target"},
-                        {.handle = kSketchyShade, .channels = 4, .texel = Texel::Unorm8,
-                         .doc = "the object's unlit color, alpha = coverage", .tolerance = tolerance::kByte,
+                       {.handle = kSketchyGBuffer.depth},
+                       {.handle = kSketchyGBuffer.ids}},
+            .outputs = {{.handle = kSketchyEdge,
+                         .channels = 2,
+                         .doc = "contour darkness d and the linear depth it belongs to",
+                         .tolerance = tolerance::kFloat,
+                         .tolerance_why = "fed the same sketchy G-buffer; float target"},
+                        {.handle = kSketchyShade,
+                         .channels = 4,
+                         .texel = Texel::Unorm8,
+                         .doc = "the object's unlit color, alpha = coverage",
+                         .tolerance = tolerance::kByte,
                          .tolerance_why = "object colors and coverage; 8-bit target"}}};
   }
 };

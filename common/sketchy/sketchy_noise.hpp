@@ -2,8 +2,8 @@
 // only what sketchy.style reads.
 #pragma once
 
-#include "common/util/noise.hpp"
 #include "common/core/stage.hpp"
+#include "common/util/noise.hpp"
 
 namespace plumbago {
 
@@ -20,7 +20,9 @@ struct SketchyNoiseStage {
             .kind = StageKind::Preprocessing,
             .doc = "noise textures of the sketchy uncertainty (Nienhaus & Döllner 2004, §3.2, §3.4)",
             .params = {"noise", "sketchy"},
-            .outputs = {{.handle = kSketchyNoise, .channels = 2, .texel = Texel::Host,
+            .outputs = {{.handle = kSketchyNoise,
+                         .channels = 2,
+                         .texel = Texel::Host,
                          .doc = "2D Perlin, white noise or 3D Perlin, as the style reads"}},
             .preprocess = make};
   }

@@ -11,8 +11,8 @@ namespace plumbago {
 
 namespace {
 
-constexpr double kSamePoint = 1e-6;      // px: closer input points are one point (1.)
-constexpr double kPiecesPerPx = 4.0;     // dense pieces per px of control polygon (2.)
+constexpr double kSamePoint = 1e-6;   // px: closer input points are one point (1.)
+constexpr double kPiecesPerPx = 4.0;  // dense pieces per px of control polygon (2.)
 constexpr int kMinPieces = 4, kMaxPieces = 4096;
 constexpr double kMaxSamples = 1e7;      // refuse runs that would take more samples
 constexpr double kSameArcLength = 1e-9;  // px: sample arc lengths closer than this are one
@@ -185,7 +185,9 @@ std::vector<glm::dvec2> vertex_normals(const std::vector<glm::dvec2>& p, bool cy
 // 5. The factors of Kalnins et al. 2002, §4.1, each 1 outside its range.
 double taper(double dl, double T) { return dl < T ? std::sqrt(std::max(0.0, 1 - std::pow((T - dl) / T, 2))) : 1.0; }
 double fade(double dl, double F) { return dl < F ? std::pow(std::max(0.0, 1 - std::pow((F - dl) / F, 2)), 1.5) : 1.0; }
-double halo_base(double dh, double H) { return dh < H ? std::max(0.0, 1 - std::pow((H - dh) / H, 2)) : 1.0; }  // 1 - h^2
+double halo_base(double dh, double H) {
+  return dh < H ? std::max(0.0, 1 - std::pow((H - dh) / H, 2)) : 1.0;
+}  // 1 - h^2
 double flare(double dl, double L, double f) { return 1 + f * (1 - 2 * dl / L); }
 
 // Distance from arc length s to the nearer end caused by occlusion; infinite when none.
@@ -253,8 +255,10 @@ void append_strip(const std::vector<StrokeSample>& samples, size_t a, size_t b, 
     strip.push_back(vertex(q.position + half, q.s / period, 1.0, q.alpha));
   }
   for (size_t k = 0; k + 2 < strip.size(); ++k) {  // GL's strip order: odd triangles swap their first two
-    if (k % 2 == 0) out.insert(out.end(), {strip[k], strip[k + 1], strip[k + 2]});
-    else out.insert(out.end(), {strip[k + 1], strip[k], strip[k + 2]});
+    if (k % 2 == 0)
+      out.insert(out.end(), {strip[k], strip[k + 1], strip[k + 2]});
+    else
+      out.insert(out.end(), {strip[k + 1], strip[k], strip[k + 2]});
   }
 }
 
@@ -277,7 +281,8 @@ StampedOffset rubber_stamp(const OffsetExample& example, double s, double run_le
   double t = s / example.length_px;
   t -= std::floor(t);  // (s mod L_drawn) / L_drawn
   // Segment i runs from offset i to the next, the last one to the first of the next period.
-  size_t count = size_t(std::upper_bound(o.begin(), o.end(), t, [](double x, const StrokeOffset& e) { return x < e.t; }) - o.begin());
+  size_t count = size_t(
+      std::upper_bound(o.begin(), o.end(), t, [](double x, const StrokeOffset& e) { return x < e.t; }) - o.begin());
   if (count == 0) t += 1;  // before the first offset: on the last segment, from the period before
   size_t i = (count + o.size() - 1) % o.size();
   bool wraps = i + 1 == o.size();

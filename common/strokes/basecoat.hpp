@@ -6,18 +6,18 @@
 // texture coordinate s (LINEAR, CLAMP_TO_EDGE: s <= 0 reads the first texel): the coat is
 // T(s), straight alpha, on the objects whose style is `strokes` and transparent (0)
 // elsewhere. The paper effect of Kalnins et al. 2002, §4.4
-// (common/strokes/stroke_paper.hpp) composes it. T is generated here from a preset: `toon`, two tones split at `threshold`; `smooth`, a
-// linear ramp from the dark to the light color; `solid`, the light color alone.
+// (common/strokes/stroke_paper.hpp) composes it. T is generated here from a preset: `toon`, two tones split at
+// `threshold`; `smooth`, a linear ramp from the dark to the light color; `solid`, the light color alone.
 #pragma once
 
 #include <vector>
 
 #include <glm/glm.hpp>
 
-#include "common/util/image.hpp"
-#include "common/scene/scene.hpp"
 #include "common/core/stage.hpp"
 #include "common/scene/gbuffer.hpp"
+#include "common/scene/scene.hpp"
+#include "common/util/image.hpp"
 
 namespace plumbago {
 
@@ -71,13 +71,18 @@ struct BaseCoatStage {
             .doc = "toon or solid base coat from a 1D texture (Kalnins et al. 2002, §4.2)",
             .params = {"basecoat"},
             .inputs = {{.handle = kGBuffer.ids}, {.handle = kGBuffer.bary}},
-            .outputs = {{.handle = kCoat, .channels = 4, .texel = Texel::Unorm8,
-                         .doc = "T(s), straight alpha, on the stroke objects; 0 elsewhere", .tolerance = tolerance::kByte,
+            .outputs = {{.handle = kCoat,
+                         .channels = 4,
+                         .texel = Texel::Unorm8,
+                         .doc = "T(s), straight alpha, on the stroke objects; 0 elsewhere",
+                         .tolerance = tolerance::kByte,
                          .tolerance_why = "fed the same G-buffer and per-vertex s; bilinear lookup of the 1D texture; "
                                           "8-bit target"}},
             .effects = {"basecoat"},
-            .declared_effects = {{"basecoat", "the base coat of the objects whose style is strokes (Kalnins 2002 §4.2), "
-                                              "through the paper effect (§4.4); on by default for them", true}}};
+            .declared_effects = {{"basecoat",
+                                  "the base coat of the objects whose style is strokes (Kalnins 2002 §4.2), "
+                                  "through the paper effect (§4.4); on by default for them",
+                                  true}}};
   }
 };
 

@@ -38,8 +38,8 @@
 
 #include <glm/glm.hpp>
 
-#include "common/strokes/hatching.hpp"
 #include "common/scene/scene.hpp"
+#include "common/strokes/hatching.hpp"
 
 namespace plumbago {
 

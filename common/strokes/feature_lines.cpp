@@ -250,7 +250,7 @@ double silhouette_test(glm::dvec3 normal, glm::dvec3 x, glm::dvec3 eye, bool nor
 }
 
 std::vector<double> corner_silhouette_values(const Geometry& g, const std::vector<glm::dvec3>& normals, glm::dvec3 eye,
-                                            bool normalized) {
+                                             bool normalized) {
   std::vector<double> values(normals.size());
   for (uint32_t c = 0; c < normals.size(); ++c)
     values[c] = silhouette_test(normals[c], g.corner(c / 3, int(c % 3)), eye, normalized);
@@ -305,7 +305,8 @@ FaceSegment face_segment(const Geometry& g, const std::vector<double>& values, g
   for (int k = 0; k < 3 && found < 2; ++k)
     if (sign_changes(values, f, k)) s.slot[found++] = k;
   if (found < 2) return FaceSegment{};
-  glm::dvec3 mid = 0.5 * (edge_crossing(g, values, f, s.slot[0]).position + edge_crossing(g, values, f, s.slot[1]).position);
+  glm::dvec3 mid =
+      0.5 * (edge_crossing(g, values, f, s.slot[0]).position + edge_crossing(g, values, f, s.slot[1]).position);
   s.front = glm::dot(scaled_gradient(g, values, f), eye - mid) >= 0;  // Kalnins et al. 2002, §4.5 front/back
   return s;
 }
@@ -380,7 +381,8 @@ std::vector<FaceChain> trace_silhouettes(const Geometry& g, const std::vector<do
   std::vector<FaceChain> chains;
   for (uint32_t f = 0; f < segments.size(); ++f)
     for (int end = 0; end < 2; ++end)
-      if (segments[f].exists() && !visited[f] && face_across(g, values, segments, f, segments[f].slot[end]).face == kNone)
+      if (segments[f].exists() && !visited[f] &&
+          face_across(g, values, segments, f, segments[f].slot[end]).face == kNone)
         chains.push_back(trace_faces(g, values, segments, visited, f, segments[f].slot[end]));
   for (uint32_t f = 0; f < segments.size(); ++f)
     if (segments[f].exists() && !visited[f])
@@ -407,8 +409,8 @@ double left_side_visibility(const Geometry& g, const std::vector<double>& values
 }
 
 // The chain's points and facing labels, oriented with g > 0 on the left (see header).
-LabeledPath chain_points(const Geometry& g, const std::vector<double>& values,
-                         const std::vector<FaceSegment>& segments, const FaceChain& chain) {
+LabeledPath chain_points(const Geometry& g, const std::vector<double>& values, const std::vector<FaceSegment>& segments,
+                         const FaceChain& chain) {
   LabeledPath path;
   path.closed = chain.closed;
   for (size_t i = 0; i < chain.faces.size(); ++i) {
@@ -453,7 +455,8 @@ glm::dvec3 eye_in_object_space(const glm::dmat4& object_to_world, glm::dvec3 eye
 
 // The view-independent part: adjacency, crease-aware normals, creases and borders.
 struct FeatureLineMesh::Impl {
-  Impl(const Mesh& mesh, double crease_deg) : g(build_geometry(mesh, crease_deg)), normals(crease_aware_corner_normals(g)) {
+  Impl(const Mesh& mesh, double crease_deg)
+      : g(build_geometry(mesh, crease_deg)), normals(crease_aware_corner_normals(g)) {
     add_creases_and_borders(g, fixed);
   }
   Geometry g;

@@ -62,8 +62,8 @@
 namespace plumbago {
 
 struct SurfacePoint {
-  uint32_t face = 0;     // mesh triangle index
-  glm::dvec3 bary{0.0};  // weights of the triangle's corners 0, 1, 2 (sum 1)
+  uint32_t face = 0;         // mesh triangle index
+  glm::dvec3 bary{0.0};      // weights of the triangle's corners 0, 1, 2 (sum 1)
   glm::dvec3 position{0.0};  // object space: the barycentric combination of the corners
 };
 
@@ -78,9 +78,9 @@ struct FeatureLines {
 };
 
 struct FeatureLineOptions {
-  double crease_deg = 60.0;          // strokes.crease_deg
-  bool keep_back_facing = false;     // hidden-line mode: keep back-facing silhouettes
-  bool silhouette_normalized = true; // strokes.silhouette_normalized
+  double crease_deg = 60.0;           // strokes.crease_deg
+  bool keep_back_facing = false;      // hidden-line mode: keep back-facing silhouettes
+  bool silhouette_normalized = true;  // strokes.silhouette_normalized
 };
 
 // What does not depend on the eye, made once per mesh and crease angle (adjacency,
@@ -103,6 +103,7 @@ FeatureLines feature_lines(const Mesh& mesh, const glm::dmat4& object_to_world, 
 
 // The silhouette test g of Kalnins et al. 2002, §4.5 per face corner (index 3 f + k), with the
 // g = 0 -> -1e-8 rule applied; `eye_object` in object space. Exposed for tests.
-std::vector<double> silhouette_function(const Mesh& mesh, glm::dvec3 eye_object, const FeatureLineOptions& options = {});
+std::vector<double> silhouette_function(const Mesh& mesh, glm::dvec3 eye_object,
+                                        const FeatureLineOptions& options = {});
 
 }  // namespace plumbago

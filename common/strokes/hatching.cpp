@@ -39,8 +39,7 @@ std::vector<std::vector<DrawnPoint>> ordered_hatches(const std::vector<const Dra
   auto place = [&](const std::vector<DrawnPoint>& h) {
     return glm::dot(resampled_evenly(h, 2)[1].window, across);  // the middle, by arc length
   };
-  std::stable_sort(hatches.begin(), hatches.end(),
-                   [&](const auto& a, const auto& b) { return place(a) < place(b); });
+  std::stable_sort(hatches.begin(), hatches.end(), [&](const auto& a, const auto& b) { return place(a) < place(b); });
   return hatches;
 }
 
@@ -50,8 +49,8 @@ std::vector<DrawnPoint> between(const std::vector<DrawnPoint>& a, const std::vec
   size_t segments = std::max<size_t>(1, size_t(std::ceil(std::max(drawn_length(a), drawn_length(b)) / kDecalStepPx)));
   std::vector<DrawnPoint> ra = resampled_evenly(a, segments), rb = resampled_evenly(b, segments), out;
   for (size_t k = 0; k < ra.size(); ++k)
-    out.push_back({ra[k].window + w * (rb[k].window - ra[k].window),
-                   ra[k].pressure + w * (rb[k].pressure - ra[k].pressure)});
+    out.push_back(
+        {ra[k].window + w * (rb[k].window - ra[k].window), ra[k].pressure + w * (rb[k].pressure - ra[k].pressure)});
   return out;
 }
 
@@ -81,8 +80,9 @@ std::vector<HatchGroup> hatching_groups(const Scene& scene) {
       HatchGroup& g = it->second;
       if (g.free != s.free) refuse(scene.stroke_files[f], s.group, "mixes free and structured strokes");
       if (!g.free && g.files[0] != f)
-        refuse(scene.stroke_files[f], s.group, "a structured group is drawn in one stroke file, and it is also in " +
-                                                   scene.stroke_files[g.files[0]].source);
+        refuse(scene.stroke_files[f], s.group,
+               "a structured group is drawn in one stroke file, and it is also in " +
+                   scene.stroke_files[g.files[0]].source);
       if (g.free && g.files.back() != f) g.files.push_back(f);
       if (!g.free) ++g.hatches;
     }

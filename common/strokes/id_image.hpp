@@ -29,10 +29,10 @@
 
 #include <glm/glm.hpp>
 
-#include "common/util/image.hpp"
-#include "common/strokes/hatching.hpp"
 #include "common/core/stage.hpp"
+#include "common/strokes/hatching.hpp"
 #include "common/strokes/strokes.hpp"
+#include "common/util/image.hpp"
 
 namespace plumbago {
 
@@ -64,20 +64,27 @@ inline constexpr Slot<Image> kAmbiguousIds{"id_image.ambiguous"};
 struct IdImageStage {
   using Params = TypeList<StrokesParams, HatchingParams>;
   static StageDesc describe() {
-    return {.name = "id_image",
-            .kind = StageKind::Frame,
-            .doc = "ID reference image: faces, crease and silhouette quads (Kalnins et al. 2002, §4.6)",
-            .params = {"strokes"},
-            .outputs = {{.handle = kIds, .channels = 2, .texel = Texel::Uint, .doc = "the key, as (key >> 16, key & 0xffff)",
-                         .tolerance_why = "the same triangles, rasterized with the same rules: exact except where rounding "
-                                          "decides, which a derived bound allows and the note counts: depth ties (the "
-                                          "nearest surfaces within 1e-5 relative plus a subpixel of z slope) and edges "
-                                          "within a subpixel of the pixel center (torus 800x600: 453 px, 0.09%)"},
-                        {.handle = kWindowLines, .channels = 0, .texel = Texel::Host,
-                         .doc = "the lines in the window, their keys and surface points (CPU)"},
-                        {.handle = kAmbiguousIds, .texel = Texel::Host,
-                         .doc = "reference only: 1 where rounding decides the key"}},
-            .effects = {"strokes"}};
+    return {
+        .name = "id_image",
+        .kind = StageKind::Frame,
+        .doc = "ID reference image: faces, crease and silhouette quads (Kalnins et al. 2002, §4.6)",
+        .params = {"strokes"},
+        .outputs = {{.handle = kIds,
+                     .channels = 2,
+                     .texel = Texel::Uint,
+                     .doc = "the key, as (key >> 16, key & 0xffff)",
+                     .tolerance_why = "the same triangles, rasterized with the same rules: exact except where rounding "
+                                      "decides, which a derived bound allows and the note counts: depth ties (the "
+                                      "nearest surfaces within 1e-5 relative plus a subpixel of z slope) and edges "
+                                      "within a subpixel of the pixel center (torus 800x600: 453 px, 0.09%)"},
+                    {.handle = kWindowLines,
+                     .channels = 0,
+                     .texel = Texel::Host,
+                     .doc = "the lines in the window, their keys and surface points (CPU)"},
+                    {.handle = kAmbiguousIds,
+                     .texel = Texel::Host,
+                     .doc = "reference only: 1 where rounding decides the key"}},
+        .effects = {"strokes"}};
   }
 };
 

@@ -12,8 +12,8 @@ namespace plumbago {
 
 namespace {
 
-constexpr size_t kMaxStates = 2048;     // states x states costs are held while building
-constexpr double kMaxOffsets = 1e7;     // refuse syntheses (and resamplings) longer than this
+constexpr size_t kMaxStates = 2048;       // states x states costs are held while building
+constexpr double kMaxOffsets = 1e7;       // refuse syntheses (and resamplings) longer than this
 constexpr double kDroppedWeight = 1e-12;  // row weights below this (row max = 1) are dropped
 constexpr double kMaxDisplacement = 1e6;  // px: displacements are clamped to +-this
 constexpr double kMaxP = 8;               // with the clamp, (2e6)^8 x 1e3 x states^2 stays finite
@@ -21,7 +21,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 void check_step(double step_px, const char* who) {
   if (!(std::isfinite(step_px) && step_px > 0))
-    throw std::invalid_argument(std::string(who) + ": step " + std::to_string(step_px) + " px is not positive and finite");
+    throw std::invalid_argument(std::string(who) + ": step " + std::to_string(step_px) +
+                                " px is not positive and finite");
 }
 
 void check_options(const OffsetSynthesisOptions& o) {
@@ -89,9 +90,9 @@ size_t offset_count(double length_px, double step) {
 struct StateSequence {
   std::vector<double> y{0.0};
   std::vector<char> separator{1};
-  std::vector<ptrdiff_t> pos_of;           // position in y of each state
-  std::vector<double> values, pressures;   // displacement and pressure of each state
-  std::vector<size_t> starts;              // first state of each example that has one
+  std::vector<ptrdiff_t> pos_of;          // position in y of each state
+  std::vector<double> values, pressures;  // displacement and pressure of each state
+  std::vector<size_t> starts;             // first state of each example that has one
 };
 
 StateSequence concatenate_examples(std::span<const OffsetExample> examples, double step) {
@@ -336,7 +337,8 @@ std::vector<double> synthesize_offsets(const OffsetExample& e, double length_px,
   return OffsetSynthesizer(e).synthesize(length_px, seed, name);
 }
 
-OffsetExample synthesize_offset_example(const OffsetExample& e, double length_px, uint32_t seed, std::string_view name) {
+OffsetExample synthesize_offset_example(const OffsetExample& e, double length_px, uint32_t seed,
+                                        std::string_view name) {
   return OffsetSynthesizer(e).synthesize_example(length_px, seed, name);
 }
 

@@ -81,20 +81,20 @@
 #include <string_view>
 #include <vector>
 
-#include "common/util/random.hpp"
 #include "common/strokes/stroke_style.hpp"
+#include "common/util/random.hpp"
 
 namespace plumbago {
 
 // Kalnins et al.'s (2002, §4.3, App. A) parameters; the defaults are Appendix A's.
 struct OffsetSynthesisOptions {
-  double step_px = 4;           // resampling step (1.)
-  int window = 4;               // m taps of weight 1/m (3.)
-  double p = 2;                 // exponent of the cost (4.), in (0, 8]
-  double alpha = 0.999;         // Q-learning discount (5.)
-  double total_change = 10;     // Q-learning stops when the total change is below this
-  int max_iterations = 100;     // ... or after this many iterations
-  double rho_factor = 0.01;     // rho = rho_factor x mean nonzero D'' (6.)
+  double step_px = 4;        // resampling step (1.)
+  int window = 4;            // m taps of weight 1/m (3.)
+  double p = 2;              // exponent of the cost (4.), in (0, 8]
+  double alpha = 0.999;      // Q-learning discount (5.)
+  double total_change = 10;  // Q-learning stops when the total change is below this
+  int max_iterations = 100;  // ... or after this many iterations
+  double rho_factor = 0.01;  // rho = rho_factor x mean nonzero D'' (6.)
 };
 
 // The example's displacements every step_px of its length (1.), floor(L_drawn / step_px)
@@ -131,7 +131,7 @@ class OffsetSynthesizer {
 
   // Inspection, for tests.
   size_t state_count() const { return values_.size(); }
-  const std::vector<double>& values() const { return values_; }      // displacement per state
+  const std::vector<double>& values() const { return values_; }  // displacement per state
   const std::vector<double>& pressures() const { return pressures_; }
   bool is_markov() const { return markov_; }  // false: rubber-stamp fallback (or no state)
   double rho() const { return rho_; }

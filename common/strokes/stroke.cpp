@@ -14,11 +14,16 @@ namespace {
 
 const StrokeStyle& style_of(LineKind kind, const StrokeStyles& styles) {
   switch (kind) {
-    case LineKind::Crease: return styles.crease;
-    case LineKind::Border: return styles.border;
-    case LineKind::Silhouette: break;
-    case LineKind::Decal: break;  // its own style: RunStyles::of
-    case LineKind::Hatching: break;
+    case LineKind::Crease:
+      return styles.crease;
+    case LineKind::Border:
+      return styles.border;
+    case LineKind::Silhouette:
+      break;
+    case LineKind::Decal:
+      break;  // its own style: RunStyles::of
+    case LineKind::Hatching:
+      break;
   }
   return styles.silhouette;
 }

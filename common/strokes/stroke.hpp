@@ -17,11 +17,11 @@
 
 #include <glm/glm.hpp>
 
+#include "common/core/stage.hpp"
 #include "common/strokes/base_stroke.hpp"
 #include "common/strokes/offset_synthesis.hpp"
-#include "common/core/stage.hpp"
-#include "common/strokes/visibility.hpp"
 #include "common/strokes/stroke_paper.hpp"
+#include "common/strokes/visibility.hpp"
 
 namespace plumbago {
 
@@ -87,23 +87,29 @@ inline constexpr Slot<Image> kRibbonEdges{"stroke.ribbon_edges"};
 struct StrokeStage {
   using Params = TypeList<>;
   static StageDesc describe() {
-    return {.name = "stroke",
-            .kind = StageKind::Frame,
-            .doc = "stylized strokes of the visible feature lines (Kalnins et al. 2002, §4.1)",
-            .params = {"stroke_paper"},
-            .inputs = {{.handle = kWindowLines}, {.handle = kVisibleRuns}, {.handle = kPage}, {.handle = kPaperHeight}},
-            .outputs = {{.handle = kStrokeColor, .channels = 3, .texel = Texel::Unorm8, .doc = "the strokes over the page",
-                         .tolerance = tolerance::kByte,
-                         .tolerance_why = "fed the same page, visible runs and paper; the same triangles; the GPU filters "
-                                          "the stroke texture with 8-bit weights and blends each fragment into an 8-bit "
-                                          "target: a derived bound allows 4.5/255 per fragment less the tolerance, and "
-                                          "anything in the 1-px band where a ribbon's edge passes within a subpixel of "
-                                          "the pixel center (measured max 0.0128 on the teapot where ribbons overlap)",
-                         .frame_color = true, .draws_over = {kPage.name}},
-                        {.handle = kStrokeFragments, .texel = Texel::Host, .doc = "reference only: fragments per pixel"},
-                        {.handle = kRibbonEdges, .texel = Texel::Host,
-                         .doc = "reference only: 1 where a ribbon edge passes near the pixel center"}},
-            .effects = {"strokes"}};
+    return {
+        .name = "stroke",
+        .kind = StageKind::Frame,
+        .doc = "stylized strokes of the visible feature lines (Kalnins et al. 2002, §4.1)",
+        .params = {"stroke_paper"},
+        .inputs = {{.handle = kWindowLines}, {.handle = kVisibleRuns}, {.handle = kPage}, {.handle = kPaperHeight}},
+        .outputs = {{.handle = kStrokeColor,
+                     .channels = 3,
+                     .texel = Texel::Unorm8,
+                     .doc = "the strokes over the page",
+                     .tolerance = tolerance::kByte,
+                     .tolerance_why = "fed the same page, visible runs and paper; the same triangles; the GPU filters "
+                                      "the stroke texture with 8-bit weights and blends each fragment into an 8-bit "
+                                      "target: a derived bound allows 4.5/255 per fragment less the tolerance, and "
+                                      "anything in the 1-px band where a ribbon's edge passes within a subpixel of "
+                                      "the pixel center (measured max 0.0128 on the teapot where ribbons overlap)",
+                     .frame_color = true,
+                     .draws_over = {kPage.name}},
+                    {.handle = kStrokeFragments, .texel = Texel::Host, .doc = "reference only: fragments per pixel"},
+                    {.handle = kRibbonEdges,
+                     .texel = Texel::Host,
+                     .doc = "reference only: 1 where a ribbon edge passes near the pixel center"}},
+        .effects = {"strokes"}};
   }
 };
 

@@ -119,8 +119,9 @@ class StrokeFileReader {
     bool on_surface = s.role == StrokeRole::Decal || s.role == StrokeRole::Hatching;
     if (j.contains("style") && !on_surface) fail(path + "/style", "only decals and hatching name a style");
     s.style_name = j.contains("style") ? text(j["style"], path + "/style") : file_style;
-    if (on_surface) s.style = style(s.style_name.empty() ? kDefaultDecalStyle : s.style_name,
-                                                     j.contains("style") ? path + "/style" : "/style");
+    if (on_surface)
+      s.style = style(s.style_name.empty() ? kDefaultDecalStyle : s.style_name,
+                      j.contains("style") ? path + "/style" : "/style");
     return s;
   }
 
@@ -152,9 +153,16 @@ class StrokeFileReader {
 };
 
 json camera_document(const Camera& c, glm::dvec3 origin) {
-  auto absolute = [&](glm::vec3 p) { glm::dvec3 w = glm::dvec3(p) + origin; return json::array({w.x, w.y, w.z}); };
-  return {{"eye", absolute(c.eye)}, {"target", absolute(c.target)}, {"up", json::array({c.up.x, c.up.y, c.up.z})},
-          {"fov_deg", c.fov_deg}, {"near", c.near}, {"far", c.far}};
+  auto absolute = [&](glm::vec3 p) {
+    glm::dvec3 w = glm::dvec3(p) + origin;
+    return json::array({w.x, w.y, w.z});
+  };
+  return {{"eye", absolute(c.eye)},
+          {"target", absolute(c.target)},
+          {"up", json::array({c.up.x, c.up.y, c.up.z})},
+          {"fov_deg", c.fov_deg},
+          {"near", c.near},
+          {"far", c.far}};
 }
 
 }  // namespace
@@ -216,8 +224,8 @@ std::string stroke_file_json(const StrokeFile& file, glm::dvec3 origin) {
   }
   // One line a key, one line a stroke: a file a person can read and edit.
   std::ostringstream out;
-  out << "{\n \"camera\": " << camera_document(file.camera, origin).dump() << ",\n \"resolution\": "
-      << json::array({file.width, file.height}).dump() << ",\n";
+  out << "{\n \"camera\": " << camera_document(file.camera, origin).dump()
+      << ",\n \"resolution\": " << json::array({file.width, file.height}).dump() << ",\n";
   if (!file.style.empty()) out << " \"style\": " << json(file.style).dump() << ",\n";
   out << " \"strokes\": [";
   for (size_t i = 0; i < strokes.size(); ++i) out << (i ? ",\n  " : "\n  ") << strokes[i].dump();

@@ -22,9 +22,9 @@
 #include "common/scene/scene.hpp"
 
 #include "common/core/stage.hpp"
-#include "common/strokes/basecoat.hpp"
-#include "common/sketchy/sketchy_composite.hpp"
 #include "common/pencil/paper.hpp"
+#include "common/sketchy/sketchy_composite.hpp"
+#include "common/strokes/basecoat.hpp"
 
 namespace plumbago {
 
@@ -33,8 +33,9 @@ struct StrokePaperParams {
   float brightness, contrast;
   template <class V>
   void visit(V& v) {
-    v.real(brightness, "brightness", 0.5, 0.0, 1.0, "b of Kalnins et al. 2002, §4.4: h' = sat(2c (sat(2b h) - 1/2) + "
-                                                    "1/2)");
+    v.real(brightness, "brightness", 0.5, 0.0, 1.0,
+           "b of Kalnins et al. 2002, §4.4: h' = sat(2c (sat(2b h) - 1/2) + "
+           "1/2)");
     v.real(contrast, "contrast", 0.5, 0.0, 1.0,
            "c of Kalnins et al. 2002, §4.4 (b = c = 1/2: h' = h, the paper's t(a))");
   }
@@ -70,24 +71,32 @@ inline constexpr Buffer kPage{"stroke_paper.color"};
 struct StrokePaperStage {
   using Params = TypeList<StrokePaperParams>;
   static StageDesc describe() {
-    return {.name = "stroke_paper",
-            .kind = StageKind::Frame,
-            .doc = "the stroke objects' page: the base coat through the paper effect (Kalnins et al. 2002, §4.4)",
-            .params = {"stroke_paper"},
-            .inputs = {{.handle = kCoat, .used = when::effect_basecoat}, {.handle = kPaperHeight},
-                       {.handle = kGBuffer.ids},
-                       {.handle = kComposeColor, .used = when::pencil_effects, .fed_in_parity = false},
-                       {.handle = kSketchColor, .used = when::effect_sketchy, .fed_in_parity = false},
-                       {.handle = kSketchDepth, .used = when::effect_sketchy, .fed_in_parity = false}},
-            .outputs = {{.handle = kPage, .channels = 3, .texel = Texel::Unorm8,
-                         .doc = "the page with the coat over the stroke objects", .tolerance = tolerance::kByte,
-                         .tolerance_why = "fed the same coat and paper height; the GPU's coat is 8-bit: alpha off by half "
-                                          "a step, doubled by the transfer's slope, plus half an output step: 1.5/255 at "
-                                          "most (measured 1.05/255)",
-                         .frame_color = true, .draws_over = {kSketchColor.name, kComposeColor.name}}},
-            .effects = {"strokes"},
-            .declared_effects = {{"strokes", "stroke-based rendering of the objects whose style is strokes (Kalnins et "
-                                             "al. 2002): paper, feature-line strokes; on by itself when one is", true}}};
+    return {
+        .name = "stroke_paper",
+        .kind = StageKind::Frame,
+        .doc = "the stroke objects' page: the base coat through the paper effect (Kalnins et al. 2002, §4.4)",
+        .params = {"stroke_paper"},
+        .inputs = {{.handle = kCoat, .used = when::effect_basecoat},
+                   {.handle = kPaperHeight},
+                   {.handle = kGBuffer.ids},
+                   {.handle = kComposeColor, .used = when::pencil_effects, .fed_in_parity = false},
+                   {.handle = kSketchColor, .used = when::effect_sketchy, .fed_in_parity = false},
+                   {.handle = kSketchDepth, .used = when::effect_sketchy, .fed_in_parity = false}},
+        .outputs = {{.handle = kPage,
+                     .channels = 3,
+                     .texel = Texel::Unorm8,
+                     .doc = "the page with the coat over the stroke objects",
+                     .tolerance = tolerance::kByte,
+                     .tolerance_why = "fed the same coat and paper height; the GPU's coat is 8-bit: alpha off by half "
+                                      "a step, doubled by the transfer's slope, plus half an output step: 1.5/255 at "
+                                      "most (measured 1.05/255)",
+                     .frame_color = true,
+                     .draws_over = {kSketchColor.name, kComposeColor.name}}},
+        .effects = {"strokes"},
+        .declared_effects = {{"strokes",
+                              "stroke-based rendering of the objects whose style is strokes (Kalnins et "
+                              "al. 2002): paper, feature-line strokes; on by itself when one is",
+                              true}}};
   }
 };
 

@@ -1,5 +1,5 @@
-#include "common/scene/json_position.hpp"
 #include "common/strokes/stroke_style.hpp"
+#include "common/scene/json_position.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -38,7 +38,8 @@ struct Refuser {
   }
   void check_range(const std::string& path, double x, double lo, double hi) const {
     if (!std::isfinite(x)) fail(path, "must be a finite number, got " + number_text(x));
-    if (x < lo || x > hi) fail(path, "must be in [" + number_text(lo) + ", " + number_text(hi) + "], got " + number_text(x));
+    if (x < lo || x > hi)
+      fail(path, "must be in [" + number_text(lo) + ", " + number_text(hi) + "], got " + number_text(x));
   }
 };
 
@@ -113,7 +114,8 @@ class Reader {
   void boolean(bool& b, const char* name, bool def, const char*) {
     b = def;
     if (!read(name)) return;
-    if (!j_[name].is_boolean()) r_.fail(key_path(name), std::string("expected true or false, got ") + j_[name].type_name());
+    if (!j_[name].is_boolean())
+      r_.fail(key_path(name), std::string("expected true or false, got ") + j_[name].type_name());
     b = j_[name].get<bool>();
   }
   template <class E>

@@ -70,17 +70,21 @@ struct StrokeStyle {
     v.real(width_px, "width_px", 4.0, 0.1, 200.0, "width of the stroke, px (Kalnins et al. 2002, §4.1 `width`)");
     v.real(taper_px, "taper_px", 24.0, 0.0, 1000.0,
            "T: within T px of an end the width is x sqrt(1 - ((T - dl)/T)^2); 0 = no taper");
-    v.real(fade_px, "fade_px", 0.0, 0.0, 1000.0, "F: within F px of an end alpha is x (1 - ((F - dl)/F)^2)^1.5; 0 = off");
+    v.real(fade_px, "fade_px", 0.0, 0.0, 1000.0,
+           "F: within F px of an end alpha is x (1 - ((F - dl)/F)^2)^1.5; 0 = off");
     v.real(halo_px, "halo_px", 6.0, 0.0, 1000.0,
            "H: within H px of an end caused by occlusion, h = (H - dl)/H, width x (1 - h^2)^0.25, alpha x (1 - h^2)^5");
-    v.real(flare, "flare", 0.0, -1.0, 10.0, "width x (1 + flare (1 - 2 dl / L)): > 0 widens the ends, < 0 narrows them");
+    v.real(flare, "flare", 0.0, -1.0, 10.0,
+           "width x (1 + flare (1 - 2 dl / L)): > 0 widens the ends, < 0 narrows them");
     v.real(alpha, "alpha", 1.0, 0.0, 1.0, "opacity of the stroke");
     v.real(color_r, "color_r", 0.1, 0.0, 1.0, "stroke color, red");
     v.real(color_g, "color_g", 0.1, 0.0, 1.0, "stroke color, green");
     v.real(color_b, "color_b", 0.1, 0.0, 1.0, "stroke color, blue");
-    v.choice(texture, "texture", StrokeTextureKind::Pencil, stroke_texture_names(), "stroke texture (Kalnins et al. "
-                                                                                    "2002, §4.1)");
-    v.real(texture_period_px, "texture_period_px", 64.0, 1.0, 10000.0, "px along the stroke that one tile of the texture spans");
+    v.choice(texture, "texture", StrokeTextureKind::Pencil, stroke_texture_names(),
+             "stroke texture (Kalnins et al. "
+             "2002, §4.1)");
+    v.real(texture_period_px, "texture_period_px", 64.0, 1.0, 10000.0,
+           "px along the stroke that one tile of the texture spans");
     v.real(sample_px, "sample_px", 3.5, 0.25, 100.0,
            "resampling step along the spline, px (Kalnins et al. 2002, §4.1)");
     v.boolean(pressure_width, "pressure_width", true, "the offsets' pressure multiplies the width");

@@ -84,9 +84,12 @@ Recipe ink(uint32_t seed) {
 
 Recipe recipe(StrokeTextureKind kind, uint32_t seed) {
   switch (kind) {
-    case StrokeTextureKind::Pencil: return pencil(seed);
-    case StrokeTextureKind::Charcoal: return charcoal(seed);
-    case StrokeTextureKind::Ink: return ink(seed);
+    case StrokeTextureKind::Pencil:
+      return pencil(seed);
+    case StrokeTextureKind::Charcoal:
+      return charcoal(seed);
+    case StrokeTextureKind::Ink:
+      return ink(seed);
   }
   throw std::invalid_argument("stroke_texture: unknown kind " + std::to_string(int(kind)));
 }

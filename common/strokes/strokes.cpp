@@ -141,15 +141,29 @@ class PathBuilder {
   }
 
   static WindowPath decal_piece(uint32_t object, uint32_t index, bool hatch, const HatchWeight& weight) {
-    return {hatch ? LineKind::Hatching : LineKind::Decal, object, false, true, 0, {}, {}, {}, {}, {}, {}, 0, {},
-            index, weight.alpha, weight.width};
+    return {hatch ? LineKind::Hatching : LineKind::Decal,
+            object,
+            false,
+            true,
+            0,
+            {},
+            {},
+            {},
+            {},
+            {},
+            {},
+            0,
+            {},
+            index,
+            weight.alpha,
+            weight.width};
   }
 
   // A decal's or hatch's segments test the faces of their ends.
   void flush_decal(WindowPath& piece) {
     for (size_t k = 0; k + 1 < piece.surface.size(); ++k)
-      piece.front_faces.push_back({out_.face_key(piece.object, piece.surface[k].face),
-                                   out_.face_key(piece.object, piece.surface[k + 1].face)});
+      piece.front_faces.push_back(
+          {out_.face_key(piece.object, piece.surface[k].face), out_.face_key(piece.object, piece.surface[k + 1].face)});
     flush(piece);
   }
 
@@ -178,8 +192,10 @@ void assign_keys(WindowLines& lines) {
   uint64_t next = uint64_t(lines.face_count) + 1;
   size_t silhouettes = 0;
   for (WindowPath& p : lines.paths)
-    if (p.kind != LineKind::Silhouette) p.key = uint32_t(next++);
-    else ++silhouettes;
+    if (p.kind != LineKind::Silhouette)
+      p.key = uint32_t(next++);
+    else
+      ++silhouettes;
   uint64_t base = ((next - 1) >> 8) + 1;
   if (base + silhouettes >= (uint64_t(1) << 24))
     throw std::length_error("the ID image's keys do not fit 32 bits: " + std::to_string(lines.face_count) + " faces, " +
@@ -194,18 +210,25 @@ void assign_keys(WindowLines& lines) {
 
 const char* line_kind_name(LineKind kind) {
   switch (kind) {
-    case LineKind::Crease: return "crease";
-    case LineKind::Border: return "border";
-    case LineKind::Silhouette: return "silhouette";
-    case LineKind::Decal: return "decal";
-    case LineKind::Hatching: break;
+    case LineKind::Crease:
+      return "crease";
+    case LineKind::Border:
+      return "border";
+    case LineKind::Silhouette:
+      return "silhouette";
+    case LineKind::Decal:
+      return "decal";
+    case LineKind::Hatching:
+      break;
   }
   return "hatching";
 }
 
 WindowProjection::WindowProjection(const Camera& camera, int width, int height)
-    : view(glm::dmat4(camera.view())), clip(glm::dmat4(camera.projection(float(width) / float(height))) * view),
-      width(width), height(height) {}
+    : view(glm::dmat4(camera.view())),
+      clip(glm::dmat4(camera.projection(float(width) / float(height))) * view),
+      width(width),
+      height(height) {}
 
 glm::dvec3 WindowProjection::operator()(glm::dvec3 world) const {
   glm::dvec4 c = clip * glm::dvec4(world, 1.0);
@@ -252,10 +275,10 @@ WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects
   for (uint32_t d = 0; d < decals->size(); ++d) {
     out.decal_styles.push_back((*decals)[d].style);
     int group = (*decals)[d].hatch.group;
-    if (weights[d].alpha > 0) builder.add_decal((*decals)[d], d, weights[d], group >= 0 ? out.hatching[group].object : kMissed);
+    if (weights[d].alpha > 0)
+      builder.add_decal((*decals)[d], d, weights[d], group >= 0 ? out.hatching[group].object : kMissed);
   }
   return out;
 }
-
 
 }  // namespace plumbago

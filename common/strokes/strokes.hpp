@@ -23,9 +23,9 @@
 
 #include <glm/glm.hpp>
 
+#include "common/scene/scene.hpp"
 #include "common/strokes/feature_lines.hpp"
 #include "common/strokes/hatching.hpp"
-#include "common/scene/scene.hpp"
 
 namespace plumbago {
 
@@ -40,17 +40,20 @@ struct StrokesParams {
            "an edge is a crease when its face normals differ by more (Kalnins et al. 2002, §4.5)");
     v.boolean(silhouette_normalized, "silhouette_normalized", true,
               "g = n.normalize(eye - x); false: the paper's literal n.(eye - x) (Kalnins et al. 2002, §4.5)");
-    v.boolean(keep_back_facing, "keep_back_facing", false, "keep back-facing silhouettes (hidden-line mode, Kalnins et "
-                                                           "al. 2002, §4.5)");
-    v.real(id_crease_px, "id_crease_px", 2.0, 0.5, 16.0, "width of crease and border quads in the ID image (Kalnins et "
-                                                         "al. 2002, §4.6)");
+    v.boolean(keep_back_facing, "keep_back_facing", false,
+              "keep back-facing silhouettes (hidden-line mode, Kalnins et "
+              "al. 2002, §4.5)");
+    v.real(id_crease_px, "id_crease_px", 2.0, 0.5, 16.0,
+           "width of crease and border quads in the ID image (Kalnins et "
+           "al. 2002, §4.6)");
     v.real(id_silhouette_px, "id_silhouette_px", 3.0, 0.5, 16.0,
            "width of silhouette quads in the ID image (Kalnins et al. 2002, §4.6)");
     v.real(id_depth_bias, "id_depth_bias", 0.005, 0.0, 0.5,
            "lines are depth-tested at d (1 - bias) against the faces (Kalnins et al. 2002, §4.6; relative, linear view "
            "depth)");
-    v.real(vis_step_px, "vis_step_px", 2.0, 0.25, 64.0, "visibility samples along a path, pixels apart (Kalnins et al. "
-                                                        "2002, §4.6)");
+    v.real(vis_step_px, "vis_step_px", 2.0, 0.25, 64.0,
+           "visibility samples along a path, pixels apart (Kalnins et al. "
+           "2002, §4.6)");
   }
 };
 
@@ -81,7 +84,7 @@ struct WindowPath {
 };
 
 struct WindowLines {
-  std::vector<WindowPath> paths;  // creases and borders first, then silhouettes, then decals and hatches
+  std::vector<WindowPath> paths;     // creases and borders first, then silhouettes, then decals and hatches
   std::vector<uint32_t> first_face;  // per scene object
   uint32_t face_count = 0, silhouette_base = 0;
   int width = 0, height = 0;
@@ -109,7 +112,6 @@ struct ProjectedDecal;
 using DecalSurface = std::vector<ProjectedDecal>;  // common/strokes/decal.hpp
 WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which = LineObjects::Strokes,
                          const LineMeshes* prepared = nullptr, const DecalSurface* decals = nullptr);
-
 
 // The window position and linear depth of a world point (docs/conventions.md), in double.
 struct WindowProjection {

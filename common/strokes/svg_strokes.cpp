@@ -54,7 +54,8 @@ class SvgReader {
   // The root's user space onto the window: viewBox, else width and height, else the window.
   void root(const Element& svg) {
     std::vector<double> box = numbers(svg.attributes.count("viewBox") ? svg.attributes.at("viewBox") : "");
-    if (box.size() == 4) origin_ = {box[0], box[1]}, size_ = {box[2], box[3]};
+    if (box.size() == 4)
+      origin_ = {box[0], box[1]}, size_ = {box[2], box[3]};
     else if (svg.attributes.count("width") && svg.attributes.count("height"))
       size_ = {numbers(svg.attributes.at("width")).at(0), numbers(svg.attributes.at("height")).at(0)};
     if (!(size_.x > 0 && size_.y > 0)) fail(svg, "its viewBox or width and height must be positive");
@@ -98,7 +99,7 @@ class SvgReader {
         continue;
       }
       for (size_t k = 0; k < v.size(); k += arity) {
-        glm::dvec2 to = kind == 'H' ? glm::dvec2(v[k] + (relative ? at.x : 0), at.y)
+        glm::dvec2 to = kind == 'H'   ? glm::dvec2(v[k] + (relative ? at.x : 0), at.y)
                         : kind == 'V' ? glm::dvec2(at.x, v[k] + (relative ? at.y : 0))
                                       : glm::dvec2(v[k], v[k + 1]) + (relative ? at : glm::dvec2(0));
         if (kind == 'M' && k == 0) out.push_back({}), start = to;

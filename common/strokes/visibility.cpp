@@ -44,8 +44,8 @@ glm::dvec3 world_at(const WindowPath& p, double s) {
 
 VisibilitySample sample_at(const WindowPath& p, double s) {
   PathPoint at = point_at(p, s);
-  VisibilitySample v{glm::vec2(at.window), p.kind == LineKind::Silhouette ? kSilhouetteSample : kCreaseSample, p.key,
-                     {0, 0}, 0, 0};
+  VisibilitySample v{
+      glm::vec2(at.window), p.kind == LineKind::Silhouette ? kSilhouetteSample : kCreaseSample, p.key, {0, 0}, 0, 0};
   if (p.kind == LineKind::Decal) {  // Kalnins et al. 2002, §3, §4.5: the face of the nearer end
     v.kind = kDecalSample;
     v.faces[0] = at.t < 0.5 ? p.front_faces[at.segment].x : p.front_faces[at.segment].y;
@@ -221,8 +221,8 @@ class RunBuilder {
 
   const WindowLines& lines_;
   const SampleTest& test_;
-  std::vector<Tested> tested_;   // the first round, path after path
-  std::vector<size_t> first_;    // each path's first sample in tested_, and the end
+  std::vector<Tested> tested_;  // the first round, path after path
+  std::vector<size_t> first_;   // each path's first sample in tested_, and the end
   std::vector<VisibilitySample> batch_;
   Visibility out_;
 };

@@ -30,10 +30,10 @@
 
 #include <glm/glm.hpp>
 
-#include "common/util/image.hpp"
 #include "common/core/stage.hpp"
-#include "common/strokes/strokes.hpp"
 #include "common/strokes/id_image.hpp"
+#include "common/strokes/strokes.hpp"
+#include "common/util/image.hpp"
 
 namespace plumbago {
 
@@ -64,9 +64,9 @@ bool sample_visible(const ImageU32& keys, const VisibilitySample& s);
 
 // A visible stretch of a path, in window arc length.
 struct VisibleRun {
-  uint32_t path;  // index in WindowLines::paths
-  double s0, s1;  // s1 > s0; a closed path's run may pass its seam (s1 beyond its length)
-  bool closed;    // the whole closed path
+  uint32_t path;                      // index in WindowLines::paths
+  double s0, s1;                      // s1 > s0; a closed path's run may pass its seam (s1 beyond its length)
+  bool closed;                        // the whole closed path
   bool occluded_start, occluded_end;  // the end is where the path goes out of sight
   std::vector<glm::dvec2> window;     // the path's window polyline from s0 to s1
 };
@@ -95,10 +95,13 @@ struct VisibilityStage {
             .doc = "visibility of stroke samples from the ID image (Kalnins et al. 2002, §4.6)",
             .params = {"strokes"},
             .inputs = {{.handle = kIds}, {.handle = kWindowLines}},
-            .outputs = {{.handle = kFlags, .texel = Texel::Unorm8,
+            .outputs = {{.handle = kFlags,
+                         .texel = Texel::Unorm8,
                          .doc = "1 where a sample is visible: one texel per sample, 1024 a row",
                          .tolerance_why = "fed the same ID image: the same integer test on both"},
-                        {.handle = kVisibleRuns, .channels = 0, .texel = Texel::Host,
+                        {.handle = kVisibleRuns,
+                         .channels = 0,
+                         .texel = Texel::Host,
                          .doc = "the visible runs of every path, ends bisected to 1 px (CPU)"}},
             .effects = {"strokes"}};
   }

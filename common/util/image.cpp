@@ -54,12 +54,11 @@ void write_image(const Image& img, OutputFile& file) {
   bool is_float = std::filesystem::path(path).extension() == ".exr";
   auto out = OIIO::ImageOutput::create(path);
   if (!out) throw std::runtime_error(path + ": " + OIIO::geterror());
-  OIIO::ImageSpec spec(img.width, img.height, img.channels,
-                       is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+  OIIO::ImageSpec spec(img.width, img.height, img.channels, is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
   spec.attribute("DateTime", header_date());
   Image top_first = flipped(img);
-  if (!out->open(file.temporary_path(), spec) ||
-      !out->write_image(OIIO::TypeDesc::FLOAT, top_first.data.data()) || !out->close())
+  if (!out->open(file.temporary_path(), spec) || !out->write_image(OIIO::TypeDesc::FLOAT, top_first.data.data()) ||
+      !out->close())
     throw std::runtime_error(path + ": " + out->geterror());
 }
 

@@ -11,10 +11,10 @@ namespace {
 
 void require_same_shape(const Image& a, const Image& b) {
   if (a.width != b.width || a.height != b.height || a.channels != b.channels)
-    throw std::invalid_argument("compare_images: images differ in size or channels (" +
-                                std::to_string(a.width) + "x" + std::to_string(a.height) + "x" +
-                                std::to_string(a.channels) + " vs " + std::to_string(b.width) + "x" +
-                                std::to_string(b.height) + "x" + std::to_string(b.channels) + ")");
+    throw std::invalid_argument("compare_images: images differ in size or channels (" + std::to_string(a.width) + "x" +
+                                std::to_string(a.height) + "x" + std::to_string(a.channels) + " vs " +
+                                std::to_string(b.width) + "x" + std::to_string(b.height) + "x" +
+                                std::to_string(b.channels) + ")");
 }
 
 double pixel_max_diff(const Image& a, const Image& b, size_t i) {
@@ -68,8 +68,8 @@ Image diff_heatmap(const Image& a, const Image& b, double tolerance) {
 
 std::string format_diff(const std::string& name, const ImageDiff& d) {
   char buf[256];
-  std::snprintf(buf, sizeof buf, "%-16s max_abs %.3g  rmse %.3g  over %.4f%% (tol %.3g, %zu px)",
-                name.c_str(), d.max_abs, d.rmse, 100 * d.over_tolerance, d.tolerance, d.compared);
+  std::snprintf(buf, sizeof buf, "%-16s max_abs %.3g  rmse %.3g  over %.4f%% (tol %.3g, %zu px)", name.c_str(),
+                d.max_abs, d.rmse, 100 * d.over_tolerance, d.tolerance, d.compared);
   return buf;
 }
 

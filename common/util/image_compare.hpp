@@ -12,7 +12,7 @@ struct ImageDiff {
   double rmse = 0;            // root mean square of |a - b| over compared values
   double over_tolerance = 0;  // share of compared pixels with any channel over tolerance
   double tolerance = 0;
-  size_t compared = 0;        // pixels compared (after the mask)
+  size_t compared = 0;  // pixels compared (after the mask)
 };
 
 // Compares `a` and `b` (same size and channels). `mask`, when given, is a 1-channel

@@ -36,7 +36,8 @@ float TileablePerlin::operator()(glm::vec2 p) const {
   glm::vec2 cell = glm::floor(p), f = p - cell;
   int i = int(cell.x), j = int(cell.y);
   float n00 = glm::dot(gradient(i, j), f), n10 = glm::dot(gradient(i + 1, j), f - glm::vec2(1, 0));
-  float n01 = glm::dot(gradient(i, j + 1), f - glm::vec2(0, 1)), n11 = glm::dot(gradient(i + 1, j + 1), f - glm::vec2(1, 1));
+  float n01 = glm::dot(gradient(i, j + 1), f - glm::vec2(0, 1)),
+        n11 = glm::dot(gradient(i + 1, j + 1), f - glm::vec2(1, 1));
   float u = fade(f.x), v = fade(f.y);
   return glm::mix(glm::mix(n00, n10, u), glm::mix(n01, n11, u), v);
 }
@@ -80,7 +81,8 @@ Image perlin_noise_texture(const NoiseTextureParams& p, uint32_t seed) {
   float to_lattice = float(p.period) / float(p.size);
   for (int y = 0; y < p.size; ++y)
     for (int x = 0; x < p.size; ++x)
-      img.at(x, y) = std::clamp(float(M_SQRT2) * noise(glm::vec2(float(x) + 0.5f, float(y) + 0.5f) * to_lattice), -1.0f, 1.0f);
+      img.at(x, y) =
+          std::clamp(float(M_SQRT2) * noise(glm::vec2(float(x) + 0.5f, float(y) + 0.5f) * to_lattice), -1.0f, 1.0f);
   return img;
 }
 

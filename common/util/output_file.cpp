@@ -56,7 +56,8 @@ void OutputFiles::folder(const std::string& dir) {
   std::vector<fs::path> made;
   for (; !missing.empty() && !fs::exists(missing); missing = missing.parent_path()) made.insert(made.begin(), missing);
   if (!missing.empty() && !fs::is_directory(missing))
-    throw std::runtime_error(dir + ": " + (made.empty() ? "" : "'" + missing.string() + "' ") + "is a file, not a folder");
+    throw std::runtime_error(dir + ": " + (made.empty() ? "" : "'" + missing.string() + "' ") +
+                             "is a file, not a folder");
   check_writable_folder(missing.empty() ? fs::path(".") : missing, dir);
   for (const fs::path& p : made) {
     fs::create_directory(p);

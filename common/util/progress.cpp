@@ -5,7 +5,10 @@
 namespace plumbago {
 
 Progress::Progress(std::string label, size_t total, bool enabled, double delay_s)
-    : label_(std::move(label)), total_(total), enabled_(enabled), delay_s_(delay_s),
+    : label_(std::move(label)),
+      total_(total),
+      enabled_(enabled),
+      delay_s_(delay_s),
       start_(std::chrono::steady_clock::now()) {}
 
 Progress::~Progress() {

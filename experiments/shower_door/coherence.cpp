@@ -30,7 +30,8 @@ double Residuals::coherence() const {
 Image residual_map(const Image& prev, const Image& next, const Image& motion, Sampling sampling) {
   if (prev.width != next.width || prev.height != next.height || prev.channels != next.channels ||
       motion.width != next.width || motion.height != next.height || motion.channels != 3 || next.channels > 4)
-    throw std::invalid_argument("shower_door: patterns and motion map differ in size or channels, or a pattern has over 4");
+    throw std::invalid_argument(
+        "shower_door: patterns and motion map differ in size or channels, or a pattern has over 4");
   Image out(next.width, next.height, 2);
   for (int y = 0; y < next.height; ++y)
     for (int x = 0; x < next.width; ++x) {

@@ -80,9 +80,10 @@ void run(const Options& o) {
   if (scene.objects.empty()) throw std::runtime_error(o.scene_path + ": no object has style sketchy");
   scene.width = scene.height = o.size;
   std::string meshes;
-  for (const SceneObject& obj : scene.objects) meshes += (meshes.empty() ? "" : " ") + std::filesystem::path(obj.mesh->name).filename().string();
-  std::printf("scene %s, meshes: %s\n%d frames, %g deg apart, %dx%d\n", o.scene_path.c_str(), meshes.c_str(),
-              o.frames, o.step_deg, o.size, o.size);
+  for (const SceneObject& obj : scene.objects)
+    meshes += (meshes.empty() ? "" : " ") + std::filesystem::path(obj.mesh->name).filename().string();
+  std::printf("scene %s, meshes: %s\n%d frames, %g deg apart, %dx%d\n", o.scene_path.c_str(), meshes.c_str(), o.frames,
+              o.step_deg, o.size, o.size);
 
   std::vector<Mode> modes;
   for (const std::string& name : o.modes) modes.push_back(make_mode(scene, name));
@@ -91,7 +92,8 @@ void run(const Options& o) {
   std::ofstream csv(o.out);
   if (!csv) throw std::runtime_error("cannot write " + o.out);
   csv << "mesh,size,step_deg,min_motion_px,mode,pair,covered,pixels,field_A,field_B,field_coherence,field_A_nearest,"
-         "field_coherence_nearest,image_A,image_B,image_coherence,own_shell_share,field_A_own_shell,field_A_other_shell\n";
+         "field_coherence_nearest,image_A,image_B,image_coherence,own_shell_share,field_A_own_shell,field_A_other_"
+         "shell\n";
   std::map<std::string, std::vector<double>> field_scores, image_scores;
   Previous prev;
   for (int t = 0; t < o.frames; ++t) {
@@ -119,14 +121,16 @@ void run(const Options& o) {
         Residuals image = residuals(before.sketch, f.sketch, motion, Sampling::Bilinear);
         image_scores[m.name].push_back(image.coherence());
         double none = std::nan("");
-        csv << meshes << ',' << o.size << ',' << o.step_deg << ',' << o.motion.min_motion_px << ',' << m.name << ',' << t - 1 << ',' << covered << ',' << image.pixels
-            << ',' << number(m.perturbed ? field.attached : none) << ',' << number(m.perturbed ? field.fixed : none)
-            << ',' << number(m.perturbed ? field.coherence() : none) << ','
-            << number(m.perturbed ? nearest.attached : none) << ',' << number(m.perturbed ? nearest.coherence() : none)
-            << ',' << number(image.attached) << ',' << number(image.fixed) << ',' << number(image.coherence());
+        csv << meshes << ',' << o.size << ',' << o.step_deg << ',' << o.motion.min_motion_px << ',' << m.name << ','
+            << t - 1 << ',' << covered << ',' << image.pixels << ',' << number(m.perturbed ? field.attached : none)
+            << ',' << number(m.perturbed ? field.fixed : none) << ',' << number(m.perturbed ? field.coherence() : none)
+            << ',' << number(m.perturbed ? nearest.attached : none) << ','
+            << number(m.perturbed ? nearest.coherence() : none) << ',' << number(image.attached) << ','
+            << number(image.fixed) << ',' << number(image.coherence());
         if (!f.coordinates.empty()) {
           ShellSplit split = split_by_shell(m, view, points, f.coordinates, before.field, f.field, motion);
-          csv << ',' << number(split.own_share) << ',' << number(split.own.attached) << ',' << number(split.other.attached);
+          csv << ',' << number(split.own_share) << ',' << number(split.own.attached) << ','
+              << number(split.other.attached);
         } else {
           csv << ",,,";
         }
@@ -162,7 +166,9 @@ void run(const Options& o) {
 int main(int argc, char** argv) {
   Options o;
   CLI::App app{"Shower-door effect of sketchy drawing, measured over a camera orbit"};
-  app.add_option("scene", o.scene_path, "scene file; its sketchy objects are drawn")->required()->check(CLI::ExistingFile);
+  app.add_option("scene", o.scene_path, "scene file; its sketchy objects are drawn")
+      ->required()
+      ->check(CLI::ExistingFile);
   app.add_option("--frames", o.frames, "frames of the orbit")->check(CLI::Range(2, 3600));
   app.add_option("--step-deg", o.step_deg, "orbit step between frames, degrees about the camera's up axis");
   app.add_option("--size", o.size, "image width and height, pixels")->check(CLI::Range(16, 8192));

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "reference/util/rows.hpp"
 #include "reference/sketchy/sketchy_composite.hpp"
 #include "reference/sketchy/sketchy_enlarged.hpp"
+#include "reference/util/rows.hpp"
 
 namespace plumbago::shower_door {
 
@@ -84,7 +84,8 @@ Image own_shell(const Mode& mode, const View& view, const Image& points, const I
     for (int x = 0; x < points.width; ++x) {
       if (points.at(x, y, 3) == 0.0f || coordinates.at(x, y, 3) == 0.0f) continue;
       unsigned i = view.gbuffer.ids.at(x, y, 0) - 1;
-      glm::vec3 shell = glm::vec3(coordinates.at(x, y, 0), coordinates.at(x, y, 1), coordinates.at(x, y, 2)) * diagonal[i];
+      glm::vec3 shell =
+          glm::vec3(coordinates.at(x, y, 0), coordinates.at(x, y, 1), coordinates.at(x, y, 2)) * diagonal[i];
       glm::vec3 surface(to_object[i] * glm::vec4(points.at(x, y, 0), points.at(x, y, 1), points.at(x, y, 2), 1.0f));
       out.at(x, y) = glm::length(shell - surface) <= reach * distance[i] ? 1.0f : 0.0f;
     }

@@ -39,8 +39,8 @@ struct View {
 View trace_view(const Scene& sketchy, const Camera& camera);
 
 struct ModeFrame {
-  Image field;   // (u, v) at each pixel center, 2 ch per edge copy (repeat: edge_copies); empty if unperturbed
-  Image sketch;  // 3 ch: the sketch over white paper (reference::sketchy_composite)
+  Image field;        // (u, v) at each pixel center, 2 ch per edge copy (repeat: edge_copies); empty if unperturbed
+  Image sketch;       // 3 ch: the sketch over white paper (reference::sketchy_composite)
   Image coordinates;  // object styles: the enlarged surface's noise coordinates (4 ch); empty otherwise
 };
 ModeFrame render_mode(const Mode& mode, const View& view);

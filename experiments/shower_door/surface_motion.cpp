@@ -48,7 +48,8 @@ bool seen_around(const Image& points, glm::vec2 q, glm::vec3 x, float tolerance)
   for (int j = y0; j <= y0 + 1; ++j)
     for (int i = x0; i <= x0 + 1; ++i) {
       if (i < 0 || j < 0 || i >= points.width || j >= points.height || points.at(i, j, 3) == 0.0f) return false;
-      if (glm::length(glm::vec3(points.at(i, j, 0), points.at(i, j, 1), points.at(i, j, 2)) - x) > tolerance) return false;
+      if (glm::length(glm::vec3(points.at(i, j, 0), points.at(i, j, 1), points.at(i, j, 2)) - x) > tolerance)
+        return false;
     }
   return true;
 }
@@ -66,7 +67,8 @@ Image surface_motion(const Camera& prev, const Image& prev_points, const Image& 
       if (next_points.at(x, y, 3) == 0.0f) continue;
       glm::vec3 point(next_points.at(x, y, 0), next_points.at(x, y, 1), next_points.at(x, y, 2));
       glm::vec3 q = project(prev, w, h, point);
-      if (q.z <= 0 || !seen_around(prev_points, glm::vec2(q), point, params.footprints * pixel_per_depth * q.z)) continue;
+      if (q.z <= 0 || !seen_around(prev_points, glm::vec2(q), point, params.footprints * pixel_per_depth * q.z))
+        continue;
       glm::vec2 center(float(x) + 0.5f, float(y) + 0.5f);
       if (glm::length(glm::vec2(q) - center) < params.min_motion_px) continue;
       out.at(x, y, 0) = q.x, out.at(x, y, 1) = q.y, out.at(x, y, 2) = 1.0f;

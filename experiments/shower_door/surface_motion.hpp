@@ -24,8 +24,8 @@ Image surface_points(const std::vector<WorldObject>& objects, const GBuffer& g);
 glm::vec3 project(const Camera& c, int width, int height, glm::vec3 x);
 
 struct MotionParams {
-  float footprints = 3.0f;    // visibility: the previous frame sees points within this many pixel sizes of x
-  float min_motion_px = 1.0f; // pixels whose surface moved less than this are left out
+  float footprints = 3.0f;     // visibility: the previous frame sees points within this many pixel sizes of x
+  float min_motion_px = 1.0f;  // pixels whose surface moved less than this are left out
 };
 
 // For each pixel p of the next frame: p', where its surface point x was in the previous

@@ -14,10 +14,10 @@
 namespace plumbago::temporal_coherence {
 
 struct PairMeasures {
-  size_t runs_prev = 0, runs_next = 0;  // strokes drawn in each frame
+  size_t runs_prev = 0, runs_next = 0;            // strokes drawn in each frame
   double length_prev_px = 0, length_next_px = 0;  // and their total length
-  size_t died = 0;  // strokes of prev none of whose samples lands on next (carry prev -> next)
-  size_t born = 0;  // strokes of next none of whose samples lands on prev (carry next -> prev)
+  size_t died = 0;                  // strokes of prev none of whose samples lands on next (carry prev -> next)
+  size_t born = 0;                  // strokes of next none of whose samples lands on prev (carry next -> prev)
   double died_px = 0, born_px = 0;  // their total length
   size_t samples = 0, matched = 0;  // samples of prev, and those that land on next
   // Per sample of prev that lands on next: how far its texture coordinate moved along the

@@ -57,7 +57,9 @@ struct Piece {
 class PieceGrid {
  public:
   PieceGrid(const FrameStrokes& f, double cell)
-      : cell_(cell), columns_(int(std::ceil(f.width / cell)) + 1), rows_(int(std::ceil(f.height / cell)) + 1),
+      : cell_(cell),
+        columns_(int(std::ceil(f.width / cell)) + 1),
+        rows_(int(std::ceil(f.height / cell)) + 1),
         cells_(size_t(columns_) * size_t(rows_)) {
     for (size_t r = 0; r < f.runs.size(); ++r)
       for (size_t k = 0; k + 1 < f.runs[r].samples.size(); ++k) {
@@ -119,8 +121,12 @@ std::optional<Landing> land(const FrameStrokes& to, const PieceGrid& grid, const
     auto [t, distance] = nearest_on(a.window, b.window, q);
     double depth = std::lerp(a.depth, b.depth, t);
     if (distance > p.radius_px || std::abs(depth - seen.z) > p.depth_tolerance * seen.z) return;
-    Landing l{piece.run, std::lerp(a.s, b.s, t), std::lerp(a.width, b.width, t), std::lerp(a.alpha, b.alpha, t),
-              glm::mix(a.offset, b.offset, t), distance};
+    Landing l{piece.run,
+              std::lerp(a.s, b.s, t),
+              std::lerp(a.width, b.width, t),
+              std::lerp(a.alpha, b.alpha, t),
+              glm::mix(a.offset, b.offset, t),
+              distance};
     if (better(l, best, sample.s)) best = l;
   });
   return best;

@@ -37,13 +37,16 @@ struct Options {
 
 // The columns every row starts with, and the measures' columns (stat_cells).
 const char* kScene = "scene,width,height,path,step";
-const char* kStats = "slide_mean_px,slide_median_px,slide_p95_px,slide_max_px,alpha_change_p95,alpha_change_max,"
-                     "width_change_p95_px,width_change_max_px,offset_change_mean_px,offset_change_p95_px";
-const char* kPairColumns = "pair,kind,runs_prev,runs_next,length_prev_px,length_next_px,born,died,born_px,died_px,"
-                           "samples,matched";
+const char* kStats =
+    "slide_mean_px,slide_median_px,slide_p95_px,slide_max_px,alpha_change_p95,alpha_change_max,"
+    "width_change_p95_px,width_change_max_px,offset_change_mean_px,offset_change_p95_px";
+const char* kPairColumns =
+    "pair,kind,runs_prev,runs_next,length_prev_px,length_next_px,born,died,born_px,died_px,"
+    "samples,matched";
 const char* kLayerColumns = "image_pixels,image_A,image_B,image_coherence";
-const char* kSummaryColumns = "pairs,kind,strokes_per_frame,length_per_frame_px,born_per_pair,died_per_pair,"
-                              "born_px_per_pair,died_px_per_pair,samples,matched";
+const char* kSummaryColumns =
+    "pairs,kind,strokes_per_frame,length_per_frame_px,born_per_pair,died_per_pair,"
+    "born_px_per_pair,died_px_per_pair,samples,matched";
 const char* kSummaryLayer = "image_coherence_mean,image_coherence_min,image_coherence_max";
 
 // ",v" with 6 significant digits, or "," for NaN (nothing measured).
@@ -65,8 +68,8 @@ std::string scene_cells(const Scene& scene, const std::string& name) {
 std::string stat_cells(const PairMeasures& m) {
   Stats slide = stats(m.slide_px), alpha = stats(m.alpha_change), width = stats(m.width_change_px),
         offset = stats(m.offset_change_px);
-  return cell(slide.mean) + cell(slide.median) + cell(slide.p95) + cell(slide.max) + cell(alpha.p95) +
-         cell(alpha.max) + cell(width.p95) + cell(width.max) + cell(offset.mean) + cell(offset.p95);
+  return cell(slide.mean) + cell(slide.median) + cell(slide.p95) + cell(slide.max) + cell(alpha.p95) + cell(alpha.max) +
+         cell(width.p95) + cell(width.max) + cell(offset.mean) + cell(offset.p95);
 }
 
 // The measures of one kind in one pair; the stroke layer's residuals on the "all" row only.

@@ -8,8 +8,8 @@
 #include "common/strokes/id_image.hpp"
 #include "common/strokes/stroke.hpp"
 #include "common/strokes/visibility.hpp"
-#include "gpu/gl/context.hpp"
 #include "gpu/core/stage.hpp"
+#include "gpu/gl/context.hpp"
 #include "gpu/gl/timer.hpp"
 
 namespace plumbago::gpu {
@@ -48,7 +48,8 @@ struct Renderer::State {
     for (size_t i = 0; i < plan.size(); ++i) passes[i]->dump(frame, plan[i]->stages, all_buffers);
     for (const std::string& name : dumped_buffers(frame.stages, frame.config())) {
       auto it = all_buffers.find(name);
-      if (it == all_buffers.end()) throw std::logic_error("GPU: stage '" + stage_of(name).name + "' did not write '" + name + "'");
+      if (it == all_buffers.end())
+        throw std::logic_error("GPU: stage '" + stage_of(name).name + "' did not write '" + name + "'");
       out[name] = std::move(it->second);
     }
     return out;
@@ -91,7 +92,8 @@ Frame Renderer::render(const FrameOptions& options) {
   Stopwatch readback;
   std::string color = frame_color_buffer(state_->frame.stages);  // none without effects: the blank page
   const Scene& scene = state_->frame.scene;
-  frame.color = color.empty() ? Image(scene.width, scene.height, 3, 1.0f) : download_texture(state_->frame.texture_named(color), 3);
+  frame.color = color.empty() ? Image(scene.width, scene.height, 3, 1.0f)
+                              : download_texture(state_->frame.texture_named(color), 3);
   frame.ran.push_back({"readback", readback.ms()});
   if (options.keep_buffers) frame.buffers = state_->dump();
   frame.counts = stroke_counts(state_->frame.data.find(kWindowLines), state_->frame.data.find(kVisibleRuns));

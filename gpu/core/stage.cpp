@@ -68,7 +68,8 @@ void GpuFrame::put(GBufferSlot gbuffer, const GBufferTargets& targets) { shared_
 const GBufferTargets& GpuFrame::get(GBufferSlot gbuffer) const {
   checked(gbuffer.name);
   auto it = shared_.find(gbuffer.name);
-  if (it == shared_.end()) throw std::logic_error(std::string("GPU frame: no pass made the G-buffer '") + gbuffer.name + "'");
+  if (it == shared_.end())
+    throw std::logic_error(std::string("GPU frame: no pass made the G-buffer '") + gbuffer.name + "'");
   return *std::any_cast<const GBufferTargets*>(it->second);
 }
 
@@ -189,10 +190,13 @@ std::vector<const GpuPassDef*> plan_passes(const std::vector<std::string>& stage
     if (covered.count(s)) continue;
     const GpuPassDef* best = nullptr;
     for (const GpuPassDef& p : registry()) {
-      bool all_run = std::all_of(p.stages.begin(), p.stages.end(), [&](const std::string& m) { return contains(stages, m); });
+      bool all_run =
+          std::all_of(p.stages.begin(), p.stages.end(), [&](const std::string& m) { return contains(stages, m); });
       if (contains(p.stages, s) && all_run && (!best || p.stages.size() > best->stages.size())) best = &p;
     }
-    if (!best) throw std::logic_error("the GPU backend computes stage '" + s + "' only fused with stages this frame does not run");
+    if (!best)
+      throw std::logic_error("the GPU backend computes stage '" + s +
+                             "' only fused with stages this frame does not run");
     size_t last = 0;
     for (const std::string& m : best->stages) {
       covered.insert(m);

@@ -21,10 +21,10 @@
 
 #include "common/core/handle.hpp"
 #include "common/core/preprocess.hpp"
-#include "common/scene/scene.hpp"
 #include "common/core/stage.hpp"
-#include "gpu/scene/gbuffer.hpp"
+#include "common/scene/scene.hpp"
 #include "gpu/gl/gl_objects.hpp"
+#include "gpu/scene/gbuffer.hpp"
 
 namespace plumbago::gpu {
 
@@ -39,8 +39,8 @@ class GpuFrame {
   Scene ordinary, sketchy;  // the objects each pipeline draws (common/sketchy/sketchy.hpp)
   const Preprocessed& pre;
   const std::vector<std::string> stages;  // the frame stages that run
-  bool dump = false;  // a dump writes every output, the skipped ones too, in the whole window
-  std::vector<std::string> running;  // the stages of the pass made or run now (none: pipeline, parity)
+  bool dump = false;                      // a dump writes every output, the skipped ones too, in the whole window
+  std::vector<std::string> running;       // the stages of the pass made or run now (none: pipeline, parity)
 
   template <class P>
   P params() const {

@@ -15,8 +15,8 @@ void debug_callback_sink(Context& ctx, bool is_error, std::string message) {
 
 namespace {
 
-void GLAPIENTRY on_debug_message(GLenum, GLenum type, GLuint, GLenum severity, GLsizei length,
-                                 const GLchar* text, const void* user) {
+void GLAPIENTRY on_debug_message(GLenum, GLenum type, GLuint, GLenum severity, GLsizei length, const GLchar* text,
+                                 const void* user) {
   bool is_error = type == GL_DEBUG_TYPE_ERROR || severity == GL_DEBUG_SEVERITY_HIGH;
   debug_callback_sink(*static_cast<Context*>(const_cast<void*>(user)), is_error, std::string(text, size_t(length)));
 }
@@ -49,8 +49,8 @@ Context::Context() : impl_((keep_freed_memory(), create_platform_context(platfor
   glGetIntegerv(GL_MAJOR_VERSION, &major);
   glGetIntegerv(GL_MINOR_VERSION, &minor);
   if (major * 10 + minor < 45)
-    throw std::runtime_error("GL 4.5 core is needed, the context offers " + gl_string(GL_VERSION) +
-                             " (" + gl_string(GL_RENDERER) + ")");
+    throw std::runtime_error("GL 4.5 core is needed, the context offers " + gl_string(GL_VERSION) + " (" +
+                             gl_string(GL_RENDERER) + ")");
   glEnable(GL_DEBUG_OUTPUT);
   glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
   glDebugMessageCallback(on_debug_message, this);
@@ -77,7 +77,8 @@ void Context::check_errors(const std::string& what) {
 }
 
 void Context::make_current() {
-  if (!impl_->make_current(true)) throw std::runtime_error("cannot make the " + platform_ + " GL context current again");
+  if (!impl_->make_current(true))
+    throw std::runtime_error("cannot make the " + platform_ + " GL context current again");
 }
 
 void Context::release() {

@@ -18,8 +18,8 @@ class Context {
   // std::runtime_error saying what is missing when no GL 4.5 core context can be had.
   static Context& get();
 
-  std::string renderer() const;  // GL_RENDERER
-  std::string version() const;   // GL_VERSION
+  std::string renderer() const;                              // GL_RENDERER
+  std::string version() const;                               // GL_VERSION
   const std::string& platform() const { return platform_; }  // "egl-device", "egl-surfaceless", "osmesa"
 
   // Throws std::runtime_error if GL reported an error (glGetError or a KHR_debug error

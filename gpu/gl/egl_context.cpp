@@ -66,9 +66,15 @@ EGLContext create_core_context(EGLDisplay display) {
   EGLConfig config = nullptr;
   EGLint n = 0;
   if (!eglChooseConfig(display, config_attribs, &config, 1, &n) || n == 0) config = nullptr;
-  const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                    EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                    EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE, EGL_NONE};
+  const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                    4,
+                                    EGL_CONTEXT_MINOR_VERSION,
+                                    5,
+                                    EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                    EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                    EGL_CONTEXT_OPENGL_DEBUG,
+                                    EGL_TRUE,
+                                    EGL_NONE};
   return eglCreateContext(display, config, EGL_NO_CONTEXT, context_attribs);
 }
 
@@ -83,15 +89,15 @@ std::unique_ptr<Context::Impl> create_platform_context(std::string& platform) {
     platform = "egl-surfaceless";
   }
   if (egl->display == EGL_NO_DISPLAY || !eglInitialize(egl->display, nullptr, nullptr))
-    throw std::runtime_error("no EGL display: install the Debian package 'libegl-mesa0' (Mesa's EGL) "
-                             "or an NVIDIA driver");
+    throw std::runtime_error(
+        "no EGL display: install the Debian package 'libegl-mesa0' (Mesa's EGL) "
+        "or an NVIDIA driver");
   if (!eglBindAPI(EGL_OPENGL_API)) throw std::runtime_error("EGL cannot bind the desktop OpenGL API");
   egl->context = create_core_context(egl->display);
   if (egl->context == EGL_NO_CONTEXT)
-    throw std::runtime_error("EGL cannot create a GL 4.5 core context (EGL error 0x" +
-                             std::to_string(eglGetError()) + "); Mesa's llvmpipe needs 'libgl1-mesa-dri'");
-  if (!egl->make_current(true))
-    throw std::runtime_error("EGL cannot make the context current without a surface");
+    throw std::runtime_error("EGL cannot create a GL 4.5 core context (EGL error 0x" + std::to_string(eglGetError()) +
+                             "); Mesa's llvmpipe needs 'libgl1-mesa-dri'");
+  if (!egl->make_current(true)) throw std::runtime_error("EGL cannot make the context current without a surface");
   return egl;
 }
 

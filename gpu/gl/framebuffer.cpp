@@ -31,7 +31,8 @@ void FullscreenPass::draw_inside(const Program& program, std::initializer_list<T
 void FullscreenPass::bind_targets(std::initializer_list<Texture*> targets) {
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   GLsizei n = 0;
-  for (Texture* t : targets) glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + GLenum(n++), GL_TEXTURE_2D, t->id(), 0);
+  for (Texture* t : targets)
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + GLenum(n++), GL_TEXTURE_2D, t->id(), 0);
   use_attachments(n, **targets.begin());
 }
 

@@ -11,20 +11,28 @@ namespace {
 
 GLenum format_of(int channels) {
   switch (channels) {
-    case 1: return GL_RED;
-    case 2: return GL_RG;
-    case 3: return GL_RGB;
-    case 4: return GL_RGBA;
+    case 1:
+      return GL_RED;
+    case 2:
+      return GL_RG;
+    case 3:
+      return GL_RGB;
+    case 4:
+      return GL_RGBA;
   }
   throw std::invalid_argument("images have 1 to 4 channels, not " + std::to_string(channels));
 }
 
 GLenum integer_format_of(int channels) {
   switch (channels) {
-    case 1: return GL_RED_INTEGER;
-    case 2: return GL_RG_INTEGER;
-    case 3: return GL_RGB_INTEGER;
-    case 4: return GL_RGBA_INTEGER;
+    case 1:
+      return GL_RED_INTEGER;
+    case 2:
+      return GL_RG_INTEGER;
+    case 3:
+      return GL_RGB_INTEGER;
+    case 4:
+      return GL_RGBA_INTEGER;
   }
   throw std::invalid_argument("images have 1 to 4 channels, not " + std::to_string(channels));
 }
@@ -119,8 +127,7 @@ Texture upload_texture_3d(const std::vector<Image>& layers, GLenum internal_form
   const Image& first = layers.at(0);
   GLuint id = 0;
   glGenTextures(1, &id);
-  Texture t{GlName<detail::delete_texture>(id), first.width, first.height, internal_format, target,
-            int(layers.size())};
+  Texture t{GlName<detail::delete_texture>(id), first.width, first.height, internal_format, target, int(layers.size())};
   glBindTexture(target, id);
   glTexStorage3D(target, 1, internal_format, first.width, first.height, GLsizei(layers.size()));
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);

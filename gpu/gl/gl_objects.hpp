@@ -2,8 +2,8 @@
 #pragma once
 
 #include <initializer_list>
-#include <vector>
 #include <utility>
+#include <vector>
 
 #include "common/util/image.hpp"
 #include "gpu/gl/gl.hpp"

@@ -26,12 +26,18 @@ struct OsMesaContext : Context::Impl {
 std::unique_ptr<Context::Impl> create_platform_context(std::string& platform) {
   platform = "osmesa";
   auto os = std::make_unique<OsMesaContext>();
-  const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                         OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
+  const int attribs[] = {OSMESA_FORMAT,
+                         OSMESA_RGBA,
+                         OSMESA_PROFILE,
+                         OSMESA_CORE_PROFILE,
+                         OSMESA_CONTEXT_MAJOR_VERSION,
+                         4,
+                         OSMESA_CONTEXT_MINOR_VERSION,
+                         5,
+                         0};
   os->context = OSMesaCreateContextAttribs(attribs, nullptr);
   if (!os->context) throw std::runtime_error("OSMesa cannot create a GL 4.5 core context");
-  if (!os->make_current(true))
-    throw std::runtime_error("OSMesa cannot make the context current");
+  if (!os->make_current(true)) throw std::runtime_error("OSMesa cannot make the context current");
   return os;
 }
 

@@ -36,7 +36,8 @@ class GlslDeclarer {
       defines_ += "#define " + upper(stage_ + "_" + n + "_" + names[i]) + " " + std::to_string(i) + "\n";
   }
   std::string text() const {
-    return "struct " + stage_ + "_params {\n" + fields_ + "};\nuniform " + stage_ + "_params " + stage_ + ";\n" + defines_;
+    return "struct " + stage_ + "_params {\n" + fields_ + "};\nuniform " + stage_ + "_params " + stage_ + ";\n" +
+           defines_;
   }
 
  private:
@@ -101,7 +102,10 @@ std::string glsl_params() {
 class ProgramVariants {
  public:
   ProgramVariants(std::string vertex, std::string fragment, std::string prelude, std::vector<std::string> switches)
-      : vertex_(std::move(vertex)), fragment_(std::move(fragment)), prelude_(std::move(prelude)), switches_(std::move(switches)) {}
+      : vertex_(std::move(vertex)),
+        fragment_(std::move(fragment)),
+        prelude_(std::move(prelude)),
+        switches_(std::move(switches)) {}
   // The program with switch k set to on[k].
   const Program& get(const std::vector<bool>& on);
 

@@ -27,17 +27,21 @@ void ComposePass::copy_blank_page(const ComposeInputs& in, const ComposeParams& 
     page_paper_ = paper;
     ComposeInputs blank{in.paper_color, false, in.paper_color, in.has_paper};
     pass_.draw(program(false, false, false, blank, p),
-               {{"interior_darkness", &in.paper_color}, {"paper_color", &in.paper_color}, {"contour_darkness", &in.paper_color}},
+               {{"interior_darkness", &in.paper_color},
+                {"paper_color", &in.paper_color},
+                {"contour_darkness", &in.paper_color}},
                page_);
   }
-  glCopyImageSubData(page_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, out.id(), GL_TEXTURE_2D, 0, 0, 0, 0, out.width, out.height, 1);
+  glCopyImageSubData(page_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, out.id(), GL_TEXTURE_2D, 0, 0, 0, 0, out.width, out.height,
+                     1);
 }
 
 void ComposePass::run(const Texture& contour_darkness, bool has_contours, const ComposeInputs& in,
                       const ComposeParams& p, Texture& out, const PixelRect& inside) {
   copy_blank_page(in, p, out);
   pass_.draw_inside(program(false, false, has_contours, in, p),
-                    {{"interior_darkness", &in.interior_darkness}, {"paper_color", &in.paper_color},
+                    {{"interior_darkness", &in.interior_darkness},
+                     {"paper_color", &in.paper_color},
                      {"contour_darkness", &contour_darkness}},
                     {&out}, inside, {});
 }
@@ -48,10 +52,10 @@ void ComposePass::run(const ContourSources& c, const ComposeInputs& in, const Co
   const Program& made = program(true, contour_darkness != nullptr, true, in, p);
   made.set_params(c.params);
   std::initializer_list<TextureBinding> textures = {{"interior_darkness", &in.interior_darkness},
-                                                   {"paper_color", &in.paper_color},
-                                                   {"lit_contour_darkness", &c.lit},
-                                                   {"copy_inputs", &c.copy_inputs},
-                                                   {"block_reach_max", &c.block_reach_max}};
+                                                    {"paper_color", &in.paper_color},
+                                                    {"lit_contour_darkness", &c.lit},
+                                                    {"copy_inputs", &c.copy_inputs},
+                                                    {"block_reach_max", &c.block_reach_max}};
   if (contour_darkness)
     pass_.draw_inside(made, textures, {&out, contour_darkness}, inside, {});
   else
@@ -92,8 +96,8 @@ class ComposeAlonePass : public ComposeStagePass {
   using ComposeStagePass::ComposeStagePass;
   void run(GpuFrame& f) override {
     const Texture* contours = f.get(maybe(kCopiesDarkness));
-    pass_.run(contours ? *contours : none_, contours != nullptr, inputs(f), f.params<ComposeParams>(), f.put(kComposeColor),
-              inside(f));
+    pass_.run(contours ? *contours : none_, contours != nullptr, inputs(f), f.params<ComposeParams>(),
+              f.put(kComposeColor), inside(f));
   }
 };
 
@@ -117,7 +121,7 @@ class ContoursInComposePass : public ComposeStagePass {
 }  // namespace
 
 PLUMBAGO_GPU_PASS(compose, {{"compose"}, {}, make_pass<ComposeAlonePass>});
-PLUMBAGO_GPU_PASS(multi_contour_compose, {{"multi_contour", "compose"}, {kCopiesDarkness.name},
-                                          make_pass<ContoursInComposePass>});
+PLUMBAGO_GPU_PASS(multi_contour_compose,
+                  {{"multi_contour", "compose"}, {kCopiesDarkness.name}, make_pass<ContoursInComposePass>});
 
 }  // namespace plumbago::gpu

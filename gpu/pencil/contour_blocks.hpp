@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "gpu/gl/gl_objects.hpp"
 #include "common/core/handle.hpp"
+#include "gpu/gl/gl_objects.hpp"
 
 namespace plumbago::gpu {
 

@@ -1,8 +1,8 @@
 #include "gpu/pencil/edge_detect.hpp"
 
 #include "common/scene/lights.hpp"
-#include "gpu/pencil/contour_blocks.hpp"
 #include "gpu/core/stage.hpp"
+#include "gpu/pencil/contour_blocks.hpp"
 
 namespace plumbago::gpu {
 
@@ -28,8 +28,8 @@ void EdgeDetectPass::run(const GBufferTargets& g, const EdgeDetectParams& p, con
   }
   glm::vec4 outside(background);
   if (out.darkness)
-    pass_.draw_inside(program, {{"normals", &normals}, {"shading_normals", &g.normal}}, {&out.lit, out.darkness}, covered,
-                      {outside, outside});
+    pass_.draw_inside(program, {{"normals", &normals}, {"shading_normals", &g.normal}}, {&out.lit, out.darkness},
+                      covered, {outside, outside});
   else
     pass_.draw_inside(program, {{"normals", &normals}, {"shading_normals", &g.normal}}, {&out.lit}, covered, {outside});
 }
@@ -48,10 +48,10 @@ class EdgeAndLightPass : public GpuPass {
     }
   }
   void run(GpuFrame& f) override {
-    pass_.run(f.get(kGBuffer), f.params<EdgeDetectParams>(), view_space_lights(f.scene), f.params<ContourLightParams>(),
-              {f.put(kLitContourDarkness), f.dump ? &f.put(kContourDarkness) : nullptr,
-               marks_.id() ? &marks_ : nullptr},
-              filter_rect(f.ordinary, 1));
+    pass_.run(
+        f.get(kGBuffer), f.params<EdgeDetectParams>(), view_space_lights(f.scene), f.params<ContourLightParams>(),
+        {f.put(kLitContourDarkness), f.dump ? &f.put(kContourDarkness) : nullptr, marks_.id() ? &marks_ : nullptr},
+        filter_rect(f.ordinary, 1));
   }
 
  private:
@@ -61,6 +61,7 @@ class EdgeAndLightPass : public GpuPass {
 
 }  // namespace
 
-PLUMBAGO_GPU_PASS(edge_detect, {{"edge_detect", "contour_light"}, {kContourDarkness.name}, make_pass<EdgeAndLightPass>});
+PLUMBAGO_GPU_PASS(edge_detect,
+                  {{"edge_detect", "contour_light"}, {kContourDarkness.name}, make_pass<EdgeAndLightPass>});
 
 }  // namespace plumbago::gpu

@@ -11,7 +11,8 @@ ContourInputs make_contour_inputs(const ContourParams& p, const std::vector<Imag
                                   const std::vector<glm::vec2>& shifts, int width, int height) {
   if (size_t(p.copies) > grids.size() || size_t(p.copies) > shifts.size())
     throw std::invalid_argument("multi_contour: fewer offset grids or texture shifts than contour.copies");
-  Texture offset_grids = upload_texture_3d(grids, GL_RG32F, GL_TEXTURE_2D_ARRAY), texture = upload_texture(contour_texture, GL_R32F);
+  Texture offset_grids = upload_texture_3d(grids, GL_RG32F, GL_TEXTURE_2D_ARRAY),
+          texture = upload_texture(contour_texture, GL_R32F);
   set_sampling(offset_grids, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
   set_sampling(texture, GL_LINEAR, GL_REPEAT, GL_REPEAT);
   Program program("util/fullscreen.vert", "pencil/contour_copies.frag", glsl_params<ContourParams>());
@@ -43,7 +44,9 @@ MultiContourPass::MultiContourPass()
       blocks_program_("util/fullscreen.vert", "pencil/contour_blocks.frag", contour_block_define()),
       reach_program_("util/fullscreen.vert", "pencil/contour_block_reach.frag") {}
 
-void MultiContourPass::mark_blocks(const Texture& lit, Texture& marks) { pass_.draw(blocks_program_, {{"lit_contour_darkness", &lit}}, marks); }
+void MultiContourPass::mark_blocks(const Texture& lit, Texture& marks) {
+  pass_.draw(blocks_program_, {{"lit_contour_darkness", &lit}}, marks);
+}
 
 ContourSources MultiContourPass::prepare(const Texture& lit, const ContourInputs& in, const ContourParams& p,
                                          const Texture* marks) {
@@ -67,14 +70,15 @@ void MultiContourPass::run(const Texture& lit, const ContourInputs& in, const Co
                            const PixelRect& covered) {
   ContourSources s = prepare(lit, in, p);
   program_.set_params(p);
-  pass_.draw_inside(program_,
-                    {{"lit_contour_darkness", &s.lit}, {"copy_inputs", &s.copy_inputs}, {"block_reach_max", &s.block_reach_max}},
-                    {&out}, covered, {glm::vec4(0.0f)});
+  pass_.draw_inside(
+      program_,
+      {{"lit_contour_darkness", &s.lit}, {"copy_inputs", &s.copy_inputs}, {"block_reach_max", &s.block_reach_max}},
+      {&out}, covered, {glm::vec4(0.0f)});
 }
 
 ContourInputs make_contour_inputs(const GpuFrame& f) {
-  return make_contour_inputs(f.params<ContourParams>(), f.get(kOffsetGrids), f.get(kContourTexture), f.get(kTextureShifts),
-                             f.scene.width, f.scene.height);
+  return make_contour_inputs(f.params<ContourParams>(), f.get(kOffsetGrids), f.get(kContourTexture),
+                             f.get(kTextureShifts), f.scene.width, f.scene.height);
 }
 
 namespace {

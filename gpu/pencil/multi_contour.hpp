@@ -5,8 +5,8 @@
 
 #include "common/pencil/distortion.hpp"
 #include "common/pencil/multi_contour.hpp"
-#include "gpu/pencil/contour_blocks.hpp"
 #include "gpu/gl/framebuffer.hpp"
+#include "gpu/pencil/contour_blocks.hpp"
 
 namespace plumbago::gpu {
 

@@ -1,7 +1,7 @@
 #include "gpu/pencil/pencil_interior.hpp"
 
-#include "common/scene/lights.hpp"
 #include "common/pencil/paper.hpp"
+#include "common/scene/lights.hpp"
 #include "gpu/core/stage.hpp"
 
 namespace plumbago::gpu {
@@ -11,9 +11,10 @@ PencilInteriorPass::PencilInteriorPass()
                 {"PHONG", "NEAREST_CORNER", "CROSSHATCH", "PAPER_EFFECT", "WRITE_INTENSITY"}) {}
 
 // The choices that decide which code runs are compiled in (shaders/pencil/pencil_interior.frag).
-const Program& PencilInteriorPass::program_for(const InteriorOptions& o, const InteriorParams& p, bool writes_intensity) {
-  return programs_.get({p.shading == InteriorShading::Phong, p.blend == InteriorBlend::NearestCorner, o.crosshatch, o.paper,
-                        writes_intensity});
+const Program& PencilInteriorPass::program_for(const InteriorOptions& o, const InteriorParams& p,
+                                               bool writes_intensity) {
+  return programs_.get({p.shading == InteriorShading::Phong, p.blend == InteriorBlend::NearestCorner, o.crosshatch,
+                        o.paper, writes_intensity});
 }
 
 void PencilInteriorPass::run(const PencilInteriorInputs& in, const InteriorParams& p, float mu_p,
@@ -26,10 +27,10 @@ void PencilInteriorPass::run(const PencilInteriorInputs& in, const InteriorParam
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, in.angles.first_triangle.id());
   const GBufferTargets& g = in.gbuffer;
   std::initializer_list<TextureBinding> textures = {{"normals", &g.normal},
-                                                   {"bary", &g.bary},
-                                                   {"ids", &g.ids},
-                                                   {"pencil_stack", &in.stack},
-                                                   {"paper_normal", &in.paper_normal}};
+                                                    {"bary", &g.bary},
+                                                    {"ids", &g.ids},
+                                                    {"pencil_stack", &in.stack},
+                                                    {"paper_normal", &in.paper_normal}};
   if (out.intensity)
     pass_.draw_inside(program, textures, {&out.darkness, out.intensity}, covered, {glm::vec4(0.0f), glm::vec4(1.0f)});
   else
@@ -49,11 +50,10 @@ class InteriorPass : public GpuPass {
   }
   void run(GpuFrame& f) override {
     std::vector<Light> lights = view_space_lights(f.scene);
-    pass_.run({f.get(kGBuffer), f.get(kTriangleAngles), lights,
-               stack_, paper_normal_, interior_options(f.scene.effects)},
-              f.params<InteriorParams>(), f.params<PaperParams>().mu_p,
-              {f.put(kInteriorDarkness), f.dump ? &f.put(kIntensity) : nullptr},
-              filter_rect(f.ordinary, 0));
+    pass_.run(
+        {f.get(kGBuffer), f.get(kTriangleAngles), lights, stack_, paper_normal_, interior_options(f.scene.effects)},
+        f.params<InteriorParams>(), f.params<PaperParams>().mu_p,
+        {f.put(kInteriorDarkness), f.dump ? &f.put(kIntensity) : nullptr}, filter_rect(f.ordinary, 0));
   }
 
  private:
@@ -63,7 +63,7 @@ class InteriorPass : public GpuPass {
 
 }  // namespace
 
-PLUMBAGO_GPU_PASS(pencil_interior, {{"interior_intensity", "pencil_interior"}, {kIntensity.name},
-                                    make_pass<InteriorPass>});
+PLUMBAGO_GPU_PASS(pencil_interior,
+                  {{"interior_intensity", "pencil_interior"}, {kIntensity.name}, make_pass<InteriorPass>});
 
 }  // namespace plumbago::gpu

@@ -4,12 +4,12 @@
 #include <cmath>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "common/sketchy/sketchy_gbuffer.hpp"
+#include "common/core/frame.hpp"
+#include "common/mesh/mesh_topology.hpp"
 #include "common/pencil/edge_detect.hpp"
 #include "common/pencil/interior_intensity.hpp"
-#include "common/mesh/mesh_topology.hpp"
 #include "common/pencil/pencil_interior.hpp"
-#include "common/core/frame.hpp"
+#include "common/sketchy/sketchy_gbuffer.hpp"
 #include "gpu/core/stage.hpp"
 
 namespace plumbago::gpu {
@@ -57,12 +57,13 @@ std::vector<VertexCurvature> vertex_curvature(const WorldObject& obj) {
 // clockwise (GL_FRONT); GL_NONE for an open, non-manifold or flat mesh.
 GLenum hidden_faces(const Mesh& mesh, const WorldObject& obj) {
   MeshTopology topology = build_topology(mesh);
-  bool closed = topology.split_faces == 0 &&
-                std::none_of(topology.edges.begin(), topology.edges.end(), [](const MeshTopology::Edge& e) { return e.face[1] < 0; });
+  bool closed = topology.split_faces == 0 && std::none_of(topology.edges.begin(), topology.edges.end(),
+                                                          [](const MeshTopology::Edge& e) { return e.face[1] < 0; });
   if (!closed) return GL_NONE;
   double volume = 0;  // 6x the signed volume, in world space (a mirroring transform flips it)
   for (const glm::uvec3& t : obj.triangles)
-    volume += glm::dot(glm::dvec3(obj.positions[t[0]]), glm::cross(glm::dvec3(obj.positions[t[1]]), glm::dvec3(obj.positions[t[2]])));
+    volume += glm::dot(glm::dvec3(obj.positions[t[0]]),
+                       glm::cross(glm::dvec3(obj.positions[t[1]]), glm::dvec3(obj.positions[t[2]])));
   return volume > 0 ? GL_BACK : volume < 0 ? GL_FRONT : GL_NONE;
 }
 
@@ -86,9 +87,12 @@ void describe_attribute(GLuint index, int size, size_t offset, GLuint binding = 
 
 GLenum normal_storage(GBufferFormat f) {
   switch (f) {
-    case GBufferFormat::RGBA16F: return GL_RGBA16F;
-    case GBufferFormat::RGBA8: return GL_RGBA8_SNORM;
-    default: return GL_RGBA32F;
+    case GBufferFormat::RGBA16F:
+      return GL_RGBA16F;
+    case GBufferFormat::RGBA8:
+      return GL_RGBA8_SNORM;
+    default:
+      return GL_RGBA32F;
   }
 }
 
@@ -146,8 +150,10 @@ GBufferTargets upload_gbuffer(const GBuffer& g) {
   write_texture(t.ids, 2, true, g.ids.data.data());
   t.bary = upload_texture(with_fourth_channel(g.bary, g.gouraud), GL_RGBA32F);
   t.gouraud = upload_texture(g.gouraud, GL_R32F);
-  t.theta_min = upload_texture(g.theta_min.empty() ? Image(g.gouraud.width, g.gouraud.height, 3) : g.theta_min, GL_RGBA32F);
-  t.theta_max = upload_texture(g.theta_max.empty() ? Image(g.gouraud.width, g.gouraud.height, 3) : g.theta_max, GL_RGBA32F);
+  t.theta_min =
+      upload_texture(g.theta_min.empty() ? Image(g.gouraud.width, g.gouraud.height, 3) : g.theta_min, GL_RGBA32F);
+  t.theta_max =
+      upload_texture(g.theta_max.empty() ? Image(g.gouraud.width, g.gouraud.height, 3) : g.theta_max, GL_RGBA32F);
   t.near = g.near;
   t.far = g.far;
   return t;
@@ -155,12 +161,15 @@ GBufferTargets upload_gbuffer(const GBuffer& g) {
 
 GBufferPass::GBufferPass(const Scene& scene, const std::vector<Curvature>& curvature)
     : has_curvature_(!curvature.empty()),
-      angles_program_(has_curvature_ ? std::make_unique<Program>(Program::compute("scene/corner_angles.comp", glsl_params<InteriorParams>()))
+      angles_program_(has_curvature_ ? std::make_unique<Program>(
+                                           Program::compute("scene/corner_angles.comp", glsl_params<InteriorParams>()))
                                      : nullptr),
-      triangle_angles_program_(has_curvature_ ? std::make_unique<Program>(Program::compute("scene/triangle_angles.comp")) : nullptr),
+      triangle_angles_program_(
+          has_curvature_ ? std::make_unique<Program>(Program::compute("scene/triangle_angles.comp")) : nullptr),
       background_program_("util/fullscreen.vert", "scene/gbuffer_background.frag", "#define FULLSCREEN_Z 1.0\n"),
       programs_("scene/gbuffer.vert", "scene/gbuffer.frag", glsl_params<InteriorParams>(),
-                {"WRITE_NORMAL", "WRITE_FACE_NORMAL", "WRITE_BARY", "WRITE_GOURAUD", "WRITE_THETA_MIN", "WRITE_THETA_MAX", "WRITE_DEPTH"}),
+                {"WRITE_NORMAL", "WRITE_FACE_NORMAL", "WRITE_BARY", "WRITE_GOURAUD", "WRITE_THETA_MIN",
+                 "WRITE_THETA_MAX", "WRITE_DEPTH"}),
       fbo_(make_framebuffer()),
       empty_(make_vertex_array()) {
   std::vector<WorldObject> objects = world_geometry(scene, curvature);
@@ -169,7 +178,8 @@ GBufferPass::GBufferPass(const Scene& scene, const std::vector<Curvature>& curva
   for (size_t i = 0; i < objects.size(); ++i) {
     const WorldObject& obj = objects[i];
     std::vector<Corner> soup = triangle_soup(obj);
-    Batch b{make_buffer(soup.data(), soup.size() * sizeof(Corner)), {}, {}, {}, make_vertex_array(), GLsizei(soup.size())};
+    Batch b{
+        make_buffer(soup.data(), soup.size() * sizeof(Corner)), {}, {}, {}, make_vertex_array(), GLsizei(soup.size())};
     b.hidden_faces = hidden_faces(*scene.objects[i].mesh, obj);
     first_triangle.push_back(b.first_triangle = triangles);
     triangles += GLuint(obj.triangles.size());
@@ -261,7 +271,8 @@ TriangleAngles triangle_angles_from(const GBuffer& g) {
         angles[2 * t + 1][k] = g.theta_max.empty() ? 0.0f : g.theta_max.at(x, y, k);
       }
     }
-  return {make_buffer(angles.data(), angles.size() * sizeof(glm::vec4)), make_buffer(first.data(), first.size() * sizeof(GLuint))};
+  return {make_buffer(angles.data(), angles.size() * sizeof(glm::vec4)),
+          make_buffer(first.data(), first.size() * sizeof(GLuint))};
 }
 
 void GBufferPass::render(const Scene& scene, GBufferTargets& t, const GBufferChannels& channels) {
@@ -272,9 +283,10 @@ void GBufferPass::render(const Scene& scene, GBufferTargets& t, const GBufferCha
     depth_test_height_ = h;
   }
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-  const Texture* color[] = {&t.normal, &t.face_normal, &t.depth, &t.ids, &t.bary, &t.gouraud, &t.theta_min, &t.theta_max};
-  const bool wanted[] = {channels.normal, channels.face_normal, channels.depth, true, channels.bary, channels.gouraud,
-                         channels.theta_min, channels.theta_max};  // ids: always
+  const Texture* color[] = {&t.normal, &t.face_normal, &t.depth,     &t.ids,
+                            &t.bary,   &t.gouraud,     &t.theta_min, &t.theta_max};
+  const bool wanted[] = {channels.normal, channels.face_normal, channels.depth,     true,
+                         channels.bary,   channels.gouraud,     channels.theta_min, channels.theta_max};  // ids: always
   GLenum draw[8];
   for (int i = 0; i < 8; ++i) {
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + i, GL_TEXTURE_2D, color[i]->id(), 0);
@@ -334,7 +346,8 @@ void GBufferPass::draw_background(const GBufferChannels& channels, const bool wa
   const bool object_only[] = {false, false, false, false, true, true, true, true};  // see GBufferChannels
   GLenum draw[8];
   for (int i = 0; i < 8; ++i)
-    draw[i] = wanted[i] && (channels.object_only_background || !object_only[i]) ? GL_COLOR_ATTACHMENT0 + GLenum(i) : GL_NONE;
+    draw[i] =
+        wanted[i] && (channels.object_only_background || !object_only[i]) ? GL_COLOR_ATTACHMENT0 + GLenum(i) : GL_NONE;
   glDrawBuffers(8, draw);
   const PixelRect& r = channels.read_region;
   int w = depth_test_width_, h = depth_test_height_, x0 = std::clamp(r.x0, 0, w), y0 = std::clamp(r.y0, 0, h);
@@ -383,8 +396,8 @@ class GBufferStagePass : public GpuPass {
 
 PLUMBAGO_GPU_PASS(gbuffer, {{"gbuffer"}, {}, [](GpuFrame& f) -> std::unique_ptr<GpuPass> {
                               const std::vector<Curvature>* curvature = f.get(maybe(kCurvature));
-                              return std::make_unique<GBufferStagePass>(f, kGBuffer, f.ordinary,
-                                                                        curvature ? *curvature : std::vector<Curvature>{});
+                              return std::make_unique<GBufferStagePass>(
+                                  f, kGBuffer, f.ordinary, curvature ? *curvature : std::vector<Curvature>{});
                             }});
 PLUMBAGO_GPU_PASS(sketchy_gbuffer, {{"sketchy_gbuffer"}, {}, [](GpuFrame& f) -> std::unique_ptr<GpuPass> {
                                       return std::make_unique<GBufferStagePass>(f, kSketchyGBuffer, f.sketchy,

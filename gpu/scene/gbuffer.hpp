@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "common/scene/gbuffer.hpp"
 #include "common/pencil/interior_intensity.hpp"
+#include "common/scene/gbuffer.hpp"
 #include "gpu/gl/gl_objects.hpp"
 #include "gpu/gl/program.hpp"
 
@@ -44,7 +44,7 @@ GBufferTargets upload_gbuffer(const GBuffer& g);
 // barycentrics' w, the corner angles in TriangleAngles.
 struct GBufferChannels {
   bool normal = true, face_normal = true, bary = true, gouraud = true, theta_min = true, theta_max = true;
-  bool depth = true;  // the depth target; the edge filter reads the depth next to the normals
+  bool depth = true;            // the depth target; the edge filter reads the depth next to the normals
   bool triangle_angles = true;  // TriangleAngles for this frame's camera (the pencil interior)
   // Whether the barycentrics, Gouraud intensity and angles hold their background values off
   // the objects. No stage reads them there (the interior reads only where ids != 0), so a
@@ -85,8 +85,8 @@ class GBufferPass {
     VertexArray layout;
     GLsizei corners = 0;
     GLuint mesh_vertices = 0, first_triangle = 0;  // its first record in triangle_angles_
-    GLenum hidden_faces = GL_NONE;  // GL_BACK, GL_FRONT, or GL_NONE: never culled
-    glm::vec3 box_min{0}, box_max{0};  // world space
+    GLenum hidden_faces = GL_NONE;                 // GL_BACK, GL_FRONT, or GL_NONE: never culled
+    glm::vec3 box_min{0}, box_max{0};              // world space
   };
   void draw_background(const GBufferChannels& channels, const bool wanted[8], float far);
   void compute_corner_angles(const glm::mat4& view_projection, int w, int h, float fov_deg, const InteriorParams& p);
@@ -94,7 +94,8 @@ class GBufferPass {
   const Program& program_for(const GBufferChannels& channels);
   std::vector<Batch> batches_;  // one per object
   bool has_curvature_;
-  std::unique_ptr<Program> angles_program_, triangle_angles_program_;  // corner_ and triangle_angles.comp, with curvature
+  std::unique_ptr<Program> angles_program_,
+      triangle_angles_program_;  // corner_ and triangle_angles.comp, with curvature
   TriangleAngles triangle_angles_;
   Program background_program_;
   ProgramVariants programs_;  // gbuffer.frag per set of channels written

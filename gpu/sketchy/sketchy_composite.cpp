@@ -22,9 +22,10 @@ Texture repeating(Texture t, GLenum filter) {
 
 SketchyNoiseTextures upload_sketchy_noise(const SketchyNoise& n) {
   Image none(1, 1, 1);
-  return {repeating(upload_texture(n.perlin.empty() ? none : n.perlin, GL_R32F), GL_LINEAR),
-          repeating(upload_texture(n.white.empty() ? none : n.white, GL_RG32F), GL_NEAREST),
-          repeating(upload_texture_3d(n.perlin_3d.empty() ? std::vector<Image>{none} : n.perlin_3d, GL_R32F), GL_LINEAR)};
+  return {
+      repeating(upload_texture(n.perlin.empty() ? none : n.perlin, GL_R32F), GL_LINEAR),
+      repeating(upload_texture(n.white.empty() ? none : n.white, GL_RG32F), GL_NEAREST),
+      repeating(upload_texture_3d(n.perlin_3d.empty() ? std::vector<Image>{none} : n.perlin_3d, GL_R32F), GL_LINEAR)};
 }
 
 SketchyCompositePass::SketchyCompositePass()
@@ -42,8 +43,10 @@ void SketchyCompositePass::set_uniforms(const SketchyCompositeInputs& in, const 
   glm::mat2 matrices[kMaxCopies];
   glm::vec3 inks[kMaxCopies];
   glm::vec2 shifts[kMaxCopies];
-  for (int k = 0; k < kMaxCopies; ++k) matrices[k] = copy_matrix(p, k), inks[k] = copy_ink(p, k), shifts[k] = copy_noise_shift(k);
-  glProgramUniformMatrix2fv(id, program_.uniform("copy_matrices[0]"), kMaxCopies, GL_FALSE, glm::value_ptr(matrices[0]));
+  for (int k = 0; k < kMaxCopies; ++k)
+    matrices[k] = copy_matrix(p, k), inks[k] = copy_ink(p, k), shifts[k] = copy_noise_shift(k);
+  glProgramUniformMatrix2fv(id, program_.uniform("copy_matrices[0]"), kMaxCopies, GL_FALSE,
+                            glm::value_ptr(matrices[0]));
   glProgramUniform3fv(id, program_.uniform("copy_inks[0]"), kMaxCopies, glm::value_ptr(inks[0]));
   glProgramUniform2fv(id, program_.uniform("copy_shifts[0]"), kMaxCopies, glm::value_ptr(shifts[0]));
 }
@@ -52,7 +55,8 @@ void SketchyCompositePass::run(const SketchyCompositeInputs& in, const SketchyPa
                                const Renderbuffer* under_depth, Texture& sprite_depth, const PixelRect& reach) {
   set_uniforms(in, p);
   set_sampling(in.edge_map, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);  // darkness is read filtered
-  if (!under_depth && !own_depth_.id()) own_depth_ = make_renderbuffer(color.width, color.height, GL_DEPTH_COMPONENT32F);
+  if (!under_depth && !own_depth_.id())
+    own_depth_ = make_renderbuffer(color.width, color.height, GL_DEPTH_COMPONENT32F);
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, sprite_depth.id(), 0);
@@ -100,9 +104,10 @@ class SketchyCompositeStagePass : public GpuPass {
   }
   void run(GpuFrame& f) override {
     const Texture* coordinates = f.get(maybe(kNoiseCoordinates));
-    pass_.run({f.get(kSketchyEdge), f.get(kSketchyShade), f.get(kSketchyGBuffer), noise_, coordinates ? *coordinates : none_},
-              f.params<SketchyParams>(), f.put(kSketchColor), f.get(maybe(kDepthBuffer)), f.put(kSketchDepth),
-              composite_rect(f.sketchy, f.scene.width, f.scene.height));
+    pass_.run(
+        {f.get(kSketchyEdge), f.get(kSketchyShade), f.get(kSketchyGBuffer), noise_, coordinates ? *coordinates : none_},
+        f.params<SketchyParams>(), f.put(kSketchColor), f.get(maybe(kDepthBuffer)), f.put(kSketchDepth),
+        composite_rect(f.sketchy, f.scene.width, f.scene.height));
   }
 
  private:

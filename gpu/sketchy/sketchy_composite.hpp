@@ -15,9 +15,9 @@ struct SketchyNoiseTextures {
 SketchyNoiseTextures upload_sketchy_noise(const SketchyNoise& noise);
 
 struct SketchyCompositeInputs {
-  const Texture& edge_map;           // RG32F (gpu/sketchy/sketchy_maps.hpp)
-  const Texture& shade_map;          // RGBA8
-  const GBufferTargets& gbuffer;     // the sketchy objects' depth, near, far
+  const Texture& edge_map;        // RG32F (gpu/sketchy/sketchy_maps.hpp)
+  const Texture& shade_map;       // RGBA8
+  const GBufferTargets& gbuffer;  // the sketchy objects' depth, near, far
   const SketchyNoiseTextures& noise;
   const Texture& noise_coordinates;  // object style (gpu/sketchy/sketchy_enlarged.hpp); any texture otherwise
 };

@@ -18,7 +18,8 @@ Texture color_table(const std::vector<glm::vec3>& colors) {
 }  // namespace
 
 SketchyMapsPass::SketchyMapsPass(const std::vector<glm::vec3>& colors)
-    : program_("util/fullscreen.vert", "sketchy/sketchy_maps.frag", glsl_params<EdgeDetectParams>()), colors_(color_table(colors)) {}
+    : program_("util/fullscreen.vert", "sketchy/sketchy_maps.frag", glsl_params<EdgeDetectParams>()),
+      colors_(color_table(colors)) {}
 
 void SketchyMapsPass::run(const GBufferTargets& g, const EdgeDetectParams& p, Texture& edge, Texture& shade,
                           const PixelRect& covered) {

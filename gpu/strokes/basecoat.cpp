@@ -2,8 +2,8 @@
 // over the G-buffer's ids and barycentrics, with the corners' s as one record per triangle.
 #include "common/strokes/basecoat.hpp"
 
-#include "gpu/gl/framebuffer.hpp"
 #include "gpu/core/stage.hpp"
+#include "gpu/gl/framebuffer.hpp"
 
 namespace plumbago::gpu {
 
@@ -11,7 +11,8 @@ namespace {
 
 class BaseCoatPass : public GpuPass {
  public:
-  explicit BaseCoatPass(GpuFrame& f) : program_("util/fullscreen.vert", "strokes/basecoat.frag", glsl_params<BaseCoatParams>()) {
+  explicit BaseCoatPass(GpuFrame& f)
+      : program_("util/fullscreen.vert", "strokes/basecoat.frag", glsl_params<BaseCoatParams>()) {
     auto p = f.params<BaseCoatParams>();
     TriangleShades shades = triangle_shades(f.ordinary, p);
     if (shades.corners.empty()) shades.corners.push_back(glm::vec4(0.0f));

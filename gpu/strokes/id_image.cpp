@@ -3,8 +3,8 @@
 // z = near / d, written as the fragment's depth.
 #include "common/strokes/id_image.hpp"
 
-#include "gpu/strokes/decal.hpp"
 #include "gpu/core/stage.hpp"
+#include "gpu/strokes/decal.hpp"
 
 namespace plumbago::gpu {
 
@@ -25,7 +25,8 @@ class IdImagePass : public GpuPass {
   void run(GpuFrame& f) override {
     auto p = f.params<StrokesParams>();
     if (!meshes_) meshes_ = line_meshes(f.scene, p, LineObjects::Strokes);
-    f.put(kWindowLines, window_lines(f.scene, p, LineObjects::Strokes, meshes_.get(), has_decals(f.scene) ? &decals_ : nullptr));
+    f.put(kWindowLines,
+          window_lines(f.scene, p, LineObjects::Strokes, meshes_.get(), has_decals(f.scene) ? &decals_ : nullptr));
     std::vector<IdVertex> triangles = id_triangles(f.scene, f.get(kWindowLines), p);
     Texture& target = f.put(kIds);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());

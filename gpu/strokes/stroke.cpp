@@ -21,7 +21,8 @@ class StrokePass : public GpuPass {
   }
 
   void run(GpuFrame& f) override {
-    std::vector<StrokeVertex> v = stroke_triangles(f.get(kWindowLines), f.get(kVisibleRuns), f.scene.strokes, f.scene.seed);
+    std::vector<StrokeVertex> v =
+        stroke_triangles(f.get(kWindowLines), f.get(kVisibleRuns), f.scene.strokes, f.scene.seed);
     Texture& target = f.put(kStrokeColor);
     if (drawn_over(find_output(kStrokeColor.name), f.stages).empty()) copy_page(f.get(kPage), target);
     if (v.empty()) return;
@@ -45,7 +46,8 @@ class StrokePass : public GpuPass {
  private:
   // Where the page was made outside this frame (parity feeds it), the strokes draw on a copy.
   static void copy_page(const Texture& page, const Texture& target) {
-    glCopyImageSubData(page.id(), GL_TEXTURE_2D, 0, 0, 0, 0, target.id(), GL_TEXTURE_2D, 0, 0, 0, 0, page.width, page.height, 1);
+    glCopyImageSubData(page.id(), GL_TEXTURE_2D, 0, 0, 0, 0, target.id(), GL_TEXTURE_2D, 0, 0, 0, 0, page.width,
+                       page.height, 1);
   }
 
   Program program_;

@@ -3,8 +3,8 @@
 // the paper's height, drawn in place over what the other pipelines drew.
 #include "common/strokes/stroke_paper.hpp"
 
-#include "gpu/gl/framebuffer.hpp"
 #include "gpu/core/stage.hpp"
+#include "gpu/gl/framebuffer.hpp"
 
 namespace plumbago::gpu {
 

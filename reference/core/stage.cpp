@@ -64,7 +64,8 @@ void run_stage(ReferenceFrame& f, const std::string& stage) {
 }
 
 bool register_stage(const char* stage, StageFn fn) {
-  if (!is_stage(stage)) throw std::logic_error(std::string("reference/: an implementation of unknown stage '") + stage + "'");
+  if (!is_stage(stage))
+    throw std::logic_error(std::string("reference/: an implementation of unknown stage '") + stage + "'");
   if (!registry().emplace(stage, fn).second)
     throw std::logic_error(std::string("reference/: stage '") + stage + "' is registered twice");
   return true;
@@ -75,7 +76,8 @@ void check_implementations() {
   for (const StageDesc& s : stage_table())
     if (s.kind == StageKind::Frame && !registry().count(s.name)) missing += (missing.empty() ? "" : ", ") + s.name;
   if (!missing.empty())
-    throw std::logic_error("the reference backend implements no stage " + missing + " (register it in reference/<stem>.cpp)");
+    throw std::logic_error("the reference backend implements no stage " + missing +
+                           " (register it in reference/<stem>.cpp)");
 }
 
 StageFn implementation(const std::string& stage) {
@@ -102,7 +104,8 @@ std::map<std::string, Image> dump(const ReferenceFrame& f) {
   std::map<std::string, Image> out;
   for (const std::string& name : dumped_buffers(f.stages, f.config())) {
     auto it = all.find(name);
-    if (it == all.end()) throw std::logic_error("reference: stage '" + stage_of(name).name + "' did not write '" + name + "'");
+    if (it == all.end())
+      throw std::logic_error("reference: stage '" + stage_of(name).name + "' did not write '" + name + "'");
     out[name] = it->second;
   }
   return out;

@@ -27,7 +27,7 @@ struct ReferenceFrame {
   const Scene& scene;
   Scene ordinary, sketchy;  // the objects each pipeline draws (common/sketchy/sketchy.hpp)
   Preprocessed pre;
-  std::vector<std::string> stages;  // the frame stages that run
+  std::vector<std::string> stages;   // the frame stages that run
   std::vector<std::string> running;  // the stage running now (none: the pipeline or parity)
 
   template <class P>
@@ -96,7 +96,8 @@ std::map<std::string, Image> dump(const ReferenceFrame& frame);
 
 }  // namespace plumbago::reference
 
-#define PLUMBAGO_REFERENCE_STAGE(stem, ...) \
-  [[maybe_unused]] static const bool registered_reference_##stem = ::plumbago::reference::register_stage(#stem, __VA_ARGS__)
+#define PLUMBAGO_REFERENCE_STAGE(stem, ...)                        \
+  [[maybe_unused]] static const bool registered_reference_##stem = \
+      ::plumbago::reference::register_stage(#stem, __VA_ARGS__)
 #define PLUMBAGO_REFERENCE_BOUND(id, output, ...) \
   [[maybe_unused]] static const bool registered_bound_##id = ::plumbago::reference::register_bound(output, __VA_ARGS__)

@@ -32,8 +32,8 @@ Image compose(const Image& contour_darkness, const Image& interior_darkness, con
       float d_i = interior_darkness.empty() ? 0.0f : interior_darkness.at(x, y);
       float v = enhanced(composed_intensity(contour_darkness.at(x, y), d_i, p), p);
       for (int c = 0; c < 3; ++c)  // out = I'' c_p
-        out.at(x, y, c) = v * (paper_color.empty() ? 1.0f
-                                                    : paper_color.at(x % paper_color.width, y % paper_color.height, c));
+        out.at(x, y, c) =
+            v * (paper_color.empty() ? 1.0f : paper_color.at(x % paper_color.width, y % paper_color.height, c));
     }
   return out;
 }
@@ -43,9 +43,9 @@ PLUMBAGO_REFERENCE_STAGE(compose, [](ReferenceFrame& f) {
   const Image* contours = f.get(maybe(kCopiesDarkness));
   const Image* interior = f.get(maybe(kInteriorDarkness));
   const Image* paper_color = f.get(maybe(kPaperColor));
-  f.put(kComposeColor, compose(contours ? *contours : Image(f.scene.width, f.scene.height, 1),
-                                 interior ? *interior : Image(), paper_color ? *paper_color : Image(),
-                                 f.params<ComposeParams>()));
+  f.put(kComposeColor,
+        compose(contours ? *contours : Image(f.scene.width, f.scene.height, 1), interior ? *interior : Image(),
+                paper_color ? *paper_color : Image(), f.params<ComposeParams>()));
 });
 
 }  // namespace plumbago::reference

@@ -28,9 +28,8 @@ Image lit_contour_darkness(const Image& d, const GBuffer& g, const std::vector<L
 }
 
 PLUMBAGO_REFERENCE_STAGE(contour_light, [](ReferenceFrame& f) {
-  f.put(kLitContourDarkness,
-        lit_contour_darkness(f.get(kContourDarkness), f.get(kGBuffer), view_space_lights(f.scene),
-                             f.params<ContourLightParams>()));
+  f.put(kLitContourDarkness, lit_contour_darkness(f.get(kContourDarkness), f.get(kGBuffer), view_space_lights(f.scene),
+                                                  f.params<ContourLightParams>()));
 });
 
 }  // namespace plumbago::reference

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <glm/glm.hpp>
 
-#include "reference/util/rows.hpp"
 #include "reference/core/stage.hpp"
+#include "reference/util/rows.hpp"
 
 namespace plumbago::reference {
 

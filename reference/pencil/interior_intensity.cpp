@@ -24,8 +24,7 @@ Image interior_intensity(const GBuffer& g, const std::vector<Light>& view_lights
 }
 
 PLUMBAGO_REFERENCE_STAGE(interior_intensity, [](ReferenceFrame& f) {
-  f.put(kIntensity,
-        interior_intensity(f.get(kGBuffer), view_space_lights(f.scene), f.params<InteriorParams>()));
+  f.put(kIntensity, interior_intensity(f.get(kGBuffer), view_space_lights(f.scene), f.params<InteriorParams>()));
 });
 
 }  // namespace plumbago::reference

@@ -1,8 +1,8 @@
 // Interior intensity and brightness, CPU reference (Lee et al. 2006, §3, §5.2).
 #pragma once
 
-#include "common/scene/gbuffer.hpp"
 #include "common/pencil/interior_intensity.hpp"
+#include "common/scene/gbuffer.hpp"
 #include "common/scene/lights.hpp"
 
 namespace plumbago::reference {

@@ -2,8 +2,8 @@
 
 #include "reference/util/sampler.hpp"
 
-#include "reference/util/rows.hpp"
 #include "reference/core/stage.hpp"
+#include "reference/util/rows.hpp"
 
 namespace plumbago::reference {
 
@@ -48,7 +48,7 @@ Image multi_contour_darkness(const Image& lit, const std::vector<Image>& grids, 
 
 PLUMBAGO_REFERENCE_STAGE(multi_contour, [](ReferenceFrame& f) {
   f.put(kCopiesDarkness, multi_contour_darkness(f.get(kLitContourDarkness), f.get(kOffsetGrids), f.get(kContourTexture),
-                                               f.get(kTextureShifts), f.params<ContourParams>()));
+                                                f.get(kTextureShifts), f.params<ContourParams>()));
 });
 
 }  // namespace plumbago::reference

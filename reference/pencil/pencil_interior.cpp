@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "reference/core/stage.hpp"
 #include "reference/util/rows.hpp"
 #include "reference/util/sampler.hpp"
-#include "reference/core/stage.hpp"
 
 namespace plumbago::reference {
 
@@ -77,9 +77,9 @@ Image interior_darkness(const GBuffer& g, const Image& intensity, const std::vec
 
 PLUMBAGO_REFERENCE_STAGE(pencil_interior, [](ReferenceFrame& f) {
   const Image* paper_normal = f.get(maybe(kPaperNormal));
-  f.put(kInteriorDarkness,
-        interior_darkness(f.get(kGBuffer), f.get(kIntensity), f.get(kPencilStack), paper_normal ? *paper_normal : Image(), interior_options(f.scene.effects), f.params<InteriorParams>(),
-                          f.params<PaperParams>().mu_p));
+  f.put(kInteriorDarkness, interior_darkness(f.get(kGBuffer), f.get(kIntensity), f.get(kPencilStack),
+                                             paper_normal ? *paper_normal : Image(), interior_options(f.scene.effects),
+                                             f.params<InteriorParams>(), f.params<PaperParams>().mu_p));
 });
 
 }  // namespace plumbago::reference

@@ -2,19 +2,19 @@
 #include "common/sketchy/sketchy_gbuffer.hpp"
 
 #include <embree3/rtcore.h>
-#include <glm/gtc/matrix_transform.hpp>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
-#include "common/pencil/interior_intensity.hpp"
 #include "common/curvature/texture_rotation.hpp"
-#include "reference/scene/ray_scene.hpp"
+#include "common/pencil/interior_intensity.hpp"
 #include "reference/core/stage.hpp"
+#include "reference/scene/ray_scene.hpp"
 
 namespace plumbago::reference {
 
@@ -72,7 +72,10 @@ void shade_hit(const Hit& hit, const std::vector<WorldObject>& objects, const gl
   glm::vec3 w(1.0f - hit.u - hit.v, hit.u, hit.v);
   glm::vec3 fn = face_normal(obj, hit.triangle);
   glm::vec3 n = obj.flat ? fn : w[0] * obj.normals[tri[0]] + w[1] * obj.normals[tri[1]] + w[2] * obj.normals[tri[2]];
-  auto unit = [](glm::vec3 v) { float len = glm::length(v); return len > 0 ? v / len : glm::vec3(0); };
+  auto unit = [](glm::vec3 v) {
+    float len = glm::length(v);
+    return len > 0 ? v / len : glm::vec3(0);
+  };
   set3(g.normal, x, y, unit(to_view * n));
   set3(g.face_normal, x, y, unit(to_view * fn));
   set3(g.bary, x, y, w);
@@ -128,7 +131,8 @@ GBuffer trace_gbuffer(const Scene& scene, int width, int height, const std::vect
 
 PLUMBAGO_REFERENCE_STAGE(gbuffer, [](ReferenceFrame& f) {
   const std::vector<Curvature>* curvature = f.get(maybe(kCurvature));
-  f.put(kGBuffer, trace_gbuffer(f.ordinary, f.scene.width, f.scene.height, curvature ? *curvature : std::vector<Curvature>{}));
+  f.put(kGBuffer,
+        trace_gbuffer(f.ordinary, f.scene.width, f.scene.height, curvature ? *curvature : std::vector<Curvature>{}));
 });
 PLUMBAGO_REFERENCE_STAGE(sketchy_gbuffer, [](ReferenceFrame& f) {
   f.put(kSketchyGBuffer, trace_gbuffer(f.sketchy, f.scene.width, f.scene.height));

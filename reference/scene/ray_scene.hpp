@@ -20,7 +20,8 @@ class EmbreeErrors {
   void attach(RTCDevice device) { rtcSetDeviceErrorFunction(device, &EmbreeErrors::record, this); }
   void check(const char* what) {
     std::lock_guard lock(mutex_);
-    if (!first_.empty()) throw std::runtime_error(std::string("reference/scene/ray_scene.hpp: ") + what + ": " + first_);
+    if (!first_.empty())
+      throw std::runtime_error(std::string("reference/scene/ray_scene.hpp: ") + what + ": " + first_);
   }
 
  private:

@@ -6,9 +6,9 @@
 #include <utility>
 #include <vector>
 
+#include "reference/core/stage.hpp"
 #include "reference/util/rows.hpp"
 #include "reference/util/sampler.hpp"
-#include "reference/core/stage.hpp"
 
 namespace plumbago::reference {
 
@@ -65,8 +65,9 @@ Sketch edge_and_shade(const SketchyInputs& in, const SketchyParams& p, glm::vec2
   Sketch out;
   out.drawn = e.dark || interior;
   out.depth = std::min(e.dark ? e.depth : in.gbuffer.far, interior ? in.gbuffer.depth.at(s.x, s.y) : in.gbuffer.far);
-  glm::vec3 c = interior ? glm::vec3(in.maps.shade.at(s.x, s.y, 0), in.maps.shade.at(s.x, s.y, 1), in.maps.shade.at(s.x, s.y, 2))
-                         : glm::vec3(1.0f);
+  glm::vec3 c =
+      interior ? glm::vec3(in.maps.shade.at(s.x, s.y, 0), in.maps.shade.at(s.x, s.y, 1), in.maps.shade.at(s.x, s.y, 2))
+               : glm::vec3(1.0f);
   out.color = (1.0f - e.darkness) * c;
   return out;
 }
@@ -99,7 +100,8 @@ glm::vec2 uncertainty(const SketchyInputs& in, const SketchyParams& p, glm::vec2
       glm::vec4 g = fetch(in.noise_coordinates, x);
       if (g.w == 0.0f) return glm::vec2(0.0f);
       glm::vec3 q = glm::vec3(g) / p.object_noise_scale;
-      return glm::vec2(turbulence(in.noise.perlin_3d, q, p.octaves), turbulence(in.noise.perlin_3d, 1.0f - q, p.octaves)) -
+      return glm::vec2(turbulence(in.noise.perlin_3d, q, p.octaves),
+                       turbulence(in.noise.perlin_3d, 1.0f - q, p.octaves)) -
              0.5f;
     }
     default: {  // (T(s, t), T(1 - s, 1 - t)), (s, t) = p / noise_scale, shifted per copy
@@ -109,7 +111,6 @@ glm::vec2 uncertainty(const SketchyInputs& in, const SketchyParams& p, glm::vec2
     }
   }
 }
-
 
 SketchyFrame sketchy_composite(const SketchyInputs& in, const SketchyParams& p, const Image& under_color,
                                const Image& under_depth) {
@@ -313,8 +314,8 @@ PLUMBAGO_REFERENCE_STAGE(sketchy_composite, [](ReferenceFrame& f) {
   SketchyInputs in = composite_inputs(f, maps);
   const Image* under = f.get(maybe(kComposeColor));
   const GBuffer* ordinary = f.get(maybe(kGBuffer));
-  SketchyFrame sketch = sketchy_composite(in, f.params<SketchyParams>(), under ? *under : Image(),
-                                          ordinary ? ordinary->depth : Image());
+  SketchyFrame sketch =
+      sketchy_composite(in, f.params<SketchyParams>(), under ? *under : Image(), ordinary ? ordinary->depth : Image());
   f.put(kSketchColor, std::move(sketch.color));
   f.put(kSketchDepth, std::move(sketch.depth));
 });

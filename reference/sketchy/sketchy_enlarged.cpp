@@ -2,9 +2,9 @@
 #include "common/sketchy/sketchy_enlarged.hpp"
 
 #include "common/sketchy/sketchy.hpp"
+#include "reference/core/stage.hpp"
 #include "reference/scene/gbuffer.hpp"
 #include "reference/util/rows.hpp"
-#include "reference/core/stage.hpp"
 
 namespace plumbago::reference {
 
@@ -28,8 +28,7 @@ Image enlarged_noise_coordinates(const Scene& enlarged, int width, int height) {
 }
 
 PLUMBAGO_REFERENCE_STAGE(sketchy_enlarged, [](ReferenceFrame& f) {
-  f.put(kNoiseCoordinates,
-        enlarged_noise_coordinates(enlarged_scene(f.sketchy), f.scene.width, f.scene.height));
+  f.put(kNoiseCoordinates, enlarged_noise_coordinates(enlarged_scene(f.sketchy), f.scene.width, f.scene.height));
 });
 
 }  // namespace plumbago::reference

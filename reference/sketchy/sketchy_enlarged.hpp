@@ -3,8 +3,8 @@
 // coordinate of the surface it sees. The twin of gpu/sketchy/sketchy_enlarged.cpp.
 #pragma once
 
-#include "common/util/image.hpp"
 #include "common/scene/scene.hpp"
+#include "common/util/image.hpp"
 
 namespace plumbago::reference {
 

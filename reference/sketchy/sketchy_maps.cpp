@@ -3,10 +3,10 @@
 
 #include <algorithm>
 
+#include "common/sketchy/sketchy.hpp"
+#include "reference/core/stage.hpp"
 #include "reference/pencil/edge_detect.hpp"
 #include "reference/util/rows.hpp"
-#include "reference/core/stage.hpp"
-#include "common/sketchy/sketchy.hpp"
 
 namespace plumbago::reference {
 
@@ -17,7 +17,8 @@ float edge_depth(const GBuffer& g, int x, int y) {
   int w = g.depth.width, h = g.depth.height;
   float nearest = g.depth.at(x, y);
   for (int dy : {-1, 1})
-    for (int dx : {-1, 1}) nearest = std::min(nearest, g.depth.at(std::clamp(x + dx, 0, w - 1), std::clamp(y + dy, 0, h - 1)));
+    for (int dx : {-1, 1})
+      nearest = std::min(nearest, g.depth.at(std::clamp(x + dx, 0, w - 1), std::clamp(y + dy, 0, h - 1)));
   return nearest;
 }
 

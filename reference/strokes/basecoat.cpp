@@ -1,9 +1,9 @@
 // Base coat, CPU reference (Kalnins et al. 2002, §4.2; formula in common/strokes/basecoat.hpp).
 #include "common/strokes/basecoat.hpp"
 
+#include "reference/core/stage.hpp"
 #include "reference/util/rows.hpp"
 #include "reference/util/sampler.hpp"
-#include "reference/core/stage.hpp"
 
 namespace plumbago::reference {
 

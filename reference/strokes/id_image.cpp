@@ -2,9 +2,9 @@
 // through the scalar rasterizer, each pixel keeping the nearest (largest z = near / d).
 #include "common/strokes/id_image.hpp"
 
+#include "reference/core/stage.hpp"
 #include "reference/strokes/decal.hpp"
 #include "reference/strokes/raster.hpp"
-#include "reference/core/stage.hpp"
 
 namespace plumbago::reference {
 
@@ -73,14 +73,15 @@ IdRaster id_raster(const std::vector<IdVertex>& v, int width, int height) {
 
 PLUMBAGO_REFERENCE_STAGE(id_image, [](ReferenceFrame& f) {
   auto p = f.params<StrokesParams>();
-  DecalSurface decals = has_decals(f.scene) ? project_decals_by_rays(f.scene) : DecalSurface{};  // by rays (Kalnins et al. 2002, §3)
+  DecalSurface decals =
+      has_decals(f.scene) ? project_decals_by_rays(f.scene) : DecalSurface{};  // by rays (Kalnins et al. 2002, §3)
   auto meshes = line_meshes(f.scene, p, LineObjects::Strokes);
-  f.put(kWindowLines, window_lines(f.scene, p, LineObjects::Strokes, meshes.get(), has_decals(f.scene) ? &decals : nullptr));
+  f.put(kWindowLines,
+        window_lines(f.scene, p, LineObjects::Strokes, meshes.get(), has_decals(f.scene) ? &decals : nullptr));
   IdRaster r = id_raster(id_triangles(f.scene, f.get(kWindowLines), p), f.scene.width, f.scene.height);
   f.put(kIds, key_channels(r.key));
   Image ties(r.key.width, r.key.height, 1);
-  for (size_t i = 0; i < ties.data.size(); ++i)
-    ties.data[i] = ambiguous(r, i);
+  for (size_t i = 0; i < ties.data.size(); ++i) ties.data[i] = ambiguous(r, i);
   f.put(kAmbiguousIds, std::move(ties));
 });
 

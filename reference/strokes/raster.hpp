@@ -27,7 +27,9 @@ inline glm::dvec2 snapped(glm::vec2 p) {
 
 namespace detail {
 // Twice the signed area of (a, b, p): positive when p lies left of a -> b.
-inline double edge(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) { return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x); }
+inline double edge(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) {
+  return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+}
 // An edge of a counter-clockwise triangle (y up) whose points count as inside: a left edge
 // runs downwards, a top edge is horizontal and runs leftwards.
 inline bool top_left(glm::dvec2 a, glm::dvec2 b) { return b.y < a.y || (b.y == a.y && b.x < a.x); }

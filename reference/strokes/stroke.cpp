@@ -3,9 +3,9 @@
 #include "common/strokes/stroke.hpp"
 
 #include "common/strokes/stroke_paper.hpp"
+#include "reference/core/stage.hpp"
 #include "reference/strokes/raster.hpp"
 #include "reference/util/sampler.hpp"
-#include "reference/core/stage.hpp"
 
 namespace plumbago::reference {
 
@@ -33,27 +33,32 @@ void draw(const StrokeVertex* t, const StrokeInputs& in, Image& out, FragmentCou
   const SamplerState along{Filter::Linear, Wrap::Repeat, Wrap::ClampToEdge};
   const Image& texture = in.textures[size_t(t[0].layer)];
   const double subpixel = 1.0 / double(1 << kSubpixelBits);
-  rasterize_triangle(t[0].position, t[1].position, t[2].position, {0, y0, out.width, y1}, subpixel, [&](int x, int y, glm::dvec3 w, bool edge) {
-    if (edge) counts.edge.at(x, y) = 1;
-    if (!(w[0] >= 0 && w[1] >= 0 && w[2] >= 0)) return;  // just outside: only the edge's mark
-    float a = interpolated(t, w, &StrokeVertex::alpha) * sample(texture, interpolated(t, w, &StrokeVertex::uv), along).x;
-    glm::vec3 under(out.at(x, y, 0), out.at(x, y, 1), out.at(x, y, 2));
-    glm::vec3 c = over_paper(glm::vec4(t[0].color, a), under, in.height.at(x % in.height.width, y % in.height.height), in.paper);
-    for (int ch = 0; ch < 3; ++ch) out.at(x, y, ch) = c[ch];
-    counts.fragments.at(x, y) += 1;
-  });
+  rasterize_triangle(t[0].position, t[1].position, t[2].position, {0, y0, out.width, y1}, subpixel,
+                     [&](int x, int y, glm::dvec3 w, bool edge) {
+                       if (edge) counts.edge.at(x, y) = 1;
+                       if (!(w[0] >= 0 && w[1] >= 0 && w[2] >= 0)) return;  // just outside: only the edge's mark
+                       float a = interpolated(t, w, &StrokeVertex::alpha) *
+                                 sample(texture, interpolated(t, w, &StrokeVertex::uv), along).x;
+                       glm::vec3 under(out.at(x, y, 0), out.at(x, y, 1), out.at(x, y, 2));
+                       glm::vec3 c = over_paper(glm::vec4(t[0].color, a), under,
+                                                in.height.at(x % in.height.width, y % in.height.height), in.paper);
+                       for (int ch = 0; ch < 3; ++ch) out.at(x, y, ch) = c[ch];
+                       counts.fragments.at(x, y) += 1;
+                     });
 }
 
 }  // namespace
 
 PLUMBAGO_REFERENCE_STAGE(stroke, [](ReferenceFrame& f) {
-  std::vector<StrokeVertex> v = stroke_triangles(f.get(kWindowLines), f.get(kVisibleRuns), f.scene.strokes, f.scene.seed);
+  std::vector<StrokeVertex> v =
+      stroke_triangles(f.get(kWindowLines), f.get(kVisibleRuns), f.scene.strokes, f.scene.seed);
   std::vector<Image> textures = stroke_texture_layers(f.scene.seed);
   StrokeInputs in{textures, f.get(kPaperHeight), f.params<StrokePaperParams>()};
   Image out = f.get(kPage);
   FragmentCounts counts{Image(out.width, out.height, 1), Image(out.width, out.height, 1)};
-  draw_in_bands(v, out.height, [](const StrokeVertex& x) { return x.position; },
-                [&](const StrokeVertex* t, int y0, int y1) { draw(t, in, out, counts, y0, y1); });
+  draw_in_bands(
+      v, out.height, [](const StrokeVertex& x) { return x.position; },
+      [&](const StrokeVertex* t, int y0, int y1) { draw(t, in, out, counts, y0, y1); });
   f.put(kStrokeColor, std::move(out));
   f.put(kStrokeFragments, std::move(counts.fragments));
   f.put(kRibbonEdges, std::move(counts.edge));

@@ -3,8 +3,8 @@
 #include "common/strokes/stroke_paper.hpp"
 
 #include "common/core/preprocess.hpp"
-#include "reference/util/rows.hpp"
 #include "reference/core/stage.hpp"
+#include "reference/util/rows.hpp"
 
 namespace plumbago::reference {
 
@@ -33,8 +33,9 @@ Image page_with(const PageInputs& in, const StrokePaperParams& p) {
     for (int x = 0; x < out.width; ++x) {
       glm::vec3 c(1.0f);
       if (stroke_pixel(in, x, y)) {
-        glm::vec4 layer = in.coat ? glm::vec4(in.coat->at(x, y, 0), in.coat->at(x, y, 1), in.coat->at(x, y, 2), in.coat->at(x, y, 3))
-                                  : glm::vec4(0.0f);
+        glm::vec4 layer =
+            in.coat ? glm::vec4(in.coat->at(x, y, 0), in.coat->at(x, y, 1), in.coat->at(x, y, 2), in.coat->at(x, y, 3))
+                    : glm::vec4(0.0f);
         c = over_paper(layer, glm::vec3(1.0f), in.height.at(x % in.height.width, y % in.height.height), p);
       } else if (in.under) {
         c = {in.under->at(x, y, 0), in.under->at(x, y, 1), in.under->at(x, y, 2)};
@@ -49,8 +50,12 @@ Image page_with(const PageInputs& in, const StrokePaperParams& p) {
 
 PLUMBAGO_REFERENCE_STAGE(stroke_paper, [](ReferenceFrame& f) {
   const Image* under = f.get(maybe(kSketchColor));
-  PageInputs in{f.get(kGBuffer), stroke_object_flags(f.ordinary), f.get(maybe(kCoat)), f.get(kPaperHeight),
-                under ? under : f.get(maybe(kComposeColor)), f.get(maybe(kSketchDepth))};
+  PageInputs in{f.get(kGBuffer),
+                stroke_object_flags(f.ordinary),
+                f.get(maybe(kCoat)),
+                f.get(kPaperHeight),
+                under ? under : f.get(maybe(kComposeColor)),
+                f.get(maybe(kSketchDepth))};
   f.put(kPage, page_with(in, f.params<StrokePaperParams>()));
 });
 

@@ -95,8 +95,11 @@ TEST_F(BenchCmd, AgainstItsOwnSavedFrameIsZeroAndAgainstAnotherSettingIsNot) {
 }
 
 TEST_F(BenchCmd, AgainstAnImageOfAnotherSizeIsRefused) {
-  ASSERT_EQ(run("bench builtin:torus --size 64x48 --frames 1 --backend gpu --buffers compose.color --save " + path("s")).code, 0);
-  CliRun r = run("bench builtin:torus --size 32x32 --frames 1 --backend gpu --buffers compose.color --against " + path("s/gpu"));
+  ASSERT_EQ(
+      run("bench builtin:torus --size 64x48 --frames 1 --backend gpu --buffers compose.color --save " + path("s")).code,
+      0);
+  CliRun r = run("bench builtin:torus --size 32x32 --frames 1 --backend gpu --buffers compose.color --against " +
+                 path("s/gpu"));
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("--against"), std::string::npos) << r.err;
 }

@@ -9,8 +9,8 @@
 #include <set>
 #include <sstream>
 
-#include "common/util/image.hpp"
 #include "common/core/passes.hpp"
+#include "common/util/image.hpp"
 #include "tests/support/cli_run.hpp"
 
 namespace plumbago {
@@ -48,7 +48,8 @@ class Cli : public ::testing::Test {
 };
 
 TEST_F(Cli, TexturesWritesEveryGeneratedTextureIncludingEachSketchyStylesNoise) {
-  CliRun r = run("textures --size 64x64 --set pencil_textures.layers=8 --set pencil_textures.size=64 --out " + path("textures"));
+  CliRun r = run("textures --size 64x64 --set pencil_textures.layers=8 --set pencil_textures.size=64 --out " +
+                 path("textures"));
   ASSERT_EQ(r.code, 0) << r.err;
   for (const char* name : {"pencil_layer_00", "pencil_layer_07", "paper_normal", "contour_offsets_0", "sketchy_noise",
                            "sketchy_white_noise", "sketchy_noise_3d_slice0"})
@@ -67,8 +68,8 @@ TEST_F(Cli, RendersTheBuiltinSceneAndReportsWhatRan) {
     ran.push_back(p["name"]);
     EXPECT_GE(p["ms"].get<double>(), 0.0);
   }
-  for (const char* stage : {"distortion", "contour_texture", "gbuffer", "edge_detect", "contour_light", "multi_contour",
-                            "compose"})
+  for (const char* stage :
+       {"distortion", "contour_texture", "gbuffer", "edge_detect", "contour_light", "multi_contour", "compose"})
     EXPECT_NE(std::find(ran.begin(), ran.end(), stage), ran.end()) << stage;
   EXPECT_FALSE(j["renderer"].get<std::string>().empty());
 }
@@ -106,7 +107,7 @@ TEST_F(Cli, BadSizeIsRefused) { expect_refused("render --size 0x10", {"--size"})
 // Embree abort (SIGABRT) in render, compare and bench.
 TEST_F(Cli, FarAwayCameraIsRefusedOnEveryCommand) {
   write("far.json", R"({"mesh": {"procedural": "torus"}, "camera": {"eye": [1e20, 0, 0]}})");
-  for (const char* command : {"render --backend reference -o " , "compare --out ", "bench --frames 1 --save "})
+  for (const char* command : {"render --backend reference -o ", "compare --out ", "bench --frames 1 --save "})
     expect_refused_as_is(command + path("out") + " " + path("far.json"), {"far.json", "/camera/eye", "beyond"});
 }
 
@@ -136,21 +137,23 @@ TEST_F(Cli, BlockedDumpLeavesNoImage) {
                            {"blocker", "is a file, not a folder"}, {"blocker"});
   fs::create_directories(path("stages/gpu.gbuffer.normal.png"));
   expect_refused_as_is("render " + path("s.json") + " -o " + path("out.png") + " --dump-stages " + path("stages"),
-                       {"gpu.gbuffer.normal.png", "is a folder"}, {"blocker", "stages", "stages/gpu.gbuffer.normal.png"});
+                       {"gpu.gbuffer.normal.png", "is a folder"},
+                       {"blocker", "stages", "stages/gpu.gbuffer.normal.png"});
 }
 
 TEST_F(Cli, TexturesWithOneTargetBlockedWritesNone) {
   fs::create_directories(path("textures/pencil_layer_03.png"));
-  expect_refused_as_is("textures --size 32x32 --set pencil_textures.layers=8 --set pencil_textures.size=32 --out " +
-                           path("textures"),
-                       {"pencil_layer_03.png"}, {"textures", "textures/pencil_layer_03.png"});
+  expect_refused_as_is(
+      "textures --size 32x32 --set pencil_textures.layers=8 --set pencil_textures.size=32 --out " + path("textures"),
+      {"pencil_layer_03.png"}, {"textures", "textures/pencil_layer_03.png"});
   write("file", "");
   expect_refused_as_is("textures --out " + path("file"), {"file", "not a folder"},
                        {"file", "textures", "textures/pencil_layer_03.png"});
 }
 
 TEST_F(Cli, BenchAgainstAMissingFolderIsRefused) {
-  expect_refused_as_is("bench builtin:torus --frames 1 --size 32x32 --against " + path("nowhere"), {"--against", "nowhere"});
+  expect_refused_as_is("bench builtin:torus --frames 1 --size 32x32 --against " + path("nowhere"),
+                       {"--against", "nowhere"});
 }
 
 // An empty effect list draws the blank page at the scene's size on both backends.

@@ -25,7 +25,8 @@ class LinesCommand : public ::testing::Test {
 TEST_F(LinesCommand, JsonHasEveryPathWithItsVisibility) {
   tmp_.write("cube.json", kCube);
   for (const char* backend : {"gpu", "reference"}) {
-    testing::CliRun r = run("lines " + tmp_.path("cube.json") + " --backend " + backend + " -o " + tmp_.path("lines.json"));
+    testing::CliRun r =
+        run("lines " + tmp_.path("cube.json") + " --backend " + backend + " -o " + tmp_.path("lines.json"));
     ASSERT_EQ(r.code, 0) << r.err;
     auto j = nlohmann::json::parse(testing::slurp(tmp_.path("lines.json")));
     ASSERT_EQ(j["paths"].size(), 12u);  // the cube's crease edges
@@ -72,7 +73,8 @@ TEST_F(LinesCommand, DecalsAreLinesToo) {
 }
 
 TEST_F(LinesCommand, RefusesAnUnknownStyleAndWritesNothing) {
-  tmp_.write("bad.json", R"({"objects": [{"mesh": {"procedural": "cube"}, "style": "strokes"}], "strokes": {"crease": "nope"}})");
+  tmp_.write("bad.json",
+             R"({"objects": [{"mesh": {"procedural": "cube"}, "style": "strokes"}], "strokes": {"crease": "nope"}})");
   testing::CliRun r = run("lines " + tmp_.path("bad.json") + " -o " + tmp_.path("lines.json"));
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("/strokes/crease"), std::string::npos) << r.err;

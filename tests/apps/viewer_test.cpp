@@ -10,9 +10,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "common/util/image_compare.hpp"
 #include "common/scene/orbit.hpp"
 #include "common/scene/scene.hpp"
+#include "common/util/image_compare.hpp"
 #include "gpu/core/pipeline.hpp"
 #include "tests/support/cli_run.hpp"
 
@@ -87,7 +87,8 @@ const std::string kMixed = std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/sketchy_m
 
 TEST_F(Viewer, ScriptedParameterChangesTheImageAsRenderSetDoes) {
   view_script(kMixed, R"([{"screenshot": ")" + path("before.png") + R"("}, {"set": {"contour.copies": 1}},
-                          {"screenshot": ")" + path("after.png") + R"("}])");
+                          {"screenshot": ")" +
+                          path("after.png") + R"("}])");
   testing::CliRun r = run("render " + kMixed + kSize + " --set contour.copies=1 -o " + path("render.png"));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_GT(png_difference(path("before.png"), path("after.png")), 0.25) << "the parameter changed the image";
@@ -97,7 +98,8 @@ TEST_F(Viewer, ScriptedParameterChangesTheImageAsRenderSetDoes) {
 // Toggling an effect and saving: `render` of the saved scene draws what the viewer showed.
 TEST_F(Viewer, ScriptedEffectToggleSavedRendersTheSame) {
   view_script(kMixed, R"([{"screenshot": ")" + path("before.png") + R"("}, {"effect": {"interior": false}},
-                          {"save": ")" + path("saved.json") + R"("}, {"screenshot": ")" + path("after.png") + R"("}])");
+                          {"save": ")" +
+                          path("saved.json") + R"("}, {"screenshot": ")" + path("after.png") + R"("}])");
   Scene saved = load_scene(path("saved.json"));
   EXPECT_EQ(std::count(saved.effects.begin(), saved.effects.end(), "interior"), 0);
   testing::CliRun r = run("render " + path("saved.json") + " -o " + path("render.png"));
@@ -109,7 +111,8 @@ TEST_F(Viewer, ScriptedEffectToggleSavedRendersTheSame) {
 TEST_F(Viewer, StageViewShowsTheBufferAsDumpStagesDoes) {
   const std::string buffer = "edge_detect.contour_darkness";
   view_script(kMixed, R"([{"orbit": [25, 10]}, {"stage": ")" + buffer + R"("},
-                          {"save": ")" + path("saved.json") + R"("}, {"screenshot": ")" + path("stage.png") + R"("}])");
+                          {"save": ")" +
+                          path("saved.json") + R"("}, {"screenshot": ")" + path("stage.png") + R"("}])");
   testing::CliRun r = run("render " + path("saved.json") + " --dump-stages " + path("dump") + " -o " + path("r.png"));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_LE(png_difference(path("stage.png"), path("dump/gpu." + buffer + ".png")), kTolerance);
@@ -119,8 +122,8 @@ TEST_F(Viewer, StageViewShowsTheBufferAsDumpStagesDoes) {
 // The check reports, stage by stage, the numbers `plumbago compare` prints.
 TEST_F(Viewer, ReferenceCheckReportsWhatCompareDoes) {
   const std::string scene = "builtin:torus --size 96x72";
-  testing::CliRun v = view(scene + " --no-ui --frames 1 --script " +
-                           script(R"([{"check": ")" + path("check.json") + R"("}])"));
+  testing::CliRun v =
+      view(scene + " --no-ui --frames 1 --script " + script(R"([{"check": ")" + path("check.json") + R"("}])"));
   ASSERT_EQ(v.code, 0) << v.err;
   testing::CliRun c = run("compare " + scene + " --json");
   ASSERT_EQ(c.code, 0) << c.err << c.out;
@@ -145,8 +148,10 @@ TEST_F(Viewer, ReloadsAnEditedSceneKeepingTheCamera) {
   edited["effects"] = {"contours", "sketchy"};
   std::ofstream(path("edited.json")) << edited.dump();
   std::string actions = R"([{"orbit": [30, 0]}, {"screenshot": ")" + path("before.png") + R"("}, {"reload": true},
-                            {"save": ")" + path("saved.json") + R"("},
-                            {"screenshot": ")" + path("after.png") + R"("}])";
+                            {"save": ")" +
+                        path("saved.json") + R"("},
+                            {"screenshot": ")" +
+                        path("after.png") + R"("}])";
   // The file is replaced (atomically, as editors save) once the first screenshot is written.
   std::string edit = "(for i in $(seq 600); do [ -e " + path("before.png") + " ] && break; sleep 0.1; done; mv " +
                      path("edited.json") + " " + path("scene.json") + ") & timeout 60 ";
@@ -218,8 +223,8 @@ TEST(ViewerSavedScene, RendersWhatTheViewerDrew) {
 
 TEST(ViewerWithoutDisplay, ExitsTwoSayingSo) {
   testing::TempDir tmp;
-  testing::CliRun r = testing::run_cli("view --frames 1 --screenshot " + tmp.path("x.png"), tmp,
-                                       "env -u DISPLAY -u WAYLAND_DISPLAY ");
+  testing::CliRun r =
+      testing::run_cli("view --frames 1 --screenshot " + tmp.path("x.png"), tmp, "env -u DISPLAY -u WAYLAND_DISPLAY ");
   EXPECT_EQ(r.code, 2) << r.err;
   const char* says = PLUMBAGO_VIEWER ? "cannot open a window" : "built without the viewer";
   EXPECT_NE(r.err.find(says), std::string::npos) << r.err;

@@ -4,8 +4,8 @@
 // set, is the date written.
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <algorithm>
+#include <filesystem>
 #include <map>
 #include <regex>
 

@@ -14,11 +14,11 @@
 #include <tuple>
 #include <vector>
 
+#include "common/scene/scene.hpp"
 #include "common/util/image.hpp"
 #include "common/util/image_compare.hpp"
-#include "common/scene/scene.hpp"
-#include "gpu/gl/context.hpp"
 #include "gpu/core/pipeline.hpp"
+#include "gpu/gl/context.hpp"
 #include "reference/core/pipeline.hpp"
 #include "tests/support/test_scenes.hpp"
 
@@ -74,7 +74,8 @@ std::vector<GoldenCase> golden_cases() {
   for (const auto& n : builtin_scene_names()) cases.push_back({n, "builtin:" + n, ""});
   cases.push_back({"fandisk_pencil", "scenes/fandisk_pencil.json", "fandisk.obj"});  // every pencil effect
   cases.push_back({"ogre_sketchy", "scenes/ogre_sketchy.json", "ogre.obj"});
-  cases.push_back({"torus_strokes", "scenes/torus_strokes.json", ""});  // stroke-based rendering: base coat, paper, silhouette strokes
+  cases.push_back({"torus_strokes", "scenes/torus_strokes.json",
+                   ""});  // stroke-based rendering: base coat, paper, silhouette strokes
   return cases;
 }
 
@@ -99,7 +100,7 @@ bool update_mode() {
 
 Scene load_golden_scene(const GoldenCase& c) {
   Scene s = c.source.rfind("builtin:", 0) == 0 ? builtin_scene(c.source.substr(8))
-                                                : load_scene((source_root() / c.source).string());
+                                               : load_scene((source_root() / c.source).string());
   s.width = kGoldenSize;
   s.height = kGoldenSize;
   return s;
@@ -165,7 +166,8 @@ fs::path write_failure(const std::string& name, const Image& golden, const Image
   write_image(golden, (dir / (name + ".golden.png")).string());
   write_image(actual, (dir / (name + ".actual.png")).string());
   if (golden.width == actual.width && golden.height == actual.height && golden.channels == actual.channels)
-    write_image(diff_heatmap(golden, actual, std::max(tol.level, kHeatmapLevel)), (dir / (name + ".diff.png")).string());
+    write_image(diff_heatmap(golden, actual, std::max(tol.level, kHeatmapLevel)),
+                (dir / (name + ".diff.png")).string());
   return dir;
 }
 
@@ -173,7 +175,8 @@ class GoldenImage : public ::testing::TestWithParam<std::tuple<GoldenCase, Backe
  protected:
   void TearDown() override {
     if (std::get<1>(GetParam()) == Backend::Gpu) {
-      EXPECT_NO_THROW(gpu::Context::get().check_errors(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+      EXPECT_NO_THROW(
+          gpu::Context::get().check_errors(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     }
   }
 };

@@ -47,29 +47,33 @@ class HardCases : public testing::GlTest {};
 
 TEST_F(HardCases, ViewStraightDownACylindersAxis) {
   expect_finite_everywhere(hard_scene(R"("mesh": {"procedural": "cylinder"},
-      "camera": {"eye": [0, 0, 6], "target": [0, 0, 0], "up": [0, 1, 0]})"), "cylinder axis");
+      "camera": {"eye": [0, 0, 6], "target": [0, 0, 0], "up": [0, 1, 0]})"),
+                           "cylinder axis");
 }
 
 TEST_F(HardCases, GrazingViewOfAPlane) {
   expect_finite_everywhere(hard_scene(R"("mesh": {"procedural": "plane"},
-      "camera": {"eye": [0, -6, 0.02], "target": [0, 0, 0], "up": [0, 0, 1]})"), "grazing");
+      "camera": {"eye": [0, -6, 0.02], "target": [0, 0, 0], "up": [0, 0, 1]})"),
+                           "grazing");
 }
 
 TEST_F(HardCases, SubPixelTriangles) {
   expect_finite_everywhere(hard_scene(R"("mesh": {"procedural": "sphere", "resolution": 2},
-      "camera": {"eye": [0, 0, 300], "target": [0, 0, 0], "up": [0, 1, 0], "fov_deg": 5})"), "sub-pixel");
+      "camera": {"eye": [0, 0, 300], "target": [0, 0, 0], "up": [0, 1, 0], "fov_deg": 5})"),
+                           "sub-pixel");
 }
 
 TEST_F(HardCases, OgreFromFarAway) {
   PLUMBAGO_REQUIRE_MODEL("ogre.obj");
-  Scene s = hard_scene(R"("mesh": "ogre.obj", "camera": {"view_direction": [0, 0, 1], "fov_deg": 1})",
-                       PLUMBAGO_MODELS_DIR);
+  Scene s =
+      hard_scene(R"("mesh": "ogre.obj", "camera": {"view_direction": [0, 0, 1], "fov_deg": 1})", PLUMBAGO_MODELS_DIR);
   expect_finite_everywhere(s, "ogre far");
 }
 
 TEST_F(HardCases, BackFaces) {
   expect_finite_everywhere(hard_scene(R"("mesh": {"procedural": "plane"},
-      "camera": {"eye": [0.3, 0.2, -4], "target": [0, 0, 0], "up": [0, 1, 0]})"), "back faces");
+      "camera": {"eye": [0.3, 0.2, -4], "target": [0, 0, 0], "up": [0, 1, 0]})"),
+                           "back faces");
 }
 
 TEST_F(HardCases, ZeroAreaFaces) {
@@ -82,7 +86,8 @@ TEST_F(HardCases, ZeroAreaFaces) {
 
 TEST_F(HardCases, FullyFlatScene) {
   expect_finite_everywhere(hard_scene(R"("mesh": {"procedural": "plane"},
-      "camera": {"eye": [0, 0, 4], "target": [0, 0, 0], "up": [0, 1, 0]})"), "flat");
+      "camera": {"eye": [0, 0, 4], "target": [0, 0, 0], "up": [0, 1, 0]})"),
+                           "flat");
 }
 
 TEST_F(HardCases, PerfectSphereUmbilicEverywhere) {
@@ -94,12 +99,14 @@ TEST_F(HardCases, PerfectSphereUmbilicEverywhere) {
 // scene spanning the largest coordinates.
 TEST_F(HardCases, SmallUniformScale) {
   expect_finite_everywhere(hard_scene(R"("objects": [{"mesh": {"procedural": "torus"},
-      "transform": [1e-4,0,0,0, 0,1e-4,0,0, 0,0,1e-4,0, 0,0,0,1]}])"), "scale 1e-4");
+      "transform": [1e-4,0,0,0, 0,1e-4,0,0, 0,0,1e-4,0, 0,0,0,1]}])"),
+                           "scale 1e-4");
 }
 
 TEST_F(HardCases, FarOverNearAtItsBound) {
   expect_finite_everywhere(hard_scene(R"("mesh": {"procedural": "torus"},
-      "camera": {"eye": [0, -3, 2], "target": [0, 0, 0], "up": [0, 0, 1], "near": 1e-5, "far": 9.99})"), "far / near");
+      "camera": {"eye": [0, -3, 2], "target": [0, 0, 0], "up": [0, 0, 1], "near": 1e-5, "far": 9.99})"),
+                           "far / near");
 }
 
 // The pencil effects only: the stroke objects' lines, seen this close, exceed the GPU's
@@ -108,15 +115,17 @@ TEST_F(HardCases, NarrowestFieldOfView) {
   expect_finite_everywhere(hard_scene(R"("objects": [{"mesh": {"procedural": "torus"},
       "transform": [100,0,0,0, 0,100,0,0, 0,0,100,0, 0,0,0,1]}],
       "camera": {"eye": [100, 0, 60], "target": [100, 0, 0], "up": [0, 1, 0], "fov_deg": 1e-3, "near": 1, "far": 100})"),
-                       "fov 1e-3");
+                           "fov 1e-3");
 }
 
 TEST_F(HardCases, LargestCoordinates) {
   testing::TempDir tmp;
-  tmp.write("huge.obj", "v -1e9 -1e9 -1e9\nv 1e9 -1e9 -1e9\nv -1e9 1e9 -1e9\nv -1e9 -1e9 1e9\n"
-                        "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n");
+  tmp.write("huge.obj",
+            "v -1e9 -1e9 -1e9\nv 1e9 -1e9 -1e9\nv -1e9 1e9 -1e9\nv -1e9 -1e9 1e9\n"
+            "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n");
   expect_finite_everywhere(hard_scene(R"("mesh": "huge.obj",
-      "camera": {"eye": [1e9, 1e9, 1e9], "target": [0, 0, 0], "up": [0, 0, 1], "fov_deg": 120})", tmp.dir()),
+      "camera": {"eye": [1e9, 1e9, 1e9], "target": [0, 0, 0], "up": [0, 0, 1], "fov_deg": 120})",
+                                      tmp.dir()),
                            "coordinates at 1e9");
 }
 

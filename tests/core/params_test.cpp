@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "common/pencil/edge_detect.hpp"
 #include "common/core/params.hpp"
 #include "common/core/stage_registry.hpp"
+#include "common/pencil/edge_detect.hpp"
 
 namespace plumbago {
 namespace {
@@ -101,17 +101,17 @@ TEST(Params, DefaultsComeFromTheTable) {
   ParamSet defaults;
   for (const auto& s : param_specs()) EXPECT_EQ(defaults.value(s.key), s.default_value) << s.key;
   // A few defaults as the headers write them (and docs/stages.md lists them).
-  EXPECT_EQ(param_spec("edge.depth_scale").default_value, 10.0);                  // common/pencil/edge_detect.hpp
-  EXPECT_EQ(param_spec("edge.normals").default_value, 0.0);                       // interpolated
-  EXPECT_EQ(param_spec("edge.background_pairs").default_value, 0.0);              // continuous
-  EXPECT_EQ(param_spec("compose.contour_attenuation").default_value, 0.5);        // common/pencil/compose.hpp
+  EXPECT_EQ(param_spec("edge.depth_scale").default_value, 10.0);            // common/pencil/edge_detect.hpp
+  EXPECT_EQ(param_spec("edge.normals").default_value, 0.0);                 // interpolated
+  EXPECT_EQ(param_spec("edge.background_pairs").default_value, 0.0);        // continuous
+  EXPECT_EQ(param_spec("compose.contour_attenuation").default_value, 0.5);  // common/pencil/compose.hpp
   EXPECT_EQ(param_spec("compose.contrast").default_value, 0.5);
-  EXPECT_EQ(param_spec("contour.copies").default_value, 3.0);                     // common/pencil/multi_contour.hpp
+  EXPECT_EQ(param_spec("contour.copies").default_value, 3.0);  // common/pencil/multi_contour.hpp
   EXPECT_EQ(param_spec("contour.stroke_opacity").default_value, 0.7);
-  EXPECT_EQ(param_spec("curvature.ring_fallback").default_value, 1.0);            // common/curvature/curvature.hpp
-  EXPECT_EQ(param_spec("paper.mu_p").default_value, 0.05);                        // common/pencil/paper.hpp
-  EXPECT_EQ(param_spec("sketchy.shade_c").default_value, -3.0);                   // common/sketchy/sketchy.hpp
-  EXPECT_EQ(param_spec("pencil_textures.layers").default_value, 32.0);            // common/pencil/pencil_textures.hpp
+  EXPECT_EQ(param_spec("curvature.ring_fallback").default_value, 1.0);  // common/curvature/curvature.hpp
+  EXPECT_EQ(param_spec("paper.mu_p").default_value, 0.05);              // common/pencil/paper.hpp
+  EXPECT_EQ(param_spec("sketchy.shade_c").default_value, -3.0);         // common/sketchy/sketchy.hpp
+  EXPECT_EQ(param_spec("pencil_textures.layers").default_value, 32.0);  // common/pencil/pencil_textures.hpp
   // The edge stage's struct, field by field, as the stages load it.
   EXPECT_EQ(check_defaults<EdgeDetectParams>(), 3u);
   auto p = ParamSet{}.get<EdgeDetectParams>();

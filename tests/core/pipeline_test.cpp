@@ -28,8 +28,9 @@ bool ran(const Frame& f, const std::string& pass) {
 }
 
 TEST(PassTable, ContoursNeedOnlyGBufferEdgesAndComposition) {
-  EXPECT_EQ(passes_for({"contours"}), (std::vector<std::string>{"distortion", "contour_texture", "gbuffer", "edge_detect",
-                                                               "contour_light", "multi_contour", "compose"}));
+  EXPECT_EQ(passes_for({"contours"}),
+            (std::vector<std::string>{"distortion", "contour_texture", "gbuffer", "edge_detect", "contour_light",
+                                      "multi_contour", "compose"}));
   EXPECT_THROW(passes_for({"watercolor"}), std::invalid_argument);
 }
 
@@ -90,15 +91,15 @@ TEST_F(Frames, EveryBufferIsFiniteOnBothBackends) {
     std::vector<std::string> expected;  // buffers the frame must have
   };
   std::vector<Case> cases;
-  const std::vector<std::string> gbuffer = {"gbuffer.depth", "gbuffer.normal", "gbuffer.face_normal", "gbuffer.bary",
-                                            "gbuffer.gouraud", "gbuffer.ids"};
+  const std::vector<std::string> gbuffer = {"gbuffer.depth", "gbuffer.normal",  "gbuffer.face_normal",
+                                            "gbuffer.bary",  "gbuffer.gouraud", "gbuffer.ids"};
   auto with = [](std::vector<std::string> a, const std::vector<std::string>& b) {
     a.insert(a.end(), b.begin(), b.end());
     return a;
   };
-  const std::vector<std::string> contours = with(gbuffer, {"edge_detect.contour_darkness",
-                                                           "contour_light.lit_contour_darkness",
-                                                           "multi_contour.contour_darkness", "compose.color"});
+  const std::vector<std::string> contours =
+      with(gbuffer, {"edge_detect.contour_darkness", "contour_light.lit_contour_darkness",
+                     "multi_contour.contour_darkness", "compose.color"});
   for (const std::string& name : builtin_scene_names()) {
     Scene scene = testing::builtin_at(name, 160, 120);
     cases.push_back({name, scene, contours});

@@ -95,9 +95,11 @@ class StageDumps : public testing::GlTest {};
 
 TEST_F(StageDumps, HoldTheDeclaredOutputsOnBothBackends) {
   Scene scene = testing::builtin_at("torus", 96, 72);
-  for (auto effects : {std::vector<std::string>{"contours"}, std::vector<std::string>{"contours", "interior", "paper"}}) {
+  for (auto effects :
+       {std::vector<std::string>{"contours"}, std::vector<std::string>{"contours", "interior", "paper"}}) {
     scene.effects = effects;
-    std::vector<std::string> declared = dumped_buffers(frame_stages(passes_for(effects, scene.params)), {scene.params, effects});
+    std::vector<std::string> declared =
+        dumped_buffers(frame_stages(passes_for(effects, scene.params)), {scene.params, effects});
     std::sort(declared.begin(), declared.end());
     ASSERT_GE(declared.size(), 8u);
     for (const Frame& f : {reference::render(scene, {true}), gpu::Renderer(scene).render({true})}) {

@@ -36,13 +36,13 @@ TEST(BallGeometry, SegmentLengthInBall) {
 TEST(BallGeometry, TriangleAreaInBallExactCases) {
   const double pi = std::numbers::pi;
   glm::dvec3 a(-10, -10, 0), b(10, -10, 0), d(0, 20, 0);
-  EXPECT_NEAR(triangle_area_in_ball(a, b, d, {0, 0, 0}, 1), pi, 1e-12);             // disk inside
-  EXPECT_NEAR(triangle_area_in_ball(a, b, d, {0, 0, 0.6}, 1), pi * 0.64, 1e-12);    // ball above the plane
-  EXPECT_NEAR(triangle_area_in_ball(a, b, d, {0, -10, 0}, 1), pi / 2, 1e-12);       // center on an edge
-  EXPECT_NEAR(triangle_area_in_ball({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 0}, 5), 0.5, 1e-12);  // all inside
+  EXPECT_NEAR(triangle_area_in_ball(a, b, d, {0, 0, 0}, 1), pi, 1e-12);           // disk inside
+  EXPECT_NEAR(triangle_area_in_ball(a, b, d, {0, 0, 0.6}, 1), pi * 0.64, 1e-12);  // ball above the plane
+  EXPECT_NEAR(triangle_area_in_ball(a, b, d, {0, -10, 0}, 1), pi / 2, 1e-12);     // center on an edge
+  EXPECT_NEAR(triangle_area_in_ball({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 0}, 5), 0.5, 1e-12);     // all inside
   EXPECT_NEAR(triangle_area_in_ball({0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {0, 0, 0}, 1), pi / 4, 1e-12);  // corner
-  EXPECT_EQ(triangle_area_in_ball(a, b, d, {0, 0, 2}, 1), 0);                        // ball off the plane
-  EXPECT_EQ(triangle_area_in_ball(a, b, d, {50, 0, 0}, 1), 0);                       // beside the triangle
+  EXPECT_EQ(triangle_area_in_ball(a, b, d, {0, 0, 2}, 1), 0);                          // ball off the plane
+  EXPECT_EQ(triangle_area_in_ball(a, b, d, {50, 0, 0}, 1), 0);                         // beside the triangle
   EXPECT_EQ(triangle_area_in_ball({0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 0, 0}, 1), 0);  // zero area
 }
 
@@ -71,8 +71,8 @@ TEST(BallGeometry, TriangleAreaInBallMatchesSampling) {
 // The clipped area as it was first written, one atan2 for each piece of the boundary
 // outside the disk: the plain formula that triangle_area_in_ball's one atan2 per run of
 // such pieces must reproduce.
-double area_in_ball_piece_by_piece(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& d,
-                                   const glm::dvec3& c, double r) {
+double area_in_ball_piece_by_piece(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& d, const glm::dvec3& c,
+                                   double r) {
   auto cross2 = [](glm::dvec2 u, glm::dvec2 v) { return u.x * v.y - u.y * v.x; };
   auto angle2 = [&](glm::dvec2 u, glm::dvec2 v) { return std::atan2(cross2(u, v), glm::dot(u, v)); };
   // Signed area of disk(origin, rho) ∩ triangle(origin, u, v).
@@ -223,8 +223,7 @@ void expect_plain_ball_sums(const Mesh& mesh, double radius, const std::string& 
     double t = 1e-9 * plain.tensor_scale, s = 1e-9 * plain.sums.area;
     bool same = std::abs(a.xx - b.xx) <= t && std::abs(a.xy - b.xy) <= t && std::abs(a.xz - b.xz) <= t &&
                 std::abs(a.yy - b.yy) <= t && std::abs(a.yz - b.yz) <= t && std::abs(a.zz - b.zz) <= t &&
-                std::abs(fast[v].area - plain.sums.area) <= s &&
-                glm::length(fast[v].normal - plain.sums.normal) <= s;
+                std::abs(fast[v].area - plain.sums.area) <= s && glm::length(fast[v].normal - plain.sums.normal) <= s;
     if (!same) ++failures;
     EXPECT_TRUE(same) << name << " radius " << radius << " vertex " << v << ": area " << fast[v].area << " vs "
                       << plain.sums.area << ", T_xx " << a.xx << " vs " << b.xx << ", T_xy " << a.xy << " vs " << b.xy;
@@ -247,7 +246,7 @@ Mesh with_zero_area_faces(Mesh m) {
 TEST(CurvatureBall, SumsAreThoseOfThePlainBall) {
   Mesh torus = analytic_torus(1.0, 0.4, 0.08, Meshing::Irregular).mesh;
   Mesh saddle = analytic_saddle(1.0, 0.1, Meshing::Irregular).mesh;  // open boundary
-  Mesh cube = subdivided_cube(6);                                      // flat faces, sharp edges
+  Mesh cube = subdivided_cube(6);                                    // flat faces, sharp edges
   Mesh sphere = analytic_sphere(1.0, 0.15, Meshing::Regular).mesh;
   Mesh non_manifold = sphere;
   const auto t = non_manifold.triangles[0];
@@ -271,7 +270,9 @@ TEST(CurvatureBall, SumsAreThoseOfThePlainBall) {
 // whole, each distinct edge of those faces once (marked), edges at v whole and the others half.
 curvature::BallSums plain_one_ring_sums(const Mesh& m, const MeshTopology& topo, uint32_t v, double& tensor_scale) {
   auto corner = [&](uint32_t f, int k) { return glm::dvec3(m.positions[m.triangles[f][k % 3]]); };
-  auto twice_area_normal = [&](uint32_t f) { return glm::cross(corner(f, 1) - corner(f, 0), corner(f, 2) - corner(f, 0)); };
+  auto twice_area_normal = [&](uint32_t f) {
+    return glm::cross(corner(f, 1) - corner(f, 0), corner(f, 2) - corner(f, 0));
+  };
   curvature::BallSums sums;
   std::set<uint32_t> edge_seen;
   tensor_scale = 0;

@@ -63,8 +63,8 @@ TEST_F(CurvatureCache, SecondCallReadsWhatTheFirstWrote) {
   ASSERT_EQ(files().size(), 1u);
   EXPECT_EQ(files()[0].string(), cache_file(mesh_, p));
   std::string why;
-  auto cached = read_curvature_cache(cache_file(mesh_, p), {mesh_content_hash(mesh_), mesh_.positions.size(),
-                                                            curvature_params_key(p)}, why);
+  auto cached = read_curvature_cache(cache_file(mesh_, p),
+                                     {mesh_content_hash(mesh_), mesh_.positions.size(), curvature_params_key(p)}, why);
   ASSERT_TRUE(cached.has_value()) << why;
   expect_same(*cached, first);
   expect_same(compute_curvature(mesh_, p, options_), estimate_curvature(mesh_, p));
@@ -107,8 +107,9 @@ TEST_F(CurvatureCache, CorruptFilesAreDetectedAndRecomputed) {
                                                                       {"NaN", nan_value}}) {
     std::ofstream(path, std::ios::binary) << bytes;
     std::string why;
-    EXPECT_FALSE(read_curvature_cache(path, {mesh_content_hash(mesh_), mesh_.positions.size(), curvature_params_key(p)},
-                                      why).has_value())
+    EXPECT_FALSE(
+        read_curvature_cache(path, {mesh_content_hash(mesh_), mesh_.positions.size(), curvature_params_key(p)}, why)
+            .has_value())
         << what;
     EXPECT_FALSE(why.empty()) << what;
     expect_same(compute_curvature(mesh_, p, options_), truth);

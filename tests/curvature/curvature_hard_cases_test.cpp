@@ -53,7 +53,7 @@ TEST(CurvatureHardCases, ZeroAreaTriangles) {
   m.positions[t[0]] = m.positions[t[1]];  // two corners at one position (not welded)
   const auto& u = m.triangles[200];
   m.positions[u[2]] = 0.5f * (m.positions[u[0]] + m.positions[u[1]]);  // three corners on a line
-  m.triangles.push_back({t[1], t[1], t[2]});                            // a repeated corner
+  m.triangles.push_back({t[1], t[1], t[2]});                           // a repeated corner
   compute_normals(m);
   expect_valid_everywhere(m, "zero-area triangles");
 }
@@ -108,8 +108,9 @@ TEST(CurvatureHardCases, NonManifoldEdgesAndVertices) {
   // A second sphere touching the first from outside at vertex t2, sharing that vertex.
   Mesh touching = sphere();
   glm::vec3 at = m.positions[t[2]];
-  auto opposite = std::min_element(touching.positions.begin(), touching.positions.end(),
-                                   [&](const glm::vec3& a, const glm::vec3& b) { return glm::dot(a, at) < glm::dot(b, at); });
+  auto opposite =
+      std::min_element(touching.positions.begin(), touching.positions.end(),
+                       [&](const glm::vec3& a, const glm::vec3& b) { return glm::dot(a, at) < glm::dot(b, at); });
   uint32_t shared = uint32_t(opposite - touching.positions.begin()), base = uint32_t(m.positions.size());
   glm::vec3 offset = at - *opposite;
   for (auto& p : touching.positions) p += offset;

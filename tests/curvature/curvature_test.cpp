@@ -57,7 +57,7 @@ TEST(CurvatureTensor, DihedralAngleIsPositiveOnConvexEdges) {
   // Face 0 = (ridge end b, c0, ridge start a) runs along the ridge from b to a: -x.
   double beta = curvature::signed_dihedral_angle(n0, n1, {-1, 0, 0});
   EXPECT_NEAR(beta, 2 * std::atan(h), 1e-12);
-  EXPECT_NEAR(curvature::signed_dihedral_angle(n1, n0, {1, 0, 0}), beta, 1e-12);  // seen from face 1
+  EXPECT_NEAR(curvature::signed_dihedral_angle(n1, n0, {1, 0, 0}), beta, 1e-12);     // seen from face 1
   EXPECT_NEAR(curvature::signed_dihedral_angle(-n0, -n1, {1, 0, 0}), -beta, 1e-12);  // a valley
 }
 
@@ -179,7 +179,10 @@ struct SurfaceCase {
 
 const SurfaceCase kSurfaces[] = {
     {"torus", [](double e, Meshing m) { return analytic_torus(1.0, 0.5, e, m); }},
-    {"ellipsoid", [](double e, Meshing m) { return analytic_ellipsoid({1.0, 0.7, 0.5}, e, m); }},
+    {"ellipsoid",
+     [](double e, Meshing m) {
+       return analytic_ellipsoid({1.0, 0.7, 0.5}, e, m);
+     }},
     {"sphere", [](double e, Meshing m) { return analytic_sphere(1.0, e, m); }},
     {"cylinder", [](double e, Meshing m) { return analytic_cylinder(0.5, 1.0, e, m); }},
     {"saddle", [](double e, Meshing m) { return analytic_saddle(0.5, e, m); }},
@@ -274,7 +277,8 @@ TEST(CurvatureAccuracy, ApproximateBallAgainstTheExactOne) {
                                             [&](const SurfaceCase& s) { return std::string(s.name) == name; });
       const AnalyticSurface& s = accuracy_surface(sc, m, 2.0);  // two edges per ball radius: coarse, quick
       Accuracy exact = measure_accuracy(s, estimate_curvature(s.mesh, curvature_params()), 0);
-      Accuracy approx = measure_accuracy(s, estimate_curvature(s.mesh, curvature_params({"curvature.ball_clip=approximate"})), 0);
+      Accuracy approx =
+          measure_accuracy(s, estimate_curvature(s.mesh, curvature_params({"curvature.ball_clip=approximate"})), 0);
       print_accuracy("exact ball", s, exact);
       print_accuracy("approximate ball", s, approx);
       for (auto [a, e] : {std::pair{approx.k_min_rel, exact.k_min_rel}, {approx.k_max_rel, exact.k_max_rel}})

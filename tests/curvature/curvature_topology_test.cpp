@@ -39,9 +39,8 @@ void expect_same_topology(const Mesh& mesh, const MeshTopology& a, const MeshTop
 
 // Only the parallel construction numbers the edges by their lower vertex.
 bool numbered_by_lower_vertex(const MeshTopology& topo) {
-  return std::is_sorted(topo.edges.begin(), topo.edges.end(), [](const auto& a, const auto& b) {
-    return std::min(a.from, a.to) < std::min(b.from, b.to);
-  });
+  return std::is_sorted(topo.edges.begin(), topo.edges.end(),
+                        [](const auto& a, const auto& b) { return std::min(a.from, a.to) < std::min(b.from, b.to); });
 }
 
 // Returns whether build_topology took the parallel path.
@@ -74,8 +73,11 @@ TEST(Topology, ManifoldMeshesMatchOpenMesh) {
 // The benchmark's models take the parallel path; the teapot's seams do not.
 TEST(Topology, SharedModelsMatchOpenMesh) {
   std::string missing;
-  for (auto [name, manifold] : {std::pair{"fandisk.obj", true}, {"stanford-bunny.obj", true}, {"ogre.obj", true},
-                                {"teapot.obj", false}, {"igea.ply", true}}) {
+  for (auto [name, manifold] : {std::pair{"fandisk.obj", true},
+                                {"stanford-bunny.obj", true},
+                                {"ogre.obj", true},
+                                {"teapot.obj", false},
+                                {"igea.ply", true}}) {
     std::string path = std::string(PLUMBAGO_MODELS_DIR) + "/" + name;
     if (!std::filesystem::exists(path)) {
       missing += std::string(missing.empty() ? "" : ", ") + "../shared/models/" + name;

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <map>
 
-#include "common/util/memory_budget.hpp"
 #include "common/mesh/mesh.hpp"
+#include "common/util/memory_budget.hpp"
 #include "tests/support/temp_dir.hpp"
 #include "tests/support/test_scenes.hpp"
 
@@ -34,8 +34,10 @@ double consistent_orientation_share(const Mesh& m) {
   for (const auto& [e, n] : directed) {
     if (e.first > e.second) continue;
     bool forward = n > 0, backward = directed.count({e.second, e.first}) > 0;
-    if (forward && backward) ++shared, ++consistent;
-    else if (n > 1) ++shared;
+    if (forward && backward)
+      ++shared, ++consistent;
+    else if (n > 1)
+      ++shared;
   }
   return shared ? double(consistent) / double(shared) : 0.0;
 }
@@ -50,10 +52,10 @@ TEST(MeshIo, SharedModelsHaveTheirCountsAndFiniteUnitNormals) {
     const char* name;
     size_t vertices, faces;
   };
-  for (const auto& e : {Expected{"fandisk.obj", 6475, 12946}, Expected{"stanford-bunny.obj", 35947, 69451},
-                        Expected{"teapot.obj", 3241, 6320}, Expected{"ogre.obj", 62185, 124008},
-                        Expected{"rocker-arm.obj", 10044, 20088}, Expected{"spot.obj", 2930, 5856},
-                        Expected{"cow.obj", 2903, 5804}}) {
+  for (const auto& e :
+       {Expected{"fandisk.obj", 6475, 12946}, Expected{"stanford-bunny.obj", 35947, 69451},
+        Expected{"teapot.obj", 3241, 6320}, Expected{"ogre.obj", 62185, 124008},
+        Expected{"rocker-arm.obj", 10044, 20088}, Expected{"spot.obj", 2930, 5856}, Expected{"cow.obj", 2903, 5804}}) {
     if (!testing::have_model(e.name)) {
       missing += std::string(missing.empty() ? "" : ", ") + "../shared/models/" + e.name;
       continue;
@@ -226,7 +228,7 @@ class BudgetOf {
 // (4 vertices, 4 triangles: about 6 kB by mesh_bytes) is refused under 1 kB.
 TEST(MeshIo, MeshesOverTheMemoryBudgetAreRefused) {
   const std::string corpus = std::string(PLUMBAGO_SOURCE_DIR) + "/tests/corpus/mesh/";
-  const char* files[] = {"obj_ok_tetra.obj", "off_ok_tetra.off", "ply_ascii_ok.ply",
+  const char* files[] = {"obj_ok_tetra.obj",     "off_ok_tetra.off", "ply_ascii_ok.ply",
                          "ply_binary_le_ok.ply", "stl_ascii_ok.stl", "stl_binary_ok.stl"};
   {
     BudgetOf tiny(1e-6);

@@ -51,9 +51,10 @@ TEST(PlyHeader, MalformedHeadersAreRefusedWithTheirLine) {
       tmp.write("long.ply", "ply\nformat ascii 1.0\n" + kVertexFace + std::string(100000, 'c') + "\nend_header\n"),
       {"long.ply: line", "end_header", "65536"});
   // An element without properties: OpenMesh looped forever.
-  expect_refused_quickly(tmp.write("noprops.ply", "ply\nformat ascii 1.0\nelement vertex 3\nelement face 1\n"
-                                                  "property list uchar int vertex_indices\nend_header\n" +
-                                                      kTriangle + "3 0 1 2\n"),
+  expect_refused_quickly(tmp.write("noprops.ply",
+                                   "ply\nformat ascii 1.0\nelement vertex 3\nelement face 1\n"
+                                   "property list uchar int vertex_indices\nend_header\n" +
+                                       kTriangle + "3 0 1 2\n"),
                          {"noprops.ply: line 3:", "element 'vertex' has no properties"});
   expect_refused_quickly(tmp.write("noprops2.ply", "ply\nformat ascii 1.0\n" + kVertexFace +
                                                        "element edge 0\nend_header\n" + kTriangle + "3 0 1 2\n"),
@@ -62,8 +63,9 @@ TEST(PlyHeader, MalformedHeadersAreRefusedWithTheirLine) {
                          {"keyword.ply: line 9:", "unknown header keyword 'bogus'"});
   expect_refused_quickly(tmp.write("type.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty quad x\n"),
                          {"type.ply: line 4:", "unknown property type 'quad'"});
-  expect_refused_quickly(tmp.write("listcount.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
-                                                    "element face 1\nproperty list float int vertex_indices\n"),
+  expect_refused_quickly(tmp.write("listcount.ply",
+                                   "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                   "element face 1\nproperty list float int vertex_indices\n"),
                          {"listcount.ply: line 6:", "not an integer type"});
   expect_refused_quickly(
       tmp.write("format.ply", "ply\nformat binary_middle_endian 1.0\n" + kVertexFace + "end_header\n"),
@@ -75,8 +77,9 @@ TEST(PlyHeader, MalformedHeadersAreRefusedWithTheirLine) {
   expect_refused_quickly(
       tmp.write("noface.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n"),
       {"noface.ply: line 5:", "no 'element face'"});
-  expect_refused_quickly(tmp.write("novertex.ply", "ply\nformat ascii 1.0\nelement face 1\n"
-                                                   "property list uchar int vertex_indices\nend_header\n3 0 1 2\n"),
+  expect_refused_quickly(tmp.write("novertex.ply",
+                                   "ply\nformat ascii 1.0\nelement face 1\n"
+                                   "property list uchar int vertex_indices\nend_header\n3 0 1 2\n"),
                          {"novertex.ply: line 5:", "no 'element vertex'"});
   expect_refused_quickly(tmp.write("negative.ply", "ply\nformat ascii 1.0\nelement vertex -3\n"),
                          {"negative.ply: line 3:", "negative count -3"});
@@ -93,7 +96,8 @@ TEST(PlyHeader, CountsTheFileCannotHoldAreRefusedBeforeAllocating) {
   // Billions of elements of another kind: OpenMesh stayed busy for minutes.
   expect_refused_quickly(tmp.write("edges.ply", "ply\nformat ascii 1.0\n" + kVertexFace +
                                                     "element edge 4000000000\nproperty int vertex1\n"
-                                                    "property int vertex2\nend_header\n" + kTriangle + "3 0 1 2\n"),
+                                                    "property int vertex2\nend_header\n" +
+                                                    kTriangle + "3 0 1 2\n"),
                          {"edges.ply", "element edge claims 4000000000 records", "ends early"});
   std::string binary_edges = "ply\nformat binary_little_endian 1.0\n" + kVertexFace +
                              "element edge 4000000000\nproperty int vertex1\nproperty int vertex2\nend_header\n";
@@ -102,9 +106,10 @@ TEST(PlyHeader, CountsTheFileCannotHoldAreRefusedBeforeAllocating) {
                          {"edges-bin.ply", "element edge claims 4000000000 records of at least 8 bytes",
                           "the file has 12 bytes left after the header and the elements before it"});
   // A binary vertex count beyond the file.
-  std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float x\n"
-                       "property float y\nproperty float z\nelement face 1\n"
-                       "property list uchar int vertex_indices\nend_header\n";
+  std::string binary =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float x\n"
+      "property float y\nproperty float z\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n";
   binary += std::string(1024, '\0');
   expect_refused_quickly(tmp.write("vertices.ply", binary),
                          {"vertices.ply: element vertex claims 4000000000 records of at least 12 bytes, "
@@ -130,9 +135,10 @@ TEST(PlyHeader, BadFaceIndicesNeverReachAnUnsignedConversion) {
   expect_refused_quickly(tmp.write("bigcoord.ply", kAscii + "0 0 0\n1e300 0 0\n0 1 0\n3 0 1 2\n"),
                          {"bigcoord.ply:11:", "vertex 1", "beyond float range"});
   // Binary: a float index that is NaN.
-  std::string ply = "ply\nformat binary_little_endian 1.0\n"
-                    "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-                    "element face 1\nproperty list uchar float vertex_indices\nend_header\n";
+  std::string ply =
+      "ply\nformat binary_little_endian 1.0\n"
+      "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar float vertex_indices\nend_header\n";
   for (float v : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) ply.append(reinterpret_cast<const char*>(&v), 4);
   ply += char(3);
   for (float v : {0.f, 1.f, std::numeric_limits<float>::quiet_NaN()}) ply.append(reinterpret_cast<const char*>(&v), 4);
@@ -161,12 +167,13 @@ TEST(PlyHeader, OffCountsAreCheckedBeforeOpenMesh) {
 TEST(PlyHeader, ValidHeadersStillLoad) {
   TempDir tmp;
   // Comments, obj_info, CRLF line ends, the sized type names, an extra element.
-  std::string ply = "ply\r\nformat ascii 1.0\r\ncomment made by hand\r\nobj_info nothing\r\n"
-                    "element vertex 3\r\nproperty float32 x\r\nproperty float32 y\r\nproperty float32 z\r\n"
-                    "property uint8 red\r\n"
-                    "element face 1\r\nproperty list uint8 int32 vertex_indices\r\n"
-                    "element edge 1\r\nproperty int vertex1\r\nproperty int vertex2\r\nend_header\r\n"
-                    "0 0 0 1\r\n1 0 0 2\r\n0 1 0 3\r\n3 0 1 2\r\n0 1\r\n";
+  std::string ply =
+      "ply\r\nformat ascii 1.0\r\ncomment made by hand\r\nobj_info nothing\r\n"
+      "element vertex 3\r\nproperty float32 x\r\nproperty float32 y\r\nproperty float32 z\r\n"
+      "property uint8 red\r\n"
+      "element face 1\r\nproperty list uint8 int32 vertex_indices\r\n"
+      "element edge 1\r\nproperty int vertex1\r\nproperty int vertex2\r\nend_header\r\n"
+      "0 0 0 1\r\n1 0 0 2\r\n0 1 0 3\r\n3 0 1 2\r\n0 1\r\n";
   Mesh m = load_mesh(tmp.write("valid.ply", ply));
   EXPECT_EQ(m.positions.size(), 3u);
   EXPECT_EQ(m.triangles.size(), 1u);

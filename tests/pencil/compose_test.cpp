@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "parity/parity.hpp"
 #include "common/core/params.hpp"
+#include "parity/parity.hpp"
 #include "reference/pencil/compose.hpp"
 #include "tests/support/parity_checks.hpp"
 #include "tests/support/test_scenes.hpp"
@@ -21,7 +21,8 @@ namespace {
 // in the composition pass itself), an interior and the paper color; 8-bit target.
 
 // The composition pass alone, then drawing the multiple contours itself (a frame's way).
-const std::vector<std::string> kComposeResults = {"compose.color", "multi_contour.contour_darkness in multi_contour+compose",
+const std::vector<std::string> kComposeResults = {"compose.color",
+                                                  "multi_contour.contour_darkness in multi_contour+compose",
                                                   "compose.color in multi_contour+compose"};
 
 void expect_compose_parity(const std::vector<StageParity>& results, const Scene& scene, const std::string& label) {
@@ -117,7 +118,8 @@ TEST(ComposeReference, FullContourDarknessIsBlack) {
   for (float interior : {0.0f, 0.3f, 1.0f})
     for (double a : {0.0, 0.5, 1.0})
       for (double contrast : {0.0, 0.5, 1.0}) {
-        Image out = reference::compose(Image(2, 2, 1, 1.0f), Image(2, 2, 1, interior), paper, compose_params(a, contrast));
+        Image out =
+            reference::compose(Image(2, 2, 1, 1.0f), Image(2, 2, 1, interior), paper, compose_params(a, contrast));
         for (float v : out.data) EXPECT_EQ(v, 0.0f) << "D_i " << interior << " a " << a << " contrast " << contrast;
       }
 }
@@ -133,7 +135,8 @@ TEST(ComposeReference, FullInteriorDarknessWithoutContoursIsBlack) {
 TEST(ComposeReference, ContrastMixesIWithItsSmoothstep) {
   const float d_i = 0.6f;  // I = 0.4, smoothstep(0.4) = 0.16 * 2.2 = 0.352
   auto at = [&](double contrast) {
-    return reference::compose(Image(1, 1, 1, 0.0f), Image(1, 1, 1, d_i), Image(), compose_params(0.5, contrast)).at(0, 0, 0);
+    return reference::compose(Image(1, 1, 1, 0.0f), Image(1, 1, 1, d_i), Image(), compose_params(0.5, contrast))
+        .at(0, 0, 0);
   };
   EXPECT_NEAR(at(0.0), 0.4f, 1e-6f);
   EXPECT_NEAR(at(1.0), 0.352f, 1e-6f);

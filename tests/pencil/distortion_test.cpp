@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "common/pencil/distortion.hpp"
 #include "common/core/params.hpp"
+#include "common/pencil/distortion.hpp"
 
 namespace plumbago {
 namespace {
@@ -23,7 +23,7 @@ TEST(Distortion, OneGridPerCopyCoveringTheWindow) {
   ASSERT_EQ(int(grids.size()), p.copies);
   for (const auto& g : grids) {
     EXPECT_EQ(g.channels, 2);
-    EXPECT_EQ(g.width, 800 / p.grid_cell + 1);                     // 800 = 50 cells exactly
+    EXPECT_EQ(g.width, 800 / p.grid_cell + 1);                       // 800 = 50 cells exactly
     EXPECT_EQ(g.height, (600 + p.grid_cell - 1) / p.grid_cell + 1);  // 600 needs a 38th cell
   }
 }
@@ -36,7 +36,8 @@ TEST(Distortion, OffsetsAreBoundedByAmplitudePlusNoise) {
       EXPECT_LE(std::abs(v), p.shake_amplitude + p.shake_noise + 1e-5f);
       largest = std::max(largest, std::abs(v));
     }
-  std::printf("[distortion] largest offset %.3f px, bound a + r = %.3f px\n", largest, p.shake_amplitude + p.shake_noise);
+  std::printf("[distortion] largest offset %.3f px, bound a + r = %.3f px\n", largest,
+              p.shake_amplitude + p.shake_noise);
   EXPECT_GT(largest, p.shake_amplitude);  // the sine's peaks plus some noise reach past a
 }
 

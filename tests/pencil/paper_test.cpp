@@ -6,8 +6,8 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
-#include "common/pencil/paper.hpp"
 #include "common/core/params.hpp"
+#include "common/pencil/paper.hpp"
 
 namespace plumbago {
 namespace {

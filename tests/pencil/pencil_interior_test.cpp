@@ -4,12 +4,12 @@
 
 #include <cmath>
 
-#include "parity/parity.hpp"
-#include "common/scene/lights.hpp"
 #include "common/core/preprocess.hpp"
-#include "reference/scene/gbuffer.hpp"
+#include "common/scene/lights.hpp"
+#include "parity/parity.hpp"
 #include "reference/pencil/interior_intensity.hpp"
 #include "reference/pencil/pencil_interior.hpp"
+#include "reference/scene/gbuffer.hpp"
 #include "tests/support/parity_checks.hpp"
 #include "tests/support/test_scenes.hpp"
 
@@ -49,7 +49,8 @@ TEST_F(PencilInteriorParity, Fandisk) {
     auto results = run_parity(scene, {"pencil_interior"});
     ASSERT_EQ(testing::names_of(results), kPencilInteriorResults);
     for (const StageParity& r : results) {
-      std::printf("[%s fandisk, %zu effects] %s\n", r.name.c_str(), effects.size(), format_diff(r.name, r.diff).c_str());
+      std::printf("[%s fandisk, %zu effects] %s\n", r.name.c_str(), effects.size(),
+                  format_diff(r.name, r.diff).c_str());
       EXPECT_TRUE(r.pass) << r.name;
     }
   }
@@ -121,7 +122,8 @@ TEST(PencilInteriorBlend, ThreeWayBlendingIsSmootherThanNearestCorner) {
     return sum / n;
   };
   double three_way = seam_jump(InteriorBlend::ThreeWay), nearest = seam_jump(InteriorBlend::NearestCorner);
-  std::printf("[blend] mean darkness jump across nearest-corner seams: three_way %.4f, nearest_corner %.4f\n", three_way, nearest);
+  std::printf("[blend] mean darkness jump across nearest-corner seams: three_way %.4f, nearest_corner %.4f\n",
+              three_way, nearest);
   EXPECT_LT(three_way, nearest);
 }
 

@@ -21,7 +21,9 @@ PencilTexturesParams small_stack() {
   return set.get<PencilTexturesParams>();
 }
 
-double mean(const Image& img) { return std::accumulate(img.data.begin(), img.data.end(), 0.0) / double(img.data.size()); }
+double mean(const Image& img) {
+  return std::accumulate(img.data.begin(), img.data.end(), 0.0) / double(img.data.size());
+}
 
 // The default stack, as the renderers use it.
 TEST(PencilTexture, LayerZeroIsWhiteAndTonesFallUniformly) {
@@ -107,7 +109,8 @@ TEST(PencilTexture, WhitePreservationKeepsMoreWhiteTexels) {
   };
   auto with = white_shares(p.mu_w), without = white_shares(1.0f);
   for (size_t l = 1; l < with.size(); ++l) {
-    std::printf("[pencil] layer %zu, texels above white_level: mu_w=%.1f %.3f, mu_w=1 %.3f\n", l, p.mu_w, with[l], without[l]);
+    std::printf("[pencil] layer %zu, texels above white_level: mu_w=%.1f %.3f, mu_w=1 %.3f\n", l, p.mu_w, with[l],
+                without[l]);
     EXPECT_GT(with[l], without[l] + 0.02) << "layer " << l;
   }
 }

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "parity/parity.hpp"
 #include "common/curvature/texture_rotation.hpp"
+#include "parity/parity.hpp"
 #include "tests/support/parity_checks.hpp"
 #include "tests/support/test_scenes.hpp"
 
@@ -14,8 +14,8 @@ namespace {
 
 // The corner angles of Lee et al. 2006, §5.3 are G-buffer channels: raster vs ray on the same curvature,
 // where both backends see the same triangle away from depth discontinuities.
-const std::vector<std::string> kGBufferWithAngles = {"gbuffer.normal", "gbuffer.face_normal", "gbuffer.depth",
-                                                     "gbuffer.bary",   "gbuffer.gouraud",     "gbuffer.theta_min",
+const std::vector<std::string> kGBufferWithAngles = {"gbuffer.normal",   "gbuffer.face_normal", "gbuffer.depth",
+                                                     "gbuffer.bary",     "gbuffer.gouraud",     "gbuffer.theta_min",
                                                      "gbuffer.theta_max"};
 
 class TextureRotationParity : public testing::GlTest, public ::testing::WithParamInterface<std::string> {};
@@ -75,7 +75,7 @@ TEST(TextureRotation, ADirectionAlongTheViewRayFallsBackWithoutNaN) {
   EXPECT_NEAR(stroke_angle(proj, {0, 0, 0}, {0, 0, 1}, {0, 1, 0}, 0.05f), 1.5707963f + 1.5707963f, 1e-5f);
   float both_short = stroke_angle(proj, {0, 0, 0}, {0, 0, 1}, {0, 0, -1}, 0.05f);
   EXPECT_EQ(both_short, 0.0f);
-  EXPECT_FALSE(window_angle(proj, {0, 0, 0}, {0, 0, 0}, 0.05f).reliable);  // zero direction
+  EXPECT_FALSE(window_angle(proj, {0, 0, 0}, {0, 0, 0}, 0.05f).reliable);                  // zero direction
   EXPECT_TRUE(std::isfinite(stroke_angle(proj, {0, 0, 5}, {1, 0, 0}, {0, 1, 0}, 0.05f)));  // at the eye
 }
 

@@ -6,8 +6,8 @@
 #include <glm/gtc/constants.hpp>
 
 #include "common/scene/animation.hpp"
-#include "common/util/image.hpp"
 #include "common/scene/scene.hpp"
+#include "common/util/image.hpp"
 #include "tests/support/cli_run.hpp"
 
 namespace plumbago {
@@ -15,7 +15,8 @@ namespace {
 
 Scene animated(const std::string& animation) {
   return parse_scene(R"({"mesh": {"procedural": "torus"}, "resolution": [96, 72],
-      "camera": {"eye": [0, 0, 6], "target": [0, 0, 0], "up": [0, 1, 0]}, "animation": )" + animation + "}",
+      "camera": {"eye": [0, 0, 6], "target": [0, 0, 0], "up": [0, 1, 0]}, "animation": )" +
+                         animation + "}",
                      "animated.json", ".");
 }
 
@@ -49,13 +50,15 @@ TEST(Animation, ADollyMovesTheEyeAlongTheViewAndRefitsThePlanes) {
   Scene s = animated(R"({"dolly": 3, "frames": 4})");
   Scene last = scene_at_frame(s, 3);
   EXPECT_NEAR(glm::distance(last.camera.eye, s.camera.eye), 3.0, 1e-5);
-  EXPECT_NEAR(glm::distance(last.camera.eye, last.camera.target), glm::distance(s.camera.eye, s.camera.target) - 3, 1e-5);
+  EXPECT_NEAR(glm::distance(last.camera.eye, last.camera.target), glm::distance(s.camera.eye, s.camera.target) - 3,
+              1e-5);
   EXPECT_LT(last.camera.far, s.camera.far);
   EXPECT_GT(last.camera.near, 0.0f);
 }
 
 TEST(Animation, PathsThatCannotBeRenderedAreRefusedWithTheirKey) {
-  EXPECT_NE(refusal(R"({"orbit_deg": 90, "dolly": 1, "frames": 3})").find("/animation: give either"), std::string::npos);
+  EXPECT_NE(refusal(R"({"orbit_deg": 90, "dolly": 1, "frames": 3})").find("/animation: give either"),
+            std::string::npos);
   EXPECT_NE(refusal(R"({"orbit_deg": 90})").find("/animation/frames"), std::string::npos);
   EXPECT_NE(refusal(R"({"orbit_deg": 90, "frames": 0})").find("/animation/frames"), std::string::npos);
   EXPECT_NE(refusal(R"({"orbit_deg": 90, "frames": 2.5})").find("/animation/frames"), std::string::npos);

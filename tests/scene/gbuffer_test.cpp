@@ -5,10 +5,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "parity/parity.hpp"
 #include "common/core/passes.hpp"
-#include "gpu/scene/gbuffer.hpp"
 #include "gpu/core/pipeline.hpp"
+#include "gpu/scene/gbuffer.hpp"
+#include "parity/parity.hpp"
 #include "tests/support/parity_checks.hpp"
 #include "tests/support/test_scenes.hpp"
 
@@ -17,11 +17,12 @@ namespace {
 
 void expect_gbuffer_parity(const Scene& scene, const std::string& label) {
   auto results = run_parity(scene, {"gbuffer"});
-  ASSERT_EQ(testing::names_of(results), (std::vector<std::string>{"gbuffer.normal", "gbuffer.face_normal", "gbuffer.depth",
-                                                                  "gbuffer.bary", "gbuffer.gouraud"}));
+  ASSERT_EQ(testing::names_of(results), (std::vector<std::string>{"gbuffer.normal", "gbuffer.face_normal",
+                                                                  "gbuffer.depth", "gbuffer.bary", "gbuffer.gouraud"}));
   for (const StageParity& r : results) {
     std::printf("[gbuffer %s] %s  [%s]\n", label.c_str(), format_diff(r.name, r.diff).c_str(), r.note.c_str());
-    EXPECT_GT(r.diff.compared, scene.width * scene.height / 20) << r.name << ": too few interior pixels to mean anything";
+    EXPECT_GT(r.diff.compared, scene.width * scene.height / 20)
+        << r.name << ": too few interior pixels to mean anything";
     EXPECT_TRUE(r.pass) << r.name;
     EXPECT_FALSE(has_non_finite(r.gpu)) << r.name;
     EXPECT_FALSE(has_non_finite(r.reference)) << r.name;
@@ -77,8 +78,8 @@ int expect_same_surface(const CulledAndNot& r, const std::string& label) {
       ++changed;
       not_tied += std::abs(a.depth.at(x, y) - b.depth.at(x, y)) > 1e-4f * b.depth.at(x, y);
     }
-  std::printf("[gbuffer culling %s] %d culled object(s); %d of %d pixels show another face (depth tie)\n", label.c_str(),
-              r.culled_objects, changed, a.ids.width * a.ids.height);
+  std::printf("[gbuffer culling %s] %d culled object(s); %d of %d pixels show another face (depth tie)\n",
+              label.c_str(), r.culled_objects, changed, a.ids.width * a.ids.height);
   EXPECT_EQ(uncovered_or_covered, 0) << label << ": pixels whose object changed";
   EXPECT_EQ(not_tied, 0) << label << ": pixels that show another face at another depth";
   EXPECT_LE(changed, a.ids.width * a.ids.height / 1000) << label;
@@ -124,7 +125,8 @@ TEST_F(GBufferCulling, Fandisk) {
 TEST_F(GBufferCulling, NothingIsCulledWhereTheInsideCanShow) {
   // The camera inside a closed sphere: every face it sees is a back face.
   Scene inside = testing::builtin_at("sphere", 400, 300);
-  inside.camera.eye = inside.camera.target + 0.1f * (inside.camera.eye - inside.camera.target) / glm::length(inside.camera.eye - inside.camera.target);
+  inside.camera.eye = inside.camera.target + 0.1f * (inside.camera.eye - inside.camera.target) /
+                                                 glm::length(inside.camera.eye - inside.camera.target);
   inside.camera.near = 0.01f;
   CulledAndNot r = render_culled_and_not(inside);
   EXPECT_EQ(r.culled_objects, 0);
@@ -158,10 +160,13 @@ int expect_second_render_leaves_no_trace(const gpu::GBufferChannels& channels, c
     for (int x = std::max(r.x0, 0); x < std::min(r.x1, scene.width); ++x) {
       if (g.ids.at(x, y, 0) != 0) continue;
       uncovered += first_ids.at(x, y, 0) != 0;
-      for (int c = 0; c < 3; ++c) wrong += (channels.normal && normal.at(x, y, c) != 0) + (channels.face_normal && face_normal.at(x, y, c) != 0);
-      wrong += (channels.normal && normal.at(x, y, 3) != g.far) + (channels.face_normal && face_normal.at(x, y, 3) != g.far);
+      for (int c = 0; c < 3; ++c)
+        wrong += (channels.normal && normal.at(x, y, c) != 0) + (channels.face_normal && face_normal.at(x, y, c) != 0);
+      wrong +=
+          (channels.normal && normal.at(x, y, 3) != g.far) + (channels.face_normal && face_normal.at(x, y, 3) != g.far);
       if (!channels.object_only_background) continue;
-      for (int c = 0; c < 3; ++c) wrong += (g.bary.at(x, y, c) != 0) + (g.theta_min.at(x, y, c) != 0) + (g.theta_max.at(x, y, c) != 0);
+      for (int c = 0; c < 3; ++c)
+        wrong += (g.bary.at(x, y, c) != 0) + (g.theta_min.at(x, y, c) != 0) + (g.theta_max.at(x, y, c) != 0);
       wrong += (g.depth.at(x, y) != g.far) + (g.gouraud.at(x, y) != 1.0f);
     }
   std::printf("[gbuffer background %s] %d pixels covered only by the first render\n", label.c_str(), uncovered);

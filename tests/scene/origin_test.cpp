@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <sstream>
 
-#include "common/util/image_compare.hpp"
 #include "common/scene/scene.hpp"
+#include "common/util/image_compare.hpp"
 #include "gpu/core/pipeline.hpp"
 #include "parity/parity.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -37,11 +37,14 @@ Scene moved_scene(double offset) {
   std::string t = number(offset);
   std::string torus_at = number(offset + 1.6);
   return parse_scene(R"({"objects": [
-      {"mesh": {"procedural": "cad"}, "transform": [1,0,0,0, 0,1,0,0, 0,0,1,0, )" + t + ", " + t + ", " + t + R"(, 1]},
+      {"mesh": {"procedural": "cad"}, "transform": [1,0,0,0, 0,1,0,0, 0,0,1,0, )" +
+                         t + ", " + t + ", " + t + R"(, 1]},
       {"mesh": {"procedural": "torus"}, "style": "strokes",
-       "transform": [0.5,0,0,0, 0,0.5,0,0, 0,0,0.5,0, )" + torus_at + ", " + t + ", " + t + R"(, 1]}],
+       "transform": [0.5,0,0,0, 0,0.5,0,0, 0,0,0.5,0, )" +
+                         torus_at + ", " + t + ", " + t + R"(, 1]}],
     "effects": ["contours", "interior", "crosshatch", "paper", "basecoat"],
-    "camera": {"eye": )" + point(2.5, 2.0, 4.0, offset) + R"(, "target": )" + point(0.6, 0, 0, offset) + R"(,
+    "camera": {"eye": )" +
+                         point(2.5, 2.0, 4.0, offset) + R"(, "target": )" + point(0.6, 0, 0, offset) + R"(,
                "up": [0, 1, 0], "fov_deg": 40},
     "resolution": [240, 180]})",
                      "moved by " + t, ".");
@@ -89,7 +92,8 @@ TEST_F(FarFromOrigin, MeshFileCoordinatesAt1e6) {
     std::ostringstream obj;
     obj.precision(17);
     for (int v = 0; v < 8; ++v)
-      obj << "v " << c + (v & 1 ? 0.5 : -0.5) << ' ' << c + (v & 2 ? 0.5 : -0.5) << ' ' << c + (v & 4 ? 0.5 : -0.5) << '\n';
+      obj << "v " << c + (v & 1 ? 0.5 : -0.5) << ' ' << c + (v & 2 ? 0.5 : -0.5) << ' ' << c + (v & 4 ? 0.5 : -0.5)
+          << '\n';
     obj << "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
     return obj.str();
   };
@@ -97,10 +101,11 @@ TEST_F(FarFromOrigin, MeshFileCoordinatesAt1e6) {
   tmp.write("far.obj", cube_obj(1e6));
   auto scene = [&](const char* file) {
     return parse_scene(std::string(R"({"mesh": ")") + file + R"(", "effects": ["contours", "interior"],
-        "resolution": [160, 120]})", file, tmp.dir());
+        "resolution": [160, 120]})",
+                       file, tmp.dir());
   };
-  ImageDiff d = compare_images(gpu::Renderer(scene("far.obj")).render().color, gpu::Renderer(scene("near.obj")).render().color,
-                     2.0 / 255);
+  ImageDiff d = compare_images(gpu::Renderer(scene("far.obj")).render().color,
+                               gpu::Renderer(scene("near.obj")).render().color, 2.0 / 255);
   std::printf("[origin 1e6 mesh] %s\n", format_diff("image", d).c_str());
   EXPECT_EQ(d.over_tolerance, 0.0);
   for (const StageParity& r : run_parity(scene("far.obj"), {"gbuffer"})) EXPECT_TRUE(r.pass) << r.name;

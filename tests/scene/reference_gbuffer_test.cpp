@@ -118,8 +118,8 @@ TEST(ReferenceGBuffer, PlaneAtKnownDistanceHasExactDepthEverywhere) {
 
 TEST(ReferenceGBuffer, BackgroundPixelsHoldTheDocumentedValues) {
   Camera cam = camera_at({0, 0, 5}, {0, 0, 0});
-  Scene scene = scene_of({object_of(quad({-0.5f, -0.5f, 0}, {0.5f, -0.5f, 0}, {0.5f, 0.5f, 0}, {-0.5f, 0.5f, 0}))},
-                         cam, 40, 30);
+  Scene scene =
+      scene_of({object_of(quad({-0.5f, -0.5f, 0}, {0.5f, -0.5f, 0}, {0.5f, 0.5f, 0}, {-0.5f, 0.5f, 0}))}, cam, 40, 30);
   GBuffer g = reference::trace_gbuffer(scene, scene.width, scene.height);
   size_t covered = covered_pixels(g);
   ASSERT_GT(covered, 0u);
@@ -279,8 +279,8 @@ void expect_two_runs_bit_identical(const Scene& scene) {
 
 TEST(ReferenceGBuffer, TwoRunsAreBitIdentical) {
   Camera cam = camera_at({1, 2, 3}, {0, 0, 0});
-  Scene scene = scene_of({object_of(make_procedural("torus")), object_of(make_procedural("sphere"), true)}, cam, 123,
-                         77);
+  Scene scene =
+      scene_of({object_of(make_procedural("torus")), object_of(make_procedural("sphere"), true)}, cam, 123, 77);
   scene.objects[1].transform = glm::mat4(0.4f);
   scene.objects[1].transform[3] = glm::vec4(0.2f, 0.5f, 0.3f, 1);
   expect_two_runs_bit_identical(scene);

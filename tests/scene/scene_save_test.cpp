@@ -87,8 +87,8 @@ TEST(SceneSave, FailureLeavesNoFile) {
   TempDir tmp;
   Scene s = builtin_scene("torus");
   EXPECT_ANY_THROW(save_scene(s, tmp.path("absent/s.json")));
-  s.source = tmp.write("changed.json",
-                       R"({"objects": [{"mesh": {"procedural": "torus"}}, {"mesh": {"procedural": "cad"}}]})");
+  s.source =
+      tmp.write("changed.json", R"({"objects": [{"mesh": {"procedural": "torus"}}, {"mesh": {"procedural": "cad"}}]})");
   EXPECT_THROW(save_scene(s, tmp.path("s.json")), SceneError) << "the file's objects no longer match the scene's";
   EXPECT_FALSE(std::filesystem::exists(tmp.path("s.json")));
 }

@@ -81,10 +81,14 @@ std::string refusal(const std::string& json, const std::string& base = ".") {
 TEST(SceneFile, RefusalsNameTheFileAndJsonPath) {
   const std::map<std::string, std::string> cases = {
       {R"({"mesh": {"procedural": "torus"}, "colour": 1})", "bad.json: /colour: unknown key"},
-      {R"({"mesh": {"procedural": "torus"}, "camera": {"fov_deg": "wide"}})", "bad.json: /camera/fov_deg: expected a number"},
-      {R"({"mesh": {"procedural": "torus"}, "effects": ["contours", "oil"]})", "bad.json: /effects/1: unknown effect 'oil'"},
-      {R"({"mesh": {"procedural": "torus"}, "params": {"edge.depth_scale": -1}})", "bad.json: /params/edge.depth_scale:"},
-      {R"({"mesh": {"procedural": "torus"}, "params": {"edge.nope": 1}})", "bad.json: /params/edge.nope: unknown parameter"},
+      {R"({"mesh": {"procedural": "torus"}, "camera": {"fov_deg": "wide"}})",
+       "bad.json: /camera/fov_deg: expected a number"},
+      {R"({"mesh": {"procedural": "torus"}, "effects": ["contours", "oil"]})",
+       "bad.json: /effects/1: unknown effect 'oil'"},
+      {R"({"mesh": {"procedural": "torus"}, "params": {"edge.depth_scale": -1}})",
+       "bad.json: /params/edge.depth_scale:"},
+      {R"({"mesh": {"procedural": "torus"}, "params": {"edge.nope": 1}})",
+       "bad.json: /params/edge.nope: unknown parameter"},
       {R"({"mesh": {"procedural": "donut"}})", "bad.json: /mesh: unknown procedural mesh 'donut'"},
       {R"({"objects": [{"mesh": "nowhere.obj"}]})", "bad.json: /objects/0/mesh:"},
       {R"({"objects": [{"mesh": {"procedural": "torus"}, "transform": [1, 2]}]})", "bad.json: /objects/0/transform:"},
@@ -93,14 +97,20 @@ TEST(SceneFile, RefusalsNameTheFileAndJsonPath) {
       {R"({"mesh": {"procedural": "torus"}, "resolution": [10, 4294967396]})", "bad.json: /resolution/1: must be in"},
       {R"({"mesh": {"procedural": "torus"}, "resolution": [800.5, 10]})", "bad.json: /resolution: expected"},
       {R"({"mesh": 7})", "bad.json: /mesh: expected a mesh file path"},
-      {R"({"objects": [{"mesh": {"procedural": "torus"}, "color": [1, 2, 0]}]})", "bad.json: /objects/0/color/1: must be in [0, 1]"},
-      {R"({"objects": [{"mesh": {"procedural": "torus"}, "flat": 1}]})", "bad.json: /objects/0/flat: expected true or false"},
-      {R"({"objects": [{"mesh": {"procedural": "torus", "resolution": 99}}]})", "bad.json: /objects/0/mesh: procedural resolution"},
-      {R"({"mesh": {"procedural": "torus"}, "camera": {"eye": [1, 2]}})", "bad.json: /camera/eye: expected an array of 3 numbers"},
-      {R"({"mesh": {"procedural": "torus"}, "lights": [{"direction": [0, 0, 1], "power": 2}]})", "bad.json: /lights/0/power: unknown key"},
+      {R"({"objects": [{"mesh": {"procedural": "torus"}, "color": [1, 2, 0]}]})",
+       "bad.json: /objects/0/color/1: must be in [0, 1]"},
+      {R"({"objects": [{"mesh": {"procedural": "torus"}, "flat": 1}]})",
+       "bad.json: /objects/0/flat: expected true or false"},
+      {R"({"objects": [{"mesh": {"procedural": "torus", "resolution": 99}}]})",
+       "bad.json: /objects/0/mesh: procedural resolution"},
+      {R"({"mesh": {"procedural": "torus"}, "camera": {"eye": [1, 2]}})",
+       "bad.json: /camera/eye: expected an array of 3 numbers"},
+      {R"({"mesh": {"procedural": "torus"}, "lights": [{"direction": [0, 0, 1], "power": 2}]})",
+       "bad.json: /lights/0/power: unknown key"},
       {R"({"mesh": {"procedural": "torus"}, "lights": [{"direction": [0, 0, 0]}]})", "bad.json: /lights/0/direction:"},
       {R"({"mesh": {"procedural": "torus"}, "seed": -3})", "bad.json: /seed:"},
-      {R"({"mesh": {"procedural": "torus"}, "camera": {"near": 5, "far": 1}})", "bad.json: /camera/far: near 5 and far 1"},
+      {R"({"mesh": {"procedural": "torus"}, "camera": {"near": 5, "far": 1}})",
+       "bad.json: /camera/far: near 5 and far 1"},
       {R"({"mesh": {"procedural": "torus"}, "objects": []})", "bad.json: /: give either"},
       {R"({})", "bad.json: /: give either"},
       {"{\n  \"mesh\": 1,,\n}", "bad.json: line 2, column 13"},
@@ -130,11 +140,13 @@ TEST(SceneFile, CamerasFloatCannotRenderAreRefused) {
       {R"({"eye": [0, 0, 0]})", "/camera/target: coincides with the eye (the scene's center)"},
       {R"({"eye": [0, 5, 0], "target": [0, 0, 0], "up": [0, -2, 0]})", "/camera/up: is parallel"},
       {R"({"eye": [0, 5, 0], "target": [0, 0, 0], "up": [1e-4, 1, 0]})", "/camera/up: is parallel"},
-      {R"({"eye": [0, 5, 0]})", "/camera/up: is parallel (or nearly) to the view direction, target - eye (the default up)"},
+      {R"({"eye": [0, 5, 0]})",
+       "/camera/up: is parallel (or nearly) to the view direction, target - eye (the default up)"},
       {R"({"eye": [0, 5, 0], "up": [0, 0, 0]})", "/camera/up: has length 0"},
       {R"({"eye": [1e20, 0, 0]})", "/camera/eye: lies at (1e+20, 0, 0), beyond ±1e+09"},
       {R"({"eye": [0, 0, 5], "target": [0, -2e9, 0]})", "/camera/target: lies at (0, -2e+09, 0), beyond ±1e+09"},
-      {R"({"eye": [1e8, 0, 0]})", "/camera/far: near 1e+08 and far 1e+08: far must be greater than near (fitted to the scene"},
+      {R"({"eye": [1e8, 0, 0]})",
+       "/camera/far: near 1e+08 and far 1e+08: far must be greater than near (fitted to the scene"},
       {R"({"eye": [1e5, 0, 0]})", "/camera/far: near 99997 and far 100003: float depth cannot tell them apart"},
       {R"({"fov_deg": 0.01})", "/camera/far: "},
       {R"({"view_direction": [1e-30, 0, 0]})", "/camera/view_direction: has length 1e-30, outside [1e-18, 1e+18]"},
@@ -184,7 +196,8 @@ TEST(SceneFile, ValuesBeyondFloatAreRefused) {
 TEST(SceneFile, MeshCoordinatesBeyondTheBoundAreRefused) {
   TempDir tmp;
   tmp.write("far.obj", "v 0 0 0\nv 2e9 0 0\nv 0 1 0\nf 1 2 3\n");
-  EXPECT_NE(refusal(R"({"mesh": "far.obj"})", tmp.dir()).find("bad.json: /mesh: vertex 1 lies at (2e+09, 0, 0), beyond ±1e+09"),
+  EXPECT_NE(refusal(R"({"mesh": "far.obj"})", tmp.dir())
+                .find("bad.json: /mesh: vertex 1 lies at (2e+09, 0, 0), beyond ±1e+09"),
             std::string::npos);
 }
 
@@ -200,7 +213,8 @@ TEST(SceneFile, TransformsAreCheckedRelativeToTheirScale) {
   const std::map<std::string, std::string> cases = {
       {"1,0,0,0, 0,1,0,0, 0,0,0,0, 0,0,0,1", "/objects/0/transform: is singular"},
       {"1,0,0,0, 1,0,0,0, 0,0,1,0, 0,0,0,1", "/objects/0/transform: is singular"},
-      {"1,0,0,0, 0,1,0,0, 0,0,1e-7,0, 0,0,0,1", "/objects/0/transform: is nearly singular: its linear part's condition"},
+      {"1,0,0,0, 0,1,0,0, 0,0,1e-7,0, 0,0,0,1",
+       "/objects/0/transform: is nearly singular: its linear part's condition"},
       {"1,0,0,0, 1,1e-7,0,0, 0,0,1,0, 0,0,0,1", "/objects/0/transform: is nearly singular"},
       {"1,0,0,0.5, 0,1,0,0, 0,0,1,0, 0,0,0,1", "/objects/0/transform/3: must be 0 (the last row"},
       {"1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,2", "/objects/0/transform/15: must be 1"},
@@ -258,8 +272,7 @@ TEST(SceneFile, ExampleScenesLoad) {
     ++loaded;
   }
   EXPECT_GE(loaded, 2u);  // at least the procedural ones
-  if (!skipped.empty())
-    GTEST_SKIP() << "shared models not here (../shared/models is absent): not loaded " << skipped;
+  if (!skipped.empty()) GTEST_SKIP() << "shared models not here (../shared/models is absent): not loaded " << skipped;
 }
 
 // The JSON Schema names the same procedural kinds as the program; the effects, which the
@@ -268,7 +281,8 @@ TEST(SceneFile, SchemaListsTheProgramsKindsAndPointsToTheEffects) {
   std::ifstream in(std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/scene.schema.json");
   nlohmann::json schema = nlohmann::json::parse(in);
   EXPECT_FALSE(schema["properties"]["effects"]["items"].contains("enum"));
-  EXPECT_NE(schema["properties"]["effects"]["description"].get<std::string>().find("plumbago effects"), std::string::npos);
+  EXPECT_NE(schema["properties"]["effects"]["description"].get<std::string>().find("plumbago effects"),
+            std::string::npos);
   EXPECT_EQ(schema["$defs"]["mesh"]["oneOf"][1]["properties"]["procedural"]["enum"].get<std::vector<std::string>>(),
             procedural_kinds());
 }

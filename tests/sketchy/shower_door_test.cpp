@@ -69,7 +69,8 @@ TEST(ShowerDoor, NoValidPixelOrNoChangeIsNaN) {
   Image f = field_of(16, 16, {0, 0});
   EXPECT_TRUE(std::isnan(residuals(f, f, Image(16, 16, 3), Sampling::Bilinear).coherence()));
   Image constant(16, 16, 2, 0.25f);
-  EXPECT_TRUE(std::isnan(residuals(constant, constant, uniform_motion(16, 16, {2, 0}), Sampling::Bilinear).coherence()));
+  EXPECT_TRUE(
+      std::isnan(residuals(constant, constant, uniform_motion(16, 16, {2, 0}), Sampling::Bilinear).coherence()));
 }
 
 Scene sketchy_torus(int size) {
@@ -93,10 +94,12 @@ TEST(ShowerDoor, SurfaceMotionCarriesTheSurfacesOwnPositions) {
   Scene scene = sketchy_torus(160);
   std::vector<WorldObject> world = world_geometry(scene);
   Camera a = orbit(scene.camera, 0), b = orbit(scene.camera, 2);
-  Image pa = surface_points(world, trace_view(scene, a).gbuffer), pb = surface_points(world, trace_view(scene, b).gbuffer);
+  Image pa = surface_points(world, trace_view(scene, a).gbuffer),
+        pb = surface_points(world, trace_view(scene, b).gbuffer);
   Image motion = surface_motion(a, pa, pb);
   Residuals r = residuals(pa, pb, motion, Sampling::Bilinear);
-  std::printf("[shower door, torus 160x160, 2 deg] %zu moving pixels, position coherence %.4f\n", r.pixels, r.coherence());
+  std::printf("[shower door, torus 160x160, 2 deg] %zu moving pixels, position coherence %.4f\n", r.pixels,
+              r.coherence());
   EXPECT_GT(r.pixels, 1000u);
   EXPECT_GT(r.coherence(), 0.95);
   // project() agrees with the tracer: a pixel's own point projects back onto its center.
@@ -118,9 +121,11 @@ TEST(ShowerDoor, ObjectStyleFollowsTheSurfaceAndDefaultDoesNot) {
   Camera a = orbit(scene.camera, 0), b = orbit(scene.camera, 2);
   View va = trace_view(scene, a), vb = trace_view(scene, b);
   Image motion = surface_motion(a, surface_points(world, va.gbuffer), surface_points(world, vb.gbuffer));
-  double c_object = residuals(render_mode(object, va).field, render_mode(object, vb).field, motion, Sampling::Bilinear).coherence();
+  double c_object =
+      residuals(render_mode(object, va).field, render_mode(object, vb).field, motion, Sampling::Bilinear).coherence();
   double c_default =
-      residuals(render_mode(standard, va).field, render_mode(standard, vb).field, motion, Sampling::Bilinear).coherence();
+      residuals(render_mode(standard, va).field, render_mode(standard, vb).field, motion, Sampling::Bilinear)
+          .coherence();
   std::printf("[shower door, torus 128x128, 2 deg] coherence object %.3f, default %.3f\n", c_object, c_default);
   EXPECT_GT(c_object, 0.6);
   EXPECT_LT(c_default, 0.1);

@@ -9,8 +9,8 @@
 #include <numbers>
 #include <sstream>
 
-#include "parity/parity.hpp"
 #include "common/sketchy/sketchy.hpp"
+#include "parity/parity.hpp"
 #include "reference/scene/gbuffer.hpp"
 #include "reference/sketchy/sketchy_composite.hpp"
 #include "reference/sketchy/sketchy_maps.hpp"
@@ -63,7 +63,8 @@ Scene torus_and_box(const testing::TempDir& dir, const std::string& box_style) {
   dir.write("box.obj", kBoxObj);
   std::string json = R"({"objects": [
       {"mesh": "torus.obj", "style": "sketchy", "color": [0.9, 0.35, 0.2]},
-      {"mesh": "box.obj", "style": ")" + box_style + R"(", "color": [0.3, 0.5, 0.8],
+      {"mesh": "box.obj", "style": ")" +
+                     box_style + R"(", "color": [0.3, 0.5, 0.8],
        "transform": [0.5, 0, 0, 0,  0, 0.5, 0, 0,  0, 0, 0.5, 0,  2.0, 0, 0.3, 1]}],
     "resolution": [800, 600]})";
   return parse_scene(json, dir.write("scene.json", json), dir.dir());
@@ -80,7 +81,8 @@ TEST_P(SketchyDepthTie, TorusNextToABoxAgreesWithinTheTieBound) {
   testing::TempDir dir;
   Scene scene = torus_and_box(dir, GetParam());
   auto results = run_parity(scene, {"sketchy_composite"});
-  ASSERT_EQ(testing::names_of(results), (std::vector<std::string>{"sketchy_composite.color", "sketchy_composite.depth"}));
+  ASSERT_EQ(testing::names_of(results),
+            (std::vector<std::string>{"sketchy_composite.color", "sketchy_composite.depth"}));
   const StageParity& depth = results[1];
   EXPECT_TRUE(depth.pass) << depth.note;
 
@@ -111,11 +113,12 @@ TEST_P(SketchyDepthTie, TorusNextToABoxAgreesWithinTheTieBound) {
       }
       worst = std::max(worst, diff - b);
       EXPECT_LE(diff, tolerance::kFloat + b) << "pixel (" << x << ", " << y << "): reference "
-                                                    << depth.reference.at(x, y) << ", gpu " << depth.gpu.at(x, y);
+                                             << depth.reference.at(x, y) << ", gpu " << depth.gpu.at(x, y);
     }
-  std::printf("[tie] eps %.3g px; %d of %d drawn pixels near a tie (largest bound %.3g); %d over kFloat alone; "
-              "largest |ref - gpu| - bound %.3g\n",
-              eps, ties, drawn, largest_bound, over_float, worst);
+  std::printf(
+      "[tie] eps %.3g px; %d of %d drawn pixels near a tie (largest bound %.3g); %d over kFloat alone; "
+      "largest |ref - gpu| - bound %.3g\n",
+      eps, ties, drawn, largest_bound, over_float, worst);
   // The bound excuses only the few pixels at a tie, not the sprite.
   EXPECT_LT(ties, drawn / 100);
 }

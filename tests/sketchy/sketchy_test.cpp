@@ -2,12 +2,12 @@
 // both ways on both backends, the effect's passes, and the scene rules.
 #include <gtest/gtest.h>
 
-#include "parity/parity.hpp"
 #include "common/core/passes.hpp"
 #include "common/sketchy/sketchy.hpp"
 #include "gpu/core/pipeline.hpp"
-#include "reference/scene/gbuffer.hpp"
+#include "parity/parity.hpp"
 #include "reference/core/pipeline.hpp"
+#include "reference/scene/gbuffer.hpp"
 #include "tests/support/parity_checks.hpp"
 #include "tests/support/test_scenes.hpp"
 
@@ -37,8 +37,7 @@ class SketchyParity : public testing::GlTest, public ::testing::WithParamInterfa
 TEST_P(SketchyParity, EveryStageMatchesTheReference) {
   Scene scene = sketchy_scene(GetParam(), false);
   auto results = run_parity(scene, {"sketchy_enlarged", "sketchy_maps", "sketchy_composite"});
-  ASSERT_EQ(testing::names_of(results),
-            (GetParam() == "object" ? kObjectStyleResults : kSketchyResults));
+  ASSERT_EQ(testing::names_of(results), (GetParam() == "object" ? kObjectStyleResults : kSketchyResults));
   for (const auto& r : results) {
     std::printf("[sketchy %s] %s\n", GetParam().c_str(), format_diff(r.name, r.diff).c_str());
     EXPECT_TRUE(r.pass) << r.name << ": " << r.note;
@@ -57,7 +56,8 @@ Scene small_sketchy_scene(const std::string& style) {
        "transform": [0.3, 0, 0, 0,  0, 0.3, 0, 0,  0, 0, 0.3, 0,  0.9, 0.5, 0.2, 1]},
       {"mesh": {"procedural": "torus"}}],
     "camera": {"view_direction": [0, 0, 1]},
-    "resolution": [240, 180], "params": {"sketchy.style": ")" + style + R"("}})";
+    "resolution": [240, 180], "params": {"sketchy.style": ")" +
+                     style + R"("}})";
   return parse_scene(json, "test:small", ".");
 }
 
@@ -107,8 +107,7 @@ class SketchyBoundsParity : public testing::GlTest, public ::testing::WithParamI
 
 TEST_P(SketchyBoundsParity, ClippedPassesMatchTheReferenceEverywhere) {
   auto results = run_parity(small_sketchy_scene(GetParam()), {"sketchy_maps", "sketchy_composite"});
-  ASSERT_EQ(testing::names_of(results),
-            kSketchyResults);
+  ASSERT_EQ(testing::names_of(results), kSketchyResults);
   for (const auto& r : results) {
     std::printf("[sketchy small %s] %s\n", GetParam().c_str(), format_diff(r.name, r.diff).c_str());
     EXPECT_TRUE(r.pass) << r.name << ": " << r.note;
@@ -138,9 +137,11 @@ std::vector<glm::ivec2> pixels_where(const GBuffer& sketchy, const GBuffer& ordi
       glm::ivec2 p(x, y);
       if (sketchy.background(x, y) || ordinary.background(x, y)) continue;
       float plane = ordinary.depth.at(x, y);
-      bool probe = sketchy_in_front ? whole_square(p, r, [&](int i, int j) {
-        return !sketchy.background(i, j) && !ordinary.background(i, j) && sketchy.depth.at(i, j) < ordinary.depth.at(i, j);
-      })
+      bool probe = sketchy_in_front ? whole_square(p, r,
+                                                   [&](int i, int j) {
+                                                     return !sketchy.background(i, j) && !ordinary.background(i, j) &&
+                                                            sketchy.depth.at(i, j) < ordinary.depth.at(i, j);
+                                                   })
                                     : whole_square(p, m, [&](int i, int j) {
                                         return sketchy.background(i, j) || sketchy.depth.at(i, j) > plane;
                                       });
@@ -168,7 +169,8 @@ void expect_occlusion_both_ways(const std::function<Image(const Scene&)>& render
   GBuffer go = reference::trace_gbuffer(ordinary, scene.width, scene.height);
   const int reach = 16;  // > the largest offset of the default matrices, |M (u, v)| <= 10.4 * 1.5
   auto front = pixels_where(gs, go, true, reach), behind = pixels_where(gs, go, false, reach);
-  std::printf("[occlusion %s] %zu probe pixels with the sketch in front, %zu behind\n", backend, front.size(), behind.size());
+  std::printf("[occlusion %s] %zu probe pixels with the sketch in front, %zu behind\n", backend, front.size(),
+              behind.size());
   ASSERT_GE(front.size(), 10u);
   ASSERT_GE(behind.size(), 10u);
   Image frame = render(scene), sketch_alone = render(sketchy), ordinary_alone = render(ordinary);
@@ -205,7 +207,8 @@ TEST_F(SketchyOcclusion, MixedSceneEndToEnd) {
 TEST(SketchyPasses, OnlyTheObjectStyleTracesTheEnlargedGeometry) {
   ParamSet params;
   auto passes = passes_for({"sketchy"}, params);
-  EXPECT_EQ(passes, (std::vector<std::string>{"sketchy_noise", "sketchy_gbuffer", "sketchy_maps", "sketchy_composite"}));
+  EXPECT_EQ(passes,
+            (std::vector<std::string>{"sketchy_noise", "sketchy_gbuffer", "sketchy_maps", "sketchy_composite"}));
   params.set("sketchy.style", "object");
   passes = passes_for({"sketchy"}, params);
   EXPECT_NE(std::find(passes.begin(), passes.end(), "sketchy_enlarged"), passes.end());

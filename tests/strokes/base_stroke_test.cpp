@@ -307,7 +307,8 @@ TEST(BaseStroke, FlareWidensTheEnds) {
 TEST(BaseStroke, ThinStrokesAreDrawnTwoPixelsWideAndFainter) {
   StrokeStyle st = plain_style();
   st.alpha = 0.8f;
-  const std::tuple<double, double, double> cases[] = {  // width, drawn width, alpha
+  const std::tuple<double, double, double> cases[] = {
+      // width, drawn width, alpha
       {1.0, 2.0, 0.2}, {1.5, 2.0, 0.45}, {0.5, 2.0, 0.05}, {2.0, 2.0, 0.8}, {2.25, 2.25, 0.8}, {3.0, 3.0, 0.8}};
   for (auto [width, drawn, alpha] : cases) {
     st.width_px = float(width);
@@ -413,7 +414,8 @@ TEST(BaseStroke, ClosedRunWrapsAround) {
   }
   EXPECT_EQ(strip.front().s(), 0.0);
   EXPECT_NEAR(strip.back().s(), 2 * std::numbers::pi * 40, 0.001 * 2 * std::numbers::pi * 40);
-  EXPECT_NEAR(glm::distance(glm::dvec2(strip.front().right.position), glm::dvec2(strip.back().right.position)), 0, 1e-4);
+  EXPECT_NEAR(glm::distance(glm::dvec2(strip.front().right.position), glm::dvec2(strip.back().right.position)), 0,
+              1e-4);
   EXPECT_NEAR(glm::distance(glm::dvec2(strip.front().left.position), glm::dvec2(strip.back().left.position)), 0, 1e-4);
 }
 
@@ -434,10 +436,10 @@ TEST(BaseStroke, DegenerateRunsGiveEmptyOrFiniteRibbons) {
 
   std::vector<StrokeRun> odd = {
       {{p, {std::nan(""), 3}, {40, 5}, {INFINITY, 0}}, false, true, false},  // non-finite points dropped
-      {{{0, 0}, {50, 0}, {0, 0}}, false, false, false},                       // hairpin
-      {{{0, 0}, {50, 0}, {50, 0}, {0, 0}}, false, false, true},               // hairpin, repeated point
-      {{{0, 0}, {30, 10}}, true, false, false},                               // closed with 2 points: drawn open
-      {circle(12, 2), true, false, false},                                    // tighter than the width
+      {{{0, 0}, {50, 0}, {0, 0}}, false, false, false},                      // hairpin
+      {{{0, 0}, {50, 0}, {50, 0}, {0, 0}}, false, false, true},              // hairpin, repeated point
+      {{{0, 0}, {30, 10}}, true, false, false},                              // closed with 2 points: drawn open
+      {circle(12, 2), true, false, false},                                   // tighter than the width
   };
   st.offsets = OffsetExample{8, {{0, 6, 1, false}, {0.5, -6, 0.2, false}}};  // larger than the curvature radius
   for (const StrokeRun& run : odd) {

@@ -56,14 +56,15 @@ TEST(BaseCoatTexture, PresetsAreTwoTonesARampOrOneColor) {
   Image smooth = basecoat_texture(p);
   EXPECT_NEAR(smooth.at(128, 0, 1), p.dark_g + (p.light_g - p.dark_g) * (128.5f / 256.0f), 1e-6);
   p.preset = BaseCoatPreset::Solid;
-  for (float v : basecoat_texture(p).data) EXPECT_TRUE(v == p.light_r || v == p.light_g || v == p.light_b || v == p.light_a);
+  for (float v : basecoat_texture(p).data)
+    EXPECT_TRUE(v == p.light_r || v == p.light_g || v == p.light_b || v == p.light_a);
 }
 
 // One triangle facing the only light: s = 1 at every corner; turned away, s = -1, or 1
 // with |n.L|.
 TEST(BaseCoatShades, EachCornerSumsItsLightsNDotL) {
-  Scene scene = parse_scene(R"({"mesh": {"procedural": "sphere"}, "lights": [{"direction": [0, 0, 1], "intensity": 1}]})",
-                            "test:coat", ".");
+  Scene scene = parse_scene(
+      R"({"mesh": {"procedural": "sphere"}, "lights": [{"direction": [0, 0, 1], "intensity": 1}]})", "test:coat", ".");
   ParamSet set;
   auto p = set.get<BaseCoatParams>();
   TriangleShades s = triangle_shades(scene, p);

@@ -14,12 +14,12 @@
 #include "common/strokes/id_image.hpp"
 #include "common/strokes/stroke.hpp"
 #include "common/strokes/visibility.hpp"
-#include "gpu/strokes/decal.hpp"
 #include "gpu/core/pipeline.hpp"
+#include "gpu/strokes/decal.hpp"
 #include "parity/parity.hpp"
-#include "reference/strokes/decal.hpp"
 #include "reference/core/pipeline.hpp"
 #include "reference/scene/ray_scene.hpp"
+#include "reference/strokes/decal.hpp"
 #include "tests/support/cli_run.hpp"
 #include "tests/support/parity_checks.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -113,7 +113,8 @@ TEST(StrokeFile, DrawnExamplesStyleTheCreases) {
             std::to_string(50 + 3 * std::sin(k * std::numbers::pi / 10)) + ", 0.5]";
   dir.write("e.strokes.json", R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0],
       "fov_deg": 40, "near": 1, "far": 10}, "resolution": [320, 240], "strokes": [
-      {"role": "crease", "points": [)" + wave + R"(]}, {"role": "crease", "points": [[0, 0, 1], [0, 30, 1]]}]})");
+      {"role": "crease", "points": [)" +
+                                  wave + R"(]}, {"role": "crease", "points": [[0, 0, 1], [0, 30, 1]]}]})");
   Scene s = load_scene(dir.write("scene.json", R"({"objects": [{"mesh": {"procedural": "cube"}, "style": "strokes"}],
       "stroke_files": ["e.strokes.json"]})"));
   ASSERT_EQ(s.strokes.crease_examples.size(), 2u);
@@ -143,7 +144,8 @@ TEST(StrokeFile, DrawnExamplesStyleTheCreases) {
     FAIL() << "an example whose ends meet was accepted";
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("e.strokes.json: /strokes/0: an offsets example needs its ends"),
-              std::string::npos) << e.what();
+              std::string::npos)
+        << e.what();
   }
 }
 
@@ -160,7 +162,8 @@ TEST(StrokeFile, SchemaMatchesTheReaderAndTheFiles) {
     nlohmann::json f = nlohmann::json::parse(std::ifstream(e.path()));
     for (const auto& item : f.items()) EXPECT_TRUE(schema["properties"].contains(item.key())) << e.path() << item.key();
     for (const nlohmann::json& s : f["strokes"])
-      for (const auto& item : s.items()) EXPECT_TRUE(stroke["properties"].contains(item.key())) << e.path() << item.key();
+      for (const auto& item : s.items())
+        EXPECT_TRUE(stroke["properties"].contains(item.key())) << e.path() << item.key();
   }
   EXPECT_GE(files, 2u);
 }
@@ -198,9 +201,10 @@ std::vector<uint8_t> near_silhouette(const Scene& scene, const std::vector<Decal
   for (const DecalSamples& d : samples)
     for (const DrawnPoint& p : d.samples) {
       DecalPoint c = reference::first_surface_hit(rays.get(), *d.file, p);
-      double footprint = c.object == kMissed ? 0.0
-                         : glm::distance(at(c), glm::dvec3(d.file->camera.eye)) * 2 *
-                               std::tan(glm::radians(double(d.file->camera.fov_deg)) / 2) / d.file->height;
+      double footprint = c.object == kMissed
+                             ? 0.0
+                             : glm::distance(at(c), glm::dvec3(d.file->camera.eye)) * 2 *
+                                   std::tan(glm::radians(double(d.file->camera.fov_deg)) / 2) / d.file->height;
       bool near = false;
       for (int k = 0; k < 8 && !near; ++k) {
         glm::dvec2 offset(std::cos(k * std::numbers::pi / 4), std::sin(k * std::numbers::pi / 4));
@@ -227,11 +231,12 @@ TEST_P(DecalProjection, BackendsAgree) {
   size_t on_surface = 0;
   for (const ProjectedDecal& d : ref)
     for (const DecalPoint& p : d.points) on_surface += p.object != kMissed;
-  std::printf("[decal projection %s] %zu points (%zu on the surface): %.4f%% on the same face, max |bary diff| %.3g; "
-              "%zu differ on a shared edge, %zu within 1 px of a silhouette, %zu elsewhere\n",
-              GetParam().c_str(), a.points, on_surface, 100.0 * double(a.same_face) / double(a.points),
-              a.max_bary_difference, a.differ_on_edge, a.differ_near_silhouette, a.differ_elsewhere);
-  ASSERT_GT(on_surface, a.points / 10);  // the grid crosses the objects
+  std::printf(
+      "[decal projection %s] %zu points (%zu on the surface): %.4f%% on the same face, max |bary diff| %.3g; "
+      "%zu differ on a shared edge, %zu within 1 px of a silhouette, %zu elsewhere\n",
+      GetParam().c_str(), a.points, on_surface, 100.0 * double(a.same_face) / double(a.points), a.max_bary_difference,
+      a.differ_on_edge, a.differ_near_silhouette, a.differ_elsewhere);
+  ASSERT_GT(on_surface, a.points / 10);    // the grid crosses the objects
   EXPECT_LE(a.max_bary_difference, 1e-3);  // Embree's float u, v against double (measured 4.6e-4, teapot)
   EXPECT_LE(a.differ_on_edge, a.points / 100);
   EXPECT_LE(a.differ_near_silhouette, a.points / 100);
@@ -297,8 +302,9 @@ TEST(StrokeFileCommand, SvgOverTheRenderBecomesAStrokeFile) {
     <polyline stroke-width="4" points="100,100 200,150 300,100"/>
     <path stroke-width="2" data-style="pencil" d="M 10 20 l 30 0 v 10 Z"/>
     <polyline data-role="hatching" data-group="2" data-pressure="0.5" points="0,0 10,10"/></svg>)");
-  auto run = testing::run_cli("strokefile builtin:torus --size 800x600 " + dir.path("d.svg") + " -o " +
-                                  dir.path("s.json") + " --style ink", dir);
+  auto run = testing::run_cli(
+      "strokefile builtin:torus --size 800x600 " + dir.path("d.svg") + " -o " + dir.path("s.json") + " --style ink",
+      dir);
   ASSERT_EQ(run.code, 0) << run.err;
   Scene scene = testing::builtin_at("torus", 800, 600);
   StrokeFile f = load_stroke_file(dir.path("s.json"), scene.origin);

@@ -10,8 +10,8 @@
 #include <numbers>
 #include <random>
 
-#include "common/strokes/feature_lines.hpp"
 #include "common/mesh/procedural.hpp"
+#include "common/strokes/feature_lines.hpp"
 
 namespace plumbago {
 namespace {
@@ -62,7 +62,8 @@ double max_edge_angle(const Mesh& m) {
   double largest = 0;
   for (const auto& t : m.triangles)
     for (int k = 0; k < 3; ++k) {
-      glm::dvec3 a = glm::normalize(glm::dvec3(m.positions[t[k]])), b = glm::normalize(glm::dvec3(m.positions[t[(k + 1) % 3]]));
+      glm::dvec3 a = glm::normalize(glm::dvec3(m.positions[t[k]])),
+                 b = glm::normalize(glm::dvec3(m.positions[t[(k + 1) % 3]]));
       largest = std::max(largest, std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)));
     }
   return largest;
@@ -110,10 +111,11 @@ TEST(FeatureLines, SphereSilhouetteIsOneLoopOnTheTrueSilhouetteCircle) {
         // Oriented with the visible side (towards the eye) on the left, seen from outside.
         ASSERT_GT(glm::dot(glm::cross(glm::normalize(p), d), eye - p), 0) << "segment " << i;
       }
-      std::printf("sphere (%zu faces, max edge angle %.4f rad) D %.0f %s: %zu points, max distance to the true "
-                  "silhouette %.3g (bound %.3g)\n",
-                  sphere.triangles.size(), theta, D, normalized ? "normalized" : "literal c - x",
-                  lines.silhouettes[0].points.size(), worst, bound);
+      std::printf(
+          "sphere (%zu faces, max edge angle %.4f rad) D %.0f %s: %zu points, max distance to the true "
+          "silhouette %.3g (bound %.3g)\n",
+          sphere.triangles.size(), theta, D, normalized ? "normalized" : "literal c - x",
+          lines.silhouettes[0].points.size(), worst, bound);
       EXPECT_LE(worst, bound);
       EXPECT_GT(lines.silhouettes[0].points.size(), 50u);
     }
@@ -124,7 +126,8 @@ TEST(FeatureLines, SphereSilhouetteIsOneLoopOnTheTrueSilhouetteCircle) {
 // distance rho.
 std::array<glm::dvec2, 2> cylinder_rulings(double r, glm::dvec3 eye) {
   double rho = std::hypot(eye.x, eye.y), phi = std::atan2(eye.y, eye.x), a = std::acos(r / rho);
-  return {glm::dvec2(r * std::cos(phi + a), r * std::sin(phi + a)), glm::dvec2(r * std::cos(phi - a), r * std::sin(phi - a))};
+  return {glm::dvec2(r * std::cos(phi + a), r * std::sin(phi + a)),
+          glm::dvec2(r * std::cos(phi - a), r * std::sin(phi - a))};
 }
 
 // docs/conventions.md: a capped cylinder seen from the side has two silhouette rulings (open paths
@@ -250,10 +253,11 @@ TEST(FeatureLines, TorusSilhouettesAreClosedLoopsAndBackFacingOnesAreDropped) {
       glm::dvec3 n = glm::normalize(x - ring);
       worst = std::max(worst, std::abs(glm::dot(n, glm::normalize(eye - x))));
     }
-  std::printf("torus (%zu faces): %zu paths with back-facing kept (%zu back-facing, %zu open at facing changes), "
-              "%zu segments; front only %zu paths, %zu segments; max |n.v| at the points %.3g\n",
-              torus.triangles.size(), everything.silhouettes.size(), back_pieces, ends,
-              segment_count(everything.silhouettes), front.silhouettes.size(), segment_count(front.silhouettes), worst);
+  std::printf(
+      "torus (%zu faces): %zu paths with back-facing kept (%zu back-facing, %zu open at facing changes), "
+      "%zu segments; front only %zu paths, %zu segments; max |n.v| at the points %.3g\n",
+      torus.triangles.size(), everything.silhouettes.size(), back_pieces, ends, segment_count(everything.silhouettes),
+      front.silhouettes.size(), segment_count(front.silhouettes), worst);
   EXPECT_GT(segment_count(everything.silhouettes), segment_count(front.silhouettes));
   EXPECT_GT(back_pieces, 0u);
   EXPECT_LT(worst, 0.02);
@@ -367,8 +371,8 @@ TEST(FeatureLines, TracingEndsOnDegenerateInput) {
   // Degenerate additions on top of the bump sheet and a small non-manifold soup.
   Mesh soup = bump;
   unsigned base = unsigned(soup.positions.size());
-  soup.positions.insert(soup.positions.end(), {{0, 0, 2}, {1, 0, 2}, {0.5f, 1, 2}, {0.5f, -1, 2}, {0.5f, 0, 3},
-                                               {2, 0, 2}, {0.5f, 0, 1}});
+  soup.positions.insert(soup.positions.end(),
+                        {{0, 0, 2}, {1, 0, 2}, {0.5f, 1, 2}, {0.5f, -1, 2}, {0.5f, 0, 3}, {2, 0, 2}, {0.5f, 0, 1}});
   for (glm::uvec3 t : {glm::uvec3(0, 1, 2), glm::uvec3(1, 0, 3), glm::uvec3(0, 1, 4), glm::uvec3(0, 1, 6),
                        glm::uvec3(0, 1, 2), glm::uvec3(0, 1, 5), glm::uvec3(2, 2, 4), glm::uvec3(4, 4, 4)})
     soup.triangles.push_back(t + glm::uvec3(base));

@@ -85,7 +85,7 @@ TEST(HatchLod, SettledLevels) {
   EXPECT_EQ(hatch_lod_settled(1.0, kStructured, p).to, 0);
   EXPECT_EQ(hatch_lod_settled(1.5, kStructured, p).to, 0);
   EXPECT_EQ(hatch_lod_settled(3.3, kStructured, p).to, 2);
-  EXPECT_EQ(hatch_lod_settled(0.3, kStructured, p).to, -2);  // below 0.7 and 0.35: halved twice
+  EXPECT_EQ(hatch_lod_settled(0.3, kStructured, p).to, -2);   // below 0.7 and 0.35: halved twice
   EXPECT_EQ(hatch_lod_settled(0.01, kStructured, p).to, -3);  // at least two hatches are left
   HatchLevels free{{1.0, 2.5, 6.0}, 0, 2};
   EXPECT_EQ(hatch_lod_settled(1.99, free, p).to, 0);

@@ -36,7 +36,8 @@ OffsetExample sampled(double length, double dt, const std::function<double(doubl
 }
 
 OffsetExample sine(double period, double periods = 8, double amplitude = 3) {
-  return sampled(periods * period, 1, [=](double s) { return amplitude * std::sin(2 * std::numbers::pi * s / period); });
+  return sampled(periods * period, 1,
+                 [=](double s) { return amplitude * std::sin(2 * std::numbers::pi * s / period); });
 }
 
 OffsetExample sawtooth() {  // period 60 px, a ramp from -2 to 2 px, then a drop
@@ -210,15 +211,16 @@ TEST(OffsetSynthesis, KeepsTheExamplesStatistics) {
     OffsetExample example;
     Bound bound;
   };
-  for (const Case& c : {Case{"sine 50 px", sine(50), kPeriodicBound}, Case{"sawtooth 60 px", sawtooth(), kPeriodicBound},
-                        Case{"random walk", random_walk(), kWalkBound}}) {
+  for (const Case& c :
+       {Case{"sine 50 px", sine(50), kPeriodicBound}, Case{"sawtooth 60 px", sawtooth(), kPeriodicBound},
+        Case{"random walk", random_walk(), kWalkBound}}) {
     OffsetSynthesizer synth(c.example);
     ASSERT_TRUE(synth.is_markov()) << c.name;
     for (uint32_t seed : {1u, 2u, 3u}) {
       Deviation d = deviation(synth, c.example, seed);
-      std::printf("  %-15s seed %u: |mean| %.4f sd (<= %.2f), |var ratio - 1| %.4f (<= %.2f), max |r_k diff| %.4f (<= %.2f)\n",
-                  c.name, seed, d.mean, c.bound.mean, d.variance, c.bound.variance, d.autocorrelation,
-                  c.bound.autocorrelation);
+      std::printf(
+          "  %-15s seed %u: |mean| %.4f sd (<= %.2f), |var ratio - 1| %.4f (<= %.2f), max |r_k diff| %.4f (<= %.2f)\n",
+          c.name, seed, d.mean, c.bound.mean, d.variance, c.bound.variance, d.autocorrelation, c.bound.autocorrelation);
       EXPECT_LE(d.mean, c.bound.mean) << c.name << " seed " << seed;
       EXPECT_LE(d.variance, c.bound.variance) << c.name << " seed " << seed;
       EXPECT_LE(d.autocorrelation, c.bound.autocorrelation) << c.name << " seed " << seed;

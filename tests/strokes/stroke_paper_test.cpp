@@ -21,11 +21,11 @@ StrokePaperParams defaults() { return ParamSet{}.get<StrokePaperParams>(); }
 TEST(StrokePaper, DefaultsGiveThePapersTransfer) {
   auto p = defaults();
   for (float h : {0.0f, 0.3f, 1.0f}) EXPECT_FLOAT_EQ(adjusted_height(h, p), h);
-  EXPECT_FLOAT_EQ(paper_alpha(1.0f, 0.3f), 1.0f);   // opaque stays opaque
-  EXPECT_FLOAT_EQ(paper_alpha(0.0f, 0.7f), 0.0f);   // nothing stays nothing
-  EXPECT_FLOAT_EQ(paper_alpha(0.5f, 1.0f), 1.0f);   // a peak catches half a coat fully
-  EXPECT_FLOAT_EQ(paper_alpha(0.5f, 0.0f), 0.0f);   // a valley resists it
-  EXPECT_FLOAT_EQ(paper_alpha(0.25f, 0.5f), 0.25f); // 0.5 sat(0.5) + 0.5 sat(-0.5)
+  EXPECT_FLOAT_EQ(paper_alpha(1.0f, 0.3f), 1.0f);    // opaque stays opaque
+  EXPECT_FLOAT_EQ(paper_alpha(0.0f, 0.7f), 0.0f);    // nothing stays nothing
+  EXPECT_FLOAT_EQ(paper_alpha(0.5f, 1.0f), 1.0f);    // a peak catches half a coat fully
+  EXPECT_FLOAT_EQ(paper_alpha(0.5f, 0.0f), 0.0f);    // a valley resists it
+  EXPECT_FLOAT_EQ(paper_alpha(0.25f, 0.5f), 0.25f);  // 0.5 sat(0.5) + 0.5 sat(-0.5)
 }
 
 TEST(StrokePaper, BrightnessAndContrastMoveTheHeight) {
@@ -33,7 +33,7 @@ TEST(StrokePaper, BrightnessAndContrastMoveTheHeight) {
   p.brightness = 1.0f;  // sat(2h): the upper half of the heights become peaks
   EXPECT_FLOAT_EQ(adjusted_height(0.6f, p), 1.0f);
   p.brightness = 0.5f;
-  p.contrast = 0.0f;    // every height flattened to 1/2
+  p.contrast = 0.0f;  // every height flattened to 1/2
   EXPECT_FLOAT_EQ(adjusted_height(0.9f, p), 0.5f);
   EXPECT_EQ(over_paper(glm::vec4(0.0f, 0.0f, 0.0f, 0.5f), glm::vec3(1.0f), 0.9f, p), glm::vec3(0.5f));
 }

@@ -29,8 +29,9 @@ TEST(StrokeScene, StrokeObjectsBringTheirEffects) {
 TEST(StrokeScene, StylesByPresetAndByFile) {
   testing::TempDir tmp;
   tmp.write("wide.json", R"({"width_px": 12, "texture": "ink"})");
-  Scene s = parse_scene(std::string("{") + kStrokeObject + R"(, "strokes": {"crease": "charcoal", "silhouette": "wide.json"}})",
-                        "s.json", tmp.dir());
+  Scene s = parse_scene(
+      std::string("{") + kStrokeObject + R"(, "strokes": {"crease": "charcoal", "silhouette": "wide.json"}})", "s.json",
+      tmp.dir());
   EXPECT_EQ(s.strokes.crease.texture, StrokeTextureKind::Charcoal);
   EXPECT_EQ(s.strokes.silhouette.width_px, 12.0f);
   EXPECT_EQ(s.strokes.border.width_px, default_stroke_style().width_px);

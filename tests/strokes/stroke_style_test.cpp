@@ -31,8 +31,10 @@ class ScopedEnv {
     setenv(name, value.c_str(), 1);
   }
   ~ScopedEnv() {
-    if (old_) setenv(name_, old_->c_str(), 1);
-    else unsetenv(name_);
+    if (old_)
+      setenv(name_, old_->c_str(), 1);
+    else
+      unsetenv(name_);
   }
 
  private:
@@ -84,7 +86,8 @@ TEST(StrokeStyle, ReadsEveryKindOfValueAndTheOffsets) {
   StrokeStyle s = parse_stroke_style(R"({
     "description": "test", "width_px": 10, "flare": -0.5, "texture": "charcoal", "pressure_alpha": true,
     "offsets": {"length_px": 80, "points": [[0, 1.5, 0.5, false], [0.5, -2, 1, true], [0.5, 0, 1, false]]}
-  })", "t.json");
+  })",
+                                     "t.json");
   EXPECT_EQ(s.description, "test");
   EXPECT_EQ(s.width_px, 10.0f);
   EXPECT_EQ(s.flare, -0.5f);
@@ -106,7 +109,8 @@ TEST(StrokeStyle, RefusalsNameTheFileAndTheKey) {
             "styles/strokes/x.json: /width_px: must be in [0.1, 200], got 500");
   EXPECT_EQ(refusal(R"({"width_px": "wide"})"), "x.json: /width_px: expected a number, got string");
   EXPECT_EQ(refusal(R"({"pressure_width": 1})"), "x.json: /pressure_width: expected true or false, got number");
-  EXPECT_EQ(refusal(R"({"texture": "crayon"})"), "x.json: /texture: expected one of pencil, charcoal, ink, got \"crayon\"");
+  EXPECT_EQ(refusal(R"({"texture": "crayon"})"),
+            "x.json: /texture: expected one of pencil, charcoal, ink, got \"crayon\"");
   EXPECT_EQ(refusal(R"({"description": 3})"), "x.json: /description: expected a string");
   EXPECT_EQ(refusal(R"([1, 2])"), "x.json: /: expected an object");
   std::string unknown = refusal(R"({"widht_px": 3})");

@@ -62,8 +62,8 @@ TEST(StrokeTextures, TilesInU) {
     }
     seam /= t.height;
     neighbours /= double(t.height) * (t.width - 1);
-    std::printf("[stroke_textures] %s: seam step %.4f, mean step %.4f\n", stroke_texture_names()[int(kind)].c_str(), seam,
-                neighbours);
+    std::printf("[stroke_textures] %s: seam step %.4f, mean step %.4f\n", stroke_texture_names()[int(kind)].c_str(),
+                seam, neighbours);
     EXPECT_LE(seam, 2 * neighbours + 1e-6);
   }
 }

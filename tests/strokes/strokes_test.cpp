@@ -46,7 +46,8 @@ INSTANTIATE_TEST_SUITE_P(Models, StrokeModelParity,
 // corner are hidden, on both backends' ID images.
 Scene cube_from_a_corner() {
   return testing::drawn_with_strokes(parse_scene(R"({"mesh": {"procedural": "cube"}, "resolution": [320, 240],
-      "camera": {"eye": [2.2, 1.7, 2.6], "target": [0, 0, 0], "up": [0, 1, 0]}})", "cube", "."));
+      "camera": {"eye": [2.2, 1.7, 2.6], "target": [0, 0, 0], "up": [0, 1, 0]}})",
+                                                 "cube", "."));
 }
 
 std::vector<double> visible_share_per_path(const ImageU32& keys, const WindowLines& lines) {
@@ -81,7 +82,8 @@ Scene sphere_behind_a_plane() {
       {"mesh": {"procedural": "sphere"}, "style": "strokes"},
       {"mesh": {"procedural": "plane"}, "transform": [2, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 1.5, 1]}],
       "resolution": [320, 240], "effects": ["strokes"],
-      "camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0], "fov_deg": 40}})", "sphere behind", ".");
+      "camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0], "fov_deg": 40}})",
+                     "sphere behind", ".");
 }
 
 // The plane's top edge in the window (y = 0 at z = 1.5; the camera is relative to the
@@ -144,8 +146,10 @@ namespace {
 // same strokes, another seed other ones, and both backends draw them alike.
 TEST(StrokeSynthesis, SeededDeterministicAndOnBothBackends) {
   auto scene_with_seed = [](uint32_t seed) {
-    Scene s = parse_scene(R"({"objects": [{"mesh": {"procedural": "torus"}, "style": "strokes"}], "resolution": [200, 150],
-        "effects": ["strokes"], "strokes": {"silhouette": "sketchy_pencil"}})", "synthesis", ".");
+    Scene s =
+        parse_scene(R"({"objects": [{"mesh": {"procedural": "torus"}, "style": "strokes"}], "resolution": [200, 150],
+        "effects": ["strokes"], "strokes": {"silhouette": "sketchy_pencil"}})",
+                    "synthesis", ".");
     s.seed = seed;
     return s;
   };

@@ -134,8 +134,10 @@ TEST(TemporalCoherence, StaticCameraChangesNothingAndATurnIsFollowed) {
     PairMeasures m = of(pair_measures(a.strokes, b.strokes), "all");
     Image motion = shower_door::surface_motion(a.strokes.camera, a.points, b.points);
     double layer = shower_door::residuals(a.layer, b.layer, motion, shower_door::Sampling::Bilinear).coherence();
-    std::printf("[temporal coherence, torus %dx%d, %g deg] %zu of %zu samples matched, slide mean %.3f px, "
-                "layer coherence %.3f\n", kWidth, kHeight, step, m.matched, m.samples, stats(m.slide_px).mean, layer);
+    std::printf(
+        "[temporal coherence, torus %dx%d, %g deg] %zu of %zu samples matched, slide mean %.3f px, "
+        "layer coherence %.3f\n",
+        kWidth, kHeight, step, m.matched, m.samples, stats(m.slide_px).mean, layer);
     ASSERT_GT(m.samples, 100u);
     if (step == 0) {
       EXPECT_EQ(m.matched, m.samples);

@@ -7,8 +7,8 @@
 #include <limits>
 
 #include "common/strokes/id_image.hpp"
-#include "common/util/random.hpp"
 #include "common/strokes/visibility.hpp"
+#include "common/util/random.hpp"
 #include "gpu/strokes/visibility.hpp"
 #include "tests/support/test_scenes.hpp"
 
@@ -34,9 +34,9 @@ VisibilitySample sample(float x, float y, uint32_t kind, uint32_t key, uint32_t 
 
 TEST(Visibility, EachKindOfSampleByHand) {
   ImageU32 k = keys_by_hand();
-  EXPECT_TRUE(sample_visible(k, sample(9.5f, 4.5f, kCreaseSample, kCreasePath)));      // the path a pixel away
-  EXPECT_FALSE(sample_visible(k, sample(11.5f, 4.5f, kCreaseSample, kCreasePath)));    // 3 px away
-  EXPECT_TRUE(sample_visible(k, sample(11.5f, 4.5f, kCreaseSample, 7, kFace)));        // an adjacent front face
+  EXPECT_TRUE(sample_visible(k, sample(9.5f, 4.5f, kCreaseSample, kCreasePath)));    // the path a pixel away
+  EXPECT_FALSE(sample_visible(k, sample(11.5f, 4.5f, kCreaseSample, kCreasePath)));  // 3 px away
+  EXPECT_TRUE(sample_visible(k, sample(11.5f, 4.5f, kCreaseSample, 7, kFace)));      // an adjacent front face
   EXPECT_TRUE(sample_visible(k, sample(2.5f, 2.5f, kSilhouetteSample, kSilhouettePath, 0, 14)));   // byte within 4
   EXPECT_FALSE(sample_visible(k, sample(2.5f, 2.5f, kSilhouetteSample, kSilhouettePath, 0, 20)));  // too far along
   EXPECT_FALSE(sample_visible(k, sample(5.5f, 5.5f, kSilhouetteSample, kSilhouettePath, 0, 10)));  // 2 px away
@@ -74,9 +74,11 @@ TEST_F(VisibilityBackends, TheComputeShaderGivesTheSameFlags) {
   std::vector<VisibilitySample> samples;
   for (int i = 0; i < 5000; ++i) {
     uint32_t kind = uint32_t(rng.uniform() * 4), face = uint32_t(rng.uniform() * 6);
-    samples.push_back({{float(rng.uniform(-3, 67)), float(rng.uniform(-3, 51))}, kind,
+    samples.push_back({{float(rng.uniform(-3, 67)), float(rng.uniform(-3, 51))},
+                       kind,
                        kind == kSilhouetteSample ? 40 + uint32_t(rng.uniform() * 3) : uint32_t(rng.uniform() * 6),
-                       {face, uint32_t(rng.uniform() * 6)}, uint32_t(rng.uniform() * 256),
+                       {face, uint32_t(rng.uniform() * 6)},
+                       uint32_t(rng.uniform() * 256),
                        uint32_t(rng.uniform() * 12) | (rng.uniform() < 0.5 ? 0x100u : 0u)});
   }
   gpu::Texture ids = gpu::upload_texture(key_channels(keys), GL_RG32UI);

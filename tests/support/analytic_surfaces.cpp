@@ -65,12 +65,12 @@ Mesh grid_mesh(int nu, int nv, bool wrap_u, bool wrap_v, Map map, Meshing meshin
 // sent through `map` (given the cube point and the rng).
 template <class Map>
 Mesh cube_grid_mesh(int n, Map map, Meshing meshing, Rng& rng) {
-  static const glm::dvec3 axes[6][3] = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},  {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
-                                        {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}},  {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
-                                        {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},  {{0, 0, -1}, {0, 1, 0}, {1, 0, 0}}};
+  static const glm::dvec3 axes[6][3] = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
+                                        {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}}, {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
+                                        {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}}, {{0, 0, -1}, {0, 1, 0}, {1, 0, 0}}};
   Mesh mesh;
   std::map<std::tuple<int, int, int>, uint32_t> lattice;
-  auto vertex = [&](const glm::dvec3 (&f)[3], int s, int t) {
+  auto vertex = [&](const glm::dvec3(&f)[3], int s, int t) {
     glm::dvec3 q = f[0] + (2.0 * s / n - 1) * f[1] + (2.0 * t / n - 1) * f[2];
     glm::ivec3 key = glm::ivec3(glm::round((q + 1.0) * 0.5 * double(n)));
     auto [it, added] = lattice.try_emplace({key.x, key.y, key.z}, uint32_t(mesh.positions.size()));
@@ -80,7 +80,8 @@ Mesh cube_grid_mesh(int n, Map map, Meshing meshing, Rng& rng) {
   for (const auto& f : axes)
     for (int t = 0; t < n; ++t)
       for (int s = 0; s < n; ++s)
-        add_quad(mesh, vertex(f, s, t), vertex(f, s + 1, t), vertex(f, s + 1, t + 1), vertex(f, s, t + 1), meshing, rng);
+        add_quad(mesh, vertex(f, s, t), vertex(f, s + 1, t), vertex(f, s + 1, t + 1), vertex(f, s, t + 1), meshing,
+                 rng);
   compute_normals(mesh);
   return mesh;
 }
@@ -88,7 +89,8 @@ Mesh cube_grid_mesh(int n, Map map, Meshing meshing, Rng& rng) {
 // A point of the unit sphere from a point of the cube, spread more evenly than q/|q|.
 glm::dvec3 spherified_cube(const glm::dvec3& q) {
   glm::dvec3 s = q * q;
-  return {q.x * std::sqrt(1 - s.y / 2 - s.z / 2 + s.y * s.z / 3), q.y * std::sqrt(1 - s.z / 2 - s.x / 2 + s.z * s.x / 3),
+  return {q.x * std::sqrt(1 - s.y / 2 - s.z / 2 + s.y * s.z / 3),
+          q.y * std::sqrt(1 - s.z / 2 - s.x / 2 + s.z * s.x / 3),
           q.z * std::sqrt(1 - s.x / 2 - s.y / 2 + s.x * s.y / 3)};
 }
 
@@ -133,9 +135,9 @@ AnalyticSurface analytic_ellipsoid(glm::dvec3 semi_axes, double edge, Meshing me
   mesh.name = "procedural:" + name;
   glm::dvec3 inverse_square = 1.0 / (semi_axes * semi_axes);
   auto truth = [inverse_square](const glm::dvec3& p) {
-    return implicit_surface_truth(2.0 * p * inverse_square, glm::dmat3(2.0 * inverse_square.x, 0, 0, 0,
-                                                                      2.0 * inverse_square.y, 0, 0, 0,
-                                                                      2.0 * inverse_square.z));
+    return implicit_surface_truth(
+        2.0 * p * inverse_square,
+        glm::dmat3(2.0 * inverse_square.x, 0, 0, 0, 2.0 * inverse_square.y, 0, 0, 0, 2.0 * inverse_square.z));
   };
   return {name, std::move(mesh), truth};
 }
@@ -202,7 +204,8 @@ AnalyticSurface analytic_saddle(double s, double edge, Meshing meshing, uint32_t
 
 Mesh subdivided_cube(int n) {
   Rng unused(1, "subdivided-cube");
-  Mesh mesh = cube_grid_mesh(n, [](const glm::dvec3& q, Rng&) { return q; }, Meshing::Regular, unused);
+  Mesh mesh = cube_grid_mesh(
+      n, [](const glm::dvec3& q, Rng&) { return q; }, Meshing::Regular, unused);
   mesh.name = "procedural:cube";
   return mesh;
 }

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "common/curvature/curvature.hpp"
 #include "common/core/params.hpp"
+#include "common/curvature/curvature.hpp"
 
 namespace plumbago::testing {
 

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <string>
 
-#include "common/pencil/distortion.hpp"
 #include "common/core/params.hpp"
+#include "common/pencil/distortion.hpp"
 #include "common/scene/scene.hpp"
 #include "gpu/gl/context.hpp"
 
@@ -18,8 +18,8 @@ inline bool have_model(const std::string& name) { return std::filesystem::exists
 
 // A one-object scene of a shared model, camera and lights fitted by the scene parser.
 inline Scene model_scene(const std::string& name, int width, int height) {
-  std::string json = "{\"mesh\": \"" + name + "\", \"resolution\": [" + std::to_string(width) + ", " +
-                     std::to_string(height) + "]}";
+  std::string json =
+      "{\"mesh\": \"" + name + "\", \"resolution\": [" + std::to_string(width) + ", " + std::to_string(height) + "]}";
   return parse_scene(json, "test:" + name, PLUMBAGO_MODELS_DIR);
 }
 
@@ -44,7 +44,8 @@ inline Scene square_and_torus(const std::string& background_pairs) {
       "transform": [0.3, 0, 0, 0,  0, 0.3, 0, 0,  0, 0, 0.3, 0,  0.9, 0.5, 0.2, 1]},
       {"mesh": {"procedural": "torus"}, "transform": [0.5, 0, 0, 0,  0, 0.5, 0, 0,  0, 0, 0.5, 0,  -0.6, -0.4, 0, 1]}],
     "camera": {"view_direction": [0, 0, 1]}, "effects": ["contours", "interior"], "resolution": [240, 180],
-    "params": {"edge.background_pairs": ")" + background_pairs + R"("}})";
+    "params": {"edge.background_pairs": ")" +
+                     background_pairs + R"("}})";
   return parse_scene(json, "test:skipped", ".");
 }
 
@@ -69,6 +70,6 @@ class GlTest : public ::testing::Test {
 }  // namespace plumbago::testing
 
 // Skips the test, saying why, when the shared model is absent.
-#define PLUMBAGO_REQUIRE_MODEL(name)         \
+#define PLUMBAGO_REQUIRE_MODEL(name)          \
   if (!::plumbago::testing::have_model(name)) \
   GTEST_SKIP() << "shared model not here: ../shared/models/" << (name) << " is absent"

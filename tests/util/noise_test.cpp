@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "common/util/noise.hpp"
 #include "common/core/params.hpp"
+#include "common/util/noise.hpp"
 
 namespace plumbago {
 namespace {
@@ -29,8 +29,8 @@ TEST(Noise, PerlinRepeatsWithItsPeriodAndStaysInBounds) {
     EXPECT_NEAR(v, n(p + glm::vec2(0, -14)), 1e-5f);
     EXPECT_LE(std::abs(v), std::sqrt(0.5f) + 1e-6f);
   }
-  EXPECT_GT(largest, 0.2f);                                 // not flat
-  EXPECT_NEAR(n(glm::vec2(3, 5)), 0.0f, 1e-6f);              // 0 at lattice points
+  EXPECT_GT(largest, 0.2f);                                       // not flat
+  EXPECT_NEAR(n(glm::vec2(3, 5)), 0.0f, 1e-6f);                   // 0 at lattice points
   EXPECT_NE(n(glm::vec2(0.5f, 0.5f)), n(glm::vec2(3.5f, 0.5f)));  // cells differ within a period
 }
 

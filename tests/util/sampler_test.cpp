@@ -21,15 +21,14 @@ Image ramp(int w, int h) {  // texel (x, y) = x + 10 y
 TEST(Sampler, TexelCentersReturnTexelsExactly) {
   Image img = ramp(4, 3);
   for (int y = 0; y < 3; ++y)
-    for (int x = 0; x < 4; ++x)
-      EXPECT_FLOAT_EQ(sample(img, {(x + 0.5f) / 4, (y + 0.5f) / 3}, {}).x, float(x + 10 * y));
+    for (int x = 0; x < 4; ++x) EXPECT_FLOAT_EQ(sample(img, {(x + 0.5f) / 4, (y + 0.5f) / 3}, {}).x, float(x + 10 * y));
 }
 
 TEST(Sampler, BilinearAveragesBetweenCenters) {
   Image img = ramp(4, 3);
-  EXPECT_FLOAT_EQ(sample(img, {2.0f / 4, 1.5f / 3}, {}).x, 11.5f);       // halfway between x=1 and 2
-  EXPECT_FLOAT_EQ(sample(img, {2.0f / 4, 2.0f / 3}, {}).x, 16.5f);       // and between y=1 and 2
-  EXPECT_FLOAT_EQ(sample(img, {1.25f / 4, 0.5f / 3}, {}).x, 0.75f);      // quarter of the way
+  EXPECT_FLOAT_EQ(sample(img, {2.0f / 4, 1.5f / 3}, {}).x, 11.5f);   // halfway between x=1 and 2
+  EXPECT_FLOAT_EQ(sample(img, {2.0f / 4, 2.0f / 3}, {}).x, 16.5f);   // and between y=1 and 2
+  EXPECT_FLOAT_EQ(sample(img, {1.25f / 4, 0.5f / 3}, {}).x, 0.75f);  // quarter of the way
 }
 
 TEST(Sampler, RepeatWrapsAcrossTheEdgeAndClampHoldsTheEdge) {
@@ -37,7 +36,7 @@ TEST(Sampler, RepeatWrapsAcrossTheEdgeAndClampHoldsTheEdge) {
   SamplerState repeat{Filter::Linear, Wrap::Repeat, Wrap::Repeat};
   EXPECT_FLOAT_EQ(sample(img, {0.0f, 0.5f}, repeat).x, 1.5f);  // between texel 3 and texel 0
   EXPECT_FLOAT_EQ(sample(img, {-0.75f + 0.125f, 0.5f}, repeat).x, 1.0f);
-  EXPECT_FLOAT_EQ(sample(img, {0.0f, 0.5f}, {}).x, 0.0f);       // clamp: edge texel only
+  EXPECT_FLOAT_EQ(sample(img, {0.0f, 0.5f}, {}).x, 0.0f);  // clamp: edge texel only
   EXPECT_FLOAT_EQ(sample(img, {7.0f, 0.5f}, {}).x, 3.0f);
 }
 
@@ -111,8 +110,10 @@ class SamplerVsGpu : public plumbago::testing::GlTest {
     glProgramUniform1f(p, probe.uniform("r_scale"), r_scale);
     glProgramUniform1f(p, probe.uniform("r_offset"), r_offset);
     gpu::Texture out = gpu::make_texture(kW, kH, GL_RGBA32F);
-    gpu::Texture other = is_3d ? gpu::make_texture(1, 1, GL_RGBA32F) : gpu::upload_texture_3d({Image(1, 1, 4)}, GL_RGBA32F);
-    gpu::FullscreenPass().draw(probe, {{is_3d ? "image3d" : "image2d", &tex}, {is_3d ? "image2d" : "image3d", &other}}, out);
+    gpu::Texture other =
+        is_3d ? gpu::make_texture(1, 1, GL_RGBA32F) : gpu::upload_texture_3d({Image(1, 1, 4)}, GL_RGBA32F);
+    gpu::FullscreenPass().draw(probe, {{is_3d ? "image3d" : "image2d", &tex}, {is_3d ? "image2d" : "image3d", &other}},
+                               out);
     return gpu::download_texture(out, 4);
   }
 
@@ -150,10 +151,13 @@ TEST_F(SamplerVsGpu, Bilinear2DRepeatAndClamp) {
     gpu::set_sampling(tex, GL_LINEAR, mode, mode);
     Wrap wrap = mode == GL_REPEAT ? Wrap::Repeat : Wrap::ClampToEdge;
     Image g = gpu_samples(tex, false, scale, offset, 0, 0);
-    expect_match(g, [&](SamplerState s, glm::vec2 frag, float) {
-      s.wrap_s = s.wrap_t = wrap;
-      return sample(img, frag * scale + offset, s);
-    }, name);
+    expect_match(
+        g,
+        [&](SamplerState s, glm::vec2 frag, float) {
+          s.wrap_s = s.wrap_t = wrap;
+          return sample(img, frag * scale + offset, s);
+        },
+        name);
   }
 }
 
@@ -164,10 +168,13 @@ TEST_F(SamplerVsGpu, Trilinear3DAsThePencilStackIsSampled) {
   glm::vec2 scale(0.0431f, 0.0277f), offset(-0.2f, 0.4f);
   float r_scale = 0.0113f, r_offset = -0.05f;
   Image g = gpu_samples(tex, true, scale, offset, r_scale, r_offset);
-  expect_match(g, [&](SamplerState s, glm::vec2 frag, float) {
-    s.wrap_s = s.wrap_t = Wrap::Repeat;
-    return sample(layers, glm::vec3(frag * scale + offset, (frag.x + frag.y) * r_scale + r_offset), s);
-  }, "3d");
+  expect_match(
+      g,
+      [&](SamplerState s, glm::vec2 frag, float) {
+        s.wrap_s = s.wrap_t = Wrap::Repeat;
+        return sample(layers, glm::vec3(frag * scale + offset, (frag.x + frag.y) * r_scale + r_offset), s);
+      },
+      "3d");
 }
 
 }  // namespace
