@@ -27,6 +27,7 @@ float contour_darkness_at(ivec2 x) {
   vec4 a = normal_and_depth_at(x + ivec2(-1, 1)), h = normal_and_depth_at(x + ivec2(1, -1));
   vec4 c = normal_and_depth_at(x + ivec2(1, 1)), f = normal_and_depth_at(x + ivec2(-1, -1));
   float i_n = clamp(0.5 * (normal_agreement(a.xyz, h.xyz) + normal_agreement(c.xyz, f.xyz)), 0.0, 1.0);
-  float i_z = depth_factor(normalized_depth(a.w), normalized_depth(h.w)) * depth_factor(normalized_depth(c.w), normalized_depth(f.w));
+  float i_z = depth_factor(normalized_depth(a.w), normalized_depth(h.w)) *
+              depth_factor(normalized_depth(c.w), normalized_depth(f.w));
   return 1.0 - i_n * i_z;
 }

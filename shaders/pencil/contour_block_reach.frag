@@ -12,6 +12,7 @@ void main() {
   ivec2 block = ivec2(gl_FragCoord.xy), last = textureSize(block_marks, 0) - 1;
   float m = 0.0;
   for (int y = -block_reach; y <= block_reach; ++y)
-    for (int x = -block_reach; x <= block_reach; ++x) m = max(m, texelFetch(block_marks, clamp(block + ivec2(x, y), ivec2(0), last), 0).r);
+    for (int x = -block_reach; x <= block_reach; ++x)
+      m = max(m, texelFetch(block_marks, clamp(block + ivec2(x, y), ivec2(0), last), 0).r);
   reach_max = m;
 }

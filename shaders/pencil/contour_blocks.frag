@@ -12,6 +12,7 @@ void main() {
   ivec2 first = ivec2(gl_FragCoord.xy) * CONTOUR_BLOCK;
   float m = 0.0;
   for (int y = 0; y < CONTOUR_BLOCK; ++y)
-    for (int x = 0; x < CONTOUR_BLOCK; ++x) m = max(m, texelFetch(lit_contour_darkness, min(first + ivec2(x, y), last), 0).r);
+    for (int x = 0; x < CONTOUR_BLOCK; ++x)
+      m = max(m, texelFetch(lit_contour_darkness, min(first + ivec2(x, y), last), 0).r);
   block_mark = m > 0.0 ? 1.0 : 0.0;
 }

@@ -73,7 +73,9 @@ void main() {
   vec2 p = gl_FragCoord.xy;
   vec3 w = bary_gouraud.xyz;
   vec3 n = paper_effect ? texelFetch(paper_normal, wrapped_texel(x, textureSize(paper_normal, 0)), 0).xyz : vec3(0.0);
-  float h = crosshatch ? 1.0 - smoothstep(interior.crosshatch_below - interior.crosshatch_band, interior.crosshatch_below, i) : 0.0;
+  float h = crosshatch
+                ? 1.0 - smoothstep(interior.crosshatch_below - interior.crosshatch_band, interior.crosshatch_below, i)
+                : 0.0;
   // c with the min-curvature angles, then times 1 + (c_max - 1) h where h > 0 (2.9). A
   // loop, not an if: llvmpipe leaves a loop once no pixel of a block runs it, but runs
   // both sides of an if, so unhatched blocks would pay for the hatching.

@@ -66,7 +66,8 @@ EdgeSample edge_sample(vec2 q) {
 
 // Linear depth as the window depth a perspective projection gives it.
 float window_depth(float d) {
-  float ndc = (far_plane + near_plane) / (far_plane - near_plane) - 2.0 * far_plane * near_plane / ((far_plane - near_plane) * d);
+  float ndc = (far_plane + near_plane) / (far_plane - near_plane) -
+              2.0 * far_plane * near_plane / ((far_plane - near_plane) * d);
   return 0.5 * ndc + 0.5;
 }
 

@@ -18,7 +18,8 @@ float sat(float v) { return clamp(v, 0.0, 1.0); }
 void main() {
   ivec2 x = ivec2(gl_FragCoord.xy);
   uint object = texelFetch(ids, x, 0).x;
-  if (object == 0u || stroke_object[object - 1u] == 0u || (has_sprite && texelFetch(sprite_depth, x, 0).r < 1.0)) discard;
+  if (object == 0u || stroke_object[object - 1u] == 0u || (has_sprite && texelFetch(sprite_depth, x, 0).r < 1.0))
+    discard;
   vec4 layer = has_coat ? texelFetch(coat, x, 0) : vec4(0.0);
   float h = texelFetch(paper_height, wrapped_texel(x, textureSize(paper_height, 0)), 0).r;
   float h_adjusted = sat(2.0 * stroke_paper.contrast * (sat(2.0 * stroke_paper.brightness * h) - 0.5) + 0.5);

@@ -33,7 +33,8 @@ void main() {
   if (k >= sample_count) return;
   Sample s = samples[k];
   ivec2 size = textureSize(ids, 0);
-  bool near_window = s.window.x > -2.0 && s.window.y > -2.0 && s.window.x < float(size.x + 2) && s.window.y < float(size.y + 2);
+  bool near_window =
+      s.window.x > -2.0 && s.window.y > -2.0 && s.window.x < float(size.x + 2) && s.window.y < float(size.y + 2);
   bool visible = false;
   if (near_window) {
     ivec2 p = ivec2(floor(s.window));

@@ -114,7 +114,8 @@ TEST_F(HardCases, FarOverNearAtItsBound) {
 TEST_F(HardCases, NarrowestFieldOfView) {
   expect_finite_everywhere(hard_scene(R"("objects": [{"mesh": {"procedural": "torus"},
       "transform": [100,0,0,0, 0,100,0,0, 0,0,100,0, 0,0,0,1]}],
-      "camera": {"eye": [100, 0, 60], "target": [100, 0, 0], "up": [0, 1, 0], "fov_deg": 1e-3, "near": 1, "far": 100})"),
+      "camera": {"eye": [100, 0, 60], "target": [100, 0, 0], "up": [0, 1, 0], "fov_deg": 1e-3,
+                 "near": 1, "far": 100})"),
                            "fov 1e-3");
 }
 
