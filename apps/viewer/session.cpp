@@ -84,8 +84,8 @@ void Session::start_preprocessing() {
   pending_passes_ = passes_for(scene_.effects, scene_.params);
   pending_generation_ = generation_;
   pending_since_ = Stopwatch();
-  pending_ = std::async(std::launch::async, [objects = ordinary_objects(scene_), passes = pending_passes_] {
-    return std::make_shared<const Preprocessed>(preprocess(objects, passes));
+  pending_ = std::async(std::launch::async, [scene = scene_, passes = pending_passes_] {
+    return std::make_shared<const Preprocessed>(preprocess(scene, passes));
   });
 }
 

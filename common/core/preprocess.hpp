@@ -22,6 +22,10 @@ struct Preprocessed {
     data.put(slot, std::make_shared<const T>(std::move(value)));
   }
   template <class T>
+  void put(Slot<T> slot, std::shared_ptr<const T> value) {
+    data.put(slot, std::move(value));
+  }
+  template <class T>
   const T* get(Maybe<Slot<T>> slot) const {
     return data.find(slot.handle);
   }

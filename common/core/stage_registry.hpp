@@ -24,21 +24,43 @@
 #include "common/sketchy/sketchy_noise.hpp"
 #include "common/strokes/basecoat.hpp"
 #include "common/strokes/id_image.hpp"
+#include "common/strokes/line_meshes.hpp"
 #include "common/strokes/stroke.hpp"
 #include "common/strokes/stroke_paper.hpp"
 #include "common/strokes/visibility.hpp"
 
 namespace plumbago {
 
+// One stage a line (clang-format would pack them).
+// clang-format off
 using AllStages = TypeList<
     // preprocessing (Lee et al. 2006, §4.2, §5), made once per scene and parameters
-    DistortionStage, PencilTexturesStage, ContourTextureStage, PaperStage, SketchyNoiseStage, CurvatureStage,
+    DistortionStage,
+    PencilTexturesStage,
+    ContourTextureStage,
+    PaperStage,
+    SketchyNoiseStage,
+    CurvatureStage,
+    LineMeshesStage,
     // the pencil pipeline (Lee et al. 2006)
-    GBufferStage, EdgeDetectStage, ContourLightStage, InteriorIntensityStage, PencilInteriorStage, MultiContourStage,
+    GBufferStage,
+    EdgeDetectStage,
+    ContourLightStage,
+    InteriorIntensityStage,
+    PencilInteriorStage,
+    MultiContourStage,
     ComposeStage,
     // sketchy drawing (Nienhaus & Döllner 2004)
-    SketchyGBufferStage, SketchyEnlargedStage, SketchyMapsStage, SketchyCompositeStage,
+    SketchyGBufferStage,
+    SketchyEnlargedStage,
+    SketchyMapsStage,
+    SketchyCompositeStage,
     // stroke-based rendering (Kalnins et al. 2002), over what the others drew
-    BaseCoatStage, StrokePaperStage, IdImageStage, VisibilityStage, StrokeStage>;
+    BaseCoatStage,
+    StrokePaperStage,
+    IdImageStage,
+    VisibilityStage,
+    StrokeStage>;
+// clang-format on
 
 }  // namespace plumbago

@@ -7,6 +7,7 @@
 #include "common/core/preprocess.hpp"
 #include "common/curvature/curvature_internal.hpp"
 #include "common/curvature/curvature_memory.hpp"
+#include "common/sketchy/sketchy.hpp"
 
 namespace plumbago {
 namespace curvature {
@@ -148,7 +149,8 @@ void CurvatureStage::make(const Scene& scene, Preprocessed& out) {
   CurvatureOptions options;
   options.progress = false;
   std::vector<Curvature> per_object;
-  for (const auto& obj : scene.objects) per_object.push_back(compute_curvature(*obj.mesh, params, options));
+  for (const auto& obj : ordinary_objects(scene).objects)  // the G-buffer's objects
+    per_object.push_back(compute_curvature(*obj.mesh, params, options));
   out.put(kCurvature, std::move(per_object));
 }
 

@@ -150,7 +150,7 @@ double folded_face_share(const Mesh& mesh);
 // The computation itself, no cache.
 Curvature estimate_curvature(const Mesh& mesh, const CurvatureParams& params, bool progress = false);
 
-// One per scene object the preprocessing was given (the G-buffer's objects).
+// One per object the G-buffer draws (common/sketchy/sketchy.hpp ordinary_objects).
 inline constexpr Slot<std::vector<Curvature>> kCurvature{"curvature.principal"};
 
 struct Scene;

@@ -31,6 +31,7 @@
 
 #include "common/core/stage.hpp"
 #include "common/strokes/hatching.hpp"
+#include "common/strokes/line_meshes.hpp"
 #include "common/strokes/strokes.hpp"
 #include "common/util/image.hpp"
 
@@ -69,6 +70,7 @@ struct IdImageStage {
         .kind = StageKind::Frame,
         .doc = "ID reference image: faces, crease and silhouette quads (Kalnins et al. 2002, §4.6)",
         .params = {"strokes"},
+        .inputs = {{.handle = kLineMeshes}},
         .outputs = {{.handle = kIds,
                      .channels = 2,
                      .texel = Texel::Uint,

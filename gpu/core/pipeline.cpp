@@ -24,7 +24,7 @@ struct Renderer::State {
 
   State(const Scene& scene, std::shared_ptr<const Preprocessed> made)
       : all(passes_for(scene.effects, scene.params)),
-        pre(made ? std::move(made) : std::make_shared<const Preprocessed>(preprocess(ordinary_objects(scene), all))),
+        pre(made ? std::move(made) : std::make_shared<const Preprocessed>(preprocess(scene, all))),
         frame(scene, *pre, frame_stages(all)),
         plan(plan_passes(frame.stages, frame.config())) {
     for (const GpuPassDef* def : plan) passes.push_back(make_checked(*def, frame));

@@ -18,15 +18,14 @@ class IdImagePass : public GpuPass {
         empty_(make_vertex_array()),
         depth_(make_renderbuffer(f.scene.width, f.scene.height, GL_DEPTH_COMPONENT32F)) {
     // The decals' surface points, projected once for the renderer's frames (Kalnins et al.
-    // 2002, §3), and the meshes' feature-line data (view-independent).
+    // 2002, §3).
     if (has_decals(f.scene)) decals_ = project_decals_through_gbuffer(f.scene);
   }
 
   void run(GpuFrame& f) override {
     auto p = f.params<StrokesParams>();
-    if (!meshes_) meshes_ = line_meshes(f.scene, p, LineObjects::Strokes);
-    f.put(kWindowLines,
-          window_lines(f.scene, p, LineObjects::Strokes, meshes_.get(), has_decals(f.scene) ? &decals_ : nullptr));
+    f.put(kWindowLines, window_lines(f.scene, p, LineObjects::Strokes, &f.get(kLineMeshes),
+                                     has_decals(f.scene) ? &decals_ : nullptr));
     std::vector<IdVertex> triangles = id_triangles(f.scene, f.get(kWindowLines), p);
     Texture& target = f.put(kIds);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
@@ -60,7 +59,6 @@ class IdImagePass : public GpuPass {
   VertexArray empty_;
   Renderbuffer depth_;
   DecalSurface decals_;
-  std::shared_ptr<const LineMeshes> meshes_;
 };
 
 }  // namespace

@@ -12,7 +12,7 @@ namespace plumbago::reference {
 ReferenceFrame run_stages(const Scene& scene, std::vector<PassTime>& ran) {
   check_implementations();
   std::vector<std::string> all = passes_for(scene.effects, scene.params);
-  ReferenceFrame f(scene, preprocess(ordinary_objects(scene), all), frame_stages(all));
+  ReferenceFrame f(scene, preprocess(scene, all), frame_stages(all));
   ran = f.pre.ran;
   for (const std::string& name : f.stages) {
     Stopwatch watch;

@@ -75,9 +75,8 @@ PLUMBAGO_REFERENCE_STAGE(id_image, [](ReferenceFrame& f) {
   auto p = f.params<StrokesParams>();
   DecalSurface decals =
       has_decals(f.scene) ? project_decals_by_rays(f.scene) : DecalSurface{};  // by rays (Kalnins et al. 2002, §3)
-  auto meshes = line_meshes(f.scene, p, LineObjects::Strokes);
   f.put(kWindowLines,
-        window_lines(f.scene, p, LineObjects::Strokes, meshes.get(), has_decals(f.scene) ? &decals : nullptr));
+        window_lines(f.scene, p, LineObjects::Strokes, &f.get(kLineMeshes), has_decals(f.scene) ? &decals : nullptr));
   IdRaster r = id_raster(id_triangles(f.scene, f.get(kWindowLines), p), f.scene.width, f.scene.height);
   f.put(kIds, key_channels(r.key));
   Image ties(r.key.width, r.key.height, 1);
