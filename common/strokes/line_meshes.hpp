@@ -18,10 +18,13 @@ struct LineMeshesStage {
   static StageDesc describe() {
     return {.name = "line_meshes",
             .kind = StageKind::Preprocessing,
-            .doc = "crease-aware vertex normals, creases, borders and edge adjacency of the stroke objects "
-                   "(Kalnins et al. 2002, §4.5)",
+            .doc =
+                "crease-aware vertex normals, creases, borders and edge adjacency of the stroke objects "
+                "(Kalnins et al. 2002, §4.5)",
             .params = {"strokes"},
-            .outputs = {{.handle = kLineMeshes, .channels = 0, .texel = Texel::Host,
+            .outputs = {{.handle = kLineMeshes,
+                         .channels = 0,
+                         .texel = Texel::Host,
                          .doc = "per scene object: its feature-line mesh, none where not drawn with strokes"}},
             .preprocess = make};
   }

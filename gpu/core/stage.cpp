@@ -29,7 +29,7 @@ PixelRect bounding(const PixelRect& a, const PixelRect& b) {
 }  // namespace
 
 GpuFrame::GpuFrame(const Scene& s, const Preprocessed& p, std::vector<std::string> st)
-    : scene(s), ordinary(ordinary_objects(s)), sketchy(sketchy_objects(s)), pre(p), stages(std::move(st)) {}
+    : FrameData(p), scene(s), ordinary(ordinary_objects(s)), sketchy(sketchy_objects(s)), stages(std::move(st)) {}
 
 bool GpuFrame::ran(const std::string& stage) const {
   find_stage(stage);  // an unknown name is a mistake, not a stage that did not run

@@ -19,6 +19,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "common/core/frame_data.hpp"
 #include "common/core/handle.hpp"
 #include "common/core/preprocess.hpp"
 #include "common/core/stage.hpp"
@@ -31,16 +32,14 @@ namespace plumbago::gpu {
 // The data of one frame, by handle (common/core/handle.hpp). While a pass is made or runs
 // (`running` holds its stages), every read of a Buffer, G-buffer or Slot is checked against
 // its stages' descriptors: an undeclared read is a std::logic_error naming it.
-class GpuFrame {
+class GpuFrame : public FrameData {
  public:
   GpuFrame(const Scene& scene, const Preprocessed& pre, std::vector<std::string> stages);
 
   const Scene& scene;
-  Scene ordinary, sketchy;  // the objects each pipeline draws (common/sketchy/sketchy.hpp)
-  const Preprocessed& pre;
+  Scene ordinary, sketchy;                // the objects each pipeline draws (common/sketchy/sketchy.hpp)
   const std::vector<std::string> stages;  // the frame stages that run
   bool dump = false;                      // a dump writes every output, the skipped ones too, in the whole window
-  std::vector<std::string> running;       // the stages of the pass made or run now (none: pipeline, parity)
 
   template <class P>
   P params() const {
@@ -77,23 +76,8 @@ class GpuFrame {
     throw std::logic_error(std::string("GPU frame: no pass made '") + shared.name + "'");
   }
 
-  // CPU data: the frame's (made anew each frame), else preprocessing's.
-  template <class T>
-  void put(Slot<T> slot, T value) {
-    checked(slot.name);
-    data.put(slot, std::make_shared<const T>(std::move(value)));
-  }
-  template <class T>
-  const T* get(Maybe<Slot<T>> slot) const {
-    checked(slot.handle.name);
-    const T* value = data.find(slot.handle);
-    return value ? value : pre.get(slot);
-  }
-  template <class T>
-  const T& get(Slot<T> slot) const {
-    if (const T* value = get(maybe(slot))) return *value;
-    throw std::logic_error(std::string("GPU frame: no stage made '") + slot.name + "'");
-  }
+  using FrameData::get;  // CPU data by Slot, made anew each frame
+  using FrameData::put;
 
   // The dumps' and the frame color's access by a descriptor's name (not for stages).
   Texture& texture_named(const std::string& name);
@@ -105,13 +89,7 @@ class GpuFrame {
   void read_region(GBufferSlot gbuffer, PixelRect region);
   GBufferChannels gbuffer_channels(const std::string& stage) const;
 
-  DataTable data;  // the frame's CPU data
-
  private:
-  void checked(const std::string& name) const {
-    if (!running.empty()) check_declared(running, name);
-  }
-
   std::map<std::string, Texture> textures_;
   std::map<std::string, std::any> shared_;
   std::map<std::string, GBufferChannels> gbuffer_reads_;

@@ -22,7 +22,11 @@ std::map<std::string, BoundFn>& bounds() {
 }  // namespace
 
 ReferenceFrame::ReferenceFrame(const Scene& s, Preprocessed p, std::vector<std::string> st)
-    : scene(s), ordinary(ordinary_objects(s)), sketchy(sketchy_objects(s)), pre(std::move(p)), stages(std::move(st)) {}
+    : FrameData(std::move(p)),
+      scene(s),
+      ordinary(ordinary_objects(s)),
+      sketchy(sketchy_objects(s)),
+      stages(std::move(st)) {}
 
 const Image* ReferenceFrame::get(Maybe<Buffer> buffer) const {
   checked(buffer.handle.name);

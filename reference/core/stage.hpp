@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "common/core/frame_data.hpp"
 #include "common/core/handle.hpp"
 #include "common/core/preprocess.hpp"
 #include "common/core/stage.hpp"
@@ -21,14 +22,12 @@ namespace plumbago::reference {
 
 // The data of one frame, by handle. A stage that runs (run_stage) may read only what its
 // descriptor declares: any other read is a std::logic_error naming it.
-struct ReferenceFrame {
+struct ReferenceFrame : FrameData {
   ReferenceFrame(const Scene& scene, Preprocessed pre, std::vector<std::string> stages);
 
   const Scene& scene;
-  Scene ordinary, sketchy;  // the objects each pipeline draws (common/sketchy/sketchy.hpp)
-  Preprocessed pre;
-  std::vector<std::string> stages;   // the frame stages that run
-  std::vector<std::string> running;  // the stage running now (none: the pipeline or parity)
+  Scene ordinary, sketchy;          // the objects each pipeline draws (common/sketchy/sketchy.hpp)
+  std::vector<std::string> stages;  // the frame stages that run
 
   template <class P>
   P params() const {
@@ -43,32 +42,11 @@ struct ReferenceFrame {
   const GBuffer& get(GBufferSlot gbuffer) const;
   const GBuffer* get(Maybe<GBufferSlot> gbuffer) const;  // null where not made
   void put(GBufferSlot gbuffer, GBuffer value);
-  // CPU data: the frame's, else preprocessing's.
-  template <class T>
-  const T* get(Maybe<Slot<T>> slot) const {
-    checked(slot.handle.name);
-    const T* value = data.find(slot.handle);
-    return value ? value : pre.get(slot);
-  }
-  template <class T>
-  const T& get(Slot<T> slot) const {
-    if (const T* value = get(maybe(slot))) return *value;
-    throw std::logic_error(std::string("reference frame: no stage made '") + slot.name + "'");
-  }
-  template <class T>
-  void put(Slot<T> slot, T value) {
-    checked(slot.name);
-    data.put(slot, std::make_shared<const T>(std::move(value)));
-  }
+  using FrameData::get;  // CPU data by Slot
+  using FrameData::put;
 
   std::map<std::string, Image> images;
   std::map<std::string, GBuffer> gbuffers;
-  DataTable data;
-
- private:
-  void checked(const std::string& name) const {
-    if (!running.empty()) check_declared(running, name);
-  }
 };
 
 // Runs `stage`'s implementation on `f`, its reads checked against its descriptor.
