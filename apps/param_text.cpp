@@ -19,10 +19,18 @@ std::string param_range(const ParamSpec& s) {
   if (s.type == ParamType::Boolean) return "true|false";
   if (s.type == ParamType::Choice) {
     std::string r;
-    for (const auto& c : s.choices) r += (r.empty() ? "" : "|") + c;
+    for (const auto& c : s.choices) {
+      if (!r.empty()) r += '|';
+      r += c;
+    }
     return r;
   }
-  return "[" + format_value(s, s.min) + ", " + format_value(s, s.max) + "]";
+  std::string r = "[";  // appended piece by piece: GCC 12's -Wrestrict misfires on chained + at -O3
+  r += format_value(s, s.min);
+  r += ", ";
+  r += format_value(s, s.max);
+  r += ']';
+  return r;
 }
 
 }  // namespace plumbago
