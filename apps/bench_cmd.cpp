@@ -10,6 +10,10 @@
 // them with DIR/<buffer>.exr saved by an earlier run (another backend, or the most
 // accurate setting of a stage) and reports the difference per buffer.
 //
+// --limits: the machine's own limits at each scene's size (gpu/core/limits.hpp: trivial and
+// 3x3-fetch passes as fragment and compute work, the scene's triangles rasterized, a
+// readback), and each GPU pass as a multiple of the probe of its kind.
+//
 // --paper: the papers' claimed frame rates (bench/paper_claims.hpp) next to ours for the
 // closest scene each claim names, with the machine and the GL renderer.
 #include <algorithm>
@@ -29,7 +33,9 @@
 #include "common/core/passes.hpp"
 #include "common/util/image_compare.hpp"
 #include "common/util/output_file.hpp"
+#include "gpu/core/limits.hpp"
 #include "gpu/core/pipeline.hpp"
+#include "gpu/core/stage.hpp"
 #include "gpu/gl/context.hpp"
 #include "reference/core/pipeline.hpp"
 
@@ -46,6 +52,7 @@ struct BenchOptions {
   int reference_frames = 0;  // 0: a tenth of --frames, at least 1
   bool json = false;
   bool paper = false;
+  bool limits = false;
   std::string save_dir, against_dir;
   std::vector<std::string> buffers;  // empty: all
   double tolerance = 0.05;
@@ -67,8 +74,9 @@ struct BenchResult {
   std::vector<std::string> missing;             // --against: buffers with no saved counterpart
   // A camera path (Scene::animation): each of its frames timed once, in order.
   int path_frames = 0;
-  double path_ms = 0, slowest_ms = 0;  // the frames' sum and the slowest
-  double setup_ms = 0;                 // median per frame: making its renderer (GPU)
+  double path_ms = 0, slowest_ms = 0;    // the frames' sum and the slowest
+  double setup_ms = 0;                   // median per frame: making its renderer (GPU)
+  std::map<std::string, double> limits;  // --limits: each probe's ms at the scene's size (GPU)
 };
 
 double median(std::vector<double> v) {
@@ -197,7 +205,16 @@ BenchResult bench_gpu(const BenchOptions& o, const Scene& scene, int frames, Out
     fo.keep_buffers = true;
     save_and_compare(o, kept_buffers(renderer.render(fo)), r, out);
   }
+  if (o.limits)
+    for (const gpu::ProbeTime& p : gpu::measure_limits(scene)) r.limits[gpu::probe_name(p.probe)] = p.ms;
   return r;
+}
+
+// A pass's time as a multiple of its probe's (--limits), and the probe's name.
+std::pair<double, std::string> probe_multiple(const BenchResult& r, const std::string& pass, double ms) {
+  std::string probe = gpu::probe_name(gpu::probe_of(pass));
+  auto it = r.limits.find(probe);
+  return {it == r.limits.end() || it->second <= 0 ? 0.0 : ms / it->second, probe};
 }
 
 // A scene with a camera path: every frame of the path timed once (frame_ms their median),
@@ -258,7 +275,14 @@ void print_text(const std::vector<BenchResult>& results) {
           "  camera path: %d frames in %.1f ms, slowest %.2f ms; making a frame's renderer %.2f ms (not in "
           "the frame)\n",
           r.path_frames, r.path_ms, r.slowest_ms, r.setup_ms);
-    for (const auto& [name, ms] : r.stages) std::printf("  %-24s %9.3f ms\n", name.c_str(), ms);
+    for (const auto& [name, ms] : r.stages) {
+      auto [multiple, probe] = probe_multiple(r, name, ms);
+      if (r.limits.empty())
+        std::printf("  %-24s %9.3f ms\n", name.c_str(), ms);
+      else
+        std::printf("  %-24s %9.3f ms = %7.1f x %s\n", name.c_str(), ms, multiple, probe.c_str());
+    }
+    for (const auto& [probe, ms] : r.limits) std::printf("  probe %-18s %9.3f ms\n", probe.c_str(), ms);
     for (const auto& [name, ms] : r.preprocessing)
       std::printf("  preprocessing %-10s %9.3f ms (once, not in the frame)\n", name.c_str(), ms);
     for (const auto& [name, e] : r.errors)
@@ -280,6 +304,13 @@ nlohmann::json result_json(const BenchResult& r) {
   nlohmann::json j{{"scene", r.scene},       {"backend", r.backend},        {"faces", r.faces},
                    {"strokes", r.strokes},   {"size", {r.width, r.height}}, {"fps", 1000 / r.frame_ms},
                    {"frame_ms", r.frame_ms}, {"stages", r.stages},          {"preprocessing", r.preprocessing}};
+  if (!r.limits.empty()) {
+    j["limits"] = r.limits;
+    for (const auto& [name, ms] : r.stages) {
+      auto [multiple, probe] = probe_multiple(r, name, ms);
+      j["probe_multiples"][name] = {{"probe", probe}, {"multiple", multiple}};
+    }
+  }
   if (r.path_frames)
     j["path"] = {{"frames", r.path_frames}, {"ms", r.path_ms}, {"slowest_ms", r.slowest_ms}, {"setup_ms", r.setup_ms}};
   if (!r.errors.empty() || !r.missing.empty()) {
@@ -435,6 +466,9 @@ void setup(CLI::App& app) {
                 "One JSON object {machine, renderer, results: [{scene, backend, fps, stages, errors}]}");
   cmd->add_flag("--paper", o->paper,
                 "The papers' claimed fps next to ours for the closest scenes (bench/paper_claims.hpp)");
+  cmd->add_flag("--limits", o->limits,
+                "Also time the machine's limits at each scene's size (gpu/core/limits.hpp) and print every GPU "
+                "pass as a multiple of its probe");
   cmd->add_option("--save", o->save_dir, "After timing, write one frame's buffers as DIR/<backend>/<buffer>.exr");
   cmd->add_option("--against", o->against_dir, "After timing, compare one frame's buffers with DIR/<buffer>.exr");
   cmd->add_option("--buffers", o->buffers, "Only these buffers for --save/--against (e.g. compose.color)")

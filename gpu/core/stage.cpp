@@ -149,6 +149,13 @@ void run_checked(const GpuPassDef& def, GpuPass& pass, GpuFrame& f) {
   f.running.clear();
 }
 
+Probe probe_of(const std::string& pass) {
+  if (pass == "readback") return Probe::Readback;
+  for (const GpuPassDef& p : registry())
+    if (p.name() == pass) return p.probe;
+  return Probe::Fullscreen;
+}
+
 std::string GpuPassDef::name() const {
   std::string n;
   for (const std::string& s : stages) n += (n.empty() ? "" : "+") + s;

@@ -24,6 +24,7 @@
 #include "common/core/preprocess.hpp"
 #include "common/core/stage.hpp"
 #include "common/scene/scene.hpp"
+#include "gpu/core/limits.hpp"
 #include "gpu/gl/gl_objects.hpp"
 #include "gpu/scene/gbuffer.hpp"
 
@@ -108,13 +109,18 @@ struct GpuPassDef {
   std::vector<std::string> stages;   // the stages it computes, in registry order
   std::vector<std::string> skipped;  // their outputs a frame does not write (a dump does)
   std::unique_ptr<GpuPass> (*make)(GpuFrame&) = nullptr;
-  std::string name() const;  // "a+b"
+  Probe probe = Probe::Fullscreen;  // the cheapest pass of its kind (gpu/core/limits.hpp), read against
+  std::string name() const;         // "a+b"
 };
 
 template <class Pass>
 std::unique_ptr<GpuPass> make_pass(GpuFrame& f) {
   return std::make_unique<Pass>(f);
 }
+
+// The probe a pass's time is read against, by the name a frame's timings give it
+// (GpuPassDef::name(); "readback": Readback); Fullscreen for a name no pass has.
+Probe probe_of(const std::string& pass);
 
 // Makes and runs a pass with its reads checked against its stages' descriptors.
 std::unique_ptr<GpuPass> make_checked(const GpuPassDef& def, GpuFrame& f);

@@ -121,7 +121,9 @@ class ContoursInComposePass : public ComposeStagePass {
 }  // namespace
 
 PLUMBAGO_GPU_PASS(compose, {{"compose"}, {}, make_pass<ComposeAlonePass>});
-PLUMBAGO_GPU_PASS(multi_contour_compose,
-                  {{"multi_contour", "compose"}, {kCopiesDarkness.name}, make_pass<ContoursInComposePass>});
+PLUMBAGO_GPU_PASS(multi_contour_compose, {{"multi_contour", "compose"},
+                                          {kCopiesDarkness.name},
+                                          make_pass<ContoursInComposePass>,
+                                          Probe::Fetch3x3});
 
 }  // namespace plumbago::gpu

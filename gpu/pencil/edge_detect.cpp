@@ -61,7 +61,9 @@ class EdgeAndLightPass : public GpuPass {
 
 }  // namespace
 
-PLUMBAGO_GPU_PASS(edge_detect,
-                  {{"edge_detect", "contour_light"}, {kContourDarkness.name}, make_pass<EdgeAndLightPass>});
+PLUMBAGO_GPU_PASS(edge_detect, {{"edge_detect", "contour_light"},
+                                {kContourDarkness.name},
+                                make_pass<EdgeAndLightPass>,
+                                Probe::Fetch3x3});
 
 }  // namespace plumbago::gpu

@@ -100,6 +100,6 @@ class MultiContourStagePass : public GpuPass {
 
 }  // namespace
 
-PLUMBAGO_GPU_PASS(multi_contour, {{"multi_contour"}, {}, make_pass<MultiContourStagePass>});
+PLUMBAGO_GPU_PASS(multi_contour, {{"multi_contour"}, {}, make_pass<MultiContourStagePass>, Probe::Fetch3x3});
 
 }  // namespace plumbago::gpu

@@ -394,14 +394,20 @@ class GBufferStagePass : public GpuPass {
 
 }  // namespace
 
-PLUMBAGO_GPU_PASS(gbuffer, {{"gbuffer"}, {}, [](GpuFrame& f) -> std::unique_ptr<GpuPass> {
+PLUMBAGO_GPU_PASS(gbuffer, {{"gbuffer"},
+                            {},
+                            [](GpuFrame& f) -> std::unique_ptr<GpuPass> {
                               const std::vector<Curvature>* curvature = f.get(maybe(kCurvature));
                               return std::make_unique<GBufferStagePass>(
                                   f, kGBuffer, f.ordinary, curvature ? *curvature : std::vector<Curvature>{});
-                            }});
-PLUMBAGO_GPU_PASS(sketchy_gbuffer, {{"sketchy_gbuffer"}, {}, [](GpuFrame& f) -> std::unique_ptr<GpuPass> {
+                            },
+                            Probe::Raster});
+PLUMBAGO_GPU_PASS(sketchy_gbuffer, {{"sketchy_gbuffer"},
+                                    {},
+                                    [](GpuFrame& f) -> std::unique_ptr<GpuPass> {
                                       return std::make_unique<GBufferStagePass>(f, kSketchyGBuffer, f.sketchy,
                                                                                 std::vector<Curvature>{});
-                                    }});
+                                    },
+                                    Probe::Raster});
 
 }  // namespace plumbago::gpu

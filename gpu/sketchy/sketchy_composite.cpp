@@ -118,6 +118,7 @@ class SketchyCompositeStagePass : public GpuPass {
 
 }  // namespace
 
-PLUMBAGO_GPU_PASS(sketchy_composite, {{"sketchy_composite"}, {}, make_pass<SketchyCompositeStagePass>});
+PLUMBAGO_GPU_PASS(sketchy_composite,
+                  {{"sketchy_composite"}, {}, make_pass<SketchyCompositeStagePass>, Probe::Fetch3x3});
 
 }  // namespace plumbago::gpu

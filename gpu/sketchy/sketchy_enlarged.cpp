@@ -82,6 +82,6 @@ class SketchyEnlargedStagePass : public GpuPass {
 
 }  // namespace
 
-PLUMBAGO_GPU_PASS(sketchy_enlarged, {{"sketchy_enlarged"}, {}, make_pass<SketchyEnlargedStagePass>});
+PLUMBAGO_GPU_PASS(sketchy_enlarged, {{"sketchy_enlarged"}, {}, make_pass<SketchyEnlargedStagePass>, Probe::Raster});
 
 }  // namespace plumbago::gpu

@@ -50,6 +50,6 @@ class SketchyMapsStagePass : public GpuPass {
 
 }  // namespace
 
-PLUMBAGO_GPU_PASS(sketchy_maps, {{"sketchy_maps"}, {}, make_pass<SketchyMapsStagePass>});
+PLUMBAGO_GPU_PASS(sketchy_maps, {{"sketchy_maps"}, {}, make_pass<SketchyMapsStagePass>, Probe::Fetch3x3});
 
 }  // namespace plumbago::gpu

@@ -63,6 +63,6 @@ class IdImagePass : public GpuPass {
 
 }  // namespace
 
-PLUMBAGO_GPU_PASS(id_image, {{"id_image"}, {}, make_pass<IdImagePass>});
+PLUMBAGO_GPU_PASS(id_image, {{"id_image"}, {}, make_pass<IdImagePass>, Probe::Raster});
 
 }  // namespace plumbago::gpu

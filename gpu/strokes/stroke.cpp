@@ -58,6 +58,6 @@ class StrokePass : public GpuPass {
 
 }  // namespace
 
-PLUMBAGO_GPU_PASS(stroke, {{"stroke"}, {}, make_pass<StrokePass>});
+PLUMBAGO_GPU_PASS(stroke, {{"stroke"}, {}, make_pass<StrokePass>, Probe::Raster});
 
 }  // namespace plumbago::gpu

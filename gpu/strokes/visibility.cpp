@@ -56,6 +56,6 @@ class VisibilityPass : public GpuPass {
 
 }  // namespace
 
-PLUMBAGO_GPU_PASS(visibility, {{"visibility"}, {}, make_pass<VisibilityPass>});
+PLUMBAGO_GPU_PASS(visibility, {{"visibility"}, {}, make_pass<VisibilityPass>, Probe::Compute});
 
 }  // namespace plumbago::gpu

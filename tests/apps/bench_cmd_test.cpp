@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -70,6 +71,35 @@ TEST_F(BenchCmd, PaperTextNamesTheMachineTheRendererAndEveryPaper) {
     EXPECT_NE(r.out.find(c.paper), std::string::npos) << c.paper;
     EXPECT_NE(r.out.find(c.scene), std::string::npos) << c.scene;
   }
+}
+
+// --limits: every probe timed, and every GPU pass read against the probe its pass declares
+// (a raster pass against the raster probe, the visibility test against compute work).
+TEST_F(BenchCmd, LimitsTimeEveryProbeAndReadEachPassAgainstItsOwn) {
+  const std::map<std::string, std::string> kProbeOf = {{"gbuffer", "raster"},
+                                                       {"id_image", "raster"},
+                                                       {"visibility", "compute"},
+                                                       {"edge_detect+contour_light", "fetch3x3"}};
+  std::string strokes = std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/torus_strokes.json";
+  CliRun r = run("bench builtin:pencil " + strokes + " --limits --json --size 64x48 --frames 2 --backend gpu");
+  ASSERT_EQ(r.code, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j.at("results").size(), 2u);
+  for (const auto& result : j["results"]) {
+    const auto& limits = result.at("limits");
+    for (const char* probe : {"fullscreen", "fetch3x3", "compute", "compute3x3", "raster", "readback"})
+      EXPECT_GT(limits.at(probe).get<double>(), 0) << probe;
+    const auto& multiples = result.at("probe_multiples");
+    EXPECT_EQ(multiples.size(), result.at("stages").size());
+    for (const auto& [pass, m] : multiples.items()) {
+      EXPECT_GE(m.at("multiple").get<double>(), 0) << pass;
+      auto it = kProbeOf.find(pass);
+      if (it != kProbeOf.end()) {
+        EXPECT_EQ(m.at("probe"), it->second) << pass;
+      }
+    }
+  }
+  EXPECT_TRUE(j["results"][1].at("probe_multiples").contains("visibility"));
 }
 
 TEST_F(BenchCmd, PaperRefusesAScene) {
