@@ -1,6 +1,6 @@
 """The recorded benchmarks' tables for pages.py, parsed from files under bench/results/:
 `{{spells FILE}}`, `{{ab FILE}}`, `{{gbench FILE [REGEX]}}`, `{{bench_text FILE}}`,
-`{{ring FILE}}`. Each table starts with the file it comes from and the date and machine
+`{{limits FILE}}`, `{{ring FILE}}`. Each table starts with the file it comes from and the date and machine
 the file records."""
 import re
 import statistics
@@ -108,4 +108,28 @@ def ring(c, file):
     return source(file, header(c, file)) + markdown(["benchmark", "rounds", "best ms", "median ms"], body)
 
 
-KINDS = {"spells": spells, "ab": ab, "gbench": gbench, "bench_text": bench_text, "ring": ring}
+LIMIT_PASS = re.compile(r"^  (\S+)\s+([\d.]+) ms =\s+([\d.]+) x (\w+)$")
+PROBE = re.compile(r"^  probe (\w+)\s+([\d.]+) ms$")
+PROBES = ["fullscreen", "fetch3x3", "compute", "compute3x3", "raster", "readback"]
+
+
+def limits(c, file):
+    """`plumbago bench --limits` text output: the probes of each scene, then each GPU pass as
+    a multiple of its probe."""
+    text, probes, passes, scene = lines(c, file), [], [], None
+    renderer = next((x.split(":", 1)[1].strip() for x in text if x.startswith("renderer:")), "not recorded")
+    for line in text:
+        if BENCH_TEXT.match(line):
+            scene = BENCH_TEXT.match(line).group(1)
+            probes.append([scene] + [""] * len(PROBES))
+        elif PROBE.match(line) and PROBE.match(line).group(1) in PROBES:
+            probes[-1][1 + PROBES.index(PROBE.match(line).group(1))] = PROBE.match(line).group(2)
+        elif LIMIT_PASS.match(line):
+            m = LIMIT_PASS.match(line)
+            passes.append([scene, m.group(1), m.group(2), m.group(4), m.group(3)])
+    return source(file, "`plumbago bench --limits` text output, GL renderer %s; the date is in the file's name."
+                  % renderer) + markdown(["scene"] + ["%s (ms)" % p for p in PROBES], probes) + [""] + \
+        markdown(["scene", "pass", "ms", "probe", "multiple of the probe"], passes)
+
+
+KINDS = {"spells": spells, "ab": ab, "gbench": gbench, "bench_text": bench_text, "limits": limits, "ring": ring}
