@@ -79,11 +79,6 @@ struct BenchResult {
   std::map<std::string, double> limits;  // --limits: each probe's ms at the scene's size (GPU)
 };
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
 void add_pass_times(const Frame& f, int frames, BenchResult& r) {
   for (const auto& p : f.ran) {
     if (is_preprocessing(p.name))

@@ -2,6 +2,7 @@
 // (on request) every intermediate buffer by name.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 #include <string>
@@ -29,6 +30,12 @@ struct Frame {
 struct FrameOptions {
   bool keep_buffers = false;  // fill Frame::buffers (for --dump-stages and compare)
 };
+
+// The middle value of timings (the upper one of an even count); `ms` must not be empty.
+inline double median(std::vector<double> ms) {
+  std::nth_element(ms.begin(), ms.begin() + ms.size() / 2, ms.end());
+  return ms[ms.size() / 2];
+}
 
 class Stopwatch {
  public:

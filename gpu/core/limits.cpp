@@ -29,8 +29,7 @@ double median_ms(int repeats, const std::function<void()>& pass) {
   }
   std::vector<double> ms;
   for (const PassTime& t : timer.results()) ms.push_back(t.ms);
-  std::nth_element(ms.begin(), ms.begin() + ms.size() / 2, ms.end());
-  return ms[ms.size() / 2];
+  return median(ms);
 }
 
 // The scene's triangles in clip space, three vec4 a triangle.
@@ -104,8 +103,7 @@ double readback_ms(const Scene& scene, int repeats) {
     glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
     ms.push_back(watch.ms());
   }
-  std::nth_element(ms.begin(), ms.begin() + ms.size() / 2, ms.end());
-  return ms[ms.size() / 2];
+  return median(ms);
 }
 
 }  // namespace
