@@ -231,6 +231,7 @@ class PassParity {
                   bounded, raw.max_abs);
     StageParity r = compared(shown, ref, within_bound(ref, ras, b), o.tolerance, mask, note + text);
     r.gpu = std::move(ras);  // what the GPU wrote; the diff is what the bound leaves
+    r.bounded = bounded;
     return r;
   }
 
@@ -389,6 +390,7 @@ nlohmann::json parity_report(const std::vector<StageParity>& results) {
                            {"over_tolerance", s.diff.over_tolerance},
                            {"tolerance", s.diff.tolerance},
                            {"compared_pixels", s.diff.compared},
+                           {"bounded_pixels", s.bounded},
                            {"note", s.note}});
   return j;
 }

@@ -23,6 +23,7 @@ struct StageParity {
   bool pass = false;
   Image reference, gpu;  // the two outputs (the heat map is made on request; angles are compared as (cos, sin))
   std::string note;      // what was excluded, and why the tolerance is what it is
+  size_t bounded = 0;    // pixels where a derived per-pixel bound allows more than the tolerance
 };
 
 // The stage registry as a program starts: the descriptors and their parameter structs
@@ -45,7 +46,7 @@ std::vector<StageParity> run_parity(const Scene& scene, const std::vector<std::s
 
 // What `plumbago compare --json` prints of `results`: {pass (all passed), renderer (the
 // GPU's), stages: [{name, pass, max_abs, rmse, over_tolerance, tolerance,
-// compared_pixels, note}]}.
+// compared_pixels, bounded_pixels, note}]}.
 nlohmann::json parity_report(const std::vector<StageParity>& results);
 
 // run_parity in steps, for a caller whose GL thread must stay free while the reference

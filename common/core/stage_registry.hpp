@@ -25,6 +25,8 @@
 #include "common/strokes/basecoat.hpp"
 #include "common/strokes/id_image.hpp"
 #include "common/strokes/line_meshes.hpp"
+#include "common/strokes/silhouette_chains.hpp"
+#include "common/strokes/silhouette_segments.hpp"
 #include "common/strokes/stroke.hpp"
 #include "common/strokes/stroke_paper.hpp"
 #include "common/strokes/visibility.hpp"
@@ -58,6 +60,8 @@ using AllStages = TypeList<
     // stroke-based rendering (Kalnins et al. 2002), over what the others drew
     BaseCoatStage,
     StrokePaperStage,
+    SilhouetteSegmentsStage,
+    SilhouetteChainsStage,
     IdImageStage,
     VisibilityStage,
     StrokeStage>;

@@ -446,12 +446,12 @@ void add_silhouettes(const Geometry& g, const std::vector<glm::dvec3>& normals, 
     }
 }
 
+}  // namespace
+
 glm::dvec3 eye_in_object_space(const glm::dmat4& object_to_world, glm::dvec3 eye_world) {
   glm::dvec4 e = glm::inverse(object_to_world) * glm::dvec4(eye_world, 1.0);
   return glm::dvec3(e) / e.w;
 }
-
-}  // namespace
 
 // The view-independent part: adjacency, crease-aware normals, creases and borders.
 struct FeatureLineMesh::Impl {
@@ -473,6 +473,44 @@ FeatureLines FeatureLineMesh::lines(const glm::dmat4& object_to_world, glm::dvec
   FeatureLines out = impl_->fixed;
   add_silhouettes(impl_->g, impl_->normals, eye_in_object_space(object_to_world, eye_world), options, out);
   return out;
+}
+
+const std::vector<glm::dvec3>& FeatureLineMesh::corner_normals() const {
+  static const std::vector<glm::dvec3> none;
+  return impl_ ? impl_->normals : none;
+}
+
+uint32_t FeatureLineMesh::reversed_slots(uint32_t f) const {
+  const Geometry& g = impl_->g;
+  uint32_t bits = 0;
+  for (int k = 0; k < 3; ++k)
+    if (g.mesh.triangles[f][k] != g.topology.edges[g.topology.face_edges[f][k]].from) bits |= 1u << k;
+  return bits;
+}
+
+std::pair<int32_t, int> FeatureLineMesh::across(uint32_t f, int k) const {
+  const Geometry& g = impl_->g;
+  uint32_t e = g.topology.face_edges[f][k];
+  const auto& edge = g.topology.edges[e];
+  int32_t other = edge.face[0] == int32_t(f) ? edge.face[1] : edge.face[0];
+  if (g.edge_kinds[e] != EdgeKind::smooth || other < 0 || uint32_t(other) == f) return {kNone, -1};
+  for (int j = 0; j < 3; ++j)
+    if (g.topology.face_edges[size_t(other)][j] == e) return {other, j};
+  return {kNone, -1};
+}
+
+std::vector<double> FeatureLineMesh::silhouette_values(glm::dvec3 eye_object, bool normalized) const {
+  return corner_silhouette_values(impl_->g, impl_->normals, eye_object, normalized);
+}
+
+FaceSilhouette FeatureLineMesh::face_silhouette(const std::vector<double>& values, glm::dvec3 eye_object,
+                                                uint32_t f) const {
+  FaceSegment s = face_segment(impl_->g, values, eye_object, f);
+  if (!s.exists()) return {};
+  return {true,
+          {s.slot[0], s.slot[1]},
+          {edge_crossing(impl_->g, values, f, s.slot[0]), edge_crossing(impl_->g, values, f, s.slot[1])},
+          s.front};
 }
 
 std::vector<double> silhouette_function(const Mesh& mesh, glm::dvec3 eye_object, const FeatureLineOptions& options) {

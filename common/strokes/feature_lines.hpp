@@ -55,6 +55,7 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "common/mesh/mesh.hpp"
@@ -83,6 +84,15 @@ struct FeatureLineOptions {
   bool silhouette_normalized = true;  // strokes.silhouette_normalized
 };
 
+// The silhouette segment of one face on its own (what a GPU computes face by face): its two
+// edge crossings in slot order (slot k: the edge from corner k to k + 1) and its facing.
+struct FaceSilhouette {
+  bool exists = false;
+  int slots[2] = {-1, -1};
+  SurfacePoint ends[2];
+  bool front = true;
+};
+
 // What does not depend on the eye, made once per mesh and crease angle (adjacency,
 // crease-aware normals, the creases and borders); `lines` adds the silhouettes for an eye.
 // The mesh must outlive it; copies share the data.
@@ -92,6 +102,19 @@ class FeatureLineMesh {
   // feature_lines(mesh, ...) below; options.crease_deg is the constructor's.
   FeatureLines lines(const glm::dmat4& object_to_world, glm::dvec3 eye_world, const FeatureLineOptions& options) const;
 
+  // The pieces `lines` is made of, for a backend that computes them itself (a mesh with
+  // faces only). The crease-aware normal of each face corner (3 f + k); zero where the fan has no area.
+  const std::vector<glm::dvec3>& corner_normals() const;
+  // Bit k set: the edge in face f's slot k runs against the face (from corner k + 1 to
+  // k), so the crossing rule starts there and both faces of the edge give one point.
+  uint32_t reversed_slots(uint32_t f) const;
+  // The face across the smooth edge in face f's slot k and its slot on that edge; face -1
+  // across a crease, a border or a non-manifold edge (a path stops there).
+  std::pair<int32_t, int> across(uint32_t f, int k) const;
+  // g per face corner (silhouette_function below) for an eye in object space.
+  std::vector<double> silhouette_values(glm::dvec3 eye_object, bool normalized) const;
+  FaceSilhouette face_silhouette(const std::vector<double>& values, glm::dvec3 eye_object, uint32_t f) const;
+
  private:
   struct Impl;
   std::shared_ptr<const Impl> impl_;
@@ -100,6 +123,9 @@ class FeatureLineMesh {
 // All three kinds of feature line (Kalnins et al. 2002, §4.5) for one mesh and one eye (see above for the frames).
 FeatureLines feature_lines(const Mesh& mesh, const glm::dmat4& object_to_world, glm::dvec3 eye_world,
                            const FeatureLineOptions& options = {});
+
+// The eye in the object space of `object_to_world`.
+glm::dvec3 eye_in_object_space(const glm::dmat4& object_to_world, glm::dvec3 eye_world);
 
 // The silhouette test g of Kalnins et al. 2002, §4.5 per face corner (index 3 f + k), with the
 // g = 0 -> -1e-8 rule applied; `eye_object` in object space. Exposed for tests.

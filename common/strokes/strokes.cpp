@@ -246,6 +246,11 @@ std::shared_ptr<const LineMeshes> line_meshes(const Scene& scene, const StrokesP
   return out;
 }
 
+const FeatureLineMesh* line_mesh(const LineMeshes& meshes, size_t object) {
+  const auto& mesh = meshes.lines.at(object);
+  return mesh && !mesh->corner_normals().empty() ? &*mesh : nullptr;
+}
+
 WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which, const LineMeshes* prepared,
                          const DecalSurface* decals) {
   std::shared_ptr<const LineMeshes> made;

@@ -103,6 +103,8 @@ enum class LineObjects { Strokes, AllButSketchy };
 // around each edge. A renderer makes it once and keeps it across its frames.
 struct LineMeshes;
 std::shared_ptr<const LineMeshes> line_meshes(const Scene& scene, const StrokesParams& p, LineObjects which);
+// Scene object `object`'s feature-line mesh; null where it is not drawn or has no faces.
+const FeatureLineMesh* line_mesh(const LineMeshes& meshes, size_t object);
 
 // `prepared` (from line_meshes with the same scene, parameters and `which`) or none;
 // `decals`, the surface points of decals and hatches (Kalnins et al. 2002, §3, §6, common/strokes/decal.hpp),

@@ -9,7 +9,6 @@ namespace plumbago {
 namespace {
 
 constexpr double kLocatedPx = 1.0;  // Kalnins et al. 2002, §4.1: a visibility change is located within 1 px
-constexpr int kFlagRow = 1024;
 
 // The point at window arc length s of a path (a closed path wraps).
 struct PathPoint {
@@ -257,8 +256,7 @@ Visibility visible_runs(const WindowLines& lines, const StrokesParams& p, const 
 }
 
 Image flags_image(const std::vector<uint8_t>& flags) {
-  int rows = std::max<int>(1, int((flags.size() + kFlagRow - 1) / kFlagRow));
-  Image out(flags.size() < size_t(kFlagRow) ? std::max<int>(1, int(flags.size())) : kFlagRow, rows, 1);
+  Image out = table_image(flags.size(), 1);
   for (size_t k = 0; k < flags.size(); ++k) out.data[k] = flags[k] ? 1.0f : 0.0f;
   return out;
 }

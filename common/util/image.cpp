@@ -3,6 +3,7 @@
 #include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <ctime>
@@ -92,6 +93,16 @@ bool has_non_finite(const Image& img) {
   for (float v : img.data)
     if (!std::isfinite(v)) return true;
   return false;
+}
+
+std::pair<int, int> table_size(size_t count) {
+  int rows = std::max(1, int((count + kTableRow - 1) / kTableRow));
+  return {count < size_t(kTableRow) ? std::max(1, int(count)) : kTableRow, rows};
+}
+
+Image table_image(size_t count, int channels) {
+  auto [width, height] = table_size(count);
+  return Image(width, height, channels);
 }
 
 }  // namespace plumbago

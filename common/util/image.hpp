@@ -53,6 +53,13 @@ using ImageFiles = std::vector<std::pair<std::string, std::function<Image()>>>;
 void write_images(const ImageFiles& images, OutputFiles& out);
 Image read_image(const std::string& path);  // float, bottom row first
 
+// A table of `count` records kept as an image (a stage's per-sample or per-face output):
+// one texel per record, record i at (i % kTableRow, i / kTableRow); a single row of
+// `count` when fewer, 1 x 1 when none.
+constexpr int kTableRow = 1024;
+Image table_image(size_t count, int channels);
+std::pair<int, int> table_size(size_t count);  // (width, height)
+
 // Any NaN or Inf value?
 bool has_non_finite(const Image& img);
 

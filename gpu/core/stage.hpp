@@ -139,6 +139,8 @@ std::vector<const GpuPassDef*> plan_passes(const std::vector<std::string>& stage
 
 // The GL texture format of a declared output.
 GLenum texture_format(const Output& output);
+// The prelude of a shader that includes util/common_table.glsl (common/util/image.hpp table_image).
+inline std::string table_prelude() { return "#define TABLE_ROW " + std::to_string(kTableRow) + "\n"; }
 
 }  // namespace plumbago::gpu
 

@@ -1,5 +1,6 @@
 #include "gpu/gl/gl_objects.hpp"
 
+#include <atomic>
 #include <stdexcept>
 #include <string>
 
@@ -37,8 +38,11 @@ GLenum integer_format_of(int channels) {
   throw std::invalid_argument("images have 1 to 4 channels, not " + std::to_string(channels));
 }
 
+std::atomic<size_t> read_back{0};
+
 template <class T>
 void read_texture(const Texture& tex, GLenum format, GLenum type, std::vector<T>& out) {
+  read_back += out.size() * sizeof(T);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glBindTexture(GL_TEXTURE_2D, tex.id());
   glGetTexImage(GL_TEXTURE_2D, 0, format, type, out.data());
@@ -168,5 +172,14 @@ Renderbuffer make_renderbuffer(int width, int height, GLenum internal_format) {
   glBindRenderbuffer(GL_RENDERBUFFER, 0);
   return Renderbuffer(id);
 }
+
+void read_buffer(const Buffer& buffer, void* out, size_t bytes) {
+  read_back += bytes;
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer.id());  // not glGetNamedBufferSubData: OSMesa has no such entry
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(bytes), out);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+}
+
+size_t bytes_read_back() { return read_back; }
 
 }  // namespace plumbago::gpu

@@ -81,6 +81,11 @@ Image download_texture(const Texture& tex, int channels);
 ImageU32 download_texture_u32(const Texture& tex, int channels);
 
 Buffer make_buffer(const void* data, size_t bytes);
+// Reads the first `bytes` of a buffer back into `out`.
+void read_buffer(const Buffer& buffer, void* out, size_t bytes);
+// Every byte read back from GPU memory so far (download_texture*, read_buffer): what a frame
+// read back is the difference across it.
+size_t bytes_read_back();
 VertexArray make_vertex_array();
 Framebuffer make_framebuffer();
 Renderbuffer make_renderbuffer(int width, int height, GLenum internal_format);

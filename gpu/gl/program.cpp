@@ -1,5 +1,6 @@
 #include "gpu/gl/program.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -131,6 +132,15 @@ void bind_textures(const Program& program, std::initializer_list<TextureBinding>
     glProgramUniform1i(program.id(), program.uniform(b.sampler), unit++);
   }
   glActiveTexture(GL_TEXTURE0);
+}
+
+void dispatch_in_chunks(const Program& program, size_t count, const char* first) {
+  const size_t per_dispatch = size_t(65535) * 64;
+  glUseProgram(program.id());
+  for (size_t start = 0; start < count; start += per_dispatch) {
+    glProgramUniform1ui(program.id(), program.uniform(first), GLuint(start));
+    glDispatchCompute(GLuint((std::min(per_dispatch, count - start) + 63) / 64), 1, 1);
+  }
 }
 
 }  // namespace plumbago::gpu

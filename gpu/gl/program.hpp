@@ -129,6 +129,11 @@ void bind_textures(const Program& program, std::initializer_list<TextureBinding>
 // past its MAX_LIGHTS (8).
 void set_lights(const Program& program, const std::vector<Light>& view_lights);
 
+// Dispatches `count` invocations of a compute program whose work groups are 64 wide, in
+// chunks of at most 65535 groups (GL's least maximum); the program's uint uniform `first`
+// gets each chunk's first invocation.
+void dispatch_in_chunks(const Program& program, size_t count, const char* first);
+
 // Reads shaders/<file> (PLUMBAGO_SHADER_DIR, overridable by the environment variable of
 // the same name), expanding includes.
 std::string shader_source(const std::string& file);

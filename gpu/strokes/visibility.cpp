@@ -3,8 +3,6 @@
 // only the flags come back (Kalnins et al. read the whole ID image back every frame).
 #include "gpu/strokes/visibility.hpp"
 
-#include <algorithm>
-
 #include "gpu/core/stage.hpp"
 
 namespace plumbago::gpu {
@@ -19,16 +17,10 @@ std::vector<uint8_t> SampleTest::operator()(const Texture& ids, const std::vecto
   bind_textures(program_, {{"ids", &ids}});
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, samples.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, flags.id());
-  const size_t per_dispatch = size_t(65535) * 64;  // GL's least maximum of work groups, 64 samples each
-  for (size_t first = 0; first < batch.size(); first += per_dispatch) {
-    glProgramUniform1ui(program_.id(), program_.uniform("first_sample"), GLuint(first));
-    glDispatchCompute(GLuint((std::min(per_dispatch, batch.size() - first) + 63) / 64), 1, 1);
-  }
+  dispatch_in_chunks(program_, batch.size(), "first_sample");
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<uint32_t> read(batch.size());
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, flags.id());  // not glGetNamedBufferSubData: OSMesa has no such entry
-  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(read.size() * sizeof(uint32_t)), read.data());
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  read_buffer(flags, read.data(), read.size() * sizeof(uint32_t));
   return std::vector<uint8_t>(read.begin(), read.end());
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "common/core/params.hpp"
+#include "common/mesh/mesh.hpp"
 #include "common/pencil/distortion.hpp"
 #include "common/scene/scene.hpp"
 #include "gpu/gl/context.hpp"
@@ -35,6 +36,19 @@ inline Scene drawn_with_strokes(Scene s) {
   for (SceneObject& o : s.objects) o.style = Style::Strokes;
   s.effects = {"basecoat", "strokes"};
   return s;
+}
+
+// One object drawn with strokes, at the origin, seen from `eye` (its normals computed here).
+inline Scene one_stroke_object(Mesh mesh, glm::vec3 eye, int width = 320, int height = 240) {
+  compute_normals(mesh);
+  Scene s;
+  s.source = "test:one object";
+  s.objects.push_back({std::make_shared<const Mesh>(std::move(mesh))});
+  s.camera.eye = eye;
+  s.camera.target = glm::vec3(0.0f);
+  s.camera.near = 0.05f;
+  s.width = width, s.height = height;
+  return drawn_with_strokes(s);
 }
 
 // A small square seen face-on and a torus, 240 x 180 (the blocks of 8 x 8 pixels do not fit

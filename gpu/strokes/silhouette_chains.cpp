@@ -1,0 +1,115 @@
+// Silhouette chains on the GPU (Kalnins et al. 2002, §4.5), the twin of
+// reference/strokes/silhouette_chains.cpp: the segments are linked and compacted, then ranked
+// by pointer jumping (Wyllie 1979), twice in bit_width(records) rounds: 2^rounds > records,
+// enough for a chain through every face. The rounds run over the compacted segments only, by indirect
+// dispatch, so the CPU never learns how many there are: nothing is read back.
+#include "common/strokes/silhouette_chains.hpp"
+
+#include <algorithm>
+#include <bit>
+
+#include "gpu/core/stage.hpp"
+
+namespace plumbago::gpu {
+
+namespace {
+
+Program step(const char* name) {
+  return Program::compute("strokes/silhouette_chains.comp", table_prelude() + "#define " + name + "\n");
+}
+
+class SilhouetteChainsPass : public GpuPass {
+ public:
+  explicit SilhouetteChainsPass(GpuFrame& f)
+      : link_(step("STEP_LINK")),
+        args_(step("STEP_ARGS")),
+        loops_(step("STEP_LOOPS")),
+        cut_(step("STEP_CUT")),
+        rank_(step("STEP_RANK")),
+        write_(step("STEP_WRITE")) {
+    std::vector<glm::uvec4> links = slot_links(f.scene, f.get(kLineMeshes));
+    records_ = uint32_t(links.size());
+    rounds_ = int(std::bit_width(records_));
+    const size_t n = std::max<size_t>(records_, 1);
+    slot_links_ = make_buffer(links.data(), n * sizeof(glm::uvec4));
+    links_ = make_buffer(nullptr, n * sizeof(glm::uvec4));
+    members_ = make_buffer(nullptr, n * sizeof(uint32_t));
+    count_ = make_buffer(nullptr, 4 * sizeof(uint32_t));
+    jump_[0] = make_buffer(nullptr, n * sizeof(glm::uvec4));
+    jump_[1] = make_buffer(nullptr, n * sizeof(glm::uvec4));
+  }
+
+  void run(GpuFrame& f) override {
+    const Texture& chains = target(f);
+    const float zero[4] = {0, 0, 0, 0};
+    glClearTexImage(chains.id(), 0, GL_RGBA, GL_FLOAT, zero);
+    const GLuint none = 0;
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, count_.id());
+    glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
+    bind(f, chains);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, jump_[0].id());
+    dispatch_in_chunks(link_, records_, "first_record");
+    barrier();
+    dispatch_in_chunks(args_, 1, "first_record");
+    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    int from = 0;
+    for (int r = 0; r < rounds_; ++r) over_members(loops_, from);  // each loop's lowest record
+    over_members(cut_, from);
+    for (int r = 0; r < rounds_; ++r) over_members(rank_, from);  // starts, ranks, ends
+    bind_jump(from);
+    over_members_once(write_);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  }
+
+ private:
+  const Texture& target(GpuFrame& f) {
+    if (const Texture* made = f.get(maybe(kChains))) return *made;
+    auto [width, height] = table_size(records_);
+    f.put(kChains, make_texture(width, height, GL_RGBA32F));
+    return f.get(kChains);
+  }
+
+  void bind(GpuFrame& f, const Texture& chains) {
+    for (const Program* p : {&link_, &args_, &loops_, &cut_, &rank_, &write_}) {
+      bind_textures(*p, {{"facing", &f.get(kSegmentFacing)}, {"slots", &f.get(kSegmentSlots)}});
+      glProgramUniform1ui(p->id(), p->uniform("records"), records_);
+    }
+    glBindImageTexture(0, chains.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, slot_links_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, links_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, members_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, count_.id());
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, count_.id());
+  }
+
+  // Reads jump_[from], writes the other, which is read next.
+  void bind_jump(int from) {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, jump_[from].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, jump_[1 - from].id());
+  }
+
+  void over_members(const Program& p, int& from) {
+    bind_jump(from);
+    over_members_once(p);
+    from = 1 - from;
+  }
+
+  static void over_members_once(const Program& p) {
+    glUseProgram(p.id());
+    glDispatchComputeIndirect(0);
+    barrier();
+  }
+
+  static void barrier() { glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); }
+
+  Program link_, args_, loops_, cut_, rank_, write_;
+  uint32_t records_ = 0;
+  int rounds_ = 0;
+  Buffer slot_links_, links_, members_, count_, jump_[2];
+};
+
+}  // namespace
+
+PLUMBAGO_GPU_PASS(silhouette_chains, {{"silhouette_chains"}, {}, make_pass<SilhouetteChainsPass>, Probe::Compute});
+
+}  // namespace plumbago::gpu

@@ -1,0 +1,106 @@
+// Silhouette segments on the GPU (Kalnins et al. 2002, §4.5), the twin of
+// reference/strokes/silhouette_segments.cpp: one invocation per face of each stroke object
+// (shaders/strokes/silhouette_segments.comp), from its corners, crease-aware corner normals
+// and slot orientations, uploaded once. Nothing is read back.
+#include "common/strokes/silhouette_segments.hpp"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "common/strokes/strokes.hpp"
+#include "gpu/core/stage.hpp"
+
+namespace plumbago::gpu {
+
+namespace {
+
+// One stroke object's view-independent data in GPU memory.
+struct ObjectBuffers {
+  uint32_t object, faces, first_record;
+  Buffer positions, corners, normals;
+};
+
+ObjectBuffers upload(const FeatureLineMesh& lines, const Mesh& mesh, uint32_t object, uint32_t first_record) {
+  std::vector<glm::vec4> positions, normals;
+  std::vector<glm::uvec4> corners;
+  for (glm::vec3 p : mesh.positions) positions.emplace_back(p, 1.0f);
+  for (uint32_t f = 0; f < mesh.triangles.size(); ++f) {
+    const auto& t = mesh.triangles[f];
+    corners.emplace_back(t[0], t[1], t[2], lines.reversed_slots(f));
+  }
+  for (glm::dvec3 n : lines.corner_normals()) normals.emplace_back(glm::vec3(n), 0.0f);
+  return {object,
+          uint32_t(mesh.triangles.size()),
+          first_record,
+          make_buffer(positions.data(), positions.size() * sizeof(glm::vec4)),
+          make_buffer(corners.data(), corners.size() * sizeof(glm::uvec4)),
+          make_buffer(normals.data(), normals.size() * sizeof(glm::vec4))};
+}
+
+class SilhouetteSegmentsPass : public GpuPass {
+ public:
+  explicit SilhouetteSegmentsPass(GpuFrame& f)
+      : program_(Program::compute("strokes/silhouette_segments.comp", table_prelude())) {
+    std::vector<uint32_t> first = first_records(f.scene);
+    records_ = first.back();
+    for (uint32_t o = 0; o < f.scene.objects.size(); ++o)
+      if (const FeatureLineMesh* lines = line_mesh(f.get(kLineMeshes), o))
+        objects_.push_back(upload(*lines, *f.scene.objects[o].mesh, o, first[o]));
+  }
+
+  void run(GpuFrame& f) override {
+    const Texture* tables[] = {&target(f, kSegmentEnds), &target(f, kSegmentFacing), &target(f, kSegmentSlots)};
+    const float zero[4] = {0, 0, 0, 0};
+    glUseProgram(program_.id());
+    for (GLuint unit = 0; unit < 3; ++unit) {
+      glClearTexImage(tables[unit]->id(), 0, GL_RGBA, GL_FLOAT, zero);
+      glBindImageTexture(unit, tables[unit]->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, tables[unit]->internal_format);
+    }
+    WindowProjection camera(f.scene.camera, f.scene.width, f.scene.height);
+    set_frame_uniforms(f);
+    for (const ObjectBuffers& o : objects_) dispatch(f, camera, o);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  }
+
+ private:
+  // The table, made once at its size (the frame keeps it across frames).
+  const Texture& target(GpuFrame& f, plumbago::Buffer buffer) {
+    if (const Texture* made = f.get(maybe(buffer))) return *made;
+    auto [width, height] = table_size(records_);
+    f.put(buffer, make_texture(width, height, texture_format(find_output(buffer.name))));
+    return f.get(buffer);
+  }
+
+  void set_frame_uniforms(const GpuFrame& f) {
+    GLuint p = program_.id();
+    glProgramUniform1i(p, program_.uniform("normalized"), f.params<StrokesParams>().silhouette_normalized);
+    glProgramUniform1f(p, program_.uniform("near"), f.scene.camera.near);
+    glProgramUniform2f(p, program_.uniform("window_size"), float(f.scene.width), float(f.scene.height));
+  }
+
+  void dispatch(const GpuFrame& f, const WindowProjection& camera, const ObjectBuffers& o) {
+    glm::dmat4 m(f.scene.objects[o.object].transform), view = camera.view * m;
+    glm::mat4 clip(camera.clip * m);
+    glm::vec3 eye(eye_in_object_space(m, glm::dvec3(f.scene.camera.eye)));
+    glm::vec4 depth(-glm::dvec4(view[0][2], view[1][2], view[2][2], view[3][2]));
+    GLuint p = program_.id();
+    glProgramUniformMatrix4fv(p, program_.uniform("clip"), 1, GL_FALSE, glm::value_ptr(clip));
+    glProgramUniform4fv(p, program_.uniform("depth_row"), 1, glm::value_ptr(depth));
+    glProgramUniform3fv(p, program_.uniform("eye"), 1, glm::value_ptr(eye));
+    glProgramUniform1ui(p, program_.uniform("face_count"), o.faces);
+    glProgramUniform1ui(p, program_.uniform("first_record"), o.first_record);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, o.positions.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, o.corners.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, o.normals.id());
+    dispatch_in_chunks(program_, o.faces, "first_face");
+  }
+
+  Program program_;
+  uint32_t records_ = 0;
+  std::vector<ObjectBuffers> objects_;
+};
+
+}  // namespace
+
+PLUMBAGO_GPU_PASS(silhouette_segments, {{"silhouette_segments"}, {}, make_pass<SilhouetteSegmentsPass>, Probe::Compute});
+
+}  // namespace plumbago::gpu

@@ -1,0 +1,86 @@
+#version 450 core
+// Silhouette chains (Kalnins et al. 2002, §4.5) by pointer jumping (Wyllie 1979): the steps of
+// gpu/strokes/silhouette_chains.cpp, one program each (STEP_LINK, STEP_ARGS, STEP_LOOPS,
+// STEP_CUT, STEP_RANK, STEP_WRITE). The links are those of common/strokes/silhouette_chains.hpp;
+// the walk they replace is reference/strokes/silhouette_chains.cpp.
+layout(local_size_x = 64) in;
+
+#include "util/common_table.glsl"
+
+const uint kNoLink = 0xffffffffu;
+
+layout(std430, binding = 0) readonly buffer SlotLinks { uvec4 slot_links[]; };  // per record
+// Per record: (successor, predecessor, closed, -), kNoLink where none.
+layout(std430, binding = 1) buffer Links { uvec4 links[]; };
+layout(std430, binding = 2) buffer Members { uint members[]; };  // the records that hold a segment
+// The indirect dispatch over the members, then their count.
+layout(std430, binding = 3) buffer Count { uint groups_x, groups_y, groups_z, count; };
+// Pointer jumping, read from `src` and written to `dst`, swapped after each round:
+// finding loops, (next, lowest record so far, -, -); ranking, (start, rank, end, distance to it).
+layout(std430, binding = 4) readonly buffer Source { uvec4 src[]; };
+layout(std430, binding = 5) writeonly buffer Destination { uvec4 dst[]; };
+
+uniform sampler2D facing;  // silhouette_segments.facing
+uniform sampler2D slots;   // silhouette_segments.slots (entry, exit)
+layout(rgba32f, binding = 0) writeonly uniform image2D chains;
+uniform uint records, first_record;
+
+float facing_of(uint i) { return texelFetch(facing, table_texel(i), 0).r; }
+int slot_of(uint i, int end) { return int(texelFetch(slots, table_texel(i), 0)[end]); }
+
+// The segment across the slot record i leaves by (end 1) or enters by (end 0), when it goes
+// on through that edge the other way with the same facing.
+uint linked(uint i, int end) {
+  uint link = slot_links[i][slot_of(i, end)];
+  if (link == kNoLink) return kNoLink;
+  uint j = link / 4u;
+  return facing_of(j) == facing_of(i) && slot_of(j, 1 - end) == int(link % 4u) ? j : kNoLink;
+}
+
+// The member this invocation works on, or kNoLink past the count.
+uint member() {
+  uint m = gl_GlobalInvocationID.x;
+  return m < count ? members[m] : kNoLink;
+}
+
+void main() {
+#if defined(STEP_LINK)  // every record, in chunks: links, the members, and the loop search's start
+  uint i = first_record + gl_GlobalInvocationID.x;
+  if (i >= records || facing_of(i) == 0.0) return;
+  uint next = linked(i, 1);
+  links[i] = uvec4(next, linked(i, 0), 0u, 0u);
+  members[atomicAdd(count, 1u)] = i;
+  dst[i] = uvec4(next == kNoLink ? i : next, i, 0u, 0u);
+#elif defined(STEP_ARGS)  // one invocation
+  if (gl_GlobalInvocationID.x == 0u) {
+    groups_x = (count + 63u) / 64u;
+    groups_y = 1u;
+    groups_z = 1u;
+  }
+#elif defined(STEP_LOOPS)  // next <- next of next, lowest <- the lower of both
+  uint i = member();
+  if (i == kNoLink) return;
+  uvec4 here = src[i], there = src[here.x];
+  dst[i] = uvec4(there.x, min(here.y, there.y), 0u, 0u);
+#elif defined(STEP_CUT)  // a loop is cut before its lowest record: every chain is a list both ways
+  uint i = member();
+  if (i == kNoLink) return;
+  uvec4 found = src[i], l = links[i];
+  // After as many rounds as records, an open chain's `next` is its end, which has no successor.
+  bool closed = links[found.x].x != kNoLink;
+  uint lowest = found.y;
+  bool first = l.y == kNoLink || (closed && i == lowest), last = l.x == kNoLink || (closed && l.x == lowest);
+  links[i].z = closed ? 1u : 0u;
+  dst[i] = uvec4(first ? i : l.y, first ? 0u : 1u, last ? i : l.x, last ? 0u : 1u);
+#elif defined(STEP_RANK)  // both ways: start and rank, end and distance to it
+  uint i = member();
+  if (i == kNoLink) return;
+  uvec4 here = src[i];
+  dst[i] = uvec4(src[here.x].x, here.y + src[here.x].y, src[here.z].z, here.w + src[here.z].w);
+#elif defined(STEP_WRITE)
+  uint i = member();
+  if (i == kNoLink) return;
+  uvec4 ranked = src[i];
+  imageStore(chains, table_texel(i), vec4(ranked.x + 1u, ranked.y, ranked.y + ranked.w + 1u, links[i].z));
+#endif
+}
