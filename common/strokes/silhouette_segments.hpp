@@ -61,8 +61,9 @@ struct SilhouetteSegmentsStage {
   static StageDesc describe() {
     return {.name = "silhouette_segments",
             .kind = StageKind::Frame,
-            .doc = "per face, the silhouette segment where g = n·normalize(eye - x) changes sign, and its facing "
-                   "(Kalnins et al. 2002, §4.5)",
+            .doc =
+                "per face, the silhouette segment where g = n·normalize(eye - x) changes sign, and its facing "
+                "(Kalnins et al. 2002, §4.5)",
             .params = {"strokes"},
             .inputs = {{.handle = kLineMeshes}},
             .outputs = {{.handle = kSegmentEnds,

@@ -1,8 +1,9 @@
 // Silhouette chains on the GPU (Kalnins et al. 2002, §4.5), the twin of
 // reference/strokes/silhouette_chains.cpp: the segments are linked and compacted, then ranked
-// by pointer jumping (Wyllie 1979), twice in bit_width(records) rounds: 2^rounds > records,
-// enough for a chain through every face. The rounds run over the compacted segments only, by indirect
-// dispatch, so the CPU never learns how many there are: nothing is read back.
+// by pointer jumping (Wyllie 1979), twice. Each round is an indirect dispatch over the
+// compacted segments whose size the GPU writes: bit_width(records) rounds are issued (enough
+// for a chain through every face), and those past 2^k >= the segments' count (more than any
+// chain needs) dispatch no work. The CPU never learns the count: nothing is read back.
 #include "common/strokes/silhouette_chains.hpp"
 
 #include <algorithm>
@@ -34,7 +35,7 @@ class SilhouetteChainsPass : public GpuPass {
     slot_links_ = make_buffer(links.data(), n * sizeof(glm::uvec4));
     links_ = make_buffer(nullptr, n * sizeof(glm::uvec4));
     members_ = make_buffer(nullptr, n * sizeof(uint32_t));
-    count_ = make_buffer(nullptr, 4 * sizeof(uint32_t));
+    count_ = make_buffer(nullptr, kRoundArgs + 32 * 4 * sizeof(uint32_t));
     jump_[0] = make_buffer(nullptr, n * sizeof(glm::uvec4));
     jump_[1] = make_buffer(nullptr, n * sizeof(glm::uvec4));
   }
@@ -47,17 +48,14 @@ class SilhouetteChainsPass : public GpuPass {
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, count_.id());
     glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
     bind(f, chains);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, jump_[0].id());
     dispatch_in_chunks(link_, records_, "first_record");
     barrier();
     dispatch_in_chunks(args_, 1, "first_record");
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-    int from = 0;
-    for (int r = 0; r < rounds_; ++r) over_members(loops_, from);  // each loop's lowest record
-    over_members(cut_, from);
-    for (int r = 0; r < rounds_; ++r) over_members(rank_, from);  // starts, ranks, ends
-    bind_jump(from);
-    over_members_once(write_);
+    for (int r = 0; r < rounds_; ++r) over_members(loops_, r);  // each loop's lowest record
+    over_members(cut_, -1);
+    for (int r = 0; r < rounds_; ++r) over_members(rank_, r);  // starts, ranks, ends
+    over_members(write_, -1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
   }
 
@@ -73,30 +71,27 @@ class SilhouetteChainsPass : public GpuPass {
     for (const Program* p : {&link_, &args_, &loops_, &cut_, &rank_, &write_}) {
       bind_textures(*p, {{"facing", &f.get(kSegmentFacing)}, {"slots", &f.get(kSegmentSlots)}});
       glProgramUniform1ui(p->id(), p->uniform("records"), records_);
+      glProgramUniform1ui(p->id(), p->uniform("rounds"), GLuint(rounds_));
     }
     glBindImageTexture(0, chains.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, slot_links_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, links_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, members_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, count_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, jump_[0].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, jump_[1].id());
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, count_.id());
   }
 
-  // Reads jump_[from], writes the other, which is read next.
-  void bind_jump(int from) {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, jump_[from].id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, jump_[1 - from].id());
-  }
+  // Where the Count buffer (shaders/strokes/silhouette_chains.comp) holds each dispatch's groups.
+  static constexpr GLintptr kAllMembers = 4, kRoundArgs = 16;
+  static GLintptr round_args(int r) { return kRoundArgs + GLintptr(r) * 16; }
 
-  void over_members(const Program& p, int& from) {
-    bind_jump(from);
-    over_members_once(p);
-    from = 1 - from;
-  }
-
-  static void over_members_once(const Program& p) {
+  // Round `round` of a phase (its groups written by the GPU), or (-1) over every member.
+  static void over_members(const Program& p, int round) {
     glUseProgram(p.id());
-    glDispatchComputeIndirect(0);
+    if (round >= 0) glProgramUniform1ui(p.id(), p.uniform("round_index"), GLuint(round));
+    glDispatchComputeIndirect(round >= 0 ? round_args(round) : kAllMembers);
     barrier();
   }
 

@@ -101,6 +101,7 @@ class SilhouetteSegmentsPass : public GpuPass {
 
 }  // namespace
 
-PLUMBAGO_GPU_PASS(silhouette_segments, {{"silhouette_segments"}, {}, make_pass<SilhouetteSegmentsPass>, Probe::Compute});
+PLUMBAGO_GPU_PASS(silhouette_segments,
+                  {{"silhouette_segments"}, {}, make_pass<SilhouetteSegmentsPass>, Probe::Compute});
 
 }  // namespace plumbago::gpu

@@ -19,9 +19,9 @@ namespace {
 struct ObjectView {
   const FeatureLineMesh& lines;
   const Mesh& mesh;
-  glm::dmat4 clip;      // object to clip space
-  glm::dvec4 depth;     // object point (x, 1) to linear view depth
-  glm::dvec3 eye;       // object space
+  glm::dmat4 clip;   // object to clip space
+  glm::dvec4 depth;  // object point (x, 1) to linear view depth
+  glm::dvec3 eye;    // object space
   std::vector<double> g;
   uint32_t first_record;
 };

@@ -13,12 +13,42 @@ layout(std430, binding = 0) readonly buffer SlotLinks { uvec4 slot_links[]; };  
 // Per record: (successor, predecessor, closed, -), kNoLink where none.
 layout(std430, binding = 1) buffer Links { uvec4 links[]; };
 layout(std430, binding = 2) buffer Members { uint members[]; };  // the records that hold a segment
-// The indirect dispatch over the members, then their count.
-layout(std430, binding = 3) buffer Count { uint groups_x, groups_y, groups_z, count; };
-// Pointer jumping, read from `src` and written to `dst`, swapped after each round:
+// How many members, the indirect dispatch over them all, and round k's: over them all while
+// 2^k < count (a chain is no longer than the count), else none.
+layout(std430, binding = 3) buffer Count {
+  uint count;
+  uint all_x, all_y, all_z;  // not a uvec3: std430 would align it to 16 bytes
+  uvec4 round_groups[32];
+};
+// Pointer jumping between two buffers, each step reading one and writing the other:
 // finding loops, (next, lowest record so far, -, -); ranking, (start, rank, end, distance to it).
-layout(std430, binding = 4) readonly buffer Source { uvec4 src[]; };
-layout(std430, binding = 5) writeonly buffer Destination { uvec4 dst[]; };
+layout(std430, binding = 4) buffer JumpA { uvec4 jump_a[]; };
+layout(std430, binding = 5) buffer JumpB { uvec4 jump_b[]; };
+uniform uint round_index;  // k, of this phase's rounds
+uniform uint rounds;       // issued per phase
+
+// The rounds that do work, R: those with 2^k < count (Count above). The link step writes
+// buffer 0; round k of the first phase reads k % 2, so the cut reads R % 2 and writes the
+// other, round k of the second phase reads (R + 1 + k) % 2, and the last step reads 1.
+uint working_rounds() { return min(rounds, count > 1u ? uint(findMSB(count - 1u)) + 1u : 0u); }
+uint source() {
+#if defined(STEP_LOOPS)
+  return round_index % 2u;
+#elif defined(STEP_CUT)
+  return working_rounds() % 2u;
+#elif defined(STEP_RANK)
+  return (working_rounds() + 1u + round_index) % 2u;
+#else
+  return 1u;  // the link step writes buffer 0; the last step reads buffer 1
+#endif
+}
+uvec4 src(uint i) { return source() == 0u ? jump_a[i] : jump_b[i]; }
+void put(uint i, uvec4 v) {
+  if (source() == 0u)
+    jump_b[i] = v;
+  else
+    jump_a[i] = v;
+}
 
 uniform sampler2D facing;  // silhouette_segments.facing
 uniform sampler2D slots;   // silhouette_segments.slots (entry, exit)
@@ -50,37 +80,37 @@ void main() {
   uint next = linked(i, 1);
   links[i] = uvec4(next, linked(i, 0), 0u, 0u);
   members[atomicAdd(count, 1u)] = i;
-  dst[i] = uvec4(next == kNoLink ? i : next, i, 0u, 0u);
+  put(i, uvec4(next == kNoLink ? i : next, i, 0u, 0u));
 #elif defined(STEP_ARGS)  // one invocation
-  if (gl_GlobalInvocationID.x == 0u) {
-    groups_x = (count + 63u) / 64u;
-    groups_y = 1u;
-    groups_z = 1u;
-  }
+  if (gl_GlobalInvocationID.x != 0u) return;
+  all_x = (count + 63u) / 64u;
+  all_y = 1u;
+  all_z = 1u;
+  for (uint k = 0u; k < 32u; ++k) round_groups[k] = uvec4(count > (1u << k) ? all_x : 0u, 1u, 1u, 0u);
 #elif defined(STEP_LOOPS)  // next <- next of next, lowest <- the lower of both
   uint i = member();
   if (i == kNoLink) return;
-  uvec4 here = src[i], there = src[here.x];
-  dst[i] = uvec4(there.x, min(here.y, there.y), 0u, 0u);
+  uvec4 here = src(i), there = src(here.x);
+  put(i, uvec4(there.x, min(here.y, there.y), 0u, 0u));
 #elif defined(STEP_CUT)  // a loop is cut before its lowest record: every chain is a list both ways
   uint i = member();
   if (i == kNoLink) return;
-  uvec4 found = src[i], l = links[i];
+  uvec4 found = src(i), l = links[i];
   // After as many rounds as records, an open chain's `next` is its end, which has no successor.
   bool closed = links[found.x].x != kNoLink;
   uint lowest = found.y;
   bool first = l.y == kNoLink || (closed && i == lowest), last = l.x == kNoLink || (closed && l.x == lowest);
   links[i].z = closed ? 1u : 0u;
-  dst[i] = uvec4(first ? i : l.y, first ? 0u : 1u, last ? i : l.x, last ? 0u : 1u);
+  put(i, uvec4(first ? i : l.y, first ? 0u : 1u, last ? i : l.x, last ? 0u : 1u));
 #elif defined(STEP_RANK)  // both ways: start and rank, end and distance to it
   uint i = member();
   if (i == kNoLink) return;
-  uvec4 here = src[i];
-  dst[i] = uvec4(src[here.x].x, here.y + src[here.x].y, src[here.z].z, here.w + src[here.z].w);
+  uvec4 here = src(i), back = src(here.x), ahead = src(here.z);
+  put(i, uvec4(back.x, here.y + back.y, ahead.z, here.w + ahead.w));
 #elif defined(STEP_WRITE)
   uint i = member();
   if (i == kNoLink) return;
-  uvec4 ranked = src[i];
+  uvec4 ranked = src(i);
   imageStore(chains, table_texel(i), vec4(ranked.x + 1u, ranked.y, ranked.y + ranked.w + 1u, links[i].z));
 #endif
 }

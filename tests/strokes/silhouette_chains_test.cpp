@@ -55,8 +55,8 @@ TEST_F(SilhouetteChains, GpuRanksTheSameChainsAsTheWalk) {
 // A finer torus than the built-in one, seen from where its silhouette has several loops and
 // open paths cut by the facing: many members and rounds.
 TEST_F(SilhouetteChains, FineTorusFromAbove) {
-  Image table =
-      chain_parity(testing::one_stroke_object(make_procedural("torus", 3.0f), glm::vec3(0.3f, 2.5f, 1.2f)), "fine torus");
+  Image table = chain_parity(testing::one_stroke_object(make_procedural("torus", 3.0f), glm::vec3(0.3f, 2.5f, 1.2f)),
+                             "fine torus");
   EXPECT_GE(chains_of(table).size(), 2u);
 }
 

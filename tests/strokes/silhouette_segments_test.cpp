@@ -18,7 +18,7 @@ namespace plumbago {
 namespace {
 
 const std::vector<std::string> kSegmentResults = {"silhouette_segments.ends", "silhouette_segments.facing",
-                                                   "silhouette_segments.slots"};
+                                                  "silhouette_segments.slots"};
 
 // The outputs' parity, printed: the ends, the facing and the slots, in that order.
 std::vector<StageParity> segment_parity(const Scene& scene, const std::string& label) {
@@ -66,9 +66,10 @@ TEST_F(SilhouetteSegments, GpuSphereSilhouetteStaysOnTheTrueCircle) {
   double theta = 0;
   for (const auto& t : sphere.triangles)
     for (int k = 0; k < 3; ++k)
-      theta = std::max(theta, std::acos(std::clamp(glm::dot(glm::normalize(glm::dvec3(sphere.positions[t[k]])),
-                                                            glm::normalize(glm::dvec3(sphere.positions[t[(k + 1) % 3]]))),
-                                                   -1.0, 1.0)));
+      theta =
+          std::max(theta, std::acos(std::clamp(glm::dot(glm::normalize(glm::dvec3(sphere.positions[t[k]])),
+                                                        glm::normalize(glm::dvec3(sphere.positions[t[(k + 1) % 3]]))),
+                                               -1.0, 1.0)));
   for (double D : {2.0, 4.0, 20.0}) {
     Scene s = testing::one_stroke_object(sphere, glm::vec3(D * glm::normalize(glm::dvec3(0.3, -0.5, 0.8))));
     s.camera.fov_deg = float(2 * std::asin(1.0 / D) * 180 / std::numbers::pi) * 1.2f;
@@ -90,8 +91,9 @@ TEST_F(SilhouetteSegments, GpuSphereSilhouetteStaysOnTheTrueCircle) {
         worst = std::max(worst, std::abs(ray_distance_to_center(s, p) - 1.0));
       }
     }
-    std::printf("GPU sphere D %.0f: %zu segments, %zu front-facing, max distance to the true silhouette %.3g (bound %.3g)\n",
-                D, segments_in(facing), front, worst, bound);
+    std::printf(
+        "GPU sphere D %.0f: %zu segments, %zu front-facing, max distance to the true silhouette %.3g (bound %.3g)\n", D,
+        segments_in(facing), front, worst, bound);
     EXPECT_EQ(front, segments_in(facing)) << "a convex object seen from outside has front-facing silhouettes only";
     EXPECT_EQ(counter_clockwise, front) << "g > 0, the visible side, on the left: the disc inside the loop";
     EXPECT_GT(front, 50u);
@@ -123,7 +125,8 @@ Mesh cylinder(int around, int rings) {
 TEST_F(SilhouetteSegments, SignMismatchesAtGZeroStayWithinTheDerivedBound) {
   size_t bounded = 0, mismatched = 0;
   for (int around : {20, 24, 30, 36, 40, 48, 64, 100}) {
-    Scene s = testing::one_stroke_object(cylinder(around, 16), glm::vec3(float(1 / std::cos(2 * std::numbers::pi / around)), 0, 0.3f));
+    Scene s = testing::one_stroke_object(cylinder(around, 16),
+                                         glm::vec3(float(1 / std::cos(2 * std::numbers::pi / around)), 0, 0.3f));
     s.camera.target = glm::vec3(0, 0, 0.3f);
     s.camera.up = glm::vec3(0, 0, 1);
     s.camera.fov_deg = 150;
@@ -142,7 +145,7 @@ TEST_F(SilhouetteSegments, SignMismatchesAtGZeroStayWithinTheDerivedBound) {
 TEST_F(SilhouetteSegments, DegenerateMeshesStayFiniteAndAgree) {
   Mesh m = cylinder(24, 4);
   m.positions.emplace_back(5.0f, 5.0f, 5.0f);  // used by no face
-  m.triangles.push_back({0, 0, 1});             // repeated corner
+  m.triangles.push_back({0, 0, 1});            // repeated corner
   m.positions.emplace_back(2.0f, 0.0f, 0.0f);
   m.positions.emplace_back(3.0f, 0.0f, 0.0f);
   m.triangles.push_back({uint32_t(m.positions.size() - 2), uint32_t(m.positions.size() - 1), 0});  // collinear
