@@ -66,8 +66,10 @@ struct BufferError {
 struct BenchResult {
   std::string scene, backend;
   int faces = 0, width = 0, height = 0;
-  double strokes = 0;   // the strokes a frame draws (Frame::counts "strokes"; of a path, its first frame)
-  double frame_ms = 0;  // median
+  double strokes = 0;         // the strokes a frame draws (Frame::counts "strokes"; of a path, its first frame)
+  double frame_ms = 0;        // median
+  double host_ms = 0;         // GPU: median CPU time of the GL thread per frame (Frame::host_ms)
+  size_t readback_bytes = 0;  // GPU: the most a timed frame read back
   std::map<std::string, double> stages;         // mean ms per pass of a frame
   std::map<std::string, double> preprocessing;  // once per scene, not part of a frame
   std::map<std::string, BufferError> errors;    // --against
@@ -188,13 +190,16 @@ BenchResult bench_gpu(const BenchOptions& o, const Scene& scene, int frames, Out
   for (const auto& p : first.ran)
     if (is_preprocessing(p.name)) r.preprocessing[p.name] = p.ms;
   r.strokes = first.counts["strokes"];
-  std::vector<double> ms;
+  std::vector<double> ms, host;
   for (int i = 0; i < frames; ++i) {
     Frame f;
     ms.push_back(renderer.render_frame(f));
+    host.push_back(f.host_ms);
+    r.readback_bytes = std::max(r.readback_bytes, f.readback_bytes);
     add_pass_times(f, frames, r);
   }
   r.frame_ms = median(ms);
+  r.host_ms = median(host);
   if (keeps_buffers(o)) {
     FrameOptions fo;
     fo.keep_buffers = true;
@@ -265,6 +270,9 @@ void print_text(const std::vector<BenchResult>& results) {
   for (const auto& r : results) {
     std::printf("%s [%s]: %.2f ms/frame = %.1f fps\n", r.scene.c_str(), r.backend.c_str(), r.frame_ms,
                 1000 / r.frame_ms);
+    if (r.backend == "gpu" && !r.path_frames)
+      std::printf("  host %.2f ms (CPU time of the GL thread), read back %zu bytes a frame\n", r.host_ms,
+                  r.readback_bytes);
     if (r.path_frames)
       std::printf(
           "  camera path: %d frames in %.1f ms, slowest %.2f ms; making a frame's renderer %.2f ms (not in "
@@ -299,6 +307,7 @@ nlohmann::json result_json(const BenchResult& r) {
   nlohmann::json j{{"scene", r.scene},       {"backend", r.backend},        {"faces", r.faces},
                    {"strokes", r.strokes},   {"size", {r.width, r.height}}, {"fps", 1000 / r.frame_ms},
                    {"frame_ms", r.frame_ms}, {"stages", r.stages},          {"preprocessing", r.preprocessing}};
+  if (r.backend == "gpu" && !r.path_frames) j["host_ms"] = r.host_ms, j["readback_bytes"] = r.readback_bytes;
   if (!r.limits.empty()) {
     j["limits"] = r.limits;
     for (const auto& [name, ms] : r.stages) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <map>
 #include <string>
 #include <vector>
@@ -25,6 +26,11 @@ struct Frame {
   // and the hatching groups' scale and level (common/strokes/stroke.hpp stroke_counts); empty
   // without strokes.
   std::map<std::string, double> counts;
+  // A GPU frame (Renderer::render_frame): the CPU time of the thread that drives GL while
+  // the frame ran (the driver's work in that thread included, llvmpipe's raster and compute
+  // threads not), and the bytes it read back from GPU memory.
+  double host_ms = 0;
+  size_t readback_bytes = 0;
 };
 
 struct FrameOptions {
@@ -46,6 +52,21 @@ class Stopwatch {
 
  private:
   std::chrono::steady_clock::time_point start_;
+};
+
+// CPU time of the calling thread since construction (not time spent waiting).
+class ThreadClock {
+ public:
+  ThreadClock() : start_(now()) {}
+  double ms() const { return now() - start_; }
+
+ private:
+  static double now() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
+  }
+  double start_;
 };
 
 // The G-buffer channels as named images (ids as floats), for dumps and comparisons.

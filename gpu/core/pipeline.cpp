@@ -66,8 +66,12 @@ Renderer::~Renderer() = default;
 
 double Renderer::render_frame(Frame& timing) {
   Stopwatch watch;
+  ThreadClock host;
+  size_t read_before = bytes_read_back();
   state_->run_frame();
   double ms = watch.ms();
+  timing.host_ms = host.ms();
+  timing.readback_bytes = bytes_read_back() - read_before;
   timing.ran = state_->timer.results();
   return ms;
 }

@@ -28,8 +28,9 @@ class Renderer {
   // its data (once, possibly by an earlier renderer) and the GPU times per pass, plus
   // "readback" (CPU wall time of downloading the image).
   Frame render(const FrameOptions& options = {});
-  // Renders one frame without reading anything back; returns wall-clock ms to glFinish
-  // and fills `timing.ran` with the GPU time of each pass.
+  // Renders one frame without reading the image back; returns wall-clock ms to glFinish
+  // and fills `timing.ran` with the GPU time of each pass, `host_ms` and `readback_bytes`
+  // (what its passes read back).
   double render_frame(Frame& timing);
   // What a frame writes of the G-buffer `stage` ("gbuffer", "sketchy_gbuffer"): what its
   // passes sample.

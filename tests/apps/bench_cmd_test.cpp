@@ -102,6 +102,22 @@ TEST_F(BenchCmd, LimitsTimeEveryProbeAndReadEachPassAgainstItsOwn) {
   EXPECT_TRUE(j["results"][1].at("probe_multiples").contains("visibility"));
 }
 
+// Per GPU frame: the CPU time of the GL thread, at most the frame's wall time, and the bytes
+// read back: none where no pass reads anything (the pencil frame).
+TEST_F(BenchCmd, GpuFramesReportHostTimeAndReadback) {
+  std::string strokes = std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/torus_strokes.json";
+  CliRun r = run("bench builtin:pencil " + strokes + " --json --size 64x48 --frames 3 --backend gpu");
+  ASSERT_EQ(r.code, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j.at("results").size(), 2u);
+  for (const auto& result : j["results"]) {
+    EXPECT_GT(result.at("host_ms").get<double>(), 0);
+    EXPECT_LE(result.at("host_ms").get<double>(), result.at("frame_ms").get<double>());
+    EXPECT_GE(result.at("readback_bytes").get<double>(), 0);
+  }
+  EXPECT_EQ(j["results"][0].at("readback_bytes").get<double>(), 0) << "the pencil frame reads nothing back";
+}
+
 TEST_F(BenchCmd, PaperRefusesAScene) {
   CliRun r = run("bench --paper builtin:torus");
   EXPECT_EQ(r.code, 2);
