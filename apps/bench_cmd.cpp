@@ -66,11 +66,12 @@ struct BufferError {
 struct BenchResult {
   std::string scene, backend;
   int faces = 0, width = 0, height = 0;
-  double strokes = 0;         // the strokes a frame draws (Frame::counts "strokes"; of a path, its first frame)
-  double frame_ms = 0;        // median
-  double host_ms = 0;         // GPU: median CPU time of the GL thread per frame (Frame::host_ms)
-  size_t readback_bytes = 0;  // GPU: the most a timed frame read back
-  std::map<std::string, double> stages;         // mean ms per pass of a frame
+  double strokes = 0;  // the strokes a frame draws (Frame::counts "strokes"; of a path, its first frame)
+  std::map<std::string, double> counts;  // what its stroke stages made (Frame::counts; of a path, its first frame)
+  double frame_ms = 0;                   // median
+  double host_ms = 0;                    // GPU: median CPU time of the GL thread per frame (Frame::host_ms)
+  size_t readback_bytes = 0;             // GPU: the most a timed frame read back
+  std::map<std::string, double> stages;  // mean ms per pass of a frame
   std::map<std::string, double> preprocessing;  // once per scene, not part of a frame
   std::map<std::string, BufferError> errors;    // --against
   std::vector<std::string> missing;             // --against: buffers with no saved counterpart
@@ -88,6 +89,12 @@ void add_pass_times(const Frame& f, int frames, BenchResult& r) {
     else
       r.stages[p.name] += p.ms / frames;
   }
+}
+
+void set_counts(BenchResult& r, const Frame& f) {
+  r.counts = f.counts;
+  auto strokes = f.counts.find("strokes");
+  r.strokes = strokes == f.counts.end() ? 0 : strokes->second;
 }
 
 BenchResult new_result(const Scene& scene, const std::string& backend) {
@@ -169,7 +176,7 @@ BenchResult bench_reference(const BenchOptions& o, const Scene& scene, int frame
     Stopwatch w;
     Frame f = reference::render(scene);
     double total = w.ms();
-    r.strokes = f.counts["strokes"];
+    set_counts(r, f);
     for (const auto& p : f.ran) total -= is_preprocessing(p.name) ? p.ms : 0.0;  // a frame excludes preprocessing
     ms.push_back(total);
     add_pass_times(f, frames, r);
@@ -189,7 +196,7 @@ BenchResult bench_gpu(const BenchOptions& o, const Scene& scene, int frames, Out
   Frame first = renderer.render();  // warm-up: shader compilation, first-use allocations
   for (const auto& p : first.ran)
     if (is_preprocessing(p.name)) r.preprocessing[p.name] = p.ms;
-  r.strokes = first.counts["strokes"];
+  set_counts(r, first);
   std::vector<double> ms, host;
   for (int i = 0; i < frames; ++i) {
     Frame f;
@@ -225,7 +232,7 @@ BenchResult bench_path(const BenchOptions& o, const Scene& scene, const std::str
   Frame first = path.render(0);
   for (const auto& p : first.ran)
     if (is_preprocessing(p.name)) r.preprocessing[p.name] = p.ms;
-  r.strokes = first.counts["strokes"];
+  set_counts(r, first);
   std::vector<double> ms, setup;
   r.path_frames = path.count();
   for (int i = 0; i < path.count(); ++i) {
@@ -273,6 +280,11 @@ void print_text(const std::vector<BenchResult>& results) {
     if (r.backend == "gpu" && !r.path_frames)
       std::printf("  host %.2f ms (CPU time of the GL thread), read back %zu bytes a frame\n", r.host_ms,
                   r.readback_bytes);
+    std::string counts;
+    for (const char* name : {"segments", "chains", "paths", "samples", "strokes"})
+      if (auto it = r.counts.find(name); it != r.counts.end())
+        counts += std::string(counts.empty() ? "" : ", ") + name + " " + std::to_string(int64_t(it->second));
+    if (!counts.empty()) std::printf("  counts: %s\n", counts.c_str());
     if (r.path_frames)
       std::printf(
           "  camera path: %d frames in %.1f ms, slowest %.2f ms; making a frame's renderer %.2f ms (not in "
@@ -308,6 +320,7 @@ nlohmann::json result_json(const BenchResult& r) {
                    {"strokes", r.strokes},   {"size", {r.width, r.height}}, {"fps", 1000 / r.frame_ms},
                    {"frame_ms", r.frame_ms}, {"stages", r.stages},          {"preprocessing", r.preprocessing}};
   if (r.backend == "gpu" && !r.path_frames) j["host_ms"] = r.host_ms, j["readback_bytes"] = r.readback_bytes;
+  if (!r.counts.empty()) j["counts"] = r.counts;
   if (!r.limits.empty()) {
     j["limits"] = r.limits;
     for (const auto& [name, ms] : r.stages) {

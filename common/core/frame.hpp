@@ -22,9 +22,10 @@ struct Frame {
   Image color;                           // RGB, row 0 = bottom
   std::vector<PassTime> ran;             // every pass that ran, in order
   std::map<std::string, Image> buffers;  // intermediate buffers when asked for
-  // What the frame drew, by name: the visible strokes per line kind ("strokes.crease", ...)
-  // and the hatching groups' scale and level (common/strokes/stroke.hpp stroke_counts); empty
-  // without strokes.
+  // What the frame drew, by name: the visible strokes per line kind ("strokes.crease", ...),
+  // the paths and samples, the hatching groups' scale and level (common/strokes/stroke.hpp
+  // stroke_counts), the silhouette segments and chains (common/strokes/silhouette_chains.hpp
+  // silhouette_counts); empty without strokes.
   std::map<std::string, double> counts;
   // A GPU frame (Renderer::render_frame): the CPU time of the thread that drives GL while
   // the frame ran (the driver's work in that thread included, llvmpipe's raster and compute

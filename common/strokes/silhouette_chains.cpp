@@ -1,5 +1,6 @@
 #include "common/strokes/silhouette_chains.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -20,6 +21,18 @@ std::vector<glm::uvec4> slot_links(const Scene& scene, const LineMeshes& meshes)
           if (auto [face, slot] = lines->across(f, k); face >= 0)
             links[first[o] + f][k] = (first[o] + uint32_t(face)) * 4 + uint32_t(slot);
   return links;
+}
+
+std::map<std::string, double> silhouette_counts(const Image* facing, const Image* chains) {
+  std::map<std::string, double> out;
+  if (facing)
+    out["segments"] = double(std::count_if(facing->data.begin(), facing->data.end(), [](float v) { return v != 0; }));
+  if (chains) {
+    double starts = 0;
+    for (size_t i = 0; i < chains->pixels(); ++i) starts += chains->data[i * 4] != 0 && chains->data[i * 4 + 1] == 0;
+    out["chains"] = starts;
+  }
+  return out;
 }
 
 }  // namespace plumbago

@@ -21,6 +21,8 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -38,6 +40,10 @@ inline constexpr Buffer kChains{"silhouette_chains.chains"};
 // scene of 2^24 faces or more.
 constexpr uint32_t kNoLink = 0xffffffffu;
 std::vector<glm::uvec4> slot_links(const Scene& scene, const LineMeshes& meshes);
+
+// What the tables hold, for Frame::counts: "segments" (records with a segment) and
+// "chains" (records of rank 0); none of a table not given (its stage did not run).
+std::map<std::string, double> silhouette_counts(const Image* facing, const Image* chains);
 
 struct SilhouetteChainsStage {
   using Params = TypeList<>;

@@ -71,7 +71,8 @@ std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visib
                                            const StrokeStyles& styles, uint32_t seed);
 
 // The strokes a frame draws: its visible runs per line kind, keyed "strokes.<kind>", and
-// their sum, "strokes" (what Kalnins et al.'s Table 1 counts); per hatching group N,
+// their sum, "strokes" (what Kalnins et al.'s Table 1 counts); the window's "paths" and the
+// visibility "samples" tested (bisection included); per hatching group N,
 // "hatching.groupN.sigma" and "hatching.groupN.level" (from + progress (to - from),
 // Kalnins et al. 2002, §6); empty without lines or visible runs (a frame without strokes).
 std::map<std::string, double> stroke_counts(const WindowLines* lines, const Visibility* v);

@@ -1,11 +1,13 @@
 #include "gpu/core/pipeline.hpp"
 
+#include <optional>
 #include <stdexcept>
 
 #include "common/core/passes.hpp"
 #include "common/core/preprocess.hpp"
 #include "common/sketchy/sketchy.hpp"
 #include "common/strokes/id_image.hpp"
+#include "common/strokes/silhouette_chains.hpp"
 #include "common/strokes/stroke.hpp"
 #include "common/strokes/visibility.hpp"
 #include "gpu/core/stage.hpp"
@@ -28,6 +30,12 @@ struct Renderer::State {
         frame(scene, *pre, frame_stages(all)),
         plan(plan_passes(frame.stages, frame.config())) {
     for (const GpuPassDef* def : plan) passes.push_back(make_checked(*def, frame));
+  }
+
+  // A table the frame wrote, read back; none where its stage did not run.
+  std::optional<Image> download(plumbago::Buffer table, int channels) const {
+    const Texture* t = frame.get(maybe(table));
+    return t ? std::optional(download_texture(*t, channels)) : std::nullopt;
   }
 
   void run_frame() {
@@ -101,6 +109,8 @@ Frame Renderer::render(const FrameOptions& options) {
   frame.ran.push_back({"readback", readback.ms()});
   if (options.keep_buffers) frame.buffers = state_->dump();
   frame.counts = stroke_counts(state_->frame.data.find(kWindowLines), state_->frame.data.find(kVisibleRuns));
+  std::optional<Image> facing = state_->download(kSegmentFacing, 1), chains = state_->download(kChains, 4);
+  frame.counts.merge(silhouette_counts(facing ? &*facing : nullptr, chains ? &*chains : nullptr));
   Context::get().check_errors("reading back the frame");
   return frame;
 }

@@ -4,6 +4,7 @@
 #include "common/core/preprocess.hpp"
 #include "common/sketchy/sketchy.hpp"
 #include "common/strokes/id_image.hpp"
+#include "common/strokes/silhouette_chains.hpp"
 #include "common/strokes/stroke.hpp"
 #include "common/strokes/visibility.hpp"
 
@@ -29,6 +30,7 @@ Frame render(const Scene& scene, const FrameOptions& options) {
   frame.color = color.empty() ? Image(scene.width, scene.height, 3, 1.0f) : f.images.at(color);
   if (options.keep_buffers) frame.buffers = dump(f);
   frame.counts = stroke_counts(f.get(maybe(kWindowLines)), f.get(maybe(kVisibleRuns)));
+  frame.counts.merge(silhouette_counts(f.get(maybe(kSegmentFacing)), f.get(maybe(kChains))));
   return frame;
 }
 

@@ -102,8 +102,9 @@ TEST_F(BenchCmd, LimitsTimeEveryProbeAndReadEachPassAgainstItsOwn) {
   EXPECT_TRUE(j["results"][1].at("probe_multiples").contains("visibility"));
 }
 
-// Per GPU frame: the CPU time of the GL thread, at most the frame's wall time, and the bytes
-// read back: none where no pass reads anything (the pencil frame).
+// Per GPU frame: the CPU time of the GL thread, at most the frame's wall time, the bytes
+// read back (none where no pass reads anything: the pencil frame), and what the stroke
+// stages made.
 TEST_F(BenchCmd, GpuFramesReportHostTimeAndReadback) {
   std::string strokes = std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/torus_strokes.json";
   CliRun r = run("bench builtin:pencil " + strokes + " --json --size 64x48 --frames 3 --backend gpu");
@@ -116,6 +117,10 @@ TEST_F(BenchCmd, GpuFramesReportHostTimeAndReadback) {
     EXPECT_GE(result.at("readback_bytes").get<double>(), 0);
   }
   EXPECT_EQ(j["results"][0].at("readback_bytes").get<double>(), 0) << "the pencil frame reads nothing back";
+  const auto& counts = j["results"][1].at("counts");
+  for (const char* name : {"segments", "chains", "paths", "samples", "strokes"})
+    EXPECT_GT(counts.at(name).get<double>(), 0) << name;
+  EXPECT_LE(counts.at("chains").get<double>(), counts.at("segments").get<double>());
 }
 
 TEST_F(BenchCmd, PaperRefusesAScene) {
