@@ -15,9 +15,18 @@
 // each loop's lowest record, where the loop is cut, and a second ranks every list both ways
 // (gpu/strokes/silhouette_chains.cpp). Fed the same segments, both give the same table.
 //
-// Output: per face record (common/strokes/silhouette_segments.hpp), (start + 1, rank,
-// length, closed), 0 where no segment. Record numbers are exact in a float below 2^24: a
-// scene of more faces is refused.
+// Arc length (Kalnins et al. 2002, §4.5-4.6: strokes are parameterized and sampled by it):
+// the window length of each segment (entry to exit) summed along its chain from the start,
+// on the GPU in the same pointer-jumping rounds (a prefix sum over a linked list).
+//
+// Output, per face record (common/strokes/silhouette_segments.hpp), 0 where no segment:
+//   - chains: (start + 1, rank, length in segments, closed);
+//   - arcs: (s, L), the window arc length at its entry and its chain's whole length (px).
+// Record numbers are exact in a float below 2^24: a scene of more faces is refused.
+//
+// The arcs' parity: float sums in a tree of depth d (the rounds) against the reference's
+// sequential double sum: at most (d + 3) u L (u = 2^-24, the lengths' own rounding
+// included), doubled; a derived per-record bound where that passes 0.01 px.
 #pragma once
 
 #include <cstdint>
@@ -33,6 +42,8 @@
 namespace plumbago {
 
 inline constexpr Buffer kChains{"silhouette_chains.chains"};
+inline constexpr Buffer kChainArcs{"silhouette_chains.arcs"};
+constexpr double kArcPx = 1e-2;  // the arcs' tolerance in px, beyond which the derived bound must explain
 
 // Per record, its slots' links across smooth edges: for slot k, the record across it times 4
 // plus its slot there, or kNoLink (a crease, a border, no face there, an object not drawn with
@@ -50,12 +61,23 @@ struct SilhouetteChainsStage {
   static StageDesc describe() {
     return {.name = "silhouette_chains",
             .kind = StageKind::Frame,
-            .doc = "silhouette segments chained face to face into loops and open paths (Kalnins et al. 2002, §4.5)",
-            .inputs = {{.handle = kLineMeshes}, {.handle = kSegmentFacing}, {.handle = kSegmentSlots}},
+            .doc =
+                "silhouette segments chained face to face into loops and open paths, with their arc length "
+                "(Kalnins et al. 2002, §4.5)",
+            .inputs = {{.handle = kLineMeshes},
+                       {.handle = kSegmentFacing},
+                       {.handle = kSegmentSlots},
+                       {.handle = kSegmentEnds}},
             .outputs = {{.handle = kChains,
                          .channels = 4,
                          .doc = "(start + 1, rank, length, closed) per face, 0 where no segment",
-                         .tolerance_why = "integers from the same links: exact"}},
+                         .tolerance_why = "integers from the same links: exact"},
+                        {.handle = kChainArcs,
+                         .channels = 2,
+                         .doc = "(s, L): window arc length at the segment's entry and its chain's length, px",
+                         .tolerance = kArcPx,
+                         .tolerance_why = "float tree sums against a double sum: beyond 0.01 px, a derived "
+                                          "per-record bound of 2 (d + 3) u L"}},
             .effects = {"strokes"}};
   }
 };

@@ -1,9 +1,9 @@
 // Silhouette chains on the GPU (Kalnins et al. 2002, §4.5), the twin of
 // reference/strokes/silhouette_chains.cpp: the segments are linked and compacted, then ranked
-// by pointer jumping (Wyllie 1979), twice. Each round is an indirect dispatch over the
-// compacted segments whose size the GPU writes: bit_width(records) rounds are issued (enough
-// for a chain through every face), and those past 2^k >= the segments' count (more than any
-// chain needs) dispatch no work. The CPU never learns the count: nothing is read back.
+// by pointer jumping (Wyllie 1979), twice; the second also sums the window arc lengths. Each round is an indirect
+// dispatch over the compacted segments whose size the GPU writes: bit_width(records) rounds are issued (enough for a
+// chain through every face), and those past 2^k >= the segments' count (more than any chain needs) dispatch no work.
+// The CPU never learns the count: nothing is read back.
 #include "common/strokes/silhouette_chains.hpp"
 
 #include <algorithm>
@@ -38,16 +38,18 @@ class SilhouetteChainsPass : public GpuPass {
     count_ = make_buffer(nullptr, kRoundArgs + 32 * 4 * sizeof(uint32_t));
     jump_[0] = make_buffer(nullptr, n * sizeof(glm::uvec4));
     jump_[1] = make_buffer(nullptr, n * sizeof(glm::uvec4));
+    arc_[0] = make_buffer(nullptr, n * sizeof(glm::vec2));
+    arc_[1] = make_buffer(nullptr, n * sizeof(glm::vec2));
   }
 
   void run(GpuFrame& f) override {
-    const Texture& chains = target(f);
+    const Texture &chains = target(f, kChains), &arcs = target(f, kChainArcs);
     const float zero[4] = {0, 0, 0, 0};
-    glClearTexImage(chains.id(), 0, GL_RGBA, GL_FLOAT, zero);
+    for (const Texture* t : {&chains, &arcs}) glClearTexImage(t->id(), 0, GL_RGBA, GL_FLOAT, zero);
     const GLuint none = 0;
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, count_.id());
     glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);
-    bind(f, chains);
+    bind(f, chains, arcs);
     dispatch_in_chunks(link_, records_, "first_record");
     barrier();
     dispatch_in_chunks(args_, 1, "first_record");
@@ -60,26 +62,30 @@ class SilhouetteChainsPass : public GpuPass {
   }
 
  private:
-  const Texture& target(GpuFrame& f) {
-    if (const Texture* made = f.get(maybe(kChains))) return *made;
+  const Texture& target(GpuFrame& f, plumbago::Buffer table) {
+    if (const Texture* made = f.get(maybe(table))) return *made;
     auto [width, height] = table_size(records_);
-    f.put(kChains, make_texture(width, height, GL_RGBA32F));
-    return f.get(kChains);
+    f.put(table, make_texture(width, height, texture_format(find_output(table.name))));
+    return f.get(table);
   }
 
-  void bind(GpuFrame& f, const Texture& chains) {
+  void bind(GpuFrame& f, const Texture& chains, const Texture& arcs) {
     for (const Program* p : {&link_, &args_, &loops_, &cut_, &rank_, &write_}) {
-      bind_textures(*p, {{"facing", &f.get(kSegmentFacing)}, {"slots", &f.get(kSegmentSlots)}});
+      bind_textures(
+          *p, {{"facing", &f.get(kSegmentFacing)}, {"slots", &f.get(kSegmentSlots)}, {"ends", &f.get(kSegmentEnds)}});
       glProgramUniform1ui(p->id(), p->uniform("records"), records_);
       glProgramUniform1ui(p->id(), p->uniform("rounds"), GLuint(rounds_));
     }
     glBindImageTexture(0, chains.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, arcs.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, slot_links_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, links_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, members_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, count_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, jump_[0].id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, jump_[1].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, arc_[0].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, arc_[1].id());
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, count_.id());
   }
 
@@ -100,7 +106,7 @@ class SilhouetteChainsPass : public GpuPass {
   Program link_, args_, loops_, cut_, rank_, write_;
   uint32_t records_ = 0;
   int rounds_ = 0;
-  Buffer slot_links_, links_, members_, count_, jump_[2];
+  Buffer slot_links_, links_, members_, count_, jump_[2], arc_[2];
 };
 
 }  // namespace

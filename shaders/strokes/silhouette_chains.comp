@@ -21,7 +21,8 @@ layout(std430, binding = 3) buffer Count {
   uvec4 round_groups[32];
 };
 // Pointer jumping between two buffers, each step reading one and writing the other:
-// finding loops, (next, lowest record so far, -, -); ranking, (start, rank, end, distance to it).
+// finding loops, (next, lowest record so far, -, -); ranking, (start, rank, end, distance to it),
+// and the arc lengths below.
 layout(std430, binding = 4) buffer JumpA { uvec4 jump_a[]; };
 layout(std430, binding = 5) buffer JumpB { uvec4 jump_b[]; };
 uniform uint round_index;  // k, of this phase's rounds
@@ -49,14 +50,31 @@ void put(uint i, uvec4 v) {
   else
     jump_a[i] = v;
 }
+// Ranking's window arc lengths alongside, the same way: (before, after), the lengths of the
+// segments before it and after it in its list.
+layout(std430, binding = 6) buffer ArcA { vec2 arc_a[]; };
+layout(std430, binding = 7) buffer ArcB { vec2 arc_b[]; };
+vec2 arc_src(uint i) { return source() == 0u ? arc_a[i] : arc_b[i]; }
+void arc_put(uint i, vec2 v) {
+  if (source() == 0u)
+    arc_b[i] = v;
+  else
+    arc_a[i] = v;
+}
 
 uniform sampler2D facing;  // silhouette_segments.facing
 uniform sampler2D slots;   // silhouette_segments.slots (entry, exit)
+uniform sampler2D ends;    // silhouette_segments.ends
 layout(rgba32f, binding = 0) writeonly uniform image2D chains;
+layout(rg32f, binding = 1) writeonly uniform image2D arcs;
 uniform uint records, first_record;
 
 float facing_of(uint i) { return texelFetch(facing, table_texel(i), 0).r; }
 int slot_of(uint i, int end) { return int(texelFetch(slots, table_texel(i), 0)[end]); }
+float length_of(uint i) {
+  vec4 e = texelFetch(ends, table_texel(i), 0);
+  return distance(e.xy, e.zw);
+}
 
 // The segment across the slot record i leaves by (end 1) or enters by (end 0), when it goes
 // on through that edge the other way with the same facing.
@@ -102,15 +120,19 @@ void main() {
   bool first = l.y == kNoLink || (closed && i == lowest), last = l.x == kNoLink || (closed && l.x == lowest);
   links[i].z = closed ? 1u : 0u;
   put(i, uvec4(first ? i : l.y, first ? 0u : 1u, last ? i : l.x, last ? 0u : 1u));
+  arc_put(i, vec2(first ? 0.0 : length_of(l.y), last ? 0.0 : length_of(l.x)));
 #elif defined(STEP_RANK)  // both ways: start and rank, end and distance to it
   uint i = member();
   if (i == kNoLink) return;
   uvec4 here = src(i), back = src(here.x), ahead = src(here.z);
   put(i, uvec4(back.x, here.y + back.y, ahead.z, here.w + ahead.w));
+  arc_put(i, vec2(arc_src(i).x + arc_src(here.x).x, arc_src(i).y + arc_src(here.z).y));
 #elif defined(STEP_WRITE)
   uint i = member();
   if (i == kNoLink) return;
   uvec4 ranked = src(i);
   imageStore(chains, table_texel(i), vec4(ranked.x + 1u, ranked.y, ranked.y + ranked.w + 1u, links[i].z));
+  vec2 arc = arc_src(i);
+  imageStore(arcs, table_texel(i), vec4(arc.x, arc.x + length_of(i) + arc.y, 0.0, 0.0));
 #endif
 }
