@@ -1,5 +1,6 @@
 // plumbago effects: every effect a scene can ask for, its doc, and the stages it runs
 // (common/core/passes.hpp passes_for, with the default parameters).
+#include <algorithm>
 #include <cstdio>
 
 #include "apps/command.hpp"
@@ -9,10 +10,12 @@ namespace plumbago {
 namespace {
 
 void print_effects() {
+  int width = 0;  // the longest name's
+  for (const EffectDef& e : effect_table()) width = std::max(width, int(e.name.size()));
   for (const EffectDef& e : effect_table()) {
     std::string stages;
     for (const std::string& s : passes_for({e.name})) stages += (stages.empty() ? "" : " ") + s;
-    std::printf("%-12s %s\n%-12s runs: %s\n", e.name.c_str(), e.doc.c_str(), "", stages.c_str());
+    std::printf("%-*s %s\n%-*s runs: %s\n", width, e.name.c_str(), e.doc.c_str(), width, "", stages.c_str());
   }
 }
 

@@ -18,6 +18,9 @@
 // signs alone (oriented_slots below), so both backends orient alike wherever they agree on them.
 // A segment with an end nearer than the near plane is left out: the paths split there.
 //
+// They run where a scene asks for the effect `silhouette_tables` (compare and the tests add it):
+// the stroke stages do not read them yet.
+//
 // Parity is float against double. Where the reference's g at a corner of a face lies within
 // the float evaluation error of 0, the backends may disagree on its sign and so on the
 // segment: those faces are counted and excused. Elsewhere the ends may differ by the
@@ -82,7 +85,11 @@ struct SilhouetteSegmentsStage {
                          .channels = 2,
                          .doc = "(entry, exit): the slots it enters and leaves by, 0 where no segment",
                          .tolerance_why = "from the signs of g alone: exact where the facing's bound holds"}},
-            .effects = {"strokes"}};
+            .effects = {"silhouette_tables"},
+            .declared_effects = {{"silhouette_tables",
+                                  "the silhouettes of the stroke objects as tables, segments per face and their "
+                                  "chains with arc length, computed by each backend (Kalnins et al. 2002, §4.5); "
+                                  "on request: the stroke frame does not read them yet"}}};
   }
 };
 

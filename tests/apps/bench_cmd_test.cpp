@@ -106,8 +106,9 @@ TEST_F(BenchCmd, LimitsTimeEveryProbeAndReadEachPassAgainstItsOwn) {
 // read back (none where no pass reads anything: the pencil frame), and what the stroke
 // stages made.
 TEST_F(BenchCmd, GpuFramesReportHostTimeAndReadback) {
-  std::string strokes = std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/torus_strokes.json";
-  CliRun r = run("bench builtin:pencil " + strokes + " --json --size 64x48 --frames 3 --backend gpu");
+  std::ofstream(path("tables.json")) << R"({"objects": [{"mesh": {"procedural": "torus"}, "style": "strokes"}],
+      "effects": ["silhouette_tables"]})";
+  CliRun r = run("bench builtin:pencil " + path("tables.json") + " --json --size 64x48 --frames 3 --backend gpu");
   ASSERT_EQ(r.code, 0) << r.err;
   auto j = nlohmann::json::parse(r.out);
   ASSERT_EQ(j.at("results").size(), 2u);
