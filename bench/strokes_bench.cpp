@@ -2,7 +2,8 @@
 // 5K-face cup on a GeForce3): the feature lines alone (CPU, shared by both backends), and
 // whole frames of every object drawn with strokes (base coat, paper, ID image,
 // visibility, strokes) on each backend; the GPU frame also reports each pass's GL timer
-// (counters <pass>_gl_ms, the GPU side only). And the readback A/B: Kalnins et al. read
+// (counters <pass>_gl_ms, the GPU side only), host_ms and readback_bytes (common/core/frame.hpp),
+// alone and with the silhouette tables. And the readback A/B: Kalnins et al. read
 // the whole ID image back every frame; Plumbago reads back only the sample flags.
 #include <benchmark/benchmark.h>
 
@@ -44,19 +45,25 @@ void feature_lines_cpu(benchmark::State& state, const std::string& model) {
   count_lines(state, scene);
 }
 
-void strokes_frame_gpu(benchmark::State& state, const std::string& model) {
+// With `tables`, the frame also computes the silhouette tables (segments, chains, arcs).
+void strokes_frame_gpu(benchmark::State& state, const std::string& model, bool tables) {
   Scene scene;
   if (!load_strokes_scene(state, model, scene)) return;
+  if (tables) scene.effects.push_back("silhouette_tables");
   gpu::Renderer renderer(scene);
   renderer.render();  // warm-up
   std::map<std::string, double> pass_ms;
+  double host_ms = 0, readback_bytes = 0;
   for (auto _ : state) {
     Frame timing;
     state.SetIterationTime(renderer.render_frame(timing) * 1e-3);
     for (const PassTime& t : timing.ran) pass_ms[t.name] += t.ms;
+    host_ms += timing.host_ms, readback_bytes += double(timing.readback_bytes);
   }
   for (const auto& [pass, ms] : pass_ms)
     state.counters[pass + "_gl_ms"] = benchmark::Counter(ms, benchmark::Counter::kAvgIterations);
+  state.counters["host_ms"] = benchmark::Counter(host_ms, benchmark::Counter::kAvgIterations);
+  state.counters["readback_bytes"] = benchmark::Counter(readback_bytes, benchmark::Counter::kAvgIterations);
   state.SetLabel(gpu::Context::get().renderer());
   count_lines(state, scene);
 }
@@ -92,7 +99,10 @@ void strokes_frame_reference(benchmark::State& state, const std::string& model) 
 
 const bool registered = [] {
   register_per_model("BM_StrokeFeatureLines", feature_lines_cpu);
-  register_per_model("BM_StrokeFrameGpu", strokes_frame_gpu);
+  for (bool tables : {false, true})
+    register_per_model(
+        tables ? "BM_StrokeFrameGpuWithTables" : "BM_StrokeFrameGpu",
+        [tables](benchmark::State& s, const std::string& model) { strokes_frame_gpu(s, model, tables); });
   register_per_model("BM_StrokeFrameReference", strokes_frame_reference);
   for (bool whole : {true, false})
     benchmark::RegisterBenchmark(whole ? "BM_StrokeReadbackIdImage800" : "BM_StrokeReadbackFlags",

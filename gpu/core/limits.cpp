@@ -126,15 +126,32 @@ const char* probe_name(Probe probe) {
   return "readback";
 }
 
-std::vector<ProbeTime> measure_limits(const Scene& scene, int repeats) {
+double measure_probe(Probe probe, const Scene& scene, int repeats) {
   Texture source = make_texture(scene.width, scene.height, GL_R32F);
-  std::vector<ProbeTime> out = {{Probe::Fullscreen, fragment_ms(scene, source, false, repeats)},
-                                {Probe::Fetch3x3, fragment_ms(scene, source, true, repeats)},
-                                {Probe::Compute, compute_ms(scene, source, false, repeats)},
-                                {Probe::Compute3x3, compute_ms(scene, source, true, repeats)},
-                                {Probe::Raster, raster_ms(scene, repeats)},
-                                {Probe::Readback, readback_ms(scene, repeats)}};
-  Context::get().check_errors("the limit probes");
+  double ms = 0;
+  switch (probe) {
+    case Probe::Fullscreen:
+    case Probe::Fetch3x3:
+      ms = fragment_ms(scene, source, probe == Probe::Fetch3x3, repeats);
+      break;
+    case Probe::Compute:
+    case Probe::Compute3x3:
+      ms = compute_ms(scene, source, probe == Probe::Compute3x3, repeats);
+      break;
+    case Probe::Raster:
+      ms = raster_ms(scene, repeats);
+      break;
+    case Probe::Readback:
+      ms = readback_ms(scene, repeats);
+      break;
+  }
+  Context::get().check_errors(std::string("the ") + probe_name(probe) + " probe");
+  return ms;
+}
+
+std::vector<ProbeTime> measure_limits(const Scene& scene, int repeats) {
+  std::vector<ProbeTime> out;
+  for (Probe p : kProbes) out.push_back({p, measure_probe(p, scene, repeats)});
   return out;
 }
 

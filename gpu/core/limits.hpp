@@ -19,6 +19,8 @@ enum class Probe {
   Raster,    // the scene's triangles into one 32-bit target, depth-tested, a trivial shader
   Readback,  // one 8-bit RGBA target of the window's size read back to the CPU
 };
+inline constexpr Probe kProbes[] = {Probe::Fullscreen, Probe::Fetch3x3, Probe::Compute,
+                                    Probe::Compute3x3, Probe::Raster,   Probe::Readback};
 const char* probe_name(Probe probe);
 
 struct ProbeTime {
@@ -26,7 +28,9 @@ struct ProbeTime {
   double ms;  // the median of the repeats
 };
 
-// Every probe at the scene's window size, each `repeats` times. Needs the GL context.
+// One probe at the scene's window size: the median of `repeats` runs. Needs the GL context.
+double measure_probe(Probe probe, const Scene& scene, int repeats);
+// Every probe (kProbes), each `repeats` times.
 std::vector<ProbeTime> measure_limits(const Scene& scene, int repeats = 9);
 
 }  // namespace plumbago::gpu
