@@ -222,6 +222,13 @@ std::vector<const GpuPassDef*> plan_passes(const std::vector<std::string>& stage
   return out;
 }
 
+const Texture& table_target(GpuFrame& f, size_t records, plumbago::Buffer table) {
+  if (const Texture* made = f.get(maybe(table))) return *made;
+  auto [width, height] = table_size(records);
+  f.put(table, make_texture(width, height, texture_format(find_output(table.name))));
+  return f.get(table);
+}
+
 GLenum texture_format(const Output& o) {
   switch (o.texel) {
     case Texel::Unorm8:

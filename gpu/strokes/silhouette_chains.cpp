@@ -1,9 +1,10 @@
 // Silhouette chains on the GPU (Kalnins et al. 2002, §4.5), the twin of
 // reference/strokes/silhouette_chains.cpp: the segments are linked and compacted, then ranked
-// by pointer jumping (Wyllie 1979), twice; the second also sums the window arc lengths. Each round is an indirect
-// dispatch over the compacted segments whose size the GPU writes: bit_width(records) rounds are issued (enough for a
-// chain through every face), and those past 2^k >= the segments' count (more than any chain needs) dispatch no work.
-// The CPU never learns the count: nothing is read back.
+// by pointer jumping (Wyllie 1979), twice; the second also sums the window arc lengths.
+// Each round is an indirect dispatch over the compacted segments, whose size the GPU writes:
+// bit_width(records) rounds are issued (enough for a chain through every face), and those
+// past 2^k >= the segments' count (more than any chain needs) dispatch no work. The CPU
+// never learns the count: nothing is read back.
 #include "common/strokes/silhouette_chains.hpp"
 
 #include <algorithm>
@@ -43,7 +44,7 @@ class SilhouetteChainsPass : public GpuPass {
   }
 
   void run(GpuFrame& f) override {
-    const Texture &chains = target(f, kChains), &arcs = target(f, kChainArcs);
+    const Texture &chains = table_target(f, records_, kChains), &arcs = table_target(f, records_, kChainArcs);
     const float zero[4] = {0, 0, 0, 0};
     for (const Texture* t : {&chains, &arcs}) glClearTexImage(t->id(), 0, GL_RGBA, GL_FLOAT, zero);
     const GLuint none = 0;
@@ -62,13 +63,6 @@ class SilhouetteChainsPass : public GpuPass {
   }
 
  private:
-  const Texture& target(GpuFrame& f, plumbago::Buffer table) {
-    if (const Texture* made = f.get(maybe(table))) return *made;
-    auto [width, height] = table_size(records_);
-    f.put(table, make_texture(width, height, texture_format(find_output(table.name))));
-    return f.get(table);
-  }
-
   void bind(GpuFrame& f, const Texture& chains, const Texture& arcs) {
     for (const Program* p : {&link_, &args_, &loops_, &cut_, &rank_, &write_}) {
       bind_textures(

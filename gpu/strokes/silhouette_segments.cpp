@@ -48,7 +48,8 @@ class SilhouetteSegmentsPass : public GpuPass {
   }
 
   void run(GpuFrame& f) override {
-    const Texture* tables[] = {&target(f, kSegmentEnds), &target(f, kSegmentFacing), &target(f, kSegmentSlots)};
+    const Texture* tables[] = {&table_target(f, records_, kSegmentEnds), &table_target(f, records_, kSegmentFacing),
+                               &table_target(f, records_, kSegmentSlots)};
     const float zero[4] = {0, 0, 0, 0};
     glUseProgram(program_.id());
     for (GLuint unit = 0; unit < 3; ++unit) {
@@ -62,14 +63,6 @@ class SilhouetteSegmentsPass : public GpuPass {
   }
 
  private:
-  // The table, made once at its size (the frame keeps it across frames).
-  const Texture& target(GpuFrame& f, plumbago::Buffer buffer) {
-    if (const Texture* made = f.get(maybe(buffer))) return *made;
-    auto [width, height] = table_size(records_);
-    f.put(buffer, make_texture(width, height, texture_format(find_output(buffer.name))));
-    return f.get(buffer);
-  }
-
   void set_frame_uniforms(const GpuFrame& f) {
     GLuint p = program_.id();
     glProgramUniform1i(p, program_.uniform("normalized"), f.params<StrokesParams>().silhouette_normalized);
