@@ -29,6 +29,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "common/core/stage.hpp"
 #include "common/strokes/line_meshes.hpp"
@@ -37,11 +38,10 @@ namespace plumbago {
 
 inline constexpr Buffer kSegmentEnds{"silhouette_segments.ends"};
 inline constexpr Buffer kSegmentFacing{"silhouette_segments.facing"};
+inline constexpr Buffer kSegmentSlots{"silhouette_segments.slots"};
 
 // The ends' tolerance in px, beyond which the derived per-face bound must explain a difference.
 constexpr double kSegmentEndPx = 1e-2;
-
-inline constexpr Buffer kSegmentSlots{"silhouette_segments.slots"};
 
 // The slots a segment that crosses slots s0 < s1 enters and leaves by. The corner c between
 // them is the one whose g has the other sign; for a counter-clockwise face, the segment from
