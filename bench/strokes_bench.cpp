@@ -80,10 +80,8 @@ void readback(benchmark::State& state, bool whole_image) {
     Stopwatch w;
     if (whole_image)
       benchmark::DoNotOptimize(gpu::download_texture_u32(ids, 2));
-    else {
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, flags.id());  // as gpu/strokes/visibility.cpp reads the flags
-      glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(read.size() * sizeof(uint32_t)), read.data());
-    }
+    else
+      gpu::read_buffer(flags, read.data(), read.size() * sizeof(uint32_t));  // as gpu/strokes/visibility.cpp
     state.SetIterationTime(w.ms() * 1e-3);
   }
   ctx.check_errors("readback benchmark");

@@ -9,7 +9,7 @@
 namespace plumbago {
 
 std::vector<glm::uvec4> slot_links(const Scene& scene, const LineMeshes& meshes) {
-  std::vector<uint32_t> first = first_records(scene);
+  std::vector<uint32_t> first = first_faces(scene);
   if (first.back() >= (1u << 24))
     throw std::length_error("silhouette chains: " + std::to_string(first.back()) +
                             " faces; record numbers are exact in a float below 2^24");

@@ -7,7 +7,7 @@
 // (shaders/strokes/silhouette_segments.comp), from corners, normals and slot orientations
 // uploaded once per scene.
 //
-// Output: one record per face of the scene at its face key - 1 (common/strokes/strokes.hpp;
+// Output: one record per face of the scene at its face key - 1 (first_faces in common/strokes/strokes.hpp;
 // the faces of objects not drawn with strokes hold none), kTableRow records a row
 // (common/util/image.hpp):
 //   - ends: the window positions (x0, y0, x1, y1) of the crossings it enters and leaves by;
@@ -29,7 +29,6 @@
 #pragma once
 
 #include <cstdint>
-#include <vector>
 
 #include "common/core/stage.hpp"
 #include "common/strokes/line_meshes.hpp"
@@ -55,9 +54,6 @@ constexpr SegmentSlots oriented_slots(int s0, int s1, bool lone_corner_positive)
   int c = lone_corner(s0, s1), before = (c + 2) % 3;
   return lone_corner_positive ? SegmentSlots{c, before} : SegmentSlots{before, c};
 }
-
-// Where each scene object's records start (its first face key - 1), then their count.
-std::vector<uint32_t> first_records(const Scene& scene);
 
 struct SilhouetteSegmentsStage {
   using Params = TypeList<>;  // reads strokes.silhouette_normalized, which the ID image declares

@@ -246,6 +246,12 @@ std::shared_ptr<const LineMeshes> line_meshes(const Scene& scene, const StrokesP
   return out;
 }
 
+std::vector<uint32_t> first_faces(const Scene& scene) {
+  std::vector<uint32_t> first{0};
+  for (const SceneObject& o : scene.objects) first.push_back(first.back() + uint32_t(o.mesh->triangles.size()));
+  return first;
+}
+
 const FeatureLineMesh* line_mesh(const LineMeshes& meshes, size_t object) {
   const auto& mesh = meshes.lines.at(object);
   return mesh && !mesh->corner_normals().empty() ? &*mesh : nullptr;
@@ -257,10 +263,9 @@ WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects
   if (!prepared) made = line_meshes(scene, p, which), prepared = made.get();
   WindowLines out;
   out.width = scene.width, out.height = scene.height;
-  for (const SceneObject& o : scene.objects) {
-    out.first_face.push_back(out.face_count);
-    out.face_count += uint32_t(o.mesh->triangles.size());
-  }
+  out.first_face = first_faces(scene);
+  out.face_count = out.first_face.back();
+  out.first_face.pop_back();
   WindowProjection project(scene.camera, scene.width, scene.height);
   PathBuilder builder(scene, project, out);
   for (uint32_t i = 0; i < scene.objects.size(); ++i) {

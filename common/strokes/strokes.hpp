@@ -94,6 +94,10 @@ struct WindowLines {
   uint32_t face_key(uint32_t object, uint32_t face) const { return first_face[object] + face + 1; }
 };
 
+// Where each scene object's face keys start, less one (first_face above), then the scene's
+// face count.
+std::vector<uint32_t> first_faces(const Scene& scene);
+
 // Which objects' lines: those drawn with strokes, or every object but the sketchy ones
 // (the `lines` command: pencil objects too).
 enum class LineObjects { Strokes, AllButSketchy };

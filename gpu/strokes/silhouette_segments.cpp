@@ -40,7 +40,7 @@ class SilhouetteSegmentsPass : public GpuPass {
  public:
   explicit SilhouetteSegmentsPass(GpuFrame& f)
       : program_(Program::compute("strokes/silhouette_segments.comp", table_prelude())) {
-    std::vector<uint32_t> first = first_records(f.scene);
+    std::vector<uint32_t> first = first_faces(f.scene);
     records_ = first.back();
     for (uint32_t o = 0; o < f.scene.objects.size(); ++o)
       if (const FeatureLineMesh* lines = line_mesh(f.get(kLineMeshes), o))

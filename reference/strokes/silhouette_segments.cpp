@@ -19,9 +19,9 @@ namespace {
 struct ObjectView {
   const FeatureLineMesh& lines;
   const Mesh& mesh;
-  glm::dmat4 clip;   // object to clip space
-  glm::dvec4 depth;  // object point (x, 1) to linear view depth
-  glm::dvec3 eye;    // object space
+  WindowProjection camera;
+  glm::dmat4 model, clip;  // object to world, object to clip space
+  glm::dvec3 eye;          // object space
   std::vector<double> g;
   uint32_t first_record;
 };
@@ -31,23 +31,21 @@ struct WindowEnd {
   double depth;
 };
 
-WindowEnd project(const ObjectView& v, const Scene& scene, glm::dvec3 p) {
-  glm::dvec4 c = v.clip * glm::dvec4(p, 1.0);
-  return {{(c.x / c.w * 0.5 + 0.5) * scene.width, (c.y / c.w * 0.5 + 0.5) * scene.height},
-          glm::dot(v.depth, glm::dvec4(p, 1.0))};
+WindowEnd project(const ObjectView& v, glm::dvec3 p) {
+  glm::dvec3 w = v.camera(glm::dvec3(v.model * glm::dvec4(p, 1.0)));
+  return {{w.x, w.y}, w.z};
 }
 
 std::vector<ObjectView> object_views(const Scene& scene, const LineMeshes& meshes, bool normalized) {
   std::vector<ObjectView> views;
-  std::vector<uint32_t> first = first_records(scene);
+  std::vector<uint32_t> first = first_faces(scene);
   WindowProjection camera(scene.camera, scene.width, scene.height);
   for (size_t o = 0; o < scene.objects.size(); ++o) {
     const FeatureLineMesh* lines = line_mesh(meshes, o);
     if (!lines) continue;
-    glm::dmat4 m(scene.objects[o].transform), view = camera.view * m;
+    glm::dmat4 m(scene.objects[o].transform);
     glm::dvec3 eye = eye_in_object_space(m, glm::dvec3(scene.camera.eye));
-    views.push_back({*lines, *scene.objects[o].mesh, camera.clip * m,
-                     -glm::dvec4(view[0][2], view[1][2], view[2][2], view[3][2]), eye,
+    views.push_back({*lines, *scene.objects[o].mesh, camera, m, camera.clip * m, eye,
                      lines->silhouette_values(eye, normalized), first[o]});
   }
   return views;
@@ -116,7 +114,7 @@ CrossingError crossing_error(const ObjectView& v, const Scene& scene, uint32_t f
   glm::dvec3 a(v.mesh.positions[v.mesh.triangles[f][ka]]), b(v.mesh.positions[v.mesh.triangles[f][kb]]);
   glm::dvec3 p = a + (b - a) * (ga / (ga - gb));
   double object = dt * glm::length(b - a) + 3 * kU * (glm::length(a) + glm::length(b));
-  double along = dt * glm::distance(project(v, scene, a).window, project(v, scene, b).window);
+  double along = dt * glm::distance(project(v, a).window, project(v, b).window);
   return {object, along + projection_error_px(v, scene, p, object)};
 }
 
@@ -155,7 +153,7 @@ FaceErrors face_errors(const ObjectView& v, const Scene& scene, uint32_t f, bool
     CrossingError c = crossing_error(v, scene, f, s.slots[end], dg);
     e.end_px = std::max(e.end_px, c.px);
     mid_error = std::max(mid_error, c.object);
-    WindowEnd w = project(v, scene, s.ends[end].position);
+    WindowEnd w = project(v, s.ends[end].position);
     e.sign_ambiguous |= std::abs(w.depth - scene.camera.near) <= 16 * kU * (std::abs(w.depth) + 1);
   }
   e.sign_ambiguous |= facing_ambiguous(v, f, s, dg, mid_error);
@@ -166,7 +164,7 @@ FaceErrors face_errors(const ObjectView& v, const Scene& scene, uint32_t f, bool
 // declared tolerance; 0 elsewhere.
 Image segment_bound(const ReferenceFrame& f, bool ends) {
   bool normalized = f.params<StrokesParams>().silhouette_normalized;
-  Image bound = table_image(first_records(f.scene).back(), 1);
+  Image bound = table_image(first_faces(f.scene).back(), 1);
   for_each_face(object_views(f.scene, f.get(kLineMeshes), normalized),
                 [&](uint32_t i, const ObjectView& v, uint32_t face) {
                   FaceErrors e = face_errors(v, f.scene, face, normalized);
@@ -181,7 +179,7 @@ Image segment_bound(const ReferenceFrame& f, bool ends) {
 }  // namespace
 
 PLUMBAGO_REFERENCE_STAGE(silhouette_segments, [](ReferenceFrame& f) {
-  size_t records = first_records(f.scene).back();
+  size_t records = first_faces(f.scene).back();
   Image ends = table_image(records, 4), facing = table_image(records, 1), slots = table_image(records, 2);
   for_each_face(object_views(f.scene, f.get(kLineMeshes), f.params<StrokesParams>().silhouette_normalized),
                 [&](uint32_t i, const ObjectView& v, uint32_t face) {
@@ -191,7 +189,7 @@ PLUMBAGO_REFERENCE_STAGE(silhouette_segments, [](ReferenceFrame& f) {
                   SegmentSlots o = oriented_slots(s.slots[0], s.slots[1], v.g[3 * face + uint32_t(c)] > 0);
                   const SurfacePoint& entry = s.ends[o.entry == s.slots[0] ? 0 : 1];
                   const SurfacePoint& exit = s.ends[o.entry == s.slots[0] ? 1 : 0];
-                  WindowEnd w[2] = {project(v, f.scene, entry.position), project(v, f.scene, exit.position)};
+                  WindowEnd w[2] = {project(v, entry.position), project(v, exit.position)};
                   if (!in_front(w, f.scene)) return;
                   float* e = &ends.data[size_t(i) * 4];
                   e[0] = float(w[0].window.x), e[1] = float(w[0].window.y);
