@@ -85,6 +85,11 @@ void add_path(const WindowPath& path, const StrokesParams& p, IdTriangles& tri) 
   }
 }
 
+// Rule 2 and 3: creases and borders come first in `lines`, then the silhouettes.
+void add_paths(const WindowLines& lines, const StrokesParams& p, IdTriangles& tri) {
+  for (const WindowPath& path : lines.paths) add_path(path, p, tri);
+}
+
 }  // namespace
 
 Image key_channels(const ImageU32& keys) {
@@ -116,7 +121,13 @@ std::vector<IdVertex> id_triangles(const Scene& scene, const WindowLines& lines,
       }
       tri.face(corners, lines.face_key(o, f));
     }
-  for (const WindowPath& path : lines.paths) add_path(path, p, tri);  // creases and borders come first
+  add_paths(lines, p, tri);
+  return std::move(tri.out);
+}
+
+std::vector<IdVertex> id_line_triangles(const Scene& scene, const WindowLines& lines, const StrokesParams& p) {
+  IdTriangles tri(scene, p);
+  add_paths(lines, p, tri);
   return std::move(tri.out);
 }
 

@@ -43,8 +43,11 @@ struct IdVertex {
   uint32_t key;
 };
 
-// The triangles of the ID image in drawing order, three vertices each.
+// The triangles of the ID image in drawing order, three vertices each (the reference's).
 std::vector<IdVertex> id_triangles(const Scene& scene, const WindowLines& lines, const StrokesParams& p);
+// Only those of rules 2 and 3, the lines: the GPU draws the faces from the meshes it keeps
+// (shaders/strokes/id_faces.vert), clipped to the near plane by the rasterizer.
+std::vector<IdVertex> id_line_triangles(const Scene& scene, const WindowLines& lines, const StrokesParams& p);
 
 constexpr int kSubpixelBits = 8;
 

@@ -1,9 +1,12 @@
 // The ID reference image on the GPU (Kalnins et al. 2002, §4.6), the twin of reference/strokes/id_image.cpp: the
-// triangles of common/strokes/id_image.hpp, pulled from a buffer, depth-tested GL_GREATER on
-// z = near / d, written as the fragment's depth.
+// triangles of common/strokes/id_image.hpp, depth-tested GL_GREATER on z = near / d, written as
+// the fragment's depth. The faces are pulled from the meshes uploaded once
+// (shaders/strokes/id_faces.vert): no CPU loop over faces per frame. The lines' quads come
+// from the CPU (id_line_triangles).
 #include "common/strokes/id_image.hpp"
 
 #include "gpu/core/stage.hpp"
+#include "gpu/scene/mesh_buffers.hpp"
 #include "gpu/strokes/decal.hpp"
 
 namespace plumbago::gpu {
@@ -14,19 +17,22 @@ class IdImagePass : public GpuPass {
  public:
   explicit IdImagePass(GpuFrame& f)
       : program_("strokes/id_image.vert", "strokes/id_image.frag"),
+        faces_program_("strokes/id_faces.vert", "strokes/id_image.frag", "#define FACES\n"),
         fbo_(make_framebuffer()),
         empty_(make_vertex_array()),
         depth_(make_renderbuffer(f.scene.width, f.scene.height, GL_DEPTH_COMPONENT32F)) {
     // The decals' surface points, projected once for the renderer's frames (Kalnins et al.
     // 2002, §3).
     if (has_decals(f.scene)) decals_ = project_decals_through_gbuffer(f.scene);
+    first_key_ = first_faces(f.scene);
+    for (uint32_t o = 0; o < f.scene.objects.size(); ++o) meshes_.push_back(upload_mesh(f.scene, o));
   }
 
   void run(GpuFrame& f) override {
     auto p = f.params<StrokesParams>();
     f.put(kWindowLines, window_lines(f.scene, p, LineObjects::Strokes, &f.get(kLineMeshes),
                                      has_decals(f.scene) ? &decals_ : nullptr));
-    std::vector<IdVertex> triangles = id_triangles(f.scene, f.get(kWindowLines), p);
+    std::vector<IdVertex> lines = id_line_triangles(f.scene, f.get(kWindowLines), p);
     Texture& target = f.put(kIds);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target.id(), 0);
@@ -35,30 +41,52 @@ class IdImagePass : public GpuPass {
     const float far = 0;
     glClearBufferuiv(GL_COLOR, 0, none);
     glClearBufferfv(GL_DEPTH, 0, &far);
-    if (!triangles.empty()) draw(triangles, target);
+    glViewport(0, 0, target.width, target.height);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);
+    glBindVertexArray(empty_.id());
+    draw_faces(f);
+    if (!lines.empty()) draw_lines(lines, target);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_DEPTH_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
 
  private:
-  void draw(const std::vector<IdVertex>& triangles, const Texture& target) {
+  // Rule 1: every face of every object, in the order of their keys.
+  void draw_faces(const GpuFrame& f) {
+    glEnable(GL_CLIP_DISTANCE0);
+    glEnable(GL_DEPTH_CLAMP);
+    glUseProgram(faces_program_.id());
+    glProgramUniform1f(faces_program_.id(), faces_program_.uniform("near"), f.scene.camera.near);
+    for (const MeshBuffers& m : meshes_) {
+      if (m.faces == 0) continue;
+      object_uniforms(faces_program_, f.scene, m.object);
+      glProgramUniform1ui(faces_program_.id(), faces_program_.uniform("first_key"), first_key_[m.object] + 1);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, m.positions.id());
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, m.corners.id());
+      glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * m.faces));
+    }
+    glDisable(GL_DEPTH_CLAMP);
+    glDisable(GL_CLIP_DISTANCE0);
+  }
+
+  // Rules 2 and 3: the lines' quads, in window space.
+  void draw_lines(const std::vector<IdVertex>& triangles, const Texture& target) {
     Buffer vertices = make_buffer(triangles.data(), triangles.size() * sizeof(IdVertex));
-    glViewport(0, 0, target.width, target.height);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_GREATER);
     glUseProgram(program_.id());
     glProgramUniform2f(program_.id(), program_.uniform("window_size"), float(target.width), float(target.height));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, vertices.id());
-    glBindVertexArray(empty_.id());
     glDrawArrays(GL_TRIANGLES, 0, GLsizei(triangles.size()));
-    glDepthFunc(GL_LESS);
-    glDisable(GL_DEPTH_TEST);
   }
 
-  Program program_;
+  Program program_, faces_program_;
   Framebuffer fbo_;
   VertexArray empty_;
   Renderbuffer depth_;
   DecalSurface decals_;
+  std::vector<uint32_t> first_key_;  // per object, its first face key less one
+  std::vector<MeshBuffers> meshes_;
 };
 
 }  // namespace

@@ -8,31 +8,24 @@
 
 #include "common/strokes/strokes.hpp"
 #include "gpu/core/stage.hpp"
+#include "gpu/scene/mesh_buffers.hpp"
 
 namespace plumbago::gpu {
 
 namespace {
 
-// One stroke object's view-independent data in GPU memory.
+// A stroke object's mesh with its slot orientations and crease-aware corner normals.
 struct ObjectBuffers {
-  uint32_t object, faces, first_record;
-  Buffer positions, corners, normals;
+  MeshBuffers mesh;
+  uint32_t first_record;
+  Buffer normals;
 };
 
-ObjectBuffers upload(const FeatureLineMesh& lines, const Mesh& mesh, uint32_t object, uint32_t first_record) {
-  std::vector<glm::vec4> positions, normals;
-  std::vector<glm::uvec4> corners;
-  for (glm::vec3 p : mesh.positions) positions.emplace_back(p, 1.0f);
-  for (uint32_t f = 0; f < mesh.triangles.size(); ++f) {
-    const auto& t = mesh.triangles[f];
-    corners.emplace_back(t[0], t[1], t[2], lines.reversed_slots(f));
-  }
+ObjectBuffers upload(const Scene& scene, const FeatureLineMesh& lines, uint32_t object, uint32_t first_record) {
+  std::vector<glm::vec4> normals;
   for (glm::dvec3 n : lines.corner_normals()) normals.emplace_back(glm::vec3(n), 0.0f);
-  return {object,
-          uint32_t(mesh.triangles.size()),
-          first_record,
-          make_buffer(positions.data(), positions.size() * sizeof(glm::vec4)),
-          make_buffer(corners.data(), corners.size() * sizeof(glm::uvec4)),
+  if (normals.empty()) normals.emplace_back(0.0f);
+  return {upload_mesh(scene, object, [&](uint32_t f) { return lines.reversed_slots(f); }), first_record,
           make_buffer(normals.data(), normals.size() * sizeof(glm::vec4))};
 }
 
@@ -44,7 +37,7 @@ class SilhouetteSegmentsPass : public GpuPass {
     records_ = first.back();
     for (uint32_t o = 0; o < f.scene.objects.size(); ++o)
       if (const FeatureLineMesh* lines = line_mesh(f.get(kLineMeshes), o))
-        objects_.push_back(upload(*lines, *f.scene.objects[o].mesh, o, first[o]));
+        objects_.push_back(upload(f.scene, *lines, o, first[o]));
   }
 
   void run(GpuFrame& f) override {
@@ -56,9 +49,8 @@ class SilhouetteSegmentsPass : public GpuPass {
       glClearTexImage(tables[unit]->id(), 0, GL_RGBA, GL_FLOAT, zero);
       glBindImageTexture(unit, tables[unit]->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, tables[unit]->internal_format);
     }
-    WindowProjection camera(f.scene.camera, f.scene.width, f.scene.height);
     set_frame_uniforms(f);
-    for (const ObjectBuffers& o : objects_) dispatch(f, camera, o);
+    for (const ObjectBuffers& o : objects_) dispatch(f, o);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
   }
 
@@ -70,21 +62,18 @@ class SilhouetteSegmentsPass : public GpuPass {
     glProgramUniform2f(p, program_.uniform("window_size"), float(f.scene.width), float(f.scene.height));
   }
 
-  void dispatch(const GpuFrame& f, const WindowProjection& camera, const ObjectBuffers& o) {
-    glm::dmat4 m(f.scene.objects[o.object].transform), view = camera.view * m;
-    glm::mat4 clip(camera.clip * m);
-    glm::vec3 eye(eye_in_object_space(m, glm::dvec3(f.scene.camera.eye)));
-    glm::vec4 depth(-glm::dvec4(view[0][2], view[1][2], view[2][2], view[3][2]));
+  void dispatch(const GpuFrame& f, const ObjectBuffers& o) {
+    const uint32_t object = o.mesh.object;
+    glm::vec3 eye(eye_in_object_space(glm::dmat4(f.scene.objects[object].transform), glm::dvec3(f.scene.camera.eye)));
     GLuint p = program_.id();
-    glProgramUniformMatrix4fv(p, program_.uniform("clip"), 1, GL_FALSE, glm::value_ptr(clip));
-    glProgramUniform4fv(p, program_.uniform("depth_row"), 1, glm::value_ptr(depth));
+    object_uniforms(program_, f.scene, object);
     glProgramUniform3fv(p, program_.uniform("eye"), 1, glm::value_ptr(eye));
-    glProgramUniform1ui(p, program_.uniform("face_count"), o.faces);
+    glProgramUniform1ui(p, program_.uniform("face_count"), o.mesh.faces);
     glProgramUniform1ui(p, program_.uniform("first_record"), o.first_record);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, o.positions.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, o.corners.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, o.mesh.positions.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, o.mesh.corners.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, o.normals.id());
-    dispatch_in_chunks(program_, o.faces, "first_face");
+    dispatch_in_chunks(program_, o.mesh.faces, "first_face");
   }
 
   Program program_;

@@ -10,12 +10,12 @@ struct IdVertex {
 };
 layout(std430, binding = 0) readonly buffer Vertices { IdVertex vertices[]; };
 uniform vec2 window_size;
-noperspective out float z;
+noperspective out float z_line;
 flat out uint key;
 
 void main() {
   IdVertex v = vertices[gl_VertexID];
   gl_Position = vec4(v.window / window_size * 2.0 - 1.0, 0.0, 1.0);
-  z = v.z;
+  z_line = v.z;
   key = v.key;
 }
