@@ -18,8 +18,7 @@ MeshBuffers upload_mesh(const Scene& scene, uint32_t object, const std::function
   }
   if (positions.empty()) positions.emplace_back(0.0f);  // never an empty buffer
   if (corners.empty()) corners.emplace_back(0u);
-  return {object, uint32_t(mesh.triangles.size()),
-          make_buffer(positions.data(), positions.size() * sizeof(glm::vec4)),
+  return {object, uint32_t(mesh.triangles.size()), make_buffer(positions.data(), positions.size() * sizeof(glm::vec4)),
           make_buffer(corners.data(), corners.size() * sizeof(glm::uvec4))};
 }
 
