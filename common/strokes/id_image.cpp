@@ -54,6 +54,11 @@ class IdTriangles {
     for (int k : {0, 1, 2, 0, 2, 3}) out.push_back(q[k]);
   }
 
+  // The part [t0, t1] of segment a -> b whose quad `width` px wide can cover a pixel center.
+  bool covers(glm::dvec2 a, glm::dvec2 b, double width, double& t0, double& t1) const {
+    return clip_to_window(a, b, project_.width, project_.height, width / 2 + 1, t0, t1);
+  }
+
   std::vector<IdVertex> out;
 
  private:
@@ -71,17 +76,39 @@ uint32_t silhouette_value(const WindowPath& path, double s_mid) {
   return path.key << 8 | uint32_t(std::clamp(byte, 0.0, 255.0));
 }
 
+// A silhouette segment's quad is drawn in pieces at most this long, each with the byte of its
+// own midpoint: so a pixel's byte is within half a piece of the arc length there, however long
+// the mesh's segments (a coarse mesh's run across whole faces). Only the part that can cover
+// a pixel is drawn: a narrow field of view makes segments of millions of pixels.
+constexpr double kSilhouettePiecePx = 1.0;
+
+void add_silhouette_segment(const WindowPath& path, size_t k, double width, IdTriangles& tri) {
+  size_t next = (k + 1) % path.window.size();
+  glm::dvec2 a = path.window[k], b = path.window[next];
+  double t0, t1;
+  if (!tri.covers(a, b, width, t0, t1)) return;
+  double length = glm::distance(a, b), inv_a = 1 / path.depth[k], inv_b = 1 / path.depth[next];
+  int pieces = std::max(1, int(std::ceil((t1 - t0) * length / kSilhouettePiecePx)));
+  auto at = [&](int i) { return t0 + (t1 - t0) * i / pieces; };
+  auto depth_at = [&](double t) { return 1 / ((1 - t) * inv_a + t * inv_b); };  // 1/d is affine in the window
+  for (int i = 0; i < pieces; ++i) {
+    double u0 = at(i), u1 = at(i + 1), s_mid = path.arc_px[k] + length * (u0 + u1) / 2;
+    tri.segment(a + u0 * (b - a), a + u1 * (b - a), depth_at(u0), depth_at(u1), width, silhouette_value(path, s_mid));
+  }
+}
+
 void add_path(const WindowPath& path, const StrokesParams& p, IdTriangles& tri) {
   if (path.kind == LineKind::Decal || path.kind == LineKind::Hatching) return;  // tested against its faces' keys
   bool silhouette = path.kind == LineKind::Silhouette;
   if (silhouette && !path.front_facing) return;
-  double width = silhouette ? p.id_silhouette_px : p.id_crease_px;
   size_t n = path.window.size(), segments = path.closed ? n : n - 1;
   for (size_t k = 0; k < segments; ++k) {
+    if (silhouette) {
+      add_silhouette_segment(path, k, p.id_silhouette_px, tri);
+      continue;
+    }
     size_t next = (k + 1) % n;
-    double s_mid = path.arc_px[k] + glm::distance(path.window[k], path.window[next]) / 2;
-    uint32_t key = silhouette ? silhouette_value(path, s_mid) : path.key;
-    tri.segment(path.window[k], path.window[next], path.depth[k], path.depth[next], width, key);
+    tri.segment(path.window[k], path.window[next], path.depth[k], path.depth[next], p.id_crease_px, path.key);
   }
 }
 

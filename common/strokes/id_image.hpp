@@ -5,8 +5,11 @@
 //   2. crease and border paths as window-space quads `strokes.id_crease_px` wide, with the
 //      path key;
 //   3. front-facing silhouette paths as quads `strokes.id_silhouette_px` wide, each segment
-//      with key << 8 | floor(255 s / L), s the window arc length at its midpoint and L the
-//      path's (common/strokes/strokes.hpp numbers the keys).
+//      cut into equal pieces at most 1 px long, each piece with key << 8 | floor(255 s / L),
+//      s the window arc length at its midpoint and L the path's (common/strokes/strokes.hpp
+//      numbers the keys). (Whole segments would give a coarse mesh's pixels the byte of a
+//      midpoint many pixels away, and its samples would fail the test of
+//      common/strokes/visibility.hpp.)
 // A segment's quad runs along it with its width centered on it (no caps).
 //
 // Depth: each vertex carries z = near / d, d its linear view depth: 1/d, and so z, is

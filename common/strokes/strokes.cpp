@@ -236,6 +236,20 @@ glm::dvec3 WindowProjection::operator()(glm::dvec3 world) const {
   return {(c.x / c.w * 0.5 + 0.5) * width, (c.y / c.w * 0.5 + 0.5) * height, d};
 }
 
+bool clip_to_window(glm::dvec2 a, glm::dvec2 b, double width, double height, double margin, double& t0, double& t1) {
+  const glm::dvec2 d = b - a, lo(-margin), hi(width + margin, height + margin);
+  t0 = 0, t1 = 1;
+  for (int c = 0; c < 2; ++c) {
+    if (d[c] == 0) {
+      if (a[c] < lo[c] || a[c] > hi[c]) return false;
+      continue;
+    }
+    double u = (lo[c] - a[c]) / d[c], v = (hi[c] - a[c]) / d[c];
+    t0 = std::max(t0, std::min(u, v)), t1 = std::min(t1, std::max(u, v));
+  }
+  return t0 <= t1;
+}
+
 std::shared_ptr<const LineMeshes> line_meshes(const Scene& scene, const StrokesParams& p, LineObjects which) {
   auto out = std::make_shared<LineMeshes>();
   for (const SceneObject& o : scene.objects) {

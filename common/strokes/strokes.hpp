@@ -119,6 +119,10 @@ using DecalSurface = std::vector<ProjectedDecal>;  // common/strokes/decal.hpp
 WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which = LineObjects::Strokes,
                          const LineMeshes* prepared = nullptr, const DecalSurface* decals = nullptr);
 
+// The part [t0, t1] of window segment a -> b within `margin` px of the window (Liang-Barsky);
+// false when none is.
+bool clip_to_window(glm::dvec2 a, glm::dvec2 b, double width, double height, double margin, double& t0, double& t1);
+
 // The window position and linear depth of a world point (docs/conventions.md), in double.
 struct WindowProjection {
   WindowProjection(const Camera& camera, int width, int height);

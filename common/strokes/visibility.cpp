@@ -66,22 +66,6 @@ namespace {
 
 constexpr double kWindowMargin = 4;  // px around the window where samples are taken (the test reaches 2)
 
-// The part [t0, t1] of segment a -> b inside the window grown by the margin (Liang-Barsky);
-// false when none is.
-bool clip_to_window(glm::dvec2 a, glm::dvec2 b, double width, double height, double& t0, double& t1) {
-  const glm::dvec2 d = b - a, lo(-kWindowMargin), hi(width + kWindowMargin, height + kWindowMargin);
-  t0 = 0, t1 = 1;
-  for (int c = 0; c < 2; ++c) {
-    if (d[c] == 0) {
-      if (a[c] < lo[c] || a[c] > hi[c]) return false;
-      continue;
-    }
-    double u = (lo[c] - a[c]) / d[c], v = (hi[c] - a[c]) / d[c];
-    t0 = std::max(t0, std::min(u, v)), t1 = std::min(t1, std::max(u, v));
-  }
-  return t0 <= t1;
-}
-
 // Arc lengths of the first round of samples of a path: every `step` px (multiples of it)
 // where the path runs within kWindowMargin of the window, and one sample where it leaves or
 // enters that, which tests hidden: no run spans a stretch off the window, and such a
@@ -95,7 +79,7 @@ std::vector<double> sample_arcs(const WindowPath& p, double step, double width, 
   for (size_t k = 0; k < segments; ++k) {
     glm::dvec2 a = p.window[k], b = p.window[(k + 1) % n];
     double s0 = p.arc_px[k], length = glm::distance(a, b), t0, t1;
-    if (!clip_to_window(a, b, width, height, t0, t1)) continue;
+    if (!clip_to_window(a, b, width, height, kWindowMargin, t0, t1)) continue;
     if (t0 > 0) add(s0 + t0 * length);  // enters: on the margin's edge
     for (double i = std::ceil((s0 + t0 * length) / step); i * step <= s0 + t1 * length && i * step < p.length_px; ++i)
       add(i * step);
