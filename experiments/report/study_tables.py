@@ -104,6 +104,10 @@ STUDIES = {
         question="stroke visibility by the ID image, against Embree rays",
         columns=[col("scene", "scene"), col("swept", "swept"), col("value", "value"),
                  col("false visible", "false_visible", pct), col("false hidden", "false_hidden", pct),
+                 col("silhouettes: false visible", "silhouette_false_visible", pct),
+                 col("silhouettes: false hidden", "silhouette_false_hidden", pct),
+                 col("creases: false visible", "crease_false_visible", pct),
+                 col("creases: false hidden", "crease_false_hidden", pct),
                  col("ID image ms", "id_image_ms", ms), col("visibility ms", "visibility_ms", ms)],
         time=("visibility_ms", ms, "visibility ms"), error=("false_hidden", pct, "false hidden")),
     "shower_door": dict(

@@ -8,6 +8,7 @@ rays from the eye every 0.5 px of window arc length (`plumbago lines --truth`), 
 visible runs the strokes draw are compared with them:
   - false visible: the share of ray-hidden arc that a run covers;
   - false hidden: the share of ray-visible arc that no run covers;
+over every path, and apart for silhouettes and for creases with borders (their tests differ),
 against the sampling step (strokes.vis_step_px), the width of the ID image's line quads
 (strokes.id_silhouette_px and id_crease_px together) and the depth bias
 (strokes.id_depth_bias), one at a time around the defaults, with the time of the ID
@@ -57,10 +58,15 @@ def covered(runs, s, length, closed):
     return False
 
 
-def rates(lines):
-    """False-visible and false-hidden shares over every path's truth samples."""
+KINDS = {"silhouette": ("silhouette",), "crease": ("crease", "border")}  # the rates reported apart
+
+
+def rates(lines, kinds=None):
+    """False-visible and false-hidden shares over the truth samples of the paths of `kinds` (None: every path)."""
     fv = hidden = fh = visible = 0
     for p in lines["paths"]:
+        if kinds is not None and p["kind"] not in kinds:
+            continue
         length = p["arc_px"][-1] if p["arc_px"] else 0
         if p["closed"] and len(p["screen"]) > 1:
             a, b = p["screen"][-1], p["screen"][0]
@@ -75,6 +81,16 @@ def rates(lines):
                 hidden += 1
                 fv += drawn
     return fv / max(hidden, 1), fh / max(visible, 1), visible, hidden
+
+
+def kind_rates(lines):
+    """Per KINDS group: its false visible and false hidden, as row columns (nan: no such arc)."""
+    out = {}
+    for group, kinds in KINDS.items():
+        fv, fh, visible, hidden = rates(lines, kinds)
+        out[group + "_false_visible"] = fv if hidden else float("nan")
+        out[group + "_false_hidden"] = fh if visible else float("nan")
+    return out
 
 
 def measure(s, point):
@@ -100,7 +116,7 @@ def measure(s, point):
             fv, fh, visible, hidden = rates(lines)
             row = dict(scene=stem.replace("builtin_", ""), swept=name, value=value,
                        size=s["size"], paths=len(lines["paths"]), truth_visible=visible, truth_hidden=hidden,
-                       false_visible=fv, false_hidden=fh, id_image_ms=ms.get("id_image"),
+                       false_visible=fv, false_hidden=fh, **kind_rates(lines), id_image_ms=ms.get("id_image"),
                        visibility_ms=ms.get("visibility"))
             rows.append(row)
             pc.log("%-14s %-13s %-6g false visible %6.2f%%  false hidden %6.2f%%  id %6.1f ms  vis %6.1f ms" %
