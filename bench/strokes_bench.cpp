@@ -49,7 +49,7 @@ void feature_lines_cpu(benchmark::State& state, const std::string& model) {
 void strokes_frame_gpu(benchmark::State& state, const std::string& model, bool tables) {
   Scene scene;
   if (!load_strokes_scene(state, model, scene)) return;
-  if (tables) scene.effects.push_back("silhouette_tables");
+  if (tables) scene.effects.push_back("line_tables");
   gpu::Renderer renderer(scene);
   renderer.render();  // warm-up
   std::map<std::string, double> pass_ms;

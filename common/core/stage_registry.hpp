@@ -23,6 +23,7 @@
 #include "common/sketchy/sketchy_maps.hpp"
 #include "common/sketchy/sketchy_noise.hpp"
 #include "common/strokes/basecoat.hpp"
+#include "common/strokes/crease_points.hpp"
 #include "common/strokes/id_image.hpp"
 #include "common/strokes/line_meshes.hpp"
 #include "common/strokes/silhouette_chains.hpp"
@@ -62,6 +63,7 @@ using AllStages = TypeList<
     StrokePaperStage,
     SilhouetteSegmentsStage,
     SilhouetteChainsStage,
+    CreasePointsStage,
     IdImageStage,
     VisibilityStage,
     StrokeStage>;

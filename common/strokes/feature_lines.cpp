@@ -475,6 +475,11 @@ FeatureLines FeatureLineMesh::lines(const glm::dmat4& object_to_world, glm::dvec
   return out;
 }
 
+const FeatureLines& FeatureLineMesh::creases_and_borders() const {
+  static const FeatureLines none;
+  return impl_ ? impl_->fixed : none;
+}
+
 const std::vector<glm::dvec3>& FeatureLineMesh::corner_normals() const {
   static const std::vector<glm::dvec3> none;
   return impl_ ? impl_->normals : none;

@@ -103,7 +103,9 @@ class FeatureLineMesh {
   FeatureLines lines(const glm::dmat4& object_to_world, glm::dvec3 eye_world, const FeatureLineOptions& options) const;
 
   // The pieces `lines` is made of, for a backend that computes them itself (a mesh with
-  // faces only). The crease-aware normal of each face corner (3 f + k); zero where the fan has no area.
+  // faces only). The creases and borders (no silhouettes): they do not depend on the eye.
+  const FeatureLines& creases_and_borders() const;
+  // The crease-aware normal of each face corner (3 f + k); zero where the fan has no area.
   const std::vector<glm::dvec3>& corner_normals() const;
   // Bit k set: the edge in face f's slot k runs against the face (from corner k + 1 to
   // k), so the crossing rule starts there and both faces of the edge give one point.

@@ -78,7 +78,7 @@ struct SilhouetteChainsStage {
                          .tolerance = kArcPx,
                          .tolerance_why = "float tree sums against a double sum: beyond 0.01 px, a derived "
                                           "per-record bound of 2 (d + 3) u L"}},
-            .effects = {"silhouette_tables"}};
+            .effects = {"line_tables"}};
   }
 };
 

@@ -18,7 +18,7 @@
 // signs alone (oriented_slots below), so both backends orient alike wherever they agree on them.
 // A segment with an end nearer than the near plane is left out: the paths split there.
 //
-// They run where a scene asks for the effect `silhouette_tables` (compare and the tests add it):
+// They run where a scene asks for the effect `line_tables` (compare and the tests add it):
 // the stroke stages do not read them yet.
 //
 // Parity is float against double. Where the reference's g at a corner of a face lies within
@@ -81,11 +81,12 @@ struct SilhouetteSegmentsStage {
                          .channels = 2,
                          .doc = "(entry, exit): the slots it enters and leaves by, 0 where no segment",
                          .tolerance_why = "from the signs of g alone: exact where the facing's bound holds"}},
-            .effects = {"silhouette_tables"},
-            .declared_effects = {{"silhouette_tables",
-                                  "the silhouettes of the stroke objects as tables, segments per face and their "
-                                  "chains with arc length, computed by each backend (Kalnins et al. 2002, §4.5); "
-                                  "on request: the stroke frame does not read them yet"}}};
+            .effects = {"line_tables"},
+            .declared_effects = {{"line_tables",
+                                  "the feature lines of the stroke objects as tables computed by each backend: "
+                                  "silhouette segments per face and their chains with arc length, crease and border "
+                                  "points in the window (Kalnins et al. 2002, §4.5); on request: the stroke frame "
+                                  "does not read them yet"}}};
   }
 };
 

@@ -20,12 +20,6 @@ bool drawn(const SceneObject& o, LineObjects which) {
   return which == LineObjects::Strokes ? o.style == Style::Strokes : o.style != Style::Sketchy;
 }
 
-// The mesh vertex a path point sits on (crease and border points are vertices).
-uint32_t vertex_of(const Mesh& mesh, const SurfacePoint& p) {
-  int k = int(std::max_element(&p.bary[0], &p.bary[0] + 3) - &p.bary[0]);
-  return mesh.triangles[p.face][k];
-}
-
 uint64_t edge_key(uint32_t a, uint32_t b) { return uint64_t(std::min(a, b)) << 32 | std::max(a, b); }
 
 // The faces around each edge, for the crease and border segments.
@@ -45,14 +39,18 @@ class EdgeFaces {
   std::unordered_map<uint64_t, std::vector<uint32_t>> faces_;
 };
 
-// Whether face f of `mesh` (object to world `m`) faces the eye.
+}  // namespace
+
+uint32_t vertex_of(const Mesh& mesh, const SurfacePoint& p) {
+  int k = int(std::max_element(&p.bary[0], &p.bary[0] + 3) - &p.bary[0]);
+  return mesh.triangles[p.face][k];
+}
+
 bool faces_eye(const Mesh& mesh, const glm::dmat4& m, uint32_t f, glm::dvec3 eye) {
   glm::dvec3 p[3];
   for (int k = 0; k < 3; ++k) p[k] = glm::dvec3(m * glm::dvec4(glm::dvec3(mesh.positions[mesh.triangles[f][k]]), 1.0));
   return glm::dot(glm::cross(p[1] - p[0], p[2] - p[0]), eye - p[0]) > 0;
 }
-
-}  // namespace
 
 struct LineMeshes {
   std::vector<std::optional<FeatureLineMesh>> lines;  // per scene object; none where not drawn
@@ -264,6 +262,12 @@ std::vector<uint32_t> first_faces(const Scene& scene) {
   std::vector<uint32_t> first{0};
   for (const SceneObject& o : scene.objects) first.push_back(first.back() + uint32_t(o.mesh->triangles.size()));
   return first;
+}
+
+const std::vector<uint32_t>& edge_faces(const LineMeshes& meshes, size_t object, uint32_t a, uint32_t b) {
+  static const std::vector<uint32_t> none;
+  const auto& edges = meshes.edges.at(object);
+  return edges ? edges->of(a, b) : none;
 }
 
 const FeatureLineMesh* line_mesh(const LineMeshes& meshes, size_t object) {

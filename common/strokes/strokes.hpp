@@ -110,6 +110,14 @@ std::shared_ptr<const LineMeshes> line_meshes(const Scene& scene, const StrokesP
 // Scene object `object`'s feature-line mesh; null where it is not drawn or has no faces.
 const FeatureLineMesh* line_mesh(const LineMeshes& meshes, size_t object);
 
+// The faces of scene object `object`'s mesh around the edge between vertices a and b, in the
+// order the crease test reads them; none where the object has no feature lines.
+const std::vector<uint32_t>& edge_faces(const LineMeshes& meshes, size_t object, uint32_t a, uint32_t b);
+// The mesh vertex a crease or border point sits on.
+uint32_t vertex_of(const Mesh& mesh, const SurfacePoint& p);
+// Whether face f faces the world point `eye`: n·(eye - p0) > 0 in world space, in double.
+bool faces_eye(const Mesh& mesh, const glm::dmat4& object_to_world, uint32_t f, glm::dvec3 eye);
+
 // `prepared` (from line_meshes with the same scene, parameters and `which`) or none;
 // `decals`, the surface points of decals and hatches (Kalnins et al. 2002, §3, §6, common/strokes/decal.hpp),
 // placed after the feature lines, or none; a hatch absent at this frame's level of detail

@@ -10,6 +10,7 @@
 
 #include "common/strokes/strokes.hpp"
 #include "reference/core/stage.hpp"
+#include "reference/strokes/float_error.hpp"
 
 namespace plumbago::reference {
 
@@ -64,12 +65,7 @@ bool in_front(const WindowEnd (&ends)[2], const Scene& scene) {
   return ends[0].depth >= double(scene.camera.near) && ends[1].depth >= double(scene.camera.near);
 }
 
-// --- the float error the GPU may make ----------------------------------------------------
-//
-// First-order forward error bounds of the GPU's float evaluation (unit roundoff u = 2^-24),
-// each doubled: GLSL lets division and inversesqrt be off by 2.5 and 2 ulp, and the
-// second-order terms are left out. The positions are the mesh's own floats on both sides.
-constexpr double kU = 0x1p-24;
+// --- the float error the GPU may make (reference/strokes/float_error.hpp) ------------------
 
 // g at a corner: the eye rounded to float (u |e|), e - x (u |e - x|), the normal rounded
 // (u), normalize (5u), the three-term dot (3u): u (10 + (|e| + |x|) / |e - x|) relative to
@@ -84,21 +80,9 @@ struct FaceErrors {
   double end_px = 0;            // the ends' window error
 };
 
-double length(glm::dvec4 v) { return glm::length(v); }
-
-// The window error of an end at object point p (its own float error `dp`): each clip
-// coordinate is a four-term dot of the float matrix row (5u, the entries' rounding
-// included), then the division by w and the viewport (3u of the window size).
+// The window error of an end at object point p, itself off by `dp`.
 double projection_error_px(const ObjectView& v, const Scene& scene, glm::dvec3 p, double dp) {
-  glm::dvec4 c = v.clip * glm::dvec4(p, 1.0), err;
-  for (int r = 0; r < 4; ++r) {
-    glm::dvec4 row(v.clip[0][r], v.clip[1][r], v.clip[2][r], v.clip[3][r]);
-    err[r] = 5 * kU * glm::dot(glm::abs(row), glm::dvec4(glm::abs(p), 1.0)) + length(row) * dp;
-  }
-  double w = std::abs(c.w), size = std::max(scene.width, scene.height);
-  double ex = 0.5 * scene.width * (err.x + std::abs(c.x / c.w) * err.w) / w;
-  double ey = 0.5 * scene.height * (err.y + std::abs(c.y / c.w) * err.w) / w;
-  return 2 * (std::max(ex, ey) + 3 * kU * size);
+  return reference::projection_error_px(v.clip, scene.width, scene.height, p, dp);
 }
 
 // The errors of one crossing (slot k of face f, run the edge's own way as the rule does):

@@ -5,6 +5,7 @@
 layout(local_size_x = 64) in;
 
 #include "util/common_table.glsl"
+#include "util/window_projection.glsl"
 
 layout(std430, binding = 0) readonly buffer Positions { vec4 positions[]; };
 // The corners' vertices; bit k of w: the edge in slot k runs from corner k + 1 to corner k.
@@ -16,10 +17,7 @@ layout(rg32f, binding = 2) writeonly uniform image2D slots;
 
 uniform vec3 eye;         // object space
 uniform bool normalized;  // g = n·normalize(eye - x); false: n·(eye - x)
-uniform mat4 clip;        // object to clip space
-uniform vec4 depth_row;   // object point (x, 1) to linear view depth
 uniform float near;
-uniform vec2 window_size;
 uniform uint face_count, first_face, first_record;  // first_face: of this dispatch
 
 const float kZeroG = -1e-8;  // g = 0 exactly is taken as -1e-8
@@ -42,12 +40,6 @@ vec3 edge_crossing(vec3 c[3], float g[3], uint reversed, int k) {
     kb = k;
   }
   return c[ka] + (c[kb] - c[ka]) * (g[ka] / (g[ka] - g[kb]));
-}
-
-// Window position (x, y) and linear depth of an object point.
-vec3 project(vec3 p) {
-  vec4 c = clip * vec4(p, 1.0);
-  return vec3((c.xy / c.w * 0.5 + 0.5) * window_size, dot(depth_row, vec4(p, 1.0)));
 }
 
 void main() {

@@ -107,7 +107,7 @@ TEST_F(BenchCmd, LimitsTimeEveryProbeAndReadEachPassAgainstItsOwn) {
 // stages made.
 TEST_F(BenchCmd, GpuFramesReportHostTimeAndReadback) {
   std::ofstream(path("tables.json")) << R"({"objects": [{"mesh": {"procedural": "torus"}, "style": "strokes"}],
-      "effects": ["silhouette_tables"]})";
+      "effects": ["line_tables"]})";
   CliRun r = run("bench builtin:pencil " + path("tables.json") + " --json --size 64x48 --frames 3 --backend gpu");
   ASSERT_EQ(r.code, 0) << r.err;
   auto j = nlohmann::json::parse(r.out);
