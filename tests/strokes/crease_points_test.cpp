@@ -16,18 +16,8 @@
 namespace plumbago {
 namespace {
 
-// The parity of both outputs, printed and expected to pass; the reference's window table
-// and the GPU's faces table.
 std::vector<StageParity> point_parity(const Scene& scene, const std::string& label) {
-  std::vector<StageParity> results = run_parity(scene, {"crease_points"});
-  EXPECT_EQ(testing::names_of(results), (std::vector<std::string>{"crease_points.window", "crease_points.faces"}))
-      << label;
-  for (const StageParity& r : results) {
-    std::printf("[crease points %s] %s  bound allows %zu  [%s]\n", label.c_str(), format_diff(r.name, r.diff).c_str(),
-                r.bounded, r.note.c_str());
-    EXPECT_TRUE(r.pass) << label << " " << r.name << ": " << r.note;
-  }
-  return results;
+  return testing::table_parity(scene, "crease_points", {"crease_points.window", "crease_points.faces"}, label);
 }
 
 size_t keys_in(const Image& faces) {
@@ -39,8 +29,8 @@ class CreasePoints : public testing::GlTest {};
 // The CAD part, a cube and the brick facade of Kalnins et al. 2002's building.
 Scene part(const std::string& name) {
   if (name == "cad") return testing::drawn_with_strokes(testing::builtin_at(name, 320, 240));
-  return testing::one_stroke_object(make_procedural(name), name == "cube" ? glm::vec3(2.0f, 1.5f, 2.5f)
-                                                                          : glm::vec3(4.0f, 5.0f, 9.0f));
+  return testing::one_stroke_object(make_procedural(name),
+                                    name == "cube" ? glm::vec3(2.0f, 1.5f, 2.5f) : glm::vec3(4.0f, 5.0f, 9.0f));
 }
 
 TEST_F(CreasePoints, BuiltinPartsAgree) {

@@ -22,14 +22,7 @@ const std::vector<std::string> kSegmentResults = {"silhouette_segments.ends", "s
 
 // The outputs' parity, printed: the ends, the facing and the slots, in that order.
 std::vector<StageParity> segment_parity(const Scene& scene, const std::string& label) {
-  std::vector<StageParity> results = run_parity(scene, {"silhouette_segments"});
-  EXPECT_EQ(testing::names_of(results), kSegmentResults) << label;
-  for (const StageParity& r : results) {
-    std::printf("[segments %s] %s  bound allows %zu  [%s]\n", label.c_str(), format_diff(r.name, r.diff).c_str(),
-                r.bounded, r.note.c_str());
-    EXPECT_TRUE(r.pass) << label << " " << r.name << ": " << r.note;
-  }
-  return results;
+  return testing::table_parity(scene, "silhouette_segments", kSegmentResults, label);
 }
 
 size_t segments_in(const Image& facing) {
