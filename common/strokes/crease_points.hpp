@@ -48,8 +48,9 @@ struct CreasePointsStage {
   static StageDesc describe() {
     return {.name = "crease_points",
             .kind = StageKind::Frame,
-            .doc = "crease and border points projected to the window, and the faces around each segment that face "
-                   "the eye (Kalnins et al. 2002, §4.5)",
+            .doc =
+                "crease and border points projected to the window, and the faces around each segment that face "
+                "the eye (Kalnins et al. 2002, §4.5)",
             .inputs = {{.handle = kLineMeshes}},
             .outputs = {{.handle = kCreaseWindow,
                          .channels = 3,

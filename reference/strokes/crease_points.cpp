@@ -28,8 +28,8 @@ std::vector<ObjectFrame> object_frames(const Scene& scene) {
   for (uint32_t o = 0; o < scene.objects.size(); ++o) {
     glm::dmat4 m(scene.objects[o].transform);
     glm::dvec3 eye(scene.camera.eye);
-    out.push_back({*scene.objects[o].mesh, m, camera.view * m, camera.clip * m, eye, eye_in_object_space(m, eye),
-                   first[o] + 1});
+    out.push_back(
+        {*scene.objects[o].mesh, m, camera.view * m, camera.clip * m, eye, eye_in_object_space(m, eye), first[o] + 1});
   }
   return out;
 }
