@@ -17,7 +17,7 @@ namespace plumbago {
 namespace {
 
 std::vector<StageParity> point_parity(const Scene& scene, const std::string& label) {
-  return testing::table_parity(scene, "crease_points", {"crease_points.window", "crease_points.faces"}, label);
+  return testing::table_parity(scene, "crease_points", {kCreaseWindow.name, kCreaseFaces.name}, label);
 }
 
 size_t keys_in(const Image& faces) {

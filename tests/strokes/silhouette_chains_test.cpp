@@ -49,9 +49,7 @@ void expect_arcs_add_up(const Image& chains, const Image& arcs, const std::strin
 // The parity of both outputs, printed; the reference's chains and arcs.
 std::pair<Image, Image> chain_parity(const Scene& scene, const std::string& label) {
   std::vector<StageParity> results = run_parity(scene, {"silhouette_chains"});
-  EXPECT_EQ(testing::names_of(results),
-            (std::vector<std::string>{"silhouette_chains.chains", "silhouette_chains.arcs"}))
-      << label;
+  EXPECT_EQ(testing::names_of(results), (std::vector<std::string>{kChains.name, kChainArcs.name})) << label;
   if (results.size() != 2) return {};
   const StageParity& r = results[0];
   const StageParity& arcs = results[1];

@@ -17,8 +17,7 @@
 namespace plumbago {
 namespace {
 
-const std::vector<std::string> kSegmentResults = {"silhouette_segments.ends", "silhouette_segments.facing",
-                                                  "silhouette_segments.slots"};
+const std::vector<std::string> kSegmentResults = {kSegmentEnds.name, kSegmentFacing.name, kSegmentSlots.name};
 
 // The outputs' parity, printed: the ends, the facing and the slots, in that order.
 std::vector<StageParity> segment_parity(const Scene& scene, const std::string& label) {

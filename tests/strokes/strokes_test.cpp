@@ -2,6 +2,7 @@
 // both backends, fed the same inputs; visibility against what is analytically hidden.
 #include <gtest/gtest.h>
 
+#include "common/mesh/procedural.hpp"
 #include "common/strokes/id_image.hpp"
 #include "common/strokes/visibility.hpp"
 #include "gpu/core/pipeline.hpp"
@@ -26,9 +27,31 @@ void expect_stroke_parity(const Scene& scene, const std::string& label) {
 
 class StrokeParity : public testing::GlTest, public ::testing::WithParamInterface<std::string> {};
 
+class StrokeParityNear : public testing::GlTest {};
+
 TEST_P(StrokeParity, Builtins) { expect_stroke_parity(testing::builtin_at(GetParam(), 320, 240), GetParam()); }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, StrokeParity, ::testing::Values("torus", "sphere", "cad"));
+
+// The GPU pulls the ID image's faces from the meshes it keeps (gpu/scene/mesh_buffers.hpp) and
+// clips them at the near plane itself (shaders/strokes/id_faces.vert), where the reference clips
+// in world space: an eye just outside the torus's tube, nearer to it than the near plane, cuts
+// a hole in the middle of the image through which the tube's inside shows.
+TEST_F(StrokeParityNear, FacesCutByTheNearPlane) {
+  Scene s = testing::one_stroke_object(make_procedural("torus"), glm::vec3(1.65f, 0.0f, 0.0f));
+  s.camera.near = 0.3f;
+  const Mesh& torus = *s.objects[0].mesh;
+  const glm::vec3 forward = glm::normalize(s.camera.target - s.camera.eye);
+  size_t cut = 0;
+  for (const auto& t : torus.triangles) {
+    int nearer = 0;
+    for (int k = 0; k < 3; ++k) nearer += glm::dot(torus.positions[t[k]] - s.camera.eye, forward) < s.camera.near;
+    cut += nearer == 1 || nearer == 2;
+  }
+  std::printf("torus seen from 0.25 of its tube: %zu faces cut by the near plane\n", cut);
+  ASSERT_GT(cut, 20u);
+  expect_stroke_parity(s, "near plane");
+}
 
 class StrokeModelParity : public testing::GlTest, public ::testing::WithParamInterface<std::string> {};
 
