@@ -4,8 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "common/scene/gbuffer.hpp"
-
 namespace plumbago {
 
 namespace {
@@ -31,8 +29,8 @@ std::vector<ClipPoint> clipped_to_near(const ClipPoint (&corners)[3], double nea
 
 class IdTriangles {
  public:
-  IdTriangles(const Scene& scene, const StrokesParams& p)
-      : project_(scene.camera, scene.width, scene.height), near_(scene.camera.near), bias_(p.id_depth_bias) {}
+  IdTriangles(const Scene& scene, double bias)
+      : project_(scene.camera, scene.width, scene.height), near_(scene.camera.near), bias_(bias) {}
 
   void face(const ClipPoint (&corners)[3], uint32_t key) {
     std::vector<ClipPoint> polygon = clipped_to_near(corners, near_);
@@ -135,25 +133,33 @@ ImageU32 keys_from_channels(const Image& channels) {
   return out;
 }
 
-std::vector<IdVertex> id_triangles(const Scene& scene, const WindowLines& lines, const StrokesParams& p) {
-  IdTriangles tri(scene, p);
+std::vector<uint32_t> gbuffer_first_keys(const Scene& scene) {
+  std::vector<uint32_t> first = first_faces(scene), out;
+  for (size_t o = 0; o < scene.objects.size(); ++o)
+    if (scene.objects[o].style != Style::Sketchy) out.push_back(first[o] + 1);
+  return out;
+}
+
+std::vector<IdVertex> id_sketchy_face_triangles(const Scene& scene, const WindowLines& lines) {
+  IdTriangles tri(scene, 0.0);
   glm::dmat4 view(scene.camera.view());
-  std::vector<WorldObject> objects = world_geometry(scene);
-  for (uint32_t o = 0; o < objects.size(); ++o)
-    for (uint32_t f = 0; f < objects[o].triangles.size(); ++f) {
+  for (uint32_t o = 0; o < scene.objects.size(); ++o) {
+    const SceneObject& object = scene.objects[o];
+    if (object.style != Style::Sketchy) continue;
+    for (uint32_t f = 0; f < object.mesh->triangles.size(); ++f) {
       ClipPoint corners[3];
       for (int k = 0; k < 3; ++k) {
-        glm::dvec3 w(objects[o].positions[objects[o].triangles[f][k]]);
+        glm::dvec3 w(object.transform * glm::vec4(object.mesh->positions[object.mesh->triangles[f][k]], 1.0f));
         corners[k] = {w, -(view * glm::dvec4(w, 1.0)).z};
       }
       tri.face(corners, lines.face_key(o, f));
     }
-  add_paths(lines, p, tri);
+  }
   return std::move(tri.out);
 }
 
 std::vector<IdVertex> id_line_triangles(const Scene& scene, const WindowLines& lines, const StrokesParams& p) {
-  IdTriangles tri(scene, p);
+  IdTriangles tri(scene, p.id_depth_bias);
   add_paths(lines, p, tri);
   return std::move(tri.out);
 }

@@ -1,7 +1,9 @@
 // The ID reference image (Kalnins et al. 2002 §4.6): a 32-bit key per pixel,
-// 0 where nothing is drawn, made of triangles both backends draw in the same order and
-// with the same rules:
-//   1. every face of every object (clipped to the near plane), with its face key;
+// 0 where nothing is drawn, made with the same rules on both backends:
+//   1. faces, with their face keys: the G-buffer's (docs/stages.md, gbuffer), which holds every
+//      object but the sketchy ones, each pixel at z = near / d, d its depth there; then the
+//      faces of the sketchy objects (common/sketchy/sketchy.hpp), drawn as triangles clipped
+//      to the near plane;
 //   2. crease and border paths as window-space quads `strokes.id_crease_px` wide, with the
 //      path key;
 //   3. front-facing silhouette paths as quads `strokes.id_silhouette_px` wide, each segment
@@ -12,7 +14,7 @@
 //      common/strokes/visibility.hpp.)
 // A segment's quad runs along it with its width centered on it (no caps).
 //
-// Depth: each vertex carries z = near / d, d its linear view depth: 1/d, and so z, is
+// Depth: each triangle vertex carries z = near / d, d its linear view depth: 1/d, and so z, is
 // affine in window space on a planar triangle, so interpolating z affinely over the
 // window is exact (perspective-correct) and the same rule on both backends. A line vertex
 // is placed at d (1 - `strokes.id_depth_bias`) (an explicit bias, not glPolygonOffset's
@@ -24,15 +26,21 @@
 // on llvmpipe and the common GPUs); z is interpolated with the barycentrics of the
 // (snapped) window triangle.
 //
+// The faces come from the G-buffer because the frame has rasterized them there already:
+// a second raster of every face would cost as much again (the Ogre's strokes frame on
+// llvmpipe: bench/results).
+//
 // Output: the key as two channels, (key >> 16, key & 0xffff), each exact as a float.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "common/core/stage.hpp"
+#include "common/scene/gbuffer.hpp"
 #include "common/strokes/hatching.hpp"
 #include "common/strokes/line_meshes.hpp"
 #include "common/strokes/strokes.hpp"
@@ -46,10 +54,16 @@ struct IdVertex {
   uint32_t key;
 };
 
-// The triangles of the ID image in drawing order, three vertices each (the reference's).
-std::vector<IdVertex> id_triangles(const Scene& scene, const WindowLines& lines, const StrokesParams& p);
-// Only those of rules 2 and 3, the lines: the GPU draws the faces from the meshes it keeps
-// (shaders/strokes/id_faces.vert), clipped to the near plane by the rasterizer.
+// Rule 1 on the G-buffer: per G-buffer object o (the scene's objects but the sketchy ones, in
+// order), the key of its face 0, so that a pixel with ids (o + 1, t) holds key first[o] + t.
+std::vector<uint32_t> gbuffer_first_keys(const Scene& scene);
+// The z of a G-buffer pixel at depth d.
+inline float face_z(double near, double d) { return float(near / std::max(d, near)); }
+
+// Rule 1's sketchy faces as triangles, three vertices each (the reference's; the GPU draws
+// them from the meshes it keeps, shaders/strokes/id_faces.vert, clipped by the rasterizer).
+std::vector<IdVertex> id_sketchy_face_triangles(const Scene& scene, const WindowLines& lines);
+// Rules 2 and 3, the lines, in drawing order.
 std::vector<IdVertex> id_line_triangles(const Scene& scene, const WindowLines& lines, const StrokesParams& p);
 
 constexpr int kSubpixelBits = 8;
@@ -76,15 +90,16 @@ struct IdImageStage {
         .kind = StageKind::Frame,
         .doc = "ID reference image: faces, crease and silhouette quads (Kalnins et al. 2002, §4.6)",
         .params = {"strokes"},
-        .inputs = {{.handle = kLineMeshes}},
+        .inputs = {{.handle = kLineMeshes}, {.handle = kGBuffer.ids}, {.handle = kGBuffer.depth}},
         .outputs = {{.handle = kIds,
                      .channels = 2,
                      .texel = Texel::Uint,
                      .doc = "the key, as (key >> 16, key & 0xffff)",
-                     .tolerance_why = "the same triangles, rasterized with the same rules: exact except where rounding "
-                                      "decides, which a derived bound allows and the note counts: depth ties (the "
-                                      "nearest surfaces within 1e-5 relative plus a subpixel of z slope) and edges "
-                                      "within a subpixel of the pixel center (torus 800x600: 453 px, 0.09%)"},
+                     .tolerance_why = "fed the same G-buffer, whose faces both copy; the sketchy faces and the lines "
+                                      "are the same triangles, rasterized with the same rules: exact except where "
+                                      "rounding decides, which a derived bound allows and the note counts: depth ties "
+                                      "(the nearest surfaces within 1e-5 relative plus a subpixel of z slope) and "
+                                      "edges within a subpixel of the pixel center (torus 800x600: 62 px, 0.01%)"},
                     {.handle = kWindowLines,
                      .channels = 0,
                      .texel = Texel::Host,

@@ -1,8 +1,9 @@
-// The ID reference image on the GPU (Kalnins et al. 2002, §4.6), the twin of reference/strokes/id_image.cpp: the
-// triangles of common/strokes/id_image.hpp, depth-tested GL_GREATER on z = near / d, written as
-// the fragment's depth. The faces are pulled from the meshes uploaded once
-// (shaders/strokes/id_faces.vert): no CPU loop over faces per frame. The lines' quads come
-// from the CPU (id_line_triangles).
+// The ID reference image on the GPU (Kalnins et al. 2002, §4.6), the twin of reference/strokes/id_image.cpp:
+// the rules of common/strokes/id_image.hpp, depth-tested GL_GREATER on z = near / d, written as
+// the fragment's depth. The faces are the G-buffer's, copied in one full-window pass
+// (shaders/strokes/id_gbuffer.frag); the sketchy objects' are pulled from their meshes,
+// uploaded once (shaders/strokes/id_faces.vert): no CPU loop over faces per frame. The
+// lines' quads come from the CPU (id_line_triangles).
 #include "common/strokes/id_image.hpp"
 
 #include "gpu/core/stage.hpp"
@@ -17,6 +18,7 @@ class IdImagePass : public GpuPass {
  public:
   explicit IdImagePass(GpuFrame& f)
       : program_("strokes/id_image.vert", "strokes/id_image.frag"),
+        gbuffer_program_("util/fullscreen.vert", "strokes/id_gbuffer.frag"),
         faces_program_("strokes/id_faces.vert", "strokes/id_image.frag", "#define FACES\n"),
         fbo_(make_framebuffer()),
         empty_(make_vertex_array()),
@@ -25,7 +27,12 @@ class IdImagePass : public GpuPass {
     // 2002, §3).
     if (has_decals(f.scene)) decals_ = project_decals_through_gbuffer(f.scene);
     first_key_ = first_faces(f.scene);
-    for (uint32_t o = 0; o < f.scene.objects.size(); ++o) meshes_.push_back(upload_mesh(f.scene, o));
+    for (uint32_t o = 0; o < f.scene.objects.size(); ++o)
+      if (f.scene.objects[o].style == Style::Sketchy) sketchy_.push_back(upload_mesh(f.scene, o));
+    std::vector<uint32_t> first = gbuffer_first_keys(f.scene);
+    first.push_back(0);  // never empty
+    gbuffer_first_keys_ = make_buffer(first.data(), first.size() * sizeof(uint32_t));
+    f.read_region(kGBuffer, {0, 0, f.scene.width, f.scene.height});
   }
 
   void run(GpuFrame& f) override {
@@ -45,7 +52,8 @@ class IdImagePass : public GpuPass {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);
     glBindVertexArray(empty_.id());
-    draw_faces(f);
+    draw_gbuffer_faces(f);
+    draw_sketchy_faces(f);
     if (!lines.empty()) draw_lines(lines, target);
     glDepthFunc(GL_LESS);
     glDisable(GL_DEPTH_TEST);
@@ -53,13 +61,24 @@ class IdImagePass : public GpuPass {
   }
 
  private:
-  // Rule 1: every face of every object, in the order of their keys.
-  void draw_faces(const GpuFrame& f) {
+  // Rule 1: the G-buffer's faces,
+  void draw_gbuffer_faces(const GpuFrame& f) {
+    const GBufferTargets& g = f.get(kGBuffer);
+    glUseProgram(gbuffer_program_.id());
+    glProgramUniform1f(gbuffer_program_.id(), gbuffer_program_.uniform("near"), f.scene.camera.near);
+    bind_textures(gbuffer_program_, {{"ids", &g.ids}, {"depth", &g.depth}});
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, gbuffer_first_keys_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+
+  // then the sketchy objects' faces, in the order of their keys.
+  void draw_sketchy_faces(const GpuFrame& f) {
+    if (sketchy_.empty()) return;
     glEnable(GL_CLIP_DISTANCE0);
     glEnable(GL_DEPTH_CLAMP);
     glUseProgram(faces_program_.id());
     glProgramUniform1f(faces_program_.id(), faces_program_.uniform("near"), f.scene.camera.near);
-    for (const MeshBuffers& m : meshes_) {
+    for (const MeshBuffers& m : sketchy_) {
       if (m.faces == 0) continue;
       object_uniforms(faces_program_, f.scene, m.object);
       glProgramUniform1ui(faces_program_.id(), faces_program_.uniform("first_key"), first_key_[m.object] + 1);
@@ -80,13 +99,14 @@ class IdImagePass : public GpuPass {
     glDrawArrays(GL_TRIANGLES, 0, GLsizei(triangles.size()));
   }
 
-  Program program_, faces_program_;
+  Program program_, gbuffer_program_, faces_program_;
   Framebuffer fbo_;
   VertexArray empty_;
   Renderbuffer depth_;
   DecalSurface decals_;
   std::vector<uint32_t> first_key_;  // per object, its first face key less one
-  std::vector<MeshBuffers> meshes_;
+  std::vector<MeshBuffers> sketchy_;
+  Buffer gbuffer_first_keys_;  // gbuffer_first_keys
 };
 
 }  // namespace

@@ -1,5 +1,6 @@
-// The ID reference image, CPU reference (Kalnins et al. 2002, §4.6): the triangles of common/strokes/id_image.hpp
-// through the scalar rasterizer, each pixel keeping the nearest (largest z = near / d).
+// The ID reference image, CPU reference (Kalnins et al. 2002, §4.6): the G-buffer's faces, then the
+// triangles of common/strokes/id_image.hpp through the scalar rasterizer, each pixel keeping the
+// nearest (largest z = near / d).
 #include "common/strokes/id_image.hpp"
 
 #include "reference/core/stage.hpp"
@@ -61,12 +62,25 @@ bool ambiguous(const IdRaster& r, size_t i) {
   return tie || (r.edge_z.data[i] > 0 && r.edge_z.data[i] >= nearest[0] - margin);
 }
 
-IdRaster id_raster(const std::vector<IdVertex>& v, int width, int height) {
-  IdRaster r{ImageU32(width, height, 1), Image(width, height, 2), Image(width, height, 2), Image(width, height, 1)};
+IdRaster empty_raster(int width, int height) {
+  return {ImageU32(width, height, 1), Image(width, height, 2), Image(width, height, 2), Image(width, height, 1)};
+}
+
+// Rule 1 on the G-buffer: each pixel's face key at z = near / d, its z slope 0 (both backends
+// read the same depth at the pixel center: no rasterizer rounds it).
+void draw_gbuffer_faces(const GBuffer& g, const std::vector<uint32_t>& first_keys, double near, IdRaster& r) {
+  for (int y = 0; y < g.ids.height; ++y)
+    for (int x = 0; x < g.ids.width; ++x) {
+      if (g.background(x, y)) continue;
+      r.key.at(x, y) = first_keys.at(g.ids.at(x, y, 0) - 1) + g.ids.at(x, y, 1);
+      r.nearest.at(x, y) = face_z(near, g.depth.at(x, y));
+    }
+}
+
+void draw_triangles(const std::vector<IdVertex>& v, IdRaster& r) {
   draw_in_bands(
-      v, height, [](const IdVertex& x) { return x.window; },
+      v, r.key.height, [](const IdVertex& x) { return x.window; },
       [&](const IdVertex* t, int y0, int y1) { draw(t, r, y0, y1); });
-  return r;
 }
 
 }  // namespace
@@ -77,7 +91,10 @@ PLUMBAGO_REFERENCE_STAGE(id_image, [](ReferenceFrame& f) {
       has_decals(f.scene) ? project_decals_by_rays(f.scene) : DecalSurface{};  // by rays (Kalnins et al. 2002, §3)
   f.put(kWindowLines,
         window_lines(f.scene, p, LineObjects::Strokes, &f.get(kLineMeshes), has_decals(f.scene) ? &decals : nullptr));
-  IdRaster r = id_raster(id_triangles(f.scene, f.get(kWindowLines), p), f.scene.width, f.scene.height);
+  IdRaster r = empty_raster(f.scene.width, f.scene.height);
+  draw_gbuffer_faces(f.get(kGBuffer), gbuffer_first_keys(f.scene), f.scene.camera.near, r);
+  draw_triangles(id_sketchy_face_triangles(f.scene, f.get(kWindowLines)), r);
+  draw_triangles(id_line_triangles(f.scene, f.get(kWindowLines), p), r);
   f.put(kIds, key_channels(r.key));
   Image ties(r.key.width, r.key.height, 1);
   for (size_t i = 0; i < ties.data.size(); ++i) ties.data[i] = ambiguous(r, i);

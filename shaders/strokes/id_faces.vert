@@ -1,5 +1,5 @@
 #version 450 core
-// The ID image's faces (Kalnins et al. 2002, §4.6; common/strokes/id_image.hpp rule 1), pulled
+// The ID image's sketchy faces (Kalnins et al. 2002, §4.6; common/strokes/id_image.hpp rule 1), pulled
 // from the object's mesh kept on the GPU (gpu/scene/mesh_buffers.hpp): one vertex per face
 // corner, key = the object's first key + the face. The near plane clips through
 // gl_ClipDistance (the rasterizer's own near and far planes are off: GL_DEPTH_CLAMP), and d

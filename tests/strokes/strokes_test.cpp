@@ -2,6 +2,8 @@
 // both backends, fed the same inputs; visibility against what is analytically hidden.
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "common/mesh/procedural.hpp"
 #include "common/strokes/id_image.hpp"
 #include "common/strokes/visibility.hpp"
@@ -17,7 +19,7 @@ namespace {
 const std::vector<std::string> kStrokeStages = {"id_image", "visibility", "stroke"};
 
 void expect_stroke_parity(const Scene& scene, const std::string& label) {
-  auto results = run_parity(testing::drawn_with_strokes(scene), kStrokeStages);
+  auto results = run_parity(scene, kStrokeStages);
   ASSERT_EQ(testing::names_of(results), (std::vector<std::string>{"id_image.ids", "visibility.flags", "stroke.color"}));
   for (const StageParity& r : results) {
     std::printf("[strokes %s] %s  [%s]\n", label.c_str(), format_diff(r.name, r.diff).c_str(), r.note.c_str());
@@ -29,17 +31,28 @@ class StrokeParity : public testing::GlTest, public ::testing::WithParamInterfac
 
 class StrokeParityNear : public testing::GlTest {};
 
-TEST_P(StrokeParity, Builtins) { expect_stroke_parity(testing::builtin_at(GetParam(), 320, 240), GetParam()); }
+TEST_P(StrokeParity, Builtins) {
+  expect_stroke_parity(testing::drawn_with_strokes(testing::builtin_at(GetParam(), 320, 240)), GetParam());
+}
 
 INSTANTIATE_TEST_SUITE_P(Scenes, StrokeParity, ::testing::Values("torus", "sphere", "cad"));
 
-// The GPU pulls the ID image's faces from the meshes it keeps (gpu/scene/mesh_buffers.hpp) and
-// clips them at the near plane itself (shaders/strokes/id_faces.vert), where the reference clips
-// in world space: an eye just outside the torus's tube, nearer to it than the near plane, cuts
-// a hole in the middle of the image through which the tube's inside shows.
-TEST_F(StrokeParityNear, FacesCutByTheNearPlane) {
+// The ID image's faces of a sketchy object are not in the G-buffer: the GPU pulls them from the
+// meshes it keeps (gpu/scene/mesh_buffers.hpp) and clips them at the near plane itself
+// (shaders/strokes/id_faces.vert), where the reference clips in world space. A sketchy torus
+// seen from just outside its tube, nearer to it than the near plane, around a stroke
+// sphere: the plane cuts a hole in the middle of the image through which the tube's inside
+// shows.
+TEST_F(StrokeParityNear, SketchyFacesCutByTheNearPlane) {
   Scene s = testing::one_stroke_object(make_procedural("torus"), glm::vec3(1.65f, 0.0f, 0.0f));
   s.camera.near = 0.3f;
+  s.objects[0].style = Style::Sketchy;
+  Mesh sphere = make_procedural("sphere");
+  compute_normals(sphere);
+  s.objects.push_back({std::make_shared<const Mesh>(std::move(sphere))});
+  s.objects.back().style = Style::Strokes;
+  s.objects.back().transform = glm::scale(glm::mat4(1.0f), glm::vec3(0.4f));
+  s.effects.push_back("sketchy");
   const Mesh& torus = *s.objects[0].mesh;
   const glm::vec3 forward = glm::normalize(s.camera.target - s.camera.eye);
   size_t cut = 0;
@@ -50,14 +63,14 @@ TEST_F(StrokeParityNear, FacesCutByTheNearPlane) {
   }
   std::printf("torus seen from 0.25 of its tube: %zu faces cut by the near plane\n", cut);
   ASSERT_GT(cut, 20u);
-  expect_stroke_parity(s, "near plane");
+  expect_stroke_parity(s, "sketchy, near plane");
 }
 
 class StrokeModelParity : public testing::GlTest, public ::testing::WithParamInterface<std::string> {};
 
 TEST_P(StrokeModelParity, SharedModels) {
   PLUMBAGO_REQUIRE_MODEL(GetParam());
-  expect_stroke_parity(testing::model_scene(GetParam(), 400, 400), GetParam());
+  expect_stroke_parity(testing::drawn_with_strokes(testing::model_scene(GetParam(), 400, 400)), GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, StrokeModelParity,
@@ -99,11 +112,14 @@ TEST_F(StrokeVisibility, ACubeShowsNineOfItsTwelveEdges) {
   }
 }
 
-// A sphere behind a plane that covers the lower half of the window.
-Scene sphere_behind_a_plane() {
+// A sphere behind a plane that covers the lower half of the window, the plane drawn in
+// `plane_style` (a sketchy plane is not in the G-buffer: the ID image draws its faces itself).
+Scene sphere_behind_a_plane(const std::string& plane_style = "pencil") {
   return parse_scene(R"({"objects": [
       {"mesh": {"procedural": "sphere"}, "style": "strokes"},
-      {"mesh": {"procedural": "plane"}, "transform": [2, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 1.5, 1]}],
+      {"mesh": {"procedural": "plane"}, "style": ")" +
+                         plane_style + R"(",
+       "transform": [2, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -1, 1.5, 1]}],
       "resolution": [320, 240], "effects": ["strokes"],
       "camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0], "fov_deg": 40}})",
                      "sphere behind", ".");
@@ -116,8 +132,7 @@ double plane_edge_y(const Scene& scene) {
 }
 
 // The sphere's silhouette samples are visible above the plane's top edge and hidden below.
-TEST_F(StrokeVisibility, AHiddenHalfOfASilhouette) {
-  Scene scene = sphere_behind_a_plane();
+void expect_half_hidden(const Scene& scene) {
   WindowLines lines = window_lines(scene, scene.params.get<StrokesParams>());
   ASSERT_EQ(lines.paths.size(), 1u);
   double edge_y = plane_edge_y(scene);
@@ -133,6 +148,13 @@ TEST_F(StrokeVisibility, AHiddenHalfOfASilhouette) {
       ++checked;
     }
     EXPECT_GT(checked, 150);
+  }
+}
+
+TEST_F(StrokeVisibility, AHiddenHalfOfASilhouette) {
+  for (const std::string style : {"pencil", "sketchy"}) {
+    SCOPED_TRACE(style);
+    expect_half_hidden(sphere_behind_a_plane(style));
   }
 }
 
