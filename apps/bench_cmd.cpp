@@ -76,10 +76,10 @@ struct BenchResult {
   std::map<std::string, BufferError> errors;    // --against
   std::vector<std::string> missing;             // --against: buffers with no saved counterpart
   // A camera path (Scene::animation): each of its frames timed once, in order.
-  int path_frames = 0;
-  double path_ms = 0, slowest_ms = 0;    // the frames' sum and the slowest
-  double setup_ms = 0;                   // median per frame: making its renderer (GPU)
-  std::map<std::string, double> limits;  // --limits: each probe's ms at the scene's size (GPU)
+  int path_frames = 0, timed_path_frames = 0;  // its frames, and how many were timed
+  double path_ms = 0, slowest_ms = 0;          // the timed frames' sum and the slowest
+  double setup_ms = 0;                         // median per frame: making its renderer (GPU)
+  std::map<std::string, double> limits;        // --limits: each probe's ms at the scene's size (GPU)
 };
 
 void add_pass_times(const Frame& f, int frames, BenchResult& r) {
@@ -224,8 +224,18 @@ std::pair<double, std::string> probe_multiple(const BenchResult& r, const std::s
   return {it == r.limits.end() || it->second <= 0 ? 0.0 : ms / it->second, probe};
 }
 
-// A scene with a camera path: every frame of the path timed once (frame_ms their median),
-// after one untimed frame that runs the preprocessing and compiles the shaders.
+// The frames of a camera path of `count` frames that are timed under a cap of `cap`: every
+// one, or `cap` of them spread evenly from the first to the last.
+std::vector<int> timed_path_frames(int count, int cap) {
+  std::vector<int> out;
+  int n = std::min(count, cap);
+  for (int k = 0; k < n; ++k) out.push_back(n == 1 ? 0 : int(std::lround(double(k) * (count - 1) / (n - 1))));
+  return out;
+}
+
+// A scene with a camera path: its frames timed once each, at most the backend's --frames
+// (frame_ms their median), after one untimed frame that runs the preprocessing and compiles
+// the shaders.
 BenchResult bench_path(const BenchOptions& o, const Scene& scene, const std::string& backend, OutputFiles& out) {
   BenchResult r = new_result(scene, backend);
   PathFrames path(scene, backend);
@@ -234,13 +244,15 @@ BenchResult bench_path(const BenchOptions& o, const Scene& scene, const std::str
     if (is_preprocessing(p.name)) r.preprocessing[p.name] = p.ms;
   set_counts(r, first);
   std::vector<double> ms, setup;
+  std::vector<int> timed = timed_path_frames(path.count(), backend == "gpu" ? o.frames : reference_frames(o));
   r.path_frames = path.count();
-  for (int i = 0; i < path.count(); ++i) {
+  r.timed_path_frames = int(timed.size());
+  for (int i : timed) {
     Frame f;
     double setup_ms = 0;
     ms.push_back(path.timed(i, f, setup_ms));
     setup.push_back(setup_ms);
-    add_pass_times(f, path.count(), r);
+    add_pass_times(f, int(timed.size()), r);
     r.path_ms += ms.back();
     r.slowest_ms = std::max(r.slowest_ms, ms.back());
   }
@@ -287,9 +299,9 @@ void print_text(const std::vector<BenchResult>& results) {
     if (!counts.empty()) std::printf("  counts: %s\n", counts.c_str());
     if (r.path_frames)
       std::printf(
-          "  camera path: %d frames in %.1f ms, slowest %.2f ms; making a frame's renderer %.2f ms (not in "
-          "the frame)\n",
-          r.path_frames, r.path_ms, r.slowest_ms, r.setup_ms);
+          "  camera path: %d of its %d frames in %.1f ms, slowest %.2f ms; making a frame's renderer %.2f ms "
+          "(not in the frame)\n",
+          r.timed_path_frames, r.path_frames, r.path_ms, r.slowest_ms, r.setup_ms);
     for (const auto& [name, ms] : r.stages) {
       auto [multiple, probe] = probe_multiple(r, name, ms);
       if (r.limits.empty())
@@ -329,7 +341,11 @@ nlohmann::json result_json(const BenchResult& r) {
     }
   }
   if (r.path_frames)
-    j["path"] = {{"frames", r.path_frames}, {"ms", r.path_ms}, {"slowest_ms", r.slowest_ms}, {"setup_ms", r.setup_ms}};
+    j["path"] = {{"frames", r.path_frames},
+                 {"timed_frames", r.timed_path_frames},
+                 {"ms", r.path_ms},
+                 {"slowest_ms", r.slowest_ms},
+                 {"setup_ms", r.setup_ms}};
   if (!r.errors.empty() || !r.missing.empty()) {
     nlohmann::json e = nlohmann::json::object();
     for (const auto& [name, x] : r.errors)
@@ -468,7 +484,8 @@ void setup(CLI::App& app) {
   cmd->add_option("scenes", o->scenes,
                   "Scene files or builtin:NAME (default: builtin:pencil, the CAD part with every pencil effect)");
   cmd->add_option("--frames", o->frames,
-                  "Frames to time on the GPU (the reference times a tenth); a scene's camera path times its own")
+                  "Frames to time on the GPU (the reference times a tenth); of a scene's camera path, at most "
+                  "that many of its frames, spread from the first to the last")
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
   cmd->add_option("--reference-frames", o->reference_frames,

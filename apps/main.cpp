@@ -4,6 +4,7 @@
 
 #include "apps/command.hpp"
 #include "common/util/memory_budget.hpp"
+#include "common/util/output_file.hpp"
 #include "parity/parity.hpp"
 
 namespace plumbago {
@@ -14,6 +15,7 @@ std::vector<CommandSetup>& command_registry() {
 }  // namespace plumbago
 
 int main(int argc, char** argv) {
+  plumbago::remove_outputs_on_interrupt();  // before any thread starts
   try {  // a stage declared wrong or implemented on one backend only: before any command runs
     plumbago::check_stage_registry();
   } catch (const std::exception& e) {

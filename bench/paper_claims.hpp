@@ -46,7 +46,7 @@ inline const std::vector<PaperClaim>& paper_claims() {
        "strokes", "scenes/breakfast_strokes.json",
        "a table with the teapot, spot, the cow, an orange and a mug "
        "(24,268 faces): conte silhouettes and creases, translucent toon coat, free hatching in two levels of detail; "
-       "279 visible strokes at frame 0; timed over its 40-frame dolly"},
+       "279 visible strokes at frame 0; timed along its 40-frame dolly"},
       {"Kalnins et al. 2002", "snowman, 250 strokes", 10000, "not stated", 11, 11, "GeForce3, Pentium IV 1.5 GHz",
        "strokes", "scenes/snowman_strokes.json",
        "procedural spheres and cones (11,136 faces): pale toon coat, "

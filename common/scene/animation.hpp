@@ -1,6 +1,6 @@
 // Camera paths (scene key "animation", docs/scene-format.md): an orbit about the target or
 // a dolly toward it, over a number of frames at a frame rate. `plumbago render SCENE -o DIR`
-// writes the numbered frames; `plumbago bench` times the whole path.
+// writes the numbered frames; `plumbago bench` times up to --frames of them.
 #pragma once
 
 #include <optional>

@@ -27,6 +27,7 @@ glm::vec3 PrimaryRays::direction(float px, float py) const {
 }
 
 std::string format_number(double v) {
+  if (std::isnan(v)) return "not a number";
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", v);
   return buf;
@@ -58,6 +59,9 @@ std::optional<CameraFault> position_fault(const Camera& c, glm::dvec3 origin) {
                                   " (the largest coordinate float buffers can hold)"};
   glm::dvec3 view = glm::dvec3(c.target) - glm::dvec3(c.eye), up = c.up;
   if (view == glm::dvec3(0)) return CameraFault{"target", "coincides with the eye"};
+  if (double d = glm::length(view); d < kMinDirectionLength)
+    return CameraFault{"target", "lies " + format_number(d) + " from the eye, under the " +
+                                     format_number(kMinDirectionLength) + " a view direction needs"};
   double up_length = glm::length(up);
   if (!(up_length >= kMinDirectionLength && up_length <= kMaxDirectionLength))
     return CameraFault{"up", "has length " + format_number(up_length) + ", outside [" +

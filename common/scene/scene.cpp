@@ -209,7 +209,8 @@ class SceneReader {
   }
 
   // "animation": {"orbit_deg": D or "dolly": L, "frames": N, "fps": F}. Every frame's
-  // camera is checked as the scene's own is.
+  // camera is checked as the scene's own is, and a dolly's eye must not reach its target
+  // (the view would turn around).
   Animation animation(const json& j, const std::string& path, const Scene& s) const {
     only_keys(j, path, {"orbit_deg", "dolly", "frames", "fps"});
     if (j.contains("orbit_deg") == j.contains("dolly")) fail(path, "give either \"orbit_deg\" or \"dolly\"");
@@ -228,9 +229,17 @@ class SceneReader {
     glm::vec3 center;
     float radius;
     scene_bounds(s, center, radius);
-    for (int i = 1; i < a.frames; ++i)
-      if (auto fault = camera_fault(camera_at(s.camera, a, i, center, radius), double(s.width) / s.height, s.origin))
-        fail(path + "/" + key, "frame " + std::to_string(i) + "'s camera: " + fault->key + " " + fault->what);
+    for (int i = 1; i < a.frames; ++i) {
+      Camera c = camera_at(s.camera, a, i, center, radius);
+      std::string frame = "frame " + std::to_string(i) + "'s camera: ";
+      if (glm::dot(glm::dvec3(c.target) - glm::dvec3(c.eye), glm::dvec3(s.camera.target) - glm::dvec3(s.camera.eye)) <=
+          0)
+        fail(path + "/dolly", frame + "the eye reaches or passes the target (it moves " + format_number(a.amount) +
+                                  " toward a target " + format_number(glm::distance(s.camera.eye, s.camera.target)) +
+                                  " away): a dolly must stop short of it");
+      if (auto fault = camera_fault(c, double(s.width) / s.height, s.origin))
+        fail(path + "/" + key, frame + fault->key + " " + fault->what);
+    }
     return a;
   }
 

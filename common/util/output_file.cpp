@@ -1,8 +1,14 @@
 #include "common/util/output_file.hpp"
 
+#include <signal.h>
 #include <unistd.h>
 
+#include <cstdio>
+#include <cstring>
+#include <mutex>
+#include <set>
 #include <stdexcept>
+#include <thread>
 
 namespace plumbago {
 
@@ -16,7 +22,54 @@ void check_writable_folder(const fs::path& dir, const std::string& what) {
     throw std::runtime_error(what + ": folder '" + dir.string() + "' is not writable");
 }
 
+// What a run stopped by a signal leaves to remove: the temporary files and the folders made
+// for outputs, while they are not committed.
+class Unfinished {
+ public:
+  static Unfinished& get() {
+    static Unfinished* all = new Unfinished;  // never destroyed: the watcher may use it while main returns
+    return *all;
+  }
+  void add(const fs::path& p, bool folder) {
+    std::lock_guard lock(mutex_);
+    (folder ? folders_ : files_).insert(p);
+  }
+  void remove(const fs::path& p, bool folder) {
+    std::lock_guard lock(mutex_);
+    (folder ? folders_ : files_).erase(p);
+  }
+  // Removes them all and never returns: the lock is held until the process ends, so no
+  // thread registers a new file meanwhile.
+  [[noreturn]] void remove_all_and_exit(int signal) {
+    mutex_.lock();
+    std::error_code ec;
+    for (const fs::path& p : files_) fs::remove(p, ec);
+    for (auto it = folders_.rbegin(); it != folders_.rend(); ++it) fs::remove(*it, ec);  // only when empty
+    std::fprintf(stderr, "plumbago: stopped by %s: %zu unfinished output file(s) removed\n", strsignal(signal),
+                 files_.size());
+    std::fflush(stderr);
+    ::_exit(128 + signal);
+  }
+
+ private:
+  std::mutex mutex_;
+  std::set<fs::path> files_, folders_;  // folders: a deeper one sorts after its parent
+};
+
 }  // namespace
+
+void remove_outputs_on_interrupt() {
+  sigset_t stop;
+  sigemptyset(&stop);
+  sigaddset(&stop, SIGINT);
+  sigaddset(&stop, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stop, nullptr);  // threads started later inherit the mask
+  std::thread([stop] {
+    int signal = 0;
+    sigwait(&stop, &signal);
+    Unfinished::get().remove_all_and_exit(signal);
+  }).detach();
+}
 
 OutputFile::OutputFile(std::string path) : path_(std::move(path)) {
   fs::path p(path_);
@@ -27,12 +80,14 @@ OutputFile::OutputFile(std::string path) : path_(std::move(path)) {
   name.insert(0, 1, '.');
   name.append(".partial-").append(std::to_string(::getpid())).append(p.extension().string());
   temporary_ = (dir / name).string();
+  Unfinished::get().add(temporary_, false);
 }
 
 OutputFile::~OutputFile() {
   if (!committed_) {
     std::error_code ec;
     fs::remove(temporary_, ec);
+    Unfinished::get().remove(temporary_, false);
   }
 }
 
@@ -41,10 +96,12 @@ void OutputFile::commit() {
   fs::rename(temporary_, path_, ec);
   if (ec) throw std::runtime_error(path_ + ": cannot move the finished file into place: " + ec.message());
   committed_ = true;
+  Unfinished::get().remove(temporary_, false);
 }
 
 OutputFiles::~OutputFiles() {
   files_.clear();  // removes the temporary files first
+  for (const fs::path& p : made_) Unfinished::get().remove(p, true);
   if (committed_) return;
   std::error_code ec;
   for (auto it = made_.rbegin(); it != made_.rend(); ++it) fs::remove(*it, ec);  // only when empty
@@ -60,6 +117,7 @@ void OutputFiles::folder(const std::string& dir) {
                              "is a file, not a folder");
   check_writable_folder(missing.empty() ? fs::path(".") : missing, dir);
   for (const fs::path& p : made) {
+    Unfinished::get().add(p, true);
     fs::create_directory(p);
     made_.push_back(p);
   }

@@ -1,6 +1,7 @@
 // Output files written under a temporary name beside the target and renamed into place
 // only by commit(). If the writer throws, the destructor removes the temporary file, so
-// a failed run never leaves a partial output behind (docs/design.md, principle 7).
+// a failed run never leaves a partial output behind (docs/design.md, principle 7); where
+// remove_outputs_on_interrupt() was called, neither does a run stopped by SIGINT or SIGTERM.
 #pragma once
 
 #include <filesystem>
@@ -52,5 +53,12 @@ class OutputFiles {
   std::vector<std::filesystem::path> made_;  // folders made by folder(), outermost first
   bool committed_ = false;
 };
+
+// From now on, SIGINT and SIGTERM remove every temporary file not yet committed and every
+// folder OutputFiles::folder made that is left empty, then end the process with 128 + the
+// signal's number (130, 143). Call it first thing in main, before any thread starts: the
+// signals are blocked in every thread and taken by one watcher thread, so the removal runs
+// outside a signal handler and cannot find the list of files half-changed.
+void remove_outputs_on_interrupt();
 
 }  // namespace plumbago

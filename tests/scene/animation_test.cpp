@@ -68,6 +68,11 @@ TEST(Animation, PathsThatCannotBeRenderedAreRefusedWithTheirKey) {
   // Through the target: frame 2 of 3 stands on it.
   std::string through = refusal(R"({"dolly": 6, "frames": 3})");
   EXPECT_NE(through.find("/animation/dolly: frame 2's camera"), std::string::npos) << through;
+  // Past the target: frame 1 stands 4 beyond it and would look back at the scene.
+  std::string past = refusal(R"({"dolly": 20, "frames": 3})");
+  EXPECT_NE(past.find("/animation/dolly: frame 1's camera: the eye reaches or passes the target"), std::string::npos)
+      << past;
+  EXPECT_EQ(refusal(R"({"dolly": 5.9, "frames": 3})"), "accepted");
 }
 
 class AnimationCli : public ::testing::Test {
@@ -102,11 +107,33 @@ TEST_F(AnimationCli, ABlockedFolderLeavesNoFrame) {
   EXPECT_FALSE(std::filesystem::exists(tmp.path("blocked/frames")));
 }
 
-TEST_F(AnimationCli, BenchTimesThePath) {
+TEST_F(AnimationCli, BenchTimesThePathUpToItsFrames) {
   auto r = testing::run_cli("bench " + scene + " --json", tmp);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("\"path\""), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"frames\": 3"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"timed_frames\": 3"), std::string::npos) << r.out;
+  r = testing::run_cli("bench " + scene + " --json --backend gpu --frames 2", tmp);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"timed_frames\": 2"), std::string::npos) << r.out;
+}
+
+// A long path stopped by a signal as soon as its first frame is being written: the command
+// ends with 128 + the signal's number, and neither a frame nor the folder it made is left.
+TEST_F(AnimationCli, AStoppedPathLeavesNothingBehind) {
+  std::string long_path = tmp.write("long.json", R"({"mesh": {"procedural": "torus"}, "resolution": [96, 72],
+      "effects": ["contours"], "animation": {"orbit_deg": 60, "frames": 20000}})");
+  for (auto [signal, code] : {std::pair{"INT", 130}, {"TERM", 143}}) {
+    std::string frames = tmp.path(std::string("frames_") + signal);
+    std::string script = std::string(PLUMBAGO_CLI) + " render " + long_path + " -o " + frames + " 2>" +
+                         tmp.path("stderr") + " & pid=$!; until [ -n \"$(ls -A " + frames +
+                         " 2>/dev/null)\" ]; do sleep 0.02; done; kill -" + signal + " $pid; wait $pid; echo $? >" +
+                         tmp.path("code");
+    std::system(("timeout 120 sh -c '" + script + "'").c_str());
+    EXPECT_EQ(testing::slurp(tmp.path("code")), std::to_string(code) + "\n") << signal;
+    EXPECT_FALSE(std::filesystem::exists(frames)) << signal;
+    EXPECT_NE(testing::slurp(tmp.path("stderr")).find("unfinished output file"), std::string::npos) << signal;
+  }
 }
 
 }  // namespace

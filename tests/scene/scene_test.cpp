@@ -138,6 +138,8 @@ TEST(SceneFile, CamerasFloatCannotRenderAreRefused) {
       {R"({"fov_deg": 1e-30})", "/camera/fov_deg: gives a field of view of 1e-30 degrees, under the 0.001"},
       {R"({"eye": [1, 2, 3], "target": [1, 2, 3]})", "/camera/target: coincides with the eye"},
       {R"({"eye": [0, 0, 0]})", "/camera/target: coincides with the eye (the scene's center)"},
+      {R"({"eye": [0, 0, 1e-20], "target": [0, 0, 0], "up": [0, 1, 0]})",
+       "/camera/target: lies 1e-20 from the eye, under the 1e-18 a view direction needs"},
       {R"({"eye": [0, 5, 0], "target": [0, 0, 0], "up": [0, -2, 0]})", "/camera/up: is parallel"},
       {R"({"eye": [0, 5, 0], "target": [0, 0, 0], "up": [1e-4, 1, 0]})", "/camera/up: is parallel"},
       {R"({"eye": [0, 5, 0]})",
@@ -156,6 +158,7 @@ TEST(SceneFile, CamerasFloatCannotRenderAreRefused) {
   for (const auto& [camera, expected] : cases) {
     std::string m = refusal(torus + camera + "}");
     EXPECT_NE(m.find("bad.json: " + expected), std::string::npos) << "camera " << camera << "\n gave: " << m;
+    EXPECT_EQ(m.find("nan"), std::string::npos) << "camera " << camera << "\n gave: " << m;
   }
   // A camera fitted to a scene too large for its field of view would stand beyond the bound.
   EXPECT_NE(refusal(R"({"objects": [{"mesh": {"procedural": "torus"},
