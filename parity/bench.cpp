@@ -5,6 +5,7 @@
 #include "common/core/passes.hpp"
 #include "gpu/core/limits.hpp"
 #include "gpu/core/pipeline.hpp"
+#include "gpu/core/stage.hpp"
 #include "parity/path_frames.hpp"
 #include "reference/core/pipeline.hpp"
 
