@@ -25,12 +25,11 @@ def test_other_threads_run_while_a_frame_renders():
     s.set("contour.copies", 5)
     worker = threading.Thread(target=s.render, args=("reference",))
     ticks = 0
-    start = time.perf_counter()
     worker.start()
     while worker.is_alive():
         ticks += 1
         time.sleep(0.001)
-    assert time.perf_counter() - start > 0.05 and ticks > 10
+    assert ticks > 10
 
 
 def test_threads_share_the_gpu():
@@ -51,6 +50,8 @@ def test_threads_share_the_gpu():
 
 def test_a_thousand_renders_do_not_leak():
     s = small_scene()
+    for key, value in (("pencil_textures.size", 16), ("pencil_textures.layers", 2), ("contour.texture_layer", 0)):
+        s.set(key, value)  # the contour texture, made anew by every render, in a few ms
     for backend in ("gpu", "reference"):  # the first frames make what lives as long as the process
         for _ in range(20):
             s.render(backend, linear=True)
