@@ -27,7 +27,6 @@
 #include <thread>
 
 #include "apps/command.hpp"
-#include "apps/path_frames.hpp"
 #include "apps/scene_options.hpp"
 #include "bench/paper_claims.hpp"
 #include "common/core/passes.hpp"
@@ -37,7 +36,7 @@
 #include "gpu/core/pipeline.hpp"
 #include "gpu/core/stage.hpp"
 #include "gpu/gl/context.hpp"
-#include "reference/core/pipeline.hpp"
+#include "parity/bench.hpp"
 
 namespace plumbago {
 namespace {
@@ -58,64 +57,8 @@ struct BenchOptions {
   double tolerance = 0.05;
 };
 
-// Difference of one buffer from the same buffer of an earlier run.
-struct BufferError {
-  double max_abs = 0, mean_abs = 0, rmse = 0, over_tolerance = 0;
-};
-
-struct BenchResult {
-  std::string scene, backend;
-  int faces = 0, width = 0, height = 0;
-  double strokes = 0;  // the strokes a frame draws (Frame::counts "strokes"; of a path, its first frame)
-  std::map<std::string, double> counts;  // what its stroke stages made (Frame::counts; of a path, its first frame)
-  double frame_ms = 0;                   // median
-  double host_ms = 0;                    // GPU: median CPU time of the GL thread per frame (Frame::host_ms)
-  size_t readback_bytes = 0;             // GPU: the most a timed frame read back
-  std::map<std::string, double> stages;  // mean ms per pass of a frame
-  std::map<std::string, double> preprocessing;  // once per scene, not part of a frame
-  std::map<std::string, BufferError> errors;    // --against
-  std::vector<std::string> missing;             // --against: buffers with no saved counterpart
-  // A camera path (Scene::animation): each of its frames timed once, in order.
-  int path_frames = 0, timed_path_frames = 0;  // its frames, and how many were timed
-  double path_ms = 0, slowest_ms = 0;          // the timed frames' sum and the slowest
-  double setup_ms = 0;                         // median per frame: making its renderer (GPU)
-  std::map<std::string, double> limits;        // --limits: each probe's ms at the scene's size (GPU)
-};
-
-void add_pass_times(const Frame& f, int frames, BenchResult& r) {
-  for (const auto& p : f.ran) {
-    if (is_preprocessing(p.name))
-      r.preprocessing[p.name] = p.ms;
-    else
-      r.stages[p.name] += p.ms / frames;
-  }
-}
-
-void set_counts(BenchResult& r, const Frame& f) {
-  r.counts = f.counts;
-  auto strokes = f.counts.find("strokes");
-  r.strokes = strokes == f.counts.end() ? 0 : strokes->second;
-}
-
-BenchResult new_result(const Scene& scene, const std::string& backend) {
-  BenchResult r;
-  r.scene = scene.source;
-  r.backend = backend;
-  for (const auto& o : scene.objects) r.faces += int(o.mesh->triangles.size());
-  r.width = scene.width;
-  r.height = scene.height;
-  return r;
-}
-
 bool wanted(const BenchOptions& o, const std::string& name) {
   return o.buffers.empty() || std::find(o.buffers.begin(), o.buffers.end(), name) != o.buffers.end();
-}
-
-// The buffers of the untimed extra frame, the final image included as "compose.color".
-std::map<std::string, Image> kept_buffers(Frame f) {
-  std::map<std::string, Image> out = std::move(f.buffers);
-  out["compose.color"] = std::move(f.color);
-  return out;
 }
 
 BufferError buffer_error(const Image& a, const Image& b, double tolerance) {
@@ -167,98 +110,18 @@ int reference_frames(const BenchOptions& o) {
   return o.reference_frames ? o.reference_frames : std::max(1, o.frames / 10);
 }
 
-bool keeps_buffers(const BenchOptions& o) { return !o.save_dir.empty() || !o.against_dir.empty(); }
-
-BenchResult bench_reference(const BenchOptions& o, const Scene& scene, int frames, OutputFiles& out) {
-  BenchResult r = new_result(scene, "reference");
-  std::vector<double> ms;
-  for (int i = 0; i < frames; ++i) {
-    Stopwatch w;
-    Frame f = reference::render(scene);
-    double total = w.ms();
-    set_counts(r, f);
-    for (const auto& p : f.ran) total -= is_preprocessing(p.name) ? p.ms : 0.0;  // a frame excludes preprocessing
-    ms.push_back(total);
-    add_pass_times(f, frames, r);
-  }
-  r.frame_ms = median(ms);
-  if (keeps_buffers(o)) {
-    FrameOptions fo;
-    fo.keep_buffers = true;
-    save_and_compare(o, kept_buffers(reference::render(scene, fo)), r, out);
-  }
-  return r;
+// --save and --against: what to do with the untimed frame's buffers.
+KeptBuffers kept(const BenchOptions& o, OutputFiles& out) {
+  if (o.save_dir.empty() && o.against_dir.empty()) return {};
+  return [&o, &out](std::map<std::string, Image> buffers, BenchResult& r) {
+    save_and_compare(o, std::move(buffers), r, out);
+  };
 }
 
-BenchResult bench_gpu(const BenchOptions& o, const Scene& scene, int frames, OutputFiles& out) {
-  BenchResult r = new_result(scene, "gpu");
-  gpu::Renderer renderer(scene);
-  Frame first = renderer.render();  // warm-up: shader compilation, first-use allocations
-  for (const auto& p : first.ran)
-    if (is_preprocessing(p.name)) r.preprocessing[p.name] = p.ms;
-  set_counts(r, first);
-  std::vector<double> ms, host;
-  for (int i = 0; i < frames; ++i) {
-    Frame f;
-    ms.push_back(renderer.render_frame(f));
-    host.push_back(f.host_ms);
-    r.readback_bytes = std::max(r.readback_bytes, f.readback_bytes);
-    add_pass_times(f, frames, r);
-  }
-  r.frame_ms = median(ms);
-  r.host_ms = median(host);
-  if (keeps_buffers(o)) {
-    FrameOptions fo;
-    fo.keep_buffers = true;
-    save_and_compare(o, kept_buffers(renderer.render(fo)), r, out);
-  }
-  if (o.limits)
+// --limits: the machine's limits at the scene's size, next to a GPU result of still frames.
+BenchResult with_limits(const BenchOptions& o, const Scene& scene, BenchResult r) {
+  if (o.limits && r.backend == "gpu" && !r.path_frames)
     for (const gpu::ProbeTime& p : gpu::measure_limits(scene)) r.limits[gpu::probe_name(p.probe)] = p.ms;
-  return r;
-}
-
-// A pass's time as a multiple of its probe's (--limits), and the probe's name.
-std::pair<double, std::string> probe_multiple(const BenchResult& r, const std::string& pass, double ms) {
-  std::string probe = gpu::probe_name(gpu::probe_of(pass));
-  auto it = r.limits.find(probe);
-  return {it == r.limits.end() || it->second <= 0 ? 0.0 : ms / it->second, probe};
-}
-
-// The frames of a camera path of `count` frames that are timed under a cap of `cap`: every
-// one, or `cap` of them spread evenly from the first to the last.
-std::vector<int> timed_path_frames(int count, int cap) {
-  std::vector<int> out;
-  int n = std::min(count, cap);
-  for (int k = 0; k < n; ++k) out.push_back(n == 1 ? 0 : int(std::lround(double(k) * (count - 1) / (n - 1))));
-  return out;
-}
-
-// A scene with a camera path: its frames timed once each, at most the backend's --frames
-// (frame_ms their median), after one untimed frame that runs the preprocessing and compiles
-// the shaders.
-BenchResult bench_path(const BenchOptions& o, const Scene& scene, const std::string& backend, OutputFiles& out) {
-  BenchResult r = new_result(scene, backend);
-  PathFrames path(scene, backend);
-  Frame first = path.render(0);
-  for (const auto& p : first.ran)
-    if (is_preprocessing(p.name)) r.preprocessing[p.name] = p.ms;
-  set_counts(r, first);
-  std::vector<double> ms, setup;
-  std::vector<int> timed = timed_path_frames(path.count(), backend == "gpu" ? o.frames : reference_frames(o));
-  r.path_frames = path.count();
-  r.timed_path_frames = int(timed.size());
-  for (int i : timed) {
-    Frame f;
-    double setup_ms = 0;
-    ms.push_back(path.timed(i, f, setup_ms));
-    setup.push_back(setup_ms);
-    add_pass_times(f, int(timed.size()), r);
-    r.path_ms += ms.back();
-    r.slowest_ms = std::max(r.slowest_ms, ms.back());
-  }
-  r.frame_ms = median(ms);
-  r.setup_ms = median(setup);
-  if (keeps_buffers(o)) save_and_compare(o, kept_buffers(path.render(0, FrameOptions{true})), r, out);
   return r;
 }
 
@@ -327,36 +190,6 @@ void print_text(const std::vector<BenchResult>& results) {
   }
 }
 
-nlohmann::json result_json(const BenchResult& r) {
-  nlohmann::json j{{"scene", r.scene},       {"backend", r.backend},        {"faces", r.faces},
-                   {"strokes", r.strokes},   {"size", {r.width, r.height}}, {"fps", 1000 / r.frame_ms},
-                   {"frame_ms", r.frame_ms}, {"stages", r.stages},          {"preprocessing", r.preprocessing}};
-  if (r.backend == "gpu" && !r.path_frames) j["host_ms"] = r.host_ms, j["readback_bytes"] = r.readback_bytes;
-  if (!r.counts.empty()) j["counts"] = r.counts;
-  if (!r.limits.empty()) {
-    j["limits"] = r.limits;
-    for (const auto& [name, ms] : r.stages) {
-      auto [multiple, probe] = probe_multiple(r, name, ms);
-      j["probe_multiples"][name] = {{"probe", probe}, {"multiple", multiple}};
-    }
-  }
-  if (r.path_frames)
-    j["path"] = {{"frames", r.path_frames},
-                 {"timed_frames", r.timed_path_frames},
-                 {"ms", r.path_ms},
-                 {"slowest_ms", r.slowest_ms},
-                 {"setup_ms", r.setup_ms}};
-  if (!r.errors.empty() || !r.missing.empty()) {
-    nlohmann::json e = nlohmann::json::object();
-    for (const auto& [name, x] : r.errors)
-      e[name] = {
-          {"max_abs", x.max_abs}, {"mean_abs", x.mean_abs}, {"rmse", x.rmse}, {"over_tolerance", x.over_tolerance}};
-    j["errors"] = e;
-    j["missing"] = r.missing;
-  }
-  return j;
-}
-
 void print_json(const BenchOptions& o, const std::vector<BenchResult>& results) {
   nlohmann::json j{
       {"renderer", gpu::Context::get().renderer()}, {"machine", machine_name()}, {"results", nlohmann::json::array()}};
@@ -386,8 +219,8 @@ std::vector<ClaimRun> run_paper(const BenchOptions& o, OutputFiles& out) {
           SceneOptions so{(fs::path(PLUMBAGO_SOURCE_DIR) / c.plumbago_scene).string(), o.size, o.assignments};
           Scene scene = so.load();
           scene.source = c.plumbago_scene;
-          if (o.backend != "reference") g = bench_gpu(o, scene, o.frames, out);
-          if (o.backend != "gpu") r = bench_reference(o, scene, reference_frames(o), out);
+          if (o.backend != "reference") g = with_limits(o, scene, bench_gpu(scene, o.frames, kept(o, out)));
+          if (o.backend != "gpu") r = bench_reference(scene, reference_frames(o), kept(o, out));
         } catch (const std::exception& e) {
           run.note = std::string("not run: ") + e.what();
         }
@@ -468,10 +301,8 @@ void run(const BenchOptions& o) {
     Scene scene = so.load();
     for (const char* backend : {"gpu", "reference"}) {
       if (o.backend != "both" && o.backend != backend) continue;
-      bool gpu = backend == std::string("gpu");
-      results.push_back(scene.animation ? bench_path(o, scene, backend, out)
-                        : gpu           ? bench_gpu(o, scene, o.frames, out)
-                                        : bench_reference(o, scene, reference_frames(o), out));
+      int frames = backend == std::string("gpu") ? o.frames : reference_frames(o);
+      results.push_back(with_limits(o, scene, bench_scene(scene, backend, frames, kept(o, out))));
     }
   }
   out.commit();

@@ -22,16 +22,9 @@
 #include "apps/command.hpp"
 #include "apps/scene_options.hpp"
 #include "common/strokes/base_stroke.hpp"
-#include "common/strokes/decal.hpp"
-#include "common/strokes/id_image.hpp"
 #include "common/strokes/stroke.hpp"
-#include "common/strokes/visibility.hpp"
 #include "common/util/output_file.hpp"
-#include "gpu/core/pipeline.hpp"
-#include "gpu/gl/context.hpp"
-#include "gpu/strokes/decal.hpp"
-#include "reference/core/pipeline.hpp"
-#include "reference/strokes/decal.hpp"
+#include "parity/lines.hpp"
 #include "reference/strokes/ray_visibility.hpp"
 
 namespace plumbago {
@@ -46,46 +39,17 @@ struct LinesOptions {
 
 constexpr double kTruthStepPx = 0.5;
 
-// The scene with every object but the sketchy ones drawn with strokes: its frame's ID image
-// holds all their lines.
-Scene lines_scene(const Scene& scene) {
-  Scene s = scene;
-  for (SceneObject& o : s.objects)
-    if (o.style != Style::Sketchy) o.style = Style::Strokes;
-  s.effects = {"strokes"};
-  if (!sketchy_objects(scene).objects.empty()) s.effects.push_back("sketchy");
-  return s;
-}
-
-Frame strokes_frame(const Scene& scene, const std::string& backend) {
-  FrameOptions keep{true};
-  return backend == "reference" ? reference::render(scene, keep) : gpu::Renderer(scene).render(keep);
-}
-
-// The decals' surface points, projected as the backend's frames project them.
-DecalSurface decal_surface(const Scene& scene, const std::string& backend) {
-  if (!has_decals(scene)) return {};
-  if (backend == "reference") return reference::project_decals_by_rays(scene);
-  gpu::Context::get();  // before any GL call
-  return gpu::project_decals_through_gbuffer(scene);
-}
-
 // `origin`: the scene's (p.world is relative to it); the file has world space.
 nlohmann::json path_json(const WindowPath& p, const ImageU32& keys, glm::dvec3 origin) {
-  nlohmann::json points = nlohmann::json::array(), screen = nlohmann::json::array(), visible = nlohmann::json::array();
+  nlohmann::json points = nlohmann::json::array(), screen = nlohmann::json::array();
   for (size_t k = 0; k < p.window.size(); ++k) {
     glm::dvec3 world = glm::dvec3(p.world[k]) + origin;
     points.push_back({world.x, world.y, world.z});
     screen.push_back({p.window[k].x, p.window[k].y});
-    visible.push_back(p.front_facing && sample_visible(keys, sample_at(p, p.arc_px[k])));
   }
-  return {{"kind", line_kind_name(p.kind)},
-          {"object", p.object},
-          {"closed", p.closed},
-          {"front_facing", p.front_facing},
-          {"points", points},
-          {"screen", screen},
-          {"visible", visible}};
+  return {{"kind", line_kind_name(p.kind)},    {"object", p.object}, {"closed", p.closed},
+          {"front_facing", p.front_facing},    {"points", points},   {"screen", screen},
+          {"visible", points_visible(p, keys)}};
 }
 
 // The outline of each strip of a ribbon (its triangles in GL strip order, R0 L0 R1 L1 ...):
@@ -176,28 +140,20 @@ void run(const LinesOptions& o) {
   bool as_svg = o.output.ends_with(".svg");
   if (!as_svg && !o.output.ends_with(".json"))
     throw std::invalid_argument("lines: -o must end in .json or .svg, not '" + o.output + "'");
-  Scene scene = lines_scene(o.scene.load());
-  auto p = scene.params.get<StrokesParams>();
-  DecalSurface decals = decal_surface(scene, o.backend);
-  WindowLines lines = window_lines(scene, p, LineObjects::Strokes, nullptr, &decals);
-  Frame frame = strokes_frame(scene, o.backend);
-  ImageU32 keys = keys_from_channels(frame.buffers.at("id_image.ids"));
-  auto test = [&](const std::vector<VisibilitySample>& batch) {
-    std::vector<uint8_t> flags;
-    for (const VisibilitySample& s : batch) flags.push_back(sample_visible(keys, s));
-    return flags;
-  };
-  Visibility visibility = visible_runs(lines, p, test);
+  SceneLines found = scene_lines(o.scene.load(), o.backend);
+  const Scene& scene = found.scene;
+  const WindowLines& lines = found.lines;
+  const Visibility& visibility = found.visibility;
   std::string text;
   if (as_svg) {
     text = svg(scene, lines, visibility);
   } else {
     nlohmann::json paths = nlohmann::json::array();
-    for (const WindowPath& path : lines.paths) paths.push_back(path_json(path, keys, scene.origin));
+    for (const WindowPath& path : lines.paths) paths.push_back(path_json(path, found.keys, scene.origin));
     nlohmann::json j{{"paths", paths}};
     if (o.truth) {
       add_truth(scene, lines, visibility, j["paths"]);
-      for (const PassTime& t : frame.ran) j["ran"].push_back({{"name", t.name}, {"ms", t.ms}});
+      for (const PassTime& t : found.frame.ran) j["ran"].push_back({{"name", t.name}, {"ms", t.ms}});
     }
     text = j.dump() + "\n";
   }

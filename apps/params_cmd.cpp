@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #include "apps/command.hpp"
-#include "apps/param_text.hpp"
+#include "common/core/param_text.hpp"
 #include "common/core/params.hpp"
 
 namespace plumbago {

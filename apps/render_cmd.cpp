@@ -6,11 +6,11 @@
 #include <filesystem>
 
 #include "apps/command.hpp"
-#include "apps/path_frames.hpp"
 #include "apps/scene_options.hpp"
 #include "common/util/visualize.hpp"
 #include "gpu/core/pipeline.hpp"
 #include "gpu/gl/context.hpp"
+#include "parity/path_frames.hpp"
 #include "reference/core/pipeline.hpp"
 
 namespace plumbago {

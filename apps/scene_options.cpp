@@ -3,11 +3,10 @@
 #include <regex>
 #include <stdexcept>
 
+#include "common/scene/open_scene.hpp"
 #include "common/util/memory_budget.hpp"
 
 namespace plumbago {
-
-const char* const kDefaultBuiltinScene = "pencil";
 
 void SceneOptions::add_to(CLI::App* cmd, bool scene_required) {
   std::string builtins;
@@ -24,27 +23,14 @@ void apply_size(const std::string& size, Scene& scene) {
   std::smatch m;
   if (!std::regex_match(size, m, std::regex(R"((\d{1,5})x(\d{1,5}))")))
     throw std::invalid_argument("--size: '" + size + "' is not WxH (e.g. 800x800)");
-  int w = std::stoi(m[1]), h = std::stoi(m[2]);
-  if (w < 1 || h < 1 || w > 16384 || h > 16384)
-    throw std::invalid_argument("--size: " + size + " is out of range (1..16384 each)");
-  scene.width = w;
-  scene.height = h;
+  resize_scene(scene, std::stoi(m[1]), std::stoi(m[2]), "--size");
 }
 
 }  // namespace
 
 Scene SceneOptions::load() const {
-  Scene s;
-  if (scene.empty())
-    s = builtin_scene(kDefaultBuiltinScene);
-  else if (scene.rfind("builtin:", 0) == 0)
-    s = builtin_scene(scene.substr(8));
-  else
-    s = load_scene(scene);
+  Scene s = open_scene(scene);
   if (!size.empty()) apply_size(size, s);
-  if (auto fault =
-          camera_fault(s.camera, double(s.width) / s.height, s.origin))  // the field of view across the new size
-    throw std::invalid_argument("--size " + size + ": " + s.source + ": /camera/" + fault->key + ": " + fault->what);
   for (const auto& a : assignments) {
     try {
       s.params.set_assignment(a);

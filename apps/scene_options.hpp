@@ -21,6 +21,4 @@ struct SceneOptions {
   Scene load() const;
 };
 
-extern const char* const kDefaultBuiltinScene;
-
 }  // namespace plumbago

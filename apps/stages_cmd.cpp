@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "apps/command.hpp"
-#include "apps/param_text.hpp"
+#include "common/core/param_text.hpp"
 #include "common/core/passes.hpp"
 #include "common/core/stage.hpp"
 

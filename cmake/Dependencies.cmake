@@ -65,3 +65,24 @@ else()
   message(STATUS "Plumbago: not building the viewer (plumbago view): GLFW or Dear ImGui not found; "
                  "install the Debian packages 'libglfw3-dev libimgui-dev' (or run scripts/install-deps.sh)")
 endif()
+
+# Optional: the Python module (python/) needs pybind11 and Python's headers; without them
+# everything else builds. Debian's python3 (numpy, pytest, matplotlib: scripts/install-deps.sh)
+# unless Python_EXECUTABLE names another; PATH may name another first (pyenv). Not in the
+# sanitizer build, whose objects python3 could not load.
+if(PLUMBAGO_SANITIZE)
+  set(PLUMBAGO_PYTHON OFF)
+elseif(PLUMBAGO_PYTHON)
+  if(NOT DEFINED Python_EXECUTABLE AND EXISTS /usr/bin/python3)
+    set(Python_EXECUTABLE /usr/bin/python3)
+  endif()
+  find_package(Python 3 QUIET COMPONENTS Interpreter Development.Module)
+  find_package(pybind11 CONFIG QUIET)
+  if(Python_FOUND AND pybind11_FOUND)
+    message(STATUS "Plumbago: building the Python module with pybind11 ${pybind11_VERSION} for ${Python_EXECUTABLE}")
+  else()
+    set(PLUMBAGO_PYTHON OFF)
+    message(STATUS "Plumbago: not building the Python module: pybind11 or Python's headers not found; install "
+                   "the Debian packages 'pybind11-dev python3-dev' (or run scripts/install-deps.sh)")
+  endif()
+endif()

@@ -9,6 +9,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev
   libegl-dev libopengl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
   python3-matplotlib python3-numpy
+  pybind11-dev python3-dev python3-pytest  # the Python module (python/) and its tests
   snakemake
   libglfw3-dev libimgui-dev xvfb xauth
   clang-14 libclang-rt-14-dev llvm-14  # scripts/sanitize.sh: ASan, UBSan, libFuzzer, llvm-symbolizer

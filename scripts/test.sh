@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Builds Plumbago and runs the whole test suite: the EGL build (default) with ctest, then
-# the OSMesa build's GPU tests (same GPU code through the other GL platform).
+# the OSMesa build's GPU tests and the Python module's (same GPU code through the other GL
+# platform).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 werror=${PLUMBAGO_WERROR:-OFF}
 BUILD_DIR=build scripts/build.sh -DPLUMBAGO_WERROR="$werror"
 (cd build && ctest --output-on-failure -j"$(nproc)" --timeout 900)
 cmake -S . -B build-osmesa -G Ninja -DCMAKE_BUILD_TYPE=Release -DPLUMBAGO_GL=osmesa -DPLUMBAGO_WERROR="$werror"
-cmake --build build-osmesa -j"$(nproc)" --target plumbago_tests
-(cd build-osmesa && ctest --output-on-failure -j"$(nproc)" --timeout 900 -R "GlContext|Parity|GlTest|Frames|SamplerVsGpu|Cli|Golden|Stage|BaseCoat")
+cmake --build build-osmesa -j"$(nproc)" --target plumbago_tests plumbago_python
+(cd build-osmesa && ctest --output-on-failure -j"$(nproc)" --timeout 900 -R "GlContext|Parity|GlTest|Frames|SamplerVsGpu|Cli|Golden|Stage|BaseCoat|python_")

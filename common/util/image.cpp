@@ -49,6 +49,15 @@ void check_image_extension(const std::string& path) {
     throw std::runtime_error(path + ": unsupported image extension '" + ext + "' (use .png or .exr)");
 }
 
+std::vector<uint8_t> png_bytes(const Image& img) {
+  Image top_first = flipped(img);
+  std::vector<uint8_t> out(top_first.data.size());
+  if (!OIIO::convert_pixel_values(OIIO::TypeDesc::FLOAT, top_first.data.data(), OIIO::TypeDesc::UINT8, out.data(),
+                                  int(out.size())))
+    throw std::runtime_error("cannot convert an image to 8 bits");
+  return out;
+}
+
 void write_image(const Image& img, OutputFile& file) {
   const std::string& path = file.path();
   check_image_extension(path);
@@ -57,10 +66,13 @@ void write_image(const Image& img, OutputFile& file) {
   if (!out) throw std::runtime_error(path + ": " + OIIO::geterror());
   OIIO::ImageSpec spec(img.width, img.height, img.channels, is_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
   spec.attribute("DateTime", header_date());
-  Image top_first = flipped(img);
-  if (!out->open(file.temporary_path(), spec) || !out->write_image(OIIO::TypeDesc::FLOAT, top_first.data.data()) ||
-      !out->close())
-    throw std::runtime_error(path + ": " + out->geterror());
+  bool written = false;
+  if (out->open(file.temporary_path(), spec)) {
+    written = is_float ? out->write_image(OIIO::TypeDesc::FLOAT, flipped(img).data.data())
+                       : out->write_image(OIIO::TypeDesc::UINT8, png_bytes(img).data());
+    written = out->close() && written;
+  }
+  if (!written) throw std::runtime_error(path + ": " + out->geterror());
 }
 
 void write_images(const ImageFiles& images, OutputFiles& out) {

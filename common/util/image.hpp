@@ -43,6 +43,9 @@ using ImageU32 = ImageT<uint32_t>;
 void write_image(const Image& img, const std::string& path);
 // The same into `file`'s temporary name (common/util/output_file.hpp); the caller commits.
 void write_image(const Image& img, OutputFile& file);
+// The bytes of `img` as a PNG of it holds them: top row first, each value clamped to [0,1]
+// and rounded to 8 bits by OpenImageIO's conversion, the one write_image uses.
+std::vector<uint8_t> png_bytes(const Image& img);
 // Refuses a path whose extension is neither .png nor .exr, naming it.
 void check_image_extension(const std::string& path);
 // Image files to write: each path with the function that makes its image when its turn

@@ -3,16 +3,14 @@
 ball), a degree sweep of the jet and the default (method = auto) on analytic surfaces,
 regular, irregular and strongly irregular meshes (see README.md).
 
-Drives `plumbago curvature` (no cache) on meshes written by surfaces.py, reads the
-computation time from its summary line, and compares the CSV with the exact curvature.
+Calls the Python module's curvature() (no cache) on meshes written by surfaces.py and
+compares its arrays with the exact curvature; the time is the computation's own.
 
 Settings (experiments/config/*.yaml, curvature_accuracy): surfaces, meshings (regular,
 irregular, strong), radii, ball_clips (exact, approximate: the approximate ball at each
 radius > 0), degrees. One point per surface and meshing. Run through experiments/Snakefile (lib/study_cli.py).
 """
 import pathlib
-import re
-import subprocess
 import sys
 import tempfile
 
@@ -31,14 +29,6 @@ EDGES_PER_DEFAULT_RADIUS = 2.0
 UMBILIC_RATIO = 0.1          # directions are compared where the exact ones are defined
 
 
-def run_plumbago(plumbago, mesh_path, out_csv, args):
-    result = subprocess.run([plumbago, "curvature", str(mesh_path), "-o", str(out_csv), "--no-cache"] + args,
-                            capture_output=True, text=True, check=True)
-    summary = re.search(r"vertices, (\w+), ([0-9.]+) ms", result.stderr)
-    table = np.loadtxt(out_csv, delimiter=",", skiprows=1, ndmin=2)
-    return float(summary.group(2)), table, summary.group(1)
-
-
 def boundary_distance(positions, triangles):
     """Distance from every vertex to the nearest vertex on an open boundary (inf if none)."""
     edges = np.sort(np.concatenate([triangles[:, [0, 1]], triangles[:, [1, 2]], triangles[:, [2, 0]]]), axis=1)
@@ -54,16 +44,16 @@ def boundary_distance(positions, triangles):
     return out
 
 
-def errors(table, truth, keep):
+def errors(k, truth, keep):
     """Median direction error (degrees), median relative errors of k_min and k_max, as in
-    tests/curvature/curvature_test.cpp, and the share of vertices with either more than 50% off."""
-    p = table[keep, 1:4]
-    _, k_min, k_max, d_min = truth(p)
+    tests/curvature/curvature_test.cpp, and the share of vertices with either more than 50% off;
+    `k` is plumbago.curvature's."""
+    _, k_min, k_max, d_min = truth(k["positions"][keep].astype(np.float64))
     scale = 0.1 * np.maximum(np.abs(k_min), np.abs(k_max))
-    e_min = np.abs(table[keep, 7] - k_min) / np.maximum(np.abs(k_min), scale)
-    e_max = np.abs(table[keep, 8] - k_max) / np.maximum(np.abs(k_max), scale)
+    e_min = np.abs(k["k_min"][keep] - k_min) / np.maximum(np.abs(k_min), scale)
+    e_max = np.abs(k["k_max"][keep] - k_max) / np.maximum(np.abs(k_max), scale)
     defined = np.abs(k_max - k_min) >= UMBILIC_RATIO * (np.abs(k_max) + np.abs(k_min))
-    cosine = np.abs(np.einsum("ij,ij->i", table[keep, 9:12], d_min))[defined]
+    cosine = np.abs(np.einsum("ij,ij->i", k["d_min"][keep].astype(np.float64), d_min))[defined]
     direction = np.degrees(np.arccos(np.minimum(cosine, 1.0)))
     far_off = np.mean((e_min > 0.5) | (e_max > 0.5))
     return (np.median(direction) if direction.size else np.nan), np.median(e_min), np.median(e_max), far_off
@@ -91,15 +81,15 @@ def measure(s, point):
         mesh = work / f"{name}-{meshing}.obj"
         surfaces.write_obj(mesh, positions, triangles)
         keep = boundary_distance(positions, triangles) >= 0.1 * diagonal
-        runs = [("default", 0, [])]
-        runs += [("tensor", r, ["--method", "tensor", "--radius", str(r)]) for r in s["radii"]]
-        approximate = ["--set", "curvature.ball_clip=approximate"]
-        runs += [("approximate", r, ["--method", "tensor", "--radius", str(r)] + approximate)
+        runs = [("default", 0, {})]
+        runs += [("tensor", r, dict(method="tensor", radius=r)) for r in s["radii"]]
+        runs += [("approximate", r, dict(method="tensor", radius=r, ball_clip="approximate"))
                  for r in s["radii"] if r > 0 and "approximate" in s["ball_clips"]]
-        runs += [("jet", d, ["--method", "jet", "--set", f"curvature.jet_degree={d}"]) for d in s["degrees"]]
-        for method, setting, args in runs:
-            ms, table, used = run_plumbago(pc.plumbago(), mesh, work / "out.csv", args)
-            direction, e_min, e_max, far_off = errors(table, truth, keep)
+        runs += [("jet", d, dict(method="jet", jet_degree=d)) for d in s["degrees"]]
+        for method, setting, params in runs:
+            k = pc.module().curvature(mesh, cache=False, **params)
+            ms, used = k["ms"], k["method"]
+            direction, e_min, e_max, far_off = errors(k, truth, keep)
             rows.append(dict(surface=name, meshing=meshing, vertices=len(positions), method=method,
                              setting=setting, ms=ms, direction_deg=direction, k_min_rel=e_min, k_max_rel=e_max,
                              far_off=far_off, used=used,

@@ -58,33 +58,34 @@ def shade(ax, p, triangles, view, toward, light):
     ax.add_collection(PolyCollection(corners[front] @ view, facecolors=grey, edgecolors=grey, linewidths=0.3))
 
 
-def hedgehog(ax, table, view, toward):
+def hedgehog(ax, k, view, toward):
     """A short line along d_min at the sampled vertices, orange (firmness 0) to black (1)."""
     from matplotlib.collections import LineCollection
-    p, screen = table[:, 1:4], table[:, 1:4] @ view
+    p = k["positions"].astype(np.float64)
+    screen = p @ view
     cell = np.ptp(screen, axis=0).max() / CELLS
-    chosen = sample(screen, p @ toward, table[:, 4:7] @ toward > 0, cell)
-    tip = HALF_LENGTH * cell * table[chosen, 9:12]
+    chosen = sample(screen, p @ toward, k["normal"] @ toward > 0, cell)
+    tip = HALF_LENGTH * cell * k["d_min"][chosen]
     segments = np.stack([(p[chosen] - tip) @ view, (p[chosen] + tip) @ view], 1)
-    colour = np.array([0.9, 0.45, 0.0])[None] * (1 - table[chosen, 15:16])
+    colour = np.array([0.9, 0.45, 0.0])[None] * (1 - k["firmness"][chosen, None])
     ax.add_collection(LineCollection(segments, colors=colour, linewidths=1.4))
 
 
-def draw(ax, table, triangles, axes, light, title):
+def draw(ax, k, axes, light, title):
     right, up, toward = axes
     view = np.stack([right, up], 1)
-    shade(ax, table[:, 1:4], triangles, view, toward, light)
-    hedgehog(ax, table, view, toward)
+    shade(ax, k["positions"].astype(np.float64), k["triangles"], view, toward, light)
+    hedgehog(ax, k, view, toward)
     ax.autoscale_view()
     ax.set_aspect("equal")
     ax.axis("off")
     ax.set_title(title, fontsize=12)
 
 
-def stats_lines(table, triangles):
+def stats_lines(k):
     """What run.py measures, per region: the edges' mean turn and the share turning more than 20 degrees."""
-    edges = field.edges(triangles)
-    angles, masks = field.turn_deg(table, edges), field.regions(table, edges)
+    edges = field.edges(k["triangles"])
+    angles, masks = field.turn_deg(k, edges), field.regions(k, edges)
     mean, turning = zip(*(field.summary(angles[masks[region]])[1:] for region in ("propagated", "mixed", "all")))
     return ("propagated edges: mean %.1f°, %.1f%% turn > 20°\nmixed: %.1f°, %.1f%%; all: %.1f°, %.1f%%"
             % (mean[0], 100 * turning[0], mean[1], 100 * turning[1], mean[2], 100 * turning[2]))
@@ -106,9 +107,8 @@ def main():
     fig, panels = plt.subplots(1, 2, figsize=(16, 8.4))
     fig.subplots_adjust(left=0.01, right=0.99, bottom=0.05, top=0.88, wspace=0.02)
     for ax, setting in zip(panels, field.SETTINGS):
-        _, table, _ = field.run_curvature(pc.plumbago(), mesh, field.SETTINGS[setting])
-        triangles = field.welded_faces(mesh, table)
-        draw(ax, table, triangles, axes, light, titles[setting] + "\n" + stats_lines(table, triangles))
+        k = pc.module().curvature(mesh, cache=False, **field.SETTINGS[setting])
+        draw(ax, k, axes, light, titles[setting] + "\n" + stats_lines(k))
     fig.supxlabel("d_min on %s: orange where propagated (firmness 0), black where reliable (1), between where weakly "
                  "anisotropic" % mesh.name, fontsize=13)
     fig.savefig(out, dpi=110)

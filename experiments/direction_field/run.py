@@ -3,11 +3,11 @@
 propagated (issue 19 §4), with Lee's propagation alone (`literal`:
 curvature.direction_smoothing = 0) and with the default smoothing (`smoothed`).
 
-Drives `plumbago curvature --no-cache` on the shared models and on meshes written by
-../curvature_accuracy/surfaces.py; over the mesh's edges, the angle modulo pi between the
+Calls the Python module's curvature() (no cache) on the shared models and on meshes written
+by ../curvature_accuracy/surfaces.py; over the mesh's edges, the angle modulo pi between the
 two ends' d_min (field.py), summarised per region: both ends reliable (firmness 1), both
 propagated (firmness 0), the rest (mixed: the border between the two, and edges with a
-weakly anisotropic end), and all edges. Time: plumbago's own figure.
+weakly anisotropic end), and all edges. Time: the computation's own (curvature()'s ms).
 
 Settings (experiments/config/*.yaml, direction_field): models (names in ../shared/models,
 skipped when absent), surfaces, meshings, edges_per_diagonal (the analytic meshes' edge
@@ -60,17 +60,17 @@ def analytic_mesh(s, point, folder):
 
 def measure_setting(mesh, setting, repeats):
     """The rows of one setting: one per region, each with the fastest of `repeats` runs' time."""
-    runs = [field.run_curvature(pc.plumbago(), mesh, field.SETTINGS[setting]) for _ in range(repeats)]
-    _, table, method = runs[0]
-    edges = field.edges(field.welded_faces(mesh, table))
-    angles, counts = field.turn_deg(table, edges), field.vertex_counts(table)
+    runs = [pc.module().curvature(mesh, cache=False, **field.SETTINGS[setting]) for _ in range(repeats)]
+    k = runs[0]
+    edges = field.edges(k["triangles"])
+    angles, counts = field.turn_deg(k, edges), field.vertex_counts(k)
     rows = []
-    for region, mask in field.regions(table, edges).items():
+    for region, mask in field.regions(k, edges).items():
         count, mean, turning = field.summary(angles[mask])
         rows.append(dict(setting=setting, region=region, edges=count, mean_deg=mean, over_20=turning,
-                         vertices=len(table), **counts, method=method, ms=min(r[0] for r in runs)))
+                         vertices=len(k["k_min"]), **counts, method=k["method"], ms=min(r["ms"] for r in runs)))
         pc.log("%-22s %-8s %-10s %7d edges  mean %6.2f deg  > 20 deg %6.2f%%  %8.1f ms (%s)"
-               % (mesh.stem, setting, region, count, mean, 100 * turning, rows[-1]["ms"], method))
+               % (mesh.stem, setting, region, count, mean, 100 * turning, rows[-1]["ms"], k["method"]))
     return rows
 
 

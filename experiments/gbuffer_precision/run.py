@@ -39,7 +39,7 @@ def measure(s, point):
     stem, mode = point.rsplit("-", 1)
     scene = next(f for f in s["scenes"] if pc.stem(f) == stem)
     size, frames, tolerance = s["size"], s["frames"], s["tolerance"]
-    formats = pc.params()["gbuffer.normal_format"]["range"].split("|")  # most precise first
+    formats = pc.module().params("gbuffer")["gbuffer.normal_format"]["choices"]  # most precise first
     most = "rgba32f"
     assert most in formats
     rows = []

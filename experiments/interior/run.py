@@ -44,7 +44,7 @@ def scenes(s):
 def measure(s, point):
     base = next(f for f in s["scenes"] if pc.stem(f) == point)
     size, frames, tolerance = s["size"], s["frames"], s["tolerance"]
-    shadings = pc.params()["interior.shading"]["range"].split("|")  # gouraud|phong
+    shadings = pc.module().params("interior")["interior.shading"]["choices"]  # gouraud, phong
     rows = []
     with tempfile.TemporaryDirectory(prefix="plumbago-interior-") as work:
         files = {name: pc.derive_scene(base, work, "%s-%d" % (point, i), effects=effects)

@@ -1,9 +1,11 @@
 """Shared helpers of the experiments: run `plumbago bench` through the command line and
-read its JSON, derive scene files, name the machine, write CSV; the scenes and models a
+read its JSON (a process of its own, as the papers time it), load the Python module built
+with the program, derive scene files, name the machine, write CSV; the scenes and models a
 study reads (experiments/Snakefile names them as inputs). The command line every study
 shares is study_cli.py.
 
-The program is $PLUMBAGO, or build/plumbago under the repository root.
+The program is $PLUMBAGO, or build/plumbago under the repository root; the module
+(docs/python.md) is the one built with it, in the python/ folder beside it.
 """
 import csv
 import glob
@@ -12,10 +14,9 @@ import math
 import os
 import pathlib
 import platform
-import re
 import resource
 import subprocess
-import tempfile
+import sys
 import time
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
@@ -23,6 +24,15 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 
 def plumbago():
     return os.environ.get("PLUMBAGO", str(ROOT / "build" / "plumbago"))
+
+
+def module():
+    """The Python module `plumbago` built with the program (its folder's python/), imported."""
+    folder = str(pathlib.Path(plumbago()).resolve().parent / "python")
+    if folder not in sys.path:
+        sys.path.insert(0, folder)
+    import plumbago as pg
+    return pg
 
 
 def run(args, **kw):
@@ -55,12 +65,12 @@ def bench(scene, sets=(), size=None, frames=5, backend="gpu", reference_frames=N
 
 
 def lines_counts(scene, backend="gpu"):
-    """`plumbago lines SCENE` at the scene's camera: its paths (feature lines and decals), how
-    many show (a visible run or more), and the visible runs the strokes draw."""
-    with tempfile.TemporaryDirectory(prefix="plumbago-lines-") as work:
-        text = run(["lines", scene, "--backend", backend, "-o", pathlib.Path(work) / "lines.svg"])
-    paths, shown, runs = re.match(r"(\d+) paths, (\d+) shown, (\d+) visible runs", text).groups()
-    return dict(paths=int(paths), shown=int(shown), visible_runs=int(runs))
+    """The lines of `scene` (a file under the repository root, or builtin:NAME) at its camera
+    (Scene.lines): its paths (feature lines and decals), how many show (a visible run or
+    more), and the visible runs the strokes draw."""
+    paths = module().Scene(scene if scene.startswith("builtin:") else str(ROOT / scene)).lines(backend)
+    return dict(paths=len(paths), shown=sum(1 for p in paths if p["runs"]),
+                visible_runs=sum(len(p["runs"]) for p in paths))
 
 
 TORUS_FACES_AT_1 = 9216  # faces of the procedural torus at resolution 1 (bench's count says what was drawn)
@@ -75,27 +85,13 @@ def result(j, backend):
     return next(r for r in j["results"] if r["backend"] == backend)
 
 
-def params():
-    """Every parameter as {key: {type, default, range, doc}} from `plumbago params`."""
-    out = {}
-    for line in run(["params"]).splitlines():
-        key, type_, default, rest = line.split(None, 3)
-        if rest.startswith("["):  # "[lo, hi]"
-            range_, doc = rest[:rest.index("]") + 1], rest[rest.index("]") + 1:].strip()
-        else:
-            range_, doc = rest.split(None, 1)
-        out[key] = dict(type=type_, default=default, range=range_, doc=doc)
-    return out
-
-
 def param_default(key):
-    p = params()[key]
-    return {"int": int, "real": float}.get(p["type"], str)(p["default"])
+    return module().params()[key]["default"]
 
 
 def param_range(key):
-    lo, hi = params()[key]["range"].strip("[]").split(",")
-    return float(lo), float(hi)
+    p = module().params()[key]
+    return float(p["min"]), float(p["max"])
 
 
 def derive_scene(base, folder, name, **changes):

@@ -5,7 +5,7 @@ time of stroke-based rendering. Frame time on both backends:
     face count;
   - faces: the torus tessellated from about 1K to 1M faces with a fixed set of decals.
 Scenes and stroke files are written per point (torus_decals.py); the strokes that show and
-the visible runs drawn are counted by `plumbago lines`. Each point runs `plumbago bench
+the visible runs drawn are counted by the Python module (Scene.lines). Each point runs `plumbago bench
 --backend both` `repeats` times and keeps each backend's fastest run, the least disturbed
 (GPU: median of `frames` after a warm-up; reference: median of `reference_frames`).
 others_cpu: the share of the machine's CPU time other processes took meanwhile; load_1min:

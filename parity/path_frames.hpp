@@ -1,6 +1,6 @@
-// The frames of a scene's camera path (Scene::animation) on one backend, for `render -o DIR`
-// and `bench`. The GPU backend builds a renderer per frame (a renderer draws the camera it
-// was made with), sharing the preprocessing the first one made.
+// The frames of a scene's camera path (Scene::animation) on one backend, for `render -o DIR`,
+// `bench` and the Python module (python/). The GPU backend builds a renderer per frame (a
+// renderer draws the camera it was made with), sharing the preprocessing the first one made.
 #pragma once
 
 #include <memory>

@@ -1,4 +1,5 @@
-// How a parameter is written for people: `plumbago params` and `plumbago stages`.
+// How a parameter is written for people: `plumbago params`, `plumbago stages` and the Python
+// module's params() (python/).
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-#include "apps/param_text.hpp"
+#include "common/core/param_text.hpp"
 
 namespace plumbago {
 

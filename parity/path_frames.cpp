@@ -1,4 +1,4 @@
-#include "apps/path_frames.hpp"
+#include "parity/path_frames.hpp"
 
 #include "common/core/passes.hpp"
 #include "common/scene/animation.hpp"

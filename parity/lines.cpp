@@ -1,0 +1,65 @@
+#include "parity/lines.hpp"
+
+#include "common/strokes/decal.hpp"
+#include "common/strokes/id_image.hpp"
+#include "common/strokes/stroke.hpp"
+#include "gpu/core/pipeline.hpp"
+#include "gpu/gl/context.hpp"
+#include "gpu/strokes/decal.hpp"
+#include "reference/core/pipeline.hpp"
+#include "reference/strokes/decal.hpp"
+
+namespace plumbago {
+namespace {
+
+// The scene with every object but the sketchy ones drawn with strokes: its frame's ID image
+// holds all their lines.
+Scene lines_scene(const Scene& scene) {
+  Scene s = scene;
+  for (SceneObject& o : s.objects)
+    if (o.style != Style::Sketchy) o.style = Style::Strokes;
+  s.effects = {"strokes"};
+  if (!sketchy_objects(scene).objects.empty()) s.effects.push_back("sketchy");
+  return s;
+}
+
+Frame strokes_frame(const Scene& scene, const std::string& backend) {
+  FrameOptions keep{true};
+  return backend == "reference" ? reference::render(scene, keep) : gpu::Renderer(scene).render(keep);
+}
+
+// The decals' surface points, projected as the backend's frames project them.
+DecalSurface decal_surface(const Scene& scene, const std::string& backend) {
+  if (!has_decals(scene)) return {};
+  if (backend == "reference") return reference::project_decals_by_rays(scene);
+  gpu::Context::get();  // before any GL call
+  return gpu::project_decals_through_gbuffer(scene);
+}
+
+}  // namespace
+
+SceneLines scene_lines(const Scene& scene, const std::string& backend) {
+  SceneLines out{lines_scene(scene)};
+  auto p = out.scene.params.get<StrokesParams>();
+  DecalSurface decals = decal_surface(out.scene, backend);
+  out.lines = window_lines(out.scene, p, LineObjects::Strokes, nullptr, &decals);
+  out.frame = strokes_frame(out.scene, backend);
+  out.keys = keys_from_channels(out.frame.buffers.at("id_image.ids"));
+  const ImageU32& keys = out.keys;
+  auto test = [&keys](const std::vector<VisibilitySample>& batch) {
+    std::vector<uint8_t> flags;
+    for (const VisibilitySample& s : batch) flags.push_back(sample_visible(keys, s));
+    return flags;
+  };
+  out.visibility = visible_runs(out.lines, p, test);
+  return out;
+}
+
+std::vector<bool> points_visible(const WindowPath& path, const ImageU32& keys) {
+  std::vector<bool> out;
+  for (size_t k = 0; k < path.window.size(); ++k)
+    out.push_back(path.front_facing && sample_visible(keys, sample_at(path, path.arc_px[k])));
+  return out;
+}
+
+}  // namespace plumbago
