@@ -5,14 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 
 #include "common/core/passes.hpp"
 #include "common/mesh/procedural.hpp"
+#include "common/util/input_file.hpp"
 
 namespace plumbago {
 
@@ -312,10 +311,8 @@ class SceneReader {
       const json& v = j[key];
       if (!v.is_string())
         fail(path + "/" + key, "expected a style name (" + join(stroke_style_names()) + ") or a style file");
-      std::string name = v.get<std::string>();
-      bool relative_file = !is_stroke_style_preset(name) && !fs::path(name).is_absolute();
       try {
-        *style = load_stroke_style(relative_file ? (fs::path(base_) / name).string() : name);
+        *style = load_stroke_style_from(v.get<std::string>(), base_);
       } catch (const StrokeStyleError& e) {
         fail(path + "/" + key, e.what());
       }
@@ -576,11 +573,7 @@ std::string scene_text(const std::string& source) {
       throw SceneError(source + ": no such built-in scene (" + join(builtin_scene_names()) + ")");
     return it->second;
   }
-  std::ifstream in(source);
-  if (!in || fs::is_directory(source)) throw SceneError(source + ": cannot read the scene file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  return read_input_file_as<SceneError>(source, "scene file");
 }
 
 std::string scene_folder(const std::string& source) {

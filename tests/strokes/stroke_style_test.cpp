@@ -204,7 +204,8 @@ TEST(StrokeStyle, FilesByPathAndTheStyleDirFromTheEnvironment) {
   try {
     load_stroke_style(dir.path("absent.json"));
   } catch (const StrokeStyleError& e) {
-    EXPECT_EQ(std::string(e.what()), dir.path("absent.json") + ": cannot read the stroke style file");
+    EXPECT_EQ(std::string(e.what()),
+              dir.path("absent.json") + ": cannot read the stroke style file: there is no such file");
   }
   dir.write("broad.json", R"({"width_px": 12})");
   ScopedEnv env("PLUMBAGO_STYLE_DIR", dir.dir());
