@@ -411,18 +411,6 @@ class SceneReader {
   std::map<std::string, PlacedMesh> meshes_;
 };
 
-// nlohmann's DOM parser, remembering where it stopped: it reports a number beyond double
-// range (1e400) as out_of_range, an exception without the position.
-struct PositionedParser : nlohmann::detail::json_sax_dom_parser<json> {
-  using json_sax_dom_parser::json_sax_dom_parser;
-  template <class Exception>
-  bool parse_error(size_t position, const std::string& token, const Exception& e) {
-    byte = position;
-    return json_sax_dom_parser::parse_error(position, token, e);
-  }
-  size_t byte = 0;
-};
-
 // The scene's effects. "sketchy" and "strokes" go with objects of those styles (Nienhaus & Döllner 2004; Kalnins et al.
 // 2002): on by themselves when one is, refused when none is; so is "basecoat", which coats the
 // stroke objects. Without "effects": contours for the pencil objects, the base coat for
@@ -553,15 +541,7 @@ void scene_bounds(const Scene& scene, glm::vec3& center, float& radius) {
 }
 
 Scene parse_scene(const std::string& text, const std::string& source, const std::string& base_dir) {
-  json j;
-  PositionedParser parser(j);
-  try {
-    json::sax_parse(text, &parser);
-  } catch (const json::parse_error& e) {
-    throw SceneError(source + ": " + line_and_column(text, e.byte) + ": not valid JSON (" + e.what() + ")");
-  } catch (const json::exception& e) {  // a number beyond double range: no position of its own
-    throw SceneError(source + ": " + line_and_column(text, parser.byte) + ": cannot read the JSON (" + e.what() + ")");
-  }
+  json j = parse_json_text_as<SceneError>(text, source);
   SceneReader reader(source, base_dir);
   return read_scene(j, reader, source);
 }

@@ -177,15 +177,7 @@ const std::vector<std::string>& stroke_role_names() {
 
 StrokeFile parse_stroke_file(const std::string& text, const std::string& source, const std::string& base_dir,
                              glm::dvec3 origin) {
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw SceneError(source + ": " + line_and_column(text, e.byte) + ": not valid JSON (" + e.what() + ")");
-  } catch (const json::exception& e) {
-    throw SceneError(source + ": cannot read the JSON (" + std::string(e.what()) + ")");
-  }
-  return StrokeFileReader(source, base_dir).file(j, origin);
+  return StrokeFileReader(source, base_dir).file(parse_json_text_as<SceneError>(text, source), origin);
 }
 
 StrokeFile load_stroke_file(const std::string& path, glm::dvec3 origin) {

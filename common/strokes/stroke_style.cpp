@@ -219,15 +219,7 @@ void validate_stroke_style(const StrokeStyle& style, const std::string& source) 
 }
 
 StrokeStyle parse_stroke_style(const std::string& text, const std::string& source) {
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw StrokeStyleError(source + ": " + line_and_column(text, e.byte) + ": not valid JSON (" + e.what() + ")");
-  } catch (const json::exception& e) {  // e.g. a number too large for a double
-    throw StrokeStyleError(source + ": not valid JSON (" + e.what() + ")");
-  }
-  return read_style(j, Refuser{source});
+  return read_style(parse_json_text_as<StrokeStyleError>(text, source), Refuser{source});
 }
 
 std::string stroke_style_dir() {
