@@ -56,8 +56,8 @@ class SvgReader {
   // "drawing.svg: <polyline id="a"> #3: points: WHAT" (the attribute left out when empty).
   [[noreturn]] void fail(const Element& e, const std::string& attribute, const std::string& what) const {
     std::string id = e.has("id") ? " id=\"" + shown_id(e.value("id")) + "\"" : "";
-    throw std::invalid_argument(source_ + ": <" + e.name() + id + "> #" + std::to_string(e.index) + ": " +
-                                (attribute.empty() ? "" : attribute + ": ") + what);
+    throw SvgError(source_ + ": <" + e.name() + id + "> #" + std::to_string(e.index) + ": " +
+                   (attribute.empty() ? "" : attribute + ": ") + what);
   }
 
   // `read` applied to `text`, its SvgNumberError a refusal naming the attribute.
@@ -257,8 +257,8 @@ std::vector<DrawnStroke> svg_strokes(const std::string& svg, const std::string& 
   pugi::xml_document doc;
   pugi::xml_parse_result parsed = doc.load_buffer(svg.data(), svg.size());
   if (!parsed)
-    throw std::invalid_argument(source + ": " + line_and_column(svg, size_t(parsed.offset) + 1) + ": not valid XML (" +
-                                parsed.description() + ")");
+    throw SvgError(source + ": " + line_and_column(svg, size_t(parsed.offset) + 1) + ": not valid XML (" +
+                   parsed.description() + ")");
   SvgReader reader(source, width, height, defaults);
   std::vector<Element> all = elements(doc);
   double widest = 0;

@@ -26,6 +26,7 @@
 // would refuse is refused here, naming the element.
 #pragma once
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -41,8 +42,13 @@ struct SvgStrokeDefaults {
   std::string style_dir = ".";  // where style files named by a relative path are (the stroke file's folder)
 };
 
+// A refused drawing: the message names the file, the element and the attribute.
+struct SvgError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
 // The strokes of an SVG document in a width x height window, their styles loaded; throws
-// std::invalid_argument naming `source`, the element and the attribute.
+// SvgError naming `source`, the element and the attribute.
 std::vector<DrawnStroke> svg_strokes(const std::string& svg, const std::string& source, int width, int height,
                                      const SvgStrokeDefaults& defaults);
 

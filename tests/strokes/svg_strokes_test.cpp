@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 std::string refusal(const std::string& svg, const SvgStrokeDefaults& defaults = {}) {
   try {
     svg_strokes(svg, "d.svg", 800, 600, defaults);
-  } catch (const std::invalid_argument& e) {
+  } catch (const SvgError& e) {
     return e.what();
   }
   return "";
