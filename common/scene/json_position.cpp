@@ -27,10 +27,9 @@ json parse_json_text(const std::string& text, const std::string& source) {
   try {
     json::sax_parse(text, &parser);
   } catch (const json::parse_error& e) {
-    throw JsonTextError(source + ": " + line_and_column(text, e.byte) + ": not valid JSON (" + e.what() + ")");
+    throw InputError(source + ": " + line_and_column(text, e.byte) + ": not valid JSON (" + e.what() + ")");
   } catch (const json::exception& e) {  // a number beyond double range: no position of its own
-    throw JsonTextError(source + ": " + line_and_column(text, parser.byte) + ": cannot read the JSON (" + e.what() +
-                        ")");
+    throw InputError(source + ": " + line_and_column(text, parser.byte) + ": cannot read the JSON (" + e.what() + ")");
   }
   return j;
 }

@@ -4,8 +4,9 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
-#include <stdexcept>
 #include <string>
+
+#include "common/util/input_file.hpp"
 
 namespace plumbago {
 
@@ -21,23 +22,15 @@ inline std::string line_and_column(const std::string& text, size_t byte) {
   return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
 
-// A JSON text refused: "SOURCE: line L, column C: not valid JSON (...)" for a syntax
-// error, "...: cannot read the JSON (...)" for a number beyond double range (1e400).
-struct JsonTextError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-// The document of `text`; throws JsonTextError naming `source` and the place.
+// The document of `text`; throws InputError naming `source` and the place:
+// "SOURCE: line L, column C: not valid JSON (...)" for a syntax error, "...: cannot read
+// the JSON (...)" for a number beyond double range (1e400).
 nlohmann::json parse_json_text(const std::string& text, const std::string& source);
 
 // parse_json_text, its refusal thrown as an `Error` (the reader's own error type).
 template <class Error>
 nlohmann::json parse_json_text_as(const std::string& text, const std::string& source) {
-  try {
-    return parse_json_text(text, source);
-  } catch (const JsonTextError& e) {
-    throw Error(e.what());
-  }
+  return rethrown_as<Error>([&] { return parse_json_text(text, source); });
 }
 
 }  // namespace plumbago

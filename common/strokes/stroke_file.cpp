@@ -40,8 +40,13 @@ class StrokeFileReader {
       fail("/camera/" + fault->key, fault->what);
     if (j.contains("style")) out.style = text(j["style"], "/style");
     if (!j.contains("strokes") || !j["strokes"].is_array()) fail("/strokes", "expected an array of strokes");
-    for (size_t i = 0; i < j["strokes"].size(); ++i)
+    size_t points = 0;
+    for (size_t i = 0; i < j["strokes"].size(); ++i) {
       out.strokes.push_back(stroke(j["strokes"][i], "/strokes/" + std::to_string(i), out.style));
+      if ((points += out.strokes.back().points.size()) > kMaxDrawnPoints)
+        fail("/strokes/" + std::to_string(i) + "/points",
+             "the strokes hold over " + std::to_string(kMaxDrawnPoints) + " points, the most a stroke file may");
+    }
     return out;
   }
 

@@ -74,6 +74,11 @@ std::string offsets_example_fault(const DrawnStroke& stroke);
 // A drawn point's bound, px from the window's origin; a hatching group's largest number.
 inline constexpr double kMaxDrawnPixel = 1e6;
 inline constexpr int kMaxHatchingGroup = 1000000;
+// The most points of one stroke file or drawing: 50 times the largest of scenes/drawn
+// (5000), and few enough that `plumbago strokefile` holds them in a few hundred MB
+// (measured: 0.23 GB at the bound) and writes a file within the input files' bound
+// (common/util/input_file.hpp; at most 62 B a point).
+inline constexpr size_t kMaxDrawnPoints = 250000;
 
 // The style of decals and hatching where neither the stroke nor the file names one.
 inline constexpr const char* kDefaultDecalStyle = "ink";

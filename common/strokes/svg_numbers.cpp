@@ -101,19 +101,21 @@ double svg_length(std::string_view text) {
   return v[0];
 }
 
-std::vector<SvgPathCommand> svg_path_commands(std::string_view d) {
+void svg_path_commands(std::string_view d, const SvgPathVisitor& visit) {
   Scanner scan(d, true);
-  std::vector<SvgPathCommand> out;
+  char letter = '\0';
+  std::vector<double> numbers;
   while (scan.more()) {
-    if (char letter = scan.command()) {
-      out.push_back({letter, {}});
+    if (char next = scan.command()) {
+      if (letter) visit(letter, numbers);
+      letter = next, numbers.clear();
       continue;
     }
     const double value = scan.number();
-    if (out.empty()) throw SvgNumberError("path data must start with a command (M), not a number");
-    out.back().numbers.push_back(value);
+    if (!letter) throw SvgNumberError("path data must start with a command (M), not a number");
+    numbers.push_back(value);
   }
-  return out;
+  if (letter) visit(letter, numbers);
 }
 
 }  // namespace plumbago

@@ -9,6 +9,7 @@
 // refused, never dropped.
 #pragma once
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -27,14 +28,12 @@ std::vector<double> svg_numbers(std::string_view text);
 // A length (`width`, `height`, `stroke-width`): one number, in px or without a unit.
 double svg_length(std::string_view text);
 
-// A path command as written (M m L l H h V v Z z, or a curve's C S Q T A, which the
-// caller refuses) and the numbers that follow it.
-struct SvgPathCommand {
-  char letter;
-  std::vector<double> numbers;
-};
+// Called for each command of path data: its letter as written (M m L l H h V v Z z, or a
+// curve's C S Q T A, which the caller refuses) and the numbers that follow it (a buffer
+// reused from command to command: a path holds no more than its points).
+using SvgPathVisitor = std::function<void(char letter, const std::vector<double>& numbers)>;
 
-// The commands of path data (`d`), in order. Refuses numbers before the first command.
-std::vector<SvgPathCommand> svg_path_commands(std::string_view d);
+// Visits the commands of path data (`d`) in order. Refuses numbers before the first command.
+void svg_path_commands(std::string_view d, const SvgPathVisitor& visit);
 
 }  // namespace plumbago

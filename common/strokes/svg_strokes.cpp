@@ -110,11 +110,17 @@ class SvgReader {
     const char* attribute = e.name() == "polyline" ? "points" : "d";
     if (!e.has(attribute)) fail(e, attribute, "missing");
     std::vector<DrawnStroke> out;
+    const DrawnStroke blank = attributes(e);
+    const std::vector<double> given = pressures(e, widest);
     for (const std::vector<glm::dvec2>& line : e.name() == "polyline" ? polyline(e) : path(e)) {
       if (line.size() < 2) fail(e, attribute, "a stroke needs 2 points or more");
-      DrawnStroke s = attributes(e);
-      std::vector<double> p = pressures(e, line.size(), widest);
-      for (size_t k = 0; k < line.size(); ++k) s.points.push_back({window(e, attribute, line[k], k), p[k]});
+      if (given.size() != 1 && given.size() != line.size())
+        fail(e, "data-pressure",
+             "expected one number or one per point (" + std::to_string(line.size()) + "), found " +
+                 std::to_string(given.size()));
+      DrawnStroke s = blank;
+      for (size_t k = 0; k < line.size(); ++k)
+        s.points.push_back({window(e, attribute, line[k], k), given[given.size() == 1 ? 0 : k]});
       if (s.role == StrokeRole::Crease || s.role == StrokeRole::Silhouette)
         if (std::string fault = offsets_example_fault(s); !fault.empty()) fail(e, attribute, fault);
       out.push_back(std::move(s));
@@ -139,44 +145,59 @@ class SvgReader {
     return w;
   }
 
-  std::vector<std::vector<glm::dvec2>> polyline(const Element& e) const {
+  // Counts `more` points of the drawing against the most a stroke file may hold.
+  void count_points(const Element& e, const char* attribute, size_t more) {
+    if ((points_ += more) > kMaxDrawnPoints)
+      fail(e, attribute,
+           "the drawing has over " + std::to_string(kMaxDrawnPoints) + " points, the most a stroke file may hold");
+  }
+
+  std::vector<std::vector<glm::dvec2>> polyline(const Element& e) {
     std::vector<double> v = parsed(e, "points", svg_numbers);
     if (v.size() % 2) fail(e, "points", "an odd count of numbers (" + std::to_string(v.size()) + "): x y pairs");
+    count_points(e, "points", v.size() / 2);
     std::vector<glm::dvec2> line;
     for (size_t k = 0; k + 1 < v.size(); k += 2) line.push_back({v[k], v[k + 1]});
     return {line};
   }
 
+  // A path's subpaths as its commands are read, and where the pen is.
+  struct Subpaths {
+    std::vector<std::vector<glm::dvec2>> lines;
+    glm::dvec2 at{0.0}, start{0.0};
+  };
+
   // Each subpath's points: M, L, H, V, Z, absolute or relative (SVG 1.1, §8.3).
-  std::vector<std::vector<glm::dvec2>> path(const Element& e) const {
-    std::vector<std::vector<glm::dvec2>> out;
-    glm::dvec2 at(0), start(0);
-    for (const SvgPathCommand& command : parsed(e, "d", svg_path_commands)) {
-      const char c = command.letter, kind = char(std::toupper(c));
-      const std::vector<double>& v = command.numbers;
-      const bool relative = std::islower(c);
-      const size_t arity = kind == 'M' || kind == 'L' ? 2 : kind == 'Z' ? 0 : 1;
-      if (kind != 'M' && kind != 'L' && kind != 'H' && kind != 'V' && kind != 'Z')
-        fail(e, "d", std::string("path command '") + c + "' is not a straight segment: flatten curves first");
-      if (arity ? v.empty() || v.size() % arity : !v.empty())
-        fail(e, "d",
-             std::string("path command '") + c + "': wrong count of numbers (" + std::to_string(v.size()) + ")");
-      if (kind == 'Z') {
-        if (!out.empty()) out.back().push_back(start);
-        at = start;
-        continue;
-      }
-      for (size_t k = 0; k < v.size(); k += arity) {
-        glm::dvec2 to = kind == 'H'   ? glm::dvec2(v[k] + (relative ? at.x : 0), at.y)
-                        : kind == 'V' ? glm::dvec2(at.x, v[k] + (relative ? at.y : 0))
-                                      : glm::dvec2(v[k], v[k + 1]) + (relative ? at : glm::dvec2(0));
-        if (kind == 'M' && k == 0) out.push_back({}), start = to;
-        if (out.empty()) fail(e, "d", "a path must start with M");
-        out.back().push_back(to);
-        at = to;
-      }
+  std::vector<std::vector<glm::dvec2>> path(const Element& e) {
+    Subpaths s;
+    parsed(e, "d", [&](std::string_view d) {
+      svg_path_commands(d, [&](char c, const std::vector<double>& v) { add_command(e, c, v, s); });
+      return true;
+    });
+    return s.lines;
+  }
+
+  void add_command(const Element& e, char c, const std::vector<double>& v, Subpaths& s) {
+    const char kind = char(std::toupper(c));
+    const bool relative = std::islower(c);
+    const size_t arity = kind == 'M' || kind == 'L' ? 2 : kind == 'Z' ? 0 : 1;
+    if (kind != 'M' && kind != 'L' && kind != 'H' && kind != 'V' && kind != 'Z')
+      fail(e, "d", std::string("path command '") + c + "' is not a straight segment: flatten curves first");
+    if (arity ? v.empty() || v.size() % arity : !v.empty())
+      fail(e, "d", std::string("path command '") + c + "': wrong count of numbers (" + std::to_string(v.size()) + ")");
+    if (kind == 'Z') {
+      if (!s.lines.empty()) s.lines.back().push_back(s.start), count_points(e, "d", 1);
+      s.at = s.start;
     }
-    return out;
+    for (size_t k = 0; k < v.size(); k += arity) {
+      glm::dvec2 to = kind == 'H'   ? glm::dvec2(v[k] + (relative ? s.at.x : 0), s.at.y)
+                      : kind == 'V' ? glm::dvec2(s.at.x, v[k] + (relative ? s.at.y : 0))
+                                    : glm::dvec2(v[k], v[k + 1]) + (relative ? s.at : glm::dvec2(0));
+      if (kind == 'M' && k == 0) s.lines.push_back({}), s.start = to;
+      if (s.lines.empty()) fail(e, "d", "a path must start with M");
+      s.lines.back().push_back(to), count_points(e, "d", 1);
+      s.at = to;
+    }
   }
 
   // A stroke of element e without its points: role, style, group, free.
@@ -227,20 +248,16 @@ class SvgReader {
     }
   }
 
-  // The pressure of each point of one polyline of element e.
-  std::vector<double> pressures(const Element& e, size_t points, double widest) const {
+  // The pressures of element e: one for every point, or one a point (data-pressure).
+  std::vector<double> pressures(const Element& e, double widest) const {
     if (e.has("data-pressure")) {
       std::vector<double> v = parsed(e, "data-pressure", svg_numbers);
-      if (v.size() != 1 && v.size() != points)
-        fail(
-            e, "data-pressure",
-            "expected one number or one per point (" + std::to_string(points) + "), found " + std::to_string(v.size()));
       for (double p : v)
         if (!(p >= 0 && p <= 1)) fail(e, "data-pressure", "each must be in [0, 1], found " + format_number(p));
-      return v.size() == 1 ? std::vector<double>(points, v[0]) : v;
+      return v;
     }
     double w = stroke_width(e);
-    return std::vector<double>(points, w > 0 && widest > 0 ? std::min(1.0, w / widest) : 1.0);
+    return {w > 0 && widest > 0 ? std::min(1.0, w / widest) : 1.0};
   }
 
   std::string source_;
@@ -248,6 +265,7 @@ class SvgReader {
   SvgStrokeDefaults defaults_;
   glm::dvec2 origin_{0.0}, size_;
   std::map<std::string, StrokeStyle> styles_;
+  size_t points_ = 0;  // read so far
 };
 
 }  // namespace

@@ -84,6 +84,15 @@ TEST(StrokeFile, RefusalsNameTheFileAndThePath) {
   EXPECT_NE(refusal("\"fov_deg\": 40,", "").find("bad.json: /camera/fov_deg: missing"), std::string::npos);
   EXPECT_NE(refusal("[[0, 0, 1], [5, 0, 1]]}]", "[[0, 0, 1]]}]").find("bad.json: /strokes/4/points: expected"),
             std::string::npos);
+  // The last stroke made as long as the bound on a file's points allows (8 in the others), then one point longer.
+  auto points = [](size_t n) {
+    std::string text = "[[0, 0, 1]";
+    for (size_t k = 1; k < n; ++k) text += ", [1, 0, 1]";
+    return text + "]}]";
+  };
+  EXPECT_EQ(refusal("[[0, 0, 1], [5, 0, 1]]}]", points(kMaxDrawnPoints - 8)), "(accepted)");
+  EXPECT_EQ(refusal("[[0, 0, 1], [5, 0, 1]]}]", points(kMaxDrawnPoints - 7)),
+            "bad.json: /strokes/4/points: the strokes hold over 250000 points, the most a stroke file may");
 }
 
 TEST(StrokeFile, ScenesListThemRelativeToTheirFolder) {

@@ -32,6 +32,15 @@ std::string drawing(const std::string& elements) {
   return R"(<svg xmlns="http://www.w3.org/2000/svg" width="800" height="600">)" + elements + "</svg>";
 }
 
+using Command = std::pair<char, std::vector<double>>;
+
+// The commands of path data `d`.
+std::vector<Command> commands(std::string_view d) {
+  std::vector<Command> out;
+  svg_path_commands(d, [&](char c, const std::vector<double>& v) { out.push_back({c, v}); });
+  return out;
+}
+
 // The SvgNumberError of reading `text` ("" when none).
 template <class Read>
 std::string number_refusal(Read read, const std::string& text) {
@@ -49,13 +58,8 @@ TEST(SvgNumbers, ReadSvgsGrammar) {
   EXPECT_EQ(svg_numbers("1e-400"), std::vector<double>{0});  // an underflow is 0, not an error
   EXPECT_EQ(svg_length("12px"), 12);
   EXPECT_EQ(svg_length(" 3 "), 3);
-  std::vector<SvgPathCommand> d = svg_path_commands("M1,2L3-4zm.5.5h1e1");
-  ASSERT_EQ(d.size(), 5u);
-  EXPECT_EQ(d[1].letter, 'L');
-  EXPECT_EQ(d[1].numbers, (std::vector<double>{3, -4}));
-  EXPECT_TRUE(d[2].numbers.empty());
-  EXPECT_EQ(d[3].numbers, (std::vector<double>{0.5, 0.5}));
-  EXPECT_EQ(d[4].numbers, (std::vector<double>{10}));
+  EXPECT_EQ(commands("M1,2L3-4zm.5.5h1e1"),
+            (std::vector<Command>{{'M', {1, 2}}, {'L', {3, -4}}, {'z', {}}, {'m', {0.5, 0.5}}, {'h', {10}}}));
 }
 
 TEST(SvgNumbers, RefuseWhatIsNotAFiniteNumber) {
@@ -66,32 +70,49 @@ TEST(SvgNumbers, RefuseWhatIsNotAFiniteNumber) {
   EXPECT_EQ(number_refusal(svg_numbers, std::string(100, 'a')), "'" + std::string(24, 'a') + "...' is not a number");
   EXPECT_EQ(number_refusal(svg_length, "10cm"), "'10cm' is not a number");
   EXPECT_EQ(number_refusal(svg_length, "1 2"), "'1 2' is not one length (a number, in px or without a unit)");
-  EXPECT_EQ(number_refusal(svg_path_commands, "M 0 0 L nan 1"), "'nan' is not a number");
-  EXPECT_EQ(number_refusal(svg_path_commands, "M 0 0 L 1e 1"), "'1e' is not a number");
-  EXPECT_EQ(number_refusal(svg_path_commands, "3 M 0 0"), "path data must start with a command (M), not a number");
+  EXPECT_EQ(number_refusal(commands, "M 0 0 L nan 1"), "'nan' is not a number");
+  EXPECT_EQ(number_refusal(commands, "M 0 0 L 1e 1"), "'1e' is not a number");
+  EXPECT_EQ(number_refusal(commands, "3 M 0 0"), "path data must start with a command (M), not a number");
 }
 
 // std::regex recursed per character and overflowed the stack on a few thousand points.
 TEST(SvgStrokes, LongPolylinesAndHugeAttributesReadInLinearTime) {
-  std::string points, pressure;
-  for (int k = 0; k < 200000; ++k) {
+  std::string points, pressure, subpaths;
+  for (int k = 0; k < 100000; ++k) {
     points += std::to_string(k % 800) + "," + std::to_string(k % 600) + " ";
     pressure += "0.5 ";
   }
+  for (int k = 0; k < 50000; ++k) subpaths += "M 0 0 L 10 10 ";
   const std::string note(8 << 20, 'n');  // an 8 MB attribute the reader does not read
+  // One data-pressure for 50,000 subpaths, padded to 1 MB: read once, not once a subpath.
+  const std::string padded_pressure = std::string("1").append(1 << 20, ' ');
   auto start = std::chrono::steady_clock::now();
   std::vector<DrawnStroke> s =
       svg_strokes(drawing(R"(<polyline data-note=")" + note + R"(" data-pressure=")" + pressure + R"(" points=")" +
-                          points + R"("/>)" + R"(<path d="M 0 0)" + std::string(1 << 20, ' ') + R"(L 10 10"/>)"),
+                          points + R"("/><path data-pressure=")" + padded_pressure + R"(" d=")" + subpaths + R"("/>)"),
                   "long.svg", 800, 600, {});
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  ASSERT_EQ(s.size(), 2u);
-  EXPECT_EQ(s[0].points.size(), 200000u);
+  ASSERT_EQ(s.size(), 50001u);
+  EXPECT_EQ(s[0].points.size(), 100000u);
   EXPECT_NEAR(s[0].points[1].window.x, 1, 1e-9);
   EXPECT_NEAR(s[0].points[1].window.y, 599, 1e-9);
   EXPECT_EQ(s[0].points[1].pressure, 0.5);
   EXPECT_LT(seconds, 10.0);
-  std::printf("[svg] 200000 points and a 9 MB drawing read in %.2f s\n", seconds);
+  std::printf("[svg] 100000 points, 50000 subpaths, an 11 MB drawing read in %.2f s\n", seconds);
+}
+
+// Each Z adds a point: one byte of the drawing, some 370 of `plumbago strokefile`'s memory.
+// A drawing holds no more points than a stroke file may.
+TEST(SvgStrokes, PointsBeyondTheBoundAreRefused) {
+  auto closed = [](size_t points) {  // M and L, then Z to the start and back
+    std::string path = R"(<path d="M 0 0 L 1 1 )";
+    return path.append(points - 2, 'z').append(R"("/>)");
+  };
+  EXPECT_EQ(refusal(drawing(closed(kMaxDrawnPoints))), "");
+  EXPECT_EQ(refusal(drawing(closed(kMaxDrawnPoints + 1))),
+            "d.svg: <path> #1: d: the drawing has over 250000 points, the most a stroke file may hold");
+  EXPECT_EQ(refusal(drawing(closed(kMaxDrawnPoints - 1) + R"(<polyline points="0,0 1,1"/>)")),
+            "d.svg: <polyline> #2: points: the drawing has over 250000 points, the most a stroke file may hold");
 }
 
 TEST(SvgStrokes, RefusalsNameTheFileTheElementAndTheAttribute) {
