@@ -20,10 +20,11 @@
 // elements) and the attribute: `drawing.svg: <polyline id="a"> #3: points: 'x1' is not a
 // number`; or the line and column of malformed XML. Refused besides: a number that is not one
 // (NaN, Inf, garbage) or beyond double range, a viewBox other than 4 numbers, a missing
-// `points` or `d`, a point beyond a stroke file's bound (kMaxDrawnPixel), a crease or
-// silhouette that makes no offsets example (offsets_example_fault, e.g. of zero length), a
-// style that does not load, a data-group outside 0..kMaxHatchingGroup: what a stroke file
-// would refuse is refused here, naming the element.
+// `points` or `d`, a point beyond a stroke file's bound (kMaxDrawnPixel), more points than a
+// stroke file may hold (kMaxDrawnPoints), a crease or silhouette that makes no offsets
+// example (offsets_example_fault, e.g. of zero length), a style that does not load, a
+// data-group outside 0..kMaxHatchingGroup: what a stroke file would refuse is refused here,
+// naming the element.
 #pragma once
 
 #include <stdexcept>
