@@ -5,12 +5,12 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
-#include <sstream>
 #include <stdexcept>
 
 #include "apps/command.hpp"
 #include "apps/scene_options.hpp"
 #include "common/strokes/svg_strokes.hpp"
+#include "common/util/input_file.hpp"
 #include "common/util/output_file.hpp"
 
 namespace plumbago {
@@ -23,29 +23,20 @@ struct StrokeFileOptions {
   bool free = false;
 };
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  if (!in || std::filesystem::is_directory(path)) throw std::invalid_argument(path + ": cannot read the SVG file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 void run(const StrokeFileOptions& o) {
   Scene scene = o.scene.load();
   const std::vector<std::string>& roles = stroke_role_names();
+  std::filesystem::path folder = std::filesystem::path(o.output).parent_path();
   SvgStrokeDefaults defaults{StrokeRole(std::find(roles.begin(), roles.end(), o.role) - roles.begin()), o.style,
-                             o.group, o.free};
+                             o.group, o.free, folder.empty() ? "." : folder.string()};
   StrokeFile file;
   file.source = o.output;
   file.camera = scene.camera, file.width = scene.width, file.height = scene.height;
   file.style = o.style;
-  file.strokes = svg_strokes(read_text(o.svg), o.svg, scene.width, scene.height, defaults);
+  file.strokes = svg_strokes(read_input_file(o.svg, "SVG drawing"), o.svg, scene.width, scene.height, defaults);
   if (file.strokes.empty()) throw std::invalid_argument(o.svg + ": no <polyline> or <path> to read");
   std::string text = stroke_file_json(file, scene.origin);
-  std::filesystem::path folder = std::filesystem::path(o.output).parent_path();
-  parse_stroke_file(text, o.output, folder.empty() ? "." : folder.string(),
-                    scene.origin);  // refuses what a scene would
+  parse_stroke_file(text, o.output, defaults.style_dir, scene.origin);  // what a scene would refuse: none left
   OutputFile out(o.output);
   std::ofstream(out.temporary_path()) << text;
   out.commit();

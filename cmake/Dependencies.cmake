@@ -13,6 +13,7 @@ endmacro()
 
 plumbago_require(glm libglm-dev)
 plumbago_require(nlohmann_json nlohmann-json3-dev)
+plumbago_require(pugixml libpugixml-dev)
 plumbago_require(TBB libtbb-dev)
 # OpenImageIO through pkg-config: Debian's CMake config of it names /usr/include/opencv4,
 # which exists only when OpenCV's headers happen to be installed.

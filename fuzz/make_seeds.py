@@ -1,14 +1,17 @@
 #!/usr/bin/env python3
-"""Writes the fuzz targets' seed corpora: OUT/{obj,off,ply,stl,scene}/.
+"""Writes the fuzz targets' seed corpora: OUT/{obj,off,ply,stl,scene,svg,strokes}/.
 
 Meshes: the first vertices of each shared OBJ model (../shared/models) with the faces
 among them, written in every format (ASCII and binary PLY and STL), plus the start of
 each OBJ file as it is (comments, normals, texture coordinates) and the header of each
-PLY model with a few of its vertices and a triangle strip. Scenes: scenes/*.json.
-Also every file of the malformed-input corpus (tests/corpus/, not its fuzz/ folder)
-with a matching extension. Each seed is at most MAX_BYTES.
+PLY model with a few of its vertices and a triangle strip. Scenes: scenes/*.json. SVG:
+the drawings of scenes/drawn, each cut to its first elements. Stroke files and styles:
+the stroke files of scenes/drawn, each cut to its first strokes, and the style files
+(STYLES_DIR/strokes/*.json, scenes/styles/*.json). Also every file of the
+malformed-input corpus (tests/corpus/, not its fuzz/ folder) of a matching folder or
+extension. Each seed is at most MAX_BYTES.
 
-Usage: make_seeds.py MODELS_DIR SCENES_DIR CORPUS_DIR OUT
+Usage: make_seeds.py MODELS_DIR SCENES_DIR STYLES_DIR CORPUS_DIR OUT
 """
 import pathlib
 import shutil
@@ -87,8 +90,22 @@ def first_lines(data):
     return head[:head.rfind(b"\n") + 1]
 
 
-def main(models, scenes, corpus, out):
-    seeds = {fmt: {} for fmt in ("obj", "off", "ply", "stl", "scene")}  # format -> {name: bytes}
+def head_closed(data, item_end, closing):
+    """The whole file when it fits MAX_BYTES; else its first items, up to the last `item_end`
+    that leaves room for `closing`, then `closing`: a drawing's first elements, a stroke
+    file's first strokes."""
+    if len(data) <= MAX_BYTES:
+        return data
+    head = data[:MAX_BYTES - len(closing)]
+    return head[:head.rfind(item_end) + len(item_end)] + closing
+
+
+# The seed folder of a corpus file: by its folder, else by its extension.
+CORPUS_FOLDERS = {"scene": "scene", "svg": "svg", "strokes": "strokes", "style": "strokes"}
+
+
+def main(models, scenes, styles, corpus, out):
+    seeds = {fmt: {} for fmt in ("obj", "off", "ply", "stl", "scene", "svg", "strokes")}  # format -> {name: bytes}
     for path in sorted(models.glob("*.obj")):
         data = path.read_bytes()
         seeds["obj"][f"{path.stem}-head.obj"] = first_lines(data)
@@ -98,10 +115,17 @@ def main(models, scenes, corpus, out):
         seeds["ply"][f"{path.stem}-strip.ply"] = ply_with_strip(path.read_bytes())
     for path in sorted(scenes.glob("*.json")):
         seeds["scene"][path.name] = path.read_bytes()
+    for path in sorted((scenes / "drawn").glob("*.svg")):
+        seeds["svg"][path.name] = head_closed(path.read_bytes(), b"/>\n", b"</svg>\n")
+    for path in sorted((scenes / "drawn").glob("*.strokes.json")):
+        seeds["strokes"][path.name] = head_closed(path.read_bytes(), b"}", b"\n ]\n}\n")
+    for path in sorted((styles / "strokes").glob("*.json")) + sorted((scenes / "styles").glob("*.json")):
+        seeds["strokes"]["style-" + path.name] = path.read_bytes()
     for path in sorted(corpus.rglob("*")):
-        fmt = "scene" if path.suffix == ".json" else path.suffix[1:]
-        if path.is_file() and "fuzz" not in path.relative_to(corpus).parts and fmt in seeds:
-            seeds[fmt]["corpus-" + "-".join(path.relative_to(corpus).parts)] = path.read_bytes()
+        parts = path.relative_to(corpus).parts
+        fmt = CORPUS_FOLDERS.get(parts[0], path.suffix[1:])
+        if path.is_file() and "fuzz" not in parts and fmt in seeds:
+            seeds[fmt]["corpus-" + "-".join(parts)] = path.read_bytes()
     for fmt, files in seeds.items():
         folder = out / fmt
         shutil.rmtree(folder, ignore_errors=True)
@@ -113,6 +137,6 @@ def main(models, scenes, corpus, out):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 5:
+    if len(sys.argv) != 6:
         sys.exit(__doc__)
     main(*(pathlib.Path(a) for a in sys.argv[1:]))

@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config git
   libopenmesh-dev libembree-dev libopenimageio-dev libcgal-dev libeigen3-dev libglm-dev
-  libcli11-dev nlohmann-json3-dev libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libcli11-dev nlohmann-json3-dev libpugixml-dev libtbb-dev libgtest-dev libgmock-dev libbenchmark-dev
   libegl-dev libopengl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
   python3-matplotlib python3-numpy
   pybind11-dev python3-dev python3-pytest  # the Python module (python/) and its tests

@@ -16,7 +16,7 @@ build=${BUILD_DIR:-build-sanitize}
 what=${1:-all}
 [ $# -gt 0 ] && shift
 
-fuzz_targets=(fuzz_mesh_obj fuzz_mesh_off fuzz_mesh_ply fuzz_mesh_stl fuzz_scene)
+fuzz_targets=(fuzz_mesh_obj fuzz_mesh_off fuzz_mesh_ply fuzz_mesh_stl fuzz_scene fuzz_svg fuzz_strokes)
 [ "$what" = fuzz ] && [ $# -gt 0 ] && fuzz_targets=("$@")
 case "$what" in
   all) targets=(plumbago_tests "${fuzz_targets[@]}") ;;
@@ -43,7 +43,7 @@ seconds=${FUZZ_SECONDS:-20}
 export TMPDIR=$root/$build/fuzz-tmp  # the mesh targets write each input to a file there
 findings=$build/fuzz-findings
 mkdir -p "$TMPDIR" "$findings"
-python3 fuzz/make_seeds.py ../shared/models scenes tests/corpus "$build/fuzz-seeds"
+python3 fuzz/make_seeds.py ../shared/models scenes styles tests/corpus "$build/fuzz-seeds"
 failed=()
 for target in "${fuzz_targets[@]}"; do
   format=${target#fuzz_}

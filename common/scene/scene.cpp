@@ -5,14 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 
 #include "common/core/passes.hpp"
 #include "common/mesh/procedural.hpp"
+#include "common/util/input_file.hpp"
 
 namespace plumbago {
 
@@ -321,10 +320,8 @@ class SceneReader {
       const json& v = j[key];
       if (!v.is_string())
         fail(path + "/" + key, "expected a style name (" + join(stroke_style_names()) + ") or a style file");
-      std::string name = v.get<std::string>();
-      bool relative_file = !is_stroke_style_preset(name) && !fs::path(name).is_absolute();
       try {
-        *style = load_stroke_style(relative_file ? (fs::path(base_) / name).string() : name);
+        *style = load_stroke_style_from(v.get<std::string>(), base_);
       } catch (const StrokeStyleError& e) {
         fail(path + "/" + key, e.what());
       }
@@ -421,18 +418,6 @@ class SceneReader {
 
   std::string source_, base_;
   std::map<std::string, PlacedMesh> meshes_;
-};
-
-// nlohmann's DOM parser, remembering where it stopped: it reports a number beyond double
-// range (1e400) as out_of_range, an exception without the position.
-struct PositionedParser : nlohmann::detail::json_sax_dom_parser<json> {
-  using json_sax_dom_parser::json_sax_dom_parser;
-  template <class Exception>
-  bool parse_error(size_t position, const std::string& token, const Exception& e) {
-    byte = position;
-    return json_sax_dom_parser::parse_error(position, token, e);
-  }
-  size_t byte = 0;
 };
 
 // The scene's effects. "sketchy" and "strokes" go with objects of those styles (Nienhaus & Döllner 2004; Kalnins et al.
@@ -565,15 +550,7 @@ void scene_bounds(const Scene& scene, glm::vec3& center, float& radius) {
 }
 
 Scene parse_scene(const std::string& text, const std::string& source, const std::string& base_dir) {
-  json j;
-  PositionedParser parser(j);
-  try {
-    json::sax_parse(text, &parser);
-  } catch (const json::parse_error& e) {
-    throw SceneError(source + ": " + line_and_column(text, e.byte) + ": not valid JSON (" + e.what() + ")");
-  } catch (const json::exception& e) {  // a number beyond double range: no position of its own
-    throw SceneError(source + ": " + line_and_column(text, parser.byte) + ": cannot read the JSON (" + e.what() + ")");
-  }
+  json j = parse_json_text_as<SceneError>(text, source);
   SceneReader reader(source, base_dir);
   return read_scene(j, reader, source);
 }
@@ -585,11 +562,7 @@ std::string scene_text(const std::string& source) {
       throw SceneError(source + ": no such built-in scene (" + join(builtin_scene_names()) + ")");
     return it->second;
   }
-  std::ifstream in(source);
-  if (!in || fs::is_directory(source)) throw SceneError(source + ": cannot read the scene file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  return read_input_file_as<SceneError>(source, "scene file");
 }
 
 std::string scene_folder(const std::string& source) {

@@ -3,13 +3,13 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "common/scene/json_position.hpp"
 #include "common/scene/scene.hpp"
+#include "common/util/input_file.hpp"
 
 namespace plumbago {
 
@@ -40,8 +40,13 @@ class StrokeFileReader {
       fail("/camera/" + fault->key, fault->what);
     if (j.contains("style")) out.style = text(j["style"], "/style");
     if (!j.contains("strokes") || !j["strokes"].is_array()) fail("/strokes", "expected an array of strokes");
-    for (size_t i = 0; i < j["strokes"].size(); ++i)
+    size_t points = 0;
+    for (size_t i = 0; i < j["strokes"].size(); ++i) {
       out.strokes.push_back(stroke(j["strokes"][i], "/strokes/" + std::to_string(i), out.style));
+      if ((points += out.strokes.back().points.size()) > kMaxDrawnPoints)
+        fail("/strokes/" + std::to_string(i) + "/points",
+             "the strokes hold over " + std::to_string(kMaxDrawnPoints) + " points, the most a stroke file may");
+    }
     return out;
   }
 
@@ -107,8 +112,9 @@ class StrokeFileReader {
       fail(path + "/group", s.role == StrokeRole::Hatching ? "missing (a hatching stroke's group)"
                                                            : "only hatching strokes have a group");
     if (j.contains("group")) {
-      if (!j["group"].is_number_integer() || j["group"].get<int64_t>() < 0 || j["group"].get<int64_t>() > 1000000)
-        fail(path + "/group", "expected a whole number in 0..1000000");
+      if (!j["group"].is_number_integer() || j["group"].get<int64_t>() < 0 ||
+          j["group"].get<int64_t>() > kMaxHatchingGroup)
+        fail(path + "/group", "expected a whole number in 0.." + std::to_string(kMaxHatchingGroup));
       s.group = int(j["group"].get<int64_t>());
     }
     if (j.contains("free")) {
@@ -117,6 +123,8 @@ class StrokeFileReader {
       s.free = j["free"].get<bool>();
     }
     bool on_surface = s.role == StrokeRole::Decal || s.role == StrokeRole::Hatching;
+    if (!on_surface)
+      if (std::string fault = offsets_example_fault(s); !fault.empty()) fail(path + "/points", fault);
     if (j.contains("style") && !on_surface) fail(path + "/style", "only decals and hatching name a style");
     s.style_name = j.contains("style") ? text(j["style"], path + "/style") : file_style;
     if (on_surface)
@@ -135,15 +143,15 @@ class StrokeFileReader {
   DrawnPoint drawn_point(const json& j, const std::string& path) const {
     if (!j.is_array() || j.size() != 3) fail(path, "expected [x, y, pressure]");
     DrawnPoint p{{number(j[0], path + "/0"), number(j[1], path + "/1")}, number(j[2], path + "/2")};
-    if (std::abs(p.window.x) > 1e6 || std::abs(p.window.y) > 1e6) fail(path, "lies beyond ±1e6 px");
+    if (std::abs(p.window.x) > kMaxDrawnPixel || std::abs(p.window.y) > kMaxDrawnPixel)
+      fail(path, "lies beyond ±" + format_number(kMaxDrawnPixel) + " px");
     if (p.pressure < 0 || p.pressure > 1) fail(path + "/2", "pressure must be in [0, 1]");
     return p;
   }
 
   StrokeStyle style(const std::string& name, const std::string& path) const {
-    bool relative_file = !is_stroke_style_preset(name) && !fs::path(name).is_absolute();
     try {
-      return load_stroke_style(relative_file ? (fs::path(base_) / name).string() : name);
+      return load_stroke_style_from(name, base_);
     } catch (const StrokeStyleError& e) {
       fail(path, e.what());
     }
@@ -174,38 +182,38 @@ const std::vector<std::string>& stroke_role_names() {
 
 StrokeFile parse_stroke_file(const std::string& text, const std::string& source, const std::string& base_dir,
                              glm::dvec3 origin) {
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw SceneError(source + ": " + line_and_column(text, e.byte) + ": not valid JSON (" + e.what() + ")");
-  } catch (const json::exception& e) {
-    throw SceneError(source + ": cannot read the JSON (" + std::string(e.what()) + ")");
-  }
-  return StrokeFileReader(source, base_dir).file(j, origin);
+  return StrokeFileReader(source, base_dir).file(parse_json_text_as<SceneError>(text, source), origin);
 }
 
 StrokeFile load_stroke_file(const std::string& path, glm::dvec3 origin) {
-  std::ifstream in(path);
-  if (!in || fs::is_directory(path)) throw SceneError(path + ": cannot read the stroke file");
-  std::stringstream text;
-  text << in.rdbuf();
   fs::path dir = fs::path(path).parent_path();
-  return parse_stroke_file(text.str(), path, dir.empty() ? "." : dir.string(), origin);
+  return parse_stroke_file(read_input_file_as<SceneError>(path, "stroke file"), path, dir.empty() ? "." : dir.string(),
+                           origin);
+}
+
+std::string offsets_example_fault(const DrawnStroke& stroke) {
+  glm::dvec2 a = stroke.points.front().window, chord = stroke.points.back().window - a;
+  double length = glm::length(chord);
+  if (!(length >= 1))
+    return "a crease or silhouette stroke is an offsets example: its ends must be 1 px apart or more (they are " +
+           format_number(length) + " px apart)";
+  glm::dvec2 left = glm::dvec2(-chord.y, chord.x) / length;
+  for (const DrawnPoint& p : stroke.points)
+    if (std::abs(glm::dot(p.window - a, left)) > 1000)
+      return "an offsets example strays more than 1000 px from its chord";
+  return "";
 }
 
 OffsetExample drawn_offsets(const DrawnStroke& stroke, const std::string& source) {
+  if (std::string fault = offsets_example_fault(stroke); !fault.empty()) throw SceneError(source + ": " + fault);
   glm::dvec2 a = stroke.points.front().window, chord = stroke.points.back().window - a;
   double length = glm::length(chord);
-  if (!(length >= 1)) throw SceneError(source + ": an offsets example needs its ends 1 px apart or more");
   glm::dvec2 along = chord / length, left(-along.y, along.x);
   OffsetExample out{length, {}};
   double t = 0;
   for (const DrawnPoint& p : stroke.points) {
     t = std::clamp(std::max(t, glm::dot(p.window - a, along) / length), 0.0, 1.0);
-    double d = glm::dot(p.window - a, left);
-    if (std::abs(d) > 1000) throw SceneError(source + ": an offsets example strays more than 1000 px from its chord");
-    out.offsets.push_back({t, d, p.pressure, false});
+    out.offsets.push_back({t, glm::dot(p.window - a, left), p.pressure, false});
   }
   return out;
 }

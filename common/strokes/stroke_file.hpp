@@ -64,9 +64,21 @@ struct StrokeFile {
 // the chord over L_drawn (never decreasing: a stroke that turns back holds its t), the
 // displacement = its signed distance from the chord, positive to the left of the direction
 // of travel (the screen normal of common/strokes/stroke_style.hpp), and its pressure. Throws
-// SceneError naming `source` and the stroke when its ends are under 1 px apart or a
-// displacement passes +-1000 px.
+// SceneError naming `source` and the stroke when offsets_example_fault finds one.
 OffsetExample drawn_offsets(const DrawnStroke& stroke, const std::string& source);
+// Empty when `stroke` makes an offsets example, else why not: its ends are under 1 px
+// apart (a stroke of zero length among them) or a displacement passes +-1000 px. A
+// stroke file's crease and silhouette strokes are checked when it is read.
+std::string offsets_example_fault(const DrawnStroke& stroke);
+
+// A drawn point's bound, px from the window's origin; a hatching group's largest number.
+inline constexpr double kMaxDrawnPixel = 1e6;
+inline constexpr int kMaxHatchingGroup = 1000000;
+// The most points of one stroke file or drawing: 50 times the largest of scenes/drawn
+// (5000), and few enough that `plumbago strokefile` holds them in a few hundred MB
+// (measured: 0.23 GB at the bound) and writes a file within the input files' bound
+// (common/util/input_file.hpp; at most 62 B a point).
+inline constexpr size_t kMaxDrawnPoints = 250000;
 
 // The style of decals and hatching where neither the stroke nor the file names one.
 inline constexpr const char* kDefaultDecalStyle = "ink";

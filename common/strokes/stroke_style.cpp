@@ -5,9 +5,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+
+#include "common/util/input_file.hpp"
 
 namespace plumbago {
 
@@ -195,18 +196,6 @@ bool is_stroke_style_preset(const std::string& s) {
   return s.find('/') == std::string::npos && !json_suffix;
 }
 
-namespace {
-
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in || fs::is_directory(path)) throw StrokeStyleError(path + ": cannot read the stroke style file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-}  // namespace
-
 StrokeStyle default_stroke_style() {
   StrokeStyle s;
   Defaults d;
@@ -230,15 +219,7 @@ void validate_stroke_style(const StrokeStyle& style, const std::string& source) 
 }
 
 StrokeStyle parse_stroke_style(const std::string& text, const std::string& source) {
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw StrokeStyleError(source + ": " + line_and_column(text, e.byte) + ": not valid JSON (" + e.what() + ")");
-  } catch (const json::exception& e) {  // e.g. a number too large for a double
-    throw StrokeStyleError(source + ": not valid JSON (" + e.what() + ")");
-  }
-  return read_style(j, Refuser{source});
+  return read_style(parse_json_text_as<StrokeStyleError>(text, source), Refuser{source});
 }
 
 std::string stroke_style_dir() {
@@ -263,7 +244,12 @@ StrokeStyle load_stroke_style(const std::string& name_or_path) {
       throw StrokeStyleError("stroke style '" + name_or_path + "': no such preset in " + stroke_style_dir() +
                              " (known: " + joined(stroke_style_names()) + ")");
   }
-  return parse_stroke_style(read_file(path), path);
+  return parse_stroke_style(read_input_file_as<StrokeStyleError>(path, "stroke style file"), path);
+}
+
+StrokeStyle load_stroke_style_from(const std::string& name_or_path, const std::string& base_dir) {
+  bool relative_file = !is_stroke_style_preset(name_or_path) && !fs::path(name_or_path).is_absolute();
+  return load_stroke_style(relative_file ? (fs::path(base_dir) / name_or_path).string() : name_or_path);
 }
 
 }  // namespace plumbago

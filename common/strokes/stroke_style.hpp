@@ -115,6 +115,9 @@ bool is_stroke_style_preset(const std::string& name_or_path);
 // A name without '/' and not ending in ".json" is a preset: <stroke_style_dir()>/<name>.json;
 // anything else is a file path.
 StrokeStyle load_stroke_style(const std::string& name_or_path);
+// load_stroke_style with a relative file path taken from `base_dir` (the folder of the
+// scene or stroke file that names the style).
+StrokeStyle load_stroke_style_from(const std::string& name_or_path, const std::string& base_dir);
 
 // $PLUMBAGO_STYLE_DIR when set, else the repository's styles/strokes.
 std::string stroke_style_dir();

@@ -1,9 +1,11 @@
 // The malformed-input corpus (tests/corpus/, docs/bad-input.md): every entry of
-// tests/corpus/expected.json run through the CLI on both backends, each run under a time
-// and a memory limit. An entry is refused (exit code 2, a message naming the file and
-// where in it, nothing left behind) or rendered (exit code 0, no NaN or Inf in the image
-// nor in any buffer the run dumps).
+// tests/corpus/expected.json run through the CLI on both backends (an SVG drawing through
+// `plumbago strokefile`, once), each run under a time and a memory limit. An entry is
+// refused (exit code 2, a message naming the file and where in it, nothing left behind)
+// or rendered (exit code 0, no NaN or Inf in the image nor in any buffer or file the run
+// writes).
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,6 +15,7 @@
 #include <set>
 
 #include "common/util/image.hpp"
+#include "common/util/input_file.hpp"
 #include "tests/support/cli_run.hpp"
 
 namespace plumbago {
@@ -22,6 +25,8 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 const fs::path kCorpus = fs::path(PLUMBAGO_SOURCE_DIR) / "tests" / "corpus";
+// The keys that name an input file, each the folder of the corpus that holds such files.
+const char* const kInputKeys[] = {"mesh", "scene", "svg", "strokes", "style"};
 
 // Each run's limits: far above what a 64x48 render of an entry takes (under 1 s; the GPU
 // backend on llvmpipe reserves 1-2 GB of address space on 2 cores, more with more
@@ -59,15 +64,24 @@ class Corpus : public ::testing::Test {
       fs::permissions(e.path(), fs::perms::owner_all, fs::perm_options::add);
   }
 
-  // The command line of `entry` for `backend` ("curvature" for a mesh's curvature run).
+  // The command line of `entry` for `backend` ("curvature" for a mesh's curvature run,
+  // "strokefile" for a drawing's).
   std::string command(const json& entry, const std::string& backend) const {
     const std::string outputs = " -o " + out("image.exr") + " --dump-stages " + out("dump");
     if (entry.contains("mesh") && backend == "curvature")
-      return "curvature " + (kCorpus / entry["mesh"].get<std::string>()).string() + " -o " + out("curvature.csv");
+      return "curvature " + input(entry["mesh"]) + " -o " + out("curvature.csv");
+    if (entry.contains("svg"))
+      return "strokefile builtin:torus --size 64x48 " + input(entry["svg"]) + " -o " + out("drawn.strokes.json");
     std::string render = "render --backend " + backend + " ";
     if (entry.contains("mesh")) return render + scene_for(entry["mesh"]) + outputs;
-    if (entry.contains("scene")) return render + (kCorpus / entry["scene"].get<std::string>()).string() + outputs;
+    if (entry.contains("scene")) return render + input(entry["scene"]) + outputs;
+    if (entry.contains("strokes") || entry.contains("style")) return render + stroke_scene_for(entry) + outputs;
     return render + "builtin:torus " + replaced(entry["args"], "{out}", out_.string());
+  }
+
+  // An input's path: in the corpus, or absolute (/dev/zero), or made in the outputs' folder ({out}).
+  std::string input(const json& name) const {
+    return (kCorpus / replaced(name.get<std::string>(), "{out}", out_.string())).string();
   }
 
   // A 64x48 scene of the mesh with every pencil effect (curvature included); small
@@ -82,8 +96,20 @@ class Corpus : public ::testing::Test {
     return path;
   }
 
-  // What the entry puts in the way (a folder, a file, a read-only folder), made in the
-  // outputs' folder; its names.
+  // A 64x48 scene of the torus as strokes that lists the entry's stroke file, or takes
+  // its style for every kind of line.
+  std::string stroke_scene_for(const json& entry) const {
+    json scene = {{"objects", {{{"mesh", {{"procedural", "torus"}}}, {"style", "strokes"}}}}, {"resolution", {64, 48}}};
+    if (entry.contains("strokes")) scene["stroke_files"] = {input(entry["strokes"])};
+    if (entry.contains("style"))
+      scene["strokes"] = {{"crease", input(entry["style"])}, {"silhouette", input(entry["style"])}};
+    const std::string path = (inputs_ / "stroke_scene.json").string();
+    std::ofstream(path) << scene.dump();
+    return path;
+  }
+
+  // What the entry puts in the way or reads (a folder, a file, a read-only folder, a FIFO,
+  // a file one byte over the input files' bound), made in the outputs' folder; its names.
   std::set<std::string> make_blockers(const json& entry) const {
     std::set<std::string> names;
     const json blockers = entry.value("blockers", json::object());
@@ -92,6 +118,11 @@ class Corpus : public ::testing::Test {
       if (kind == "file") std::ofstream(p) << "in the way\n";
       if (kind == "folder" || kind == "read_only_folder") fs::create_directories(p);
       if (kind == "read_only_folder") fs::permissions(p, fs::perms::owner_write, fs::perm_options::remove);
+      if (kind == "fifo" && ::mkfifo(p.c_str(), 0600) != 0) ADD_FAILURE() << "cannot make the FIFO " << p;
+      if (kind == "oversize_file") {
+        std::ofstream(p).put('{');
+        fs::resize_file(p, kMaxInputFileBytes + 1);  // sparse: no disk used
+      }
       names.insert(name.get<std::string>());
     }
     return names;
@@ -122,14 +153,14 @@ class Corpus : public ::testing::Test {
     std::vector<std::string> needles = entry.value("message", std::vector<std::string>{});
     // A file's refusal names it; a mesh the scene refuses (its coordinates) is named by
     // the scene's key ("scene_key").
-    for (const char* key : {"mesh", "scene"})
+    for (const char* key : kInputKeys)
       if (entry.contains(key) && !(backend != "curvature" && entry.contains("scene_key")))
         needles.push_back(fs::path(entry[key].get<std::string>()).filename().string());
     if (entry.contains("scene_key") && backend != "curvature") needles.push_back(entry["scene_key"]);
     for (const auto& n : needles) EXPECT_NE(r.err.find(n), std::string::npos) << "'" << n << "' not in: " << r.err;
   }
 
-  // Exit code 0 and every image written finite; then the outputs are removed.
+  // Exit code 0 and every image and text written finite; then the outputs are removed.
   void expect_rendered(const testing::CliRun& r) const {
     ASSERT_EQ(r.code, 0) << r.err;
     size_t images = 0;
@@ -138,7 +169,7 @@ class Corpus : public ::testing::Test {
         ++images;
         EXPECT_FALSE(has_non_finite(read_image(e.path().string()))) << e.path();
       }
-      if (e.path().extension() == ".csv") {
+      if (e.path().extension() == ".csv" || e.path().extension() == ".json") {
         ++images;
         EXPECT_FALSE(has_word_nan_or_inf(testing::slurp(e.path().string()))) << e.path();
       }
@@ -170,24 +201,29 @@ TEST_F(Corpus, EveryEntryIsRefusedOrRenderedCleanlyOnBothBackends) {
       std::printf("skipped (root writes into read-only folders): %s\n", entry.dump().c_str());
       continue;
     }
-    files += entry.contains("mesh") || entry.contains("scene");
+    files +=
+        std::any_of(std::begin(kInputKeys), std::end(kInputKeys), [&](const char* k) { return entry.contains(k); });
     try {
       if (entry.contains("mesh")) check(entry, "curvature");
-      for (const char* backend : {"gpu", "reference"}) check(entry, backend);
+      if (entry.contains("svg")) check(entry, "strokefile");
+      for (const char* backend : {"gpu", "reference"})
+        if (!entry.contains("svg")) check(entry, backend);
     } catch (const std::exception& e) {
       ADD_FAILURE() << "the entry cannot be run: " << e.what();
     }
   }
-  EXPECT_GE(files, 60u) << "the corpus has fewer files than issue 21 asks for";
+  EXPECT_GE(files, 158u) << "the corpus has fewer files than issues 21 and 32 ask for";
 }
 
-// Every file of the corpus has its entry, and every entry its file.
+// Every file of the corpus has its entry, and every entry of the corpus its file (the
+// others name /dev/zero or what the test makes in the outputs' folder).
 TEST_F(Corpus, ManifestListsEveryFile) {
   std::set<std::string> listed, present;
   for (const json& entry : manifest_["entries"])
-    for (const char* key : {"mesh", "scene"})
-      if (entry.contains(key)) listed.insert(entry[key].get<std::string>());
-  for (const char* folder : {"mesh", "scene"})
+    for (const char* key : kInputKeys)
+      if (entry.contains(key) && entry[key].get<std::string>().starts_with(std::string(key) + "/"))
+        listed.insert(entry[key].get<std::string>());
+  for (const char* folder : kInputKeys)
     for (const auto& e : fs::directory_iterator(kCorpus / folder))
       present.insert(fs::relative(e.path(), kCorpus).string());
   EXPECT_EQ(listed, present);

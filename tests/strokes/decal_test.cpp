@@ -84,6 +84,15 @@ TEST(StrokeFile, RefusalsNameTheFileAndThePath) {
   EXPECT_NE(refusal("\"fov_deg\": 40,", "").find("bad.json: /camera/fov_deg: missing"), std::string::npos);
   EXPECT_NE(refusal("[[0, 0, 1], [5, 0, 1]]}]", "[[0, 0, 1]]}]").find("bad.json: /strokes/4/points: expected"),
             std::string::npos);
+  // The last stroke made as long as the bound on a file's points allows (8 in the others), then one point longer.
+  auto points = [](size_t n) {
+    std::string text = "[[0, 0, 1]";
+    for (size_t k = 1; k < n; ++k) text += ", [1, 0, 1]";
+    return text + "]}]";
+  };
+  EXPECT_EQ(refusal("[[0, 0, 1], [5, 0, 1]]}]", points(kMaxDrawnPoints - 8)), "(accepted)");
+  EXPECT_EQ(refusal("[[0, 0, 1], [5, 0, 1]]}]", points(kMaxDrawnPoints - 7)),
+            "bad.json: /strokes/4/points: the strokes hold over 250000 points, the most a stroke file may");
 }
 
 TEST(StrokeFile, ScenesListThemRelativeToTheirFolder) {
@@ -143,7 +152,8 @@ TEST(StrokeFile, DrawnExamplesStyleTheCreases) {
     load_scene(dir.path("scene.json"));
     FAIL() << "an example whose ends meet was accepted";
   } catch (const SceneError& e) {
-    EXPECT_NE(std::string(e.what()).find("e.strokes.json: /strokes/0: an offsets example needs its ends"),
+    EXPECT_NE(std::string(e.what()).find("e.strokes.json: /strokes/0/points: a crease or silhouette stroke is an "
+                                         "offsets example: its ends must be 1 px apart or more"),
               std::string::npos)
         << e.what();
   }
@@ -324,7 +334,7 @@ TEST(StrokeFileCommand, SvgOverTheRenderBecomesAStrokeFile) {
   dir.write("curve.svg", R"(<svg width="800" height="600"><path d="M 0 0 C 10 10 20 20 30 0"/></svg>)");
   auto curve = testing::run_cli("strokefile builtin:torus " + dir.path("curve.svg") + " -o " + dir.path("c.json"), dir);
   EXPECT_EQ(curve.code, 2);
-  EXPECT_NE(curve.err.find("curve.svg: <path> #1: path command 'C' is not a straight segment"), std::string::npos)
+  EXPECT_NE(curve.err.find("curve.svg: <path> #1: d: path command 'C' is not a straight segment"), std::string::npos)
       << curve.err;
 }
 
