@@ -240,7 +240,8 @@ StrokeStyle load_stroke_style(const std::string& name_or_path) {
   std::string path = name_or_path;
   if (is_stroke_style_preset(name_or_path)) {
     path = (fs::path(stroke_style_dir()) / (name_or_path + ".json")).string();
-    if (!fs::is_regular_file(path))
+    std::error_code error;  // a name too long for a file name, say: no such preset either
+    if (!fs::is_regular_file(path, error))
       throw StrokeStyleError("stroke style '" + name_or_path + "': no such preset in " + stroke_style_dir() +
                              " (known: " + joined(stroke_style_names()) + ")");
   }

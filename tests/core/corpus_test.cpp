@@ -158,6 +158,9 @@ class Corpus : public ::testing::Test {
         needles.push_back(fs::path(entry[key].get<std::string>()).filename().string());
     if (entry.contains("scene_key") && backend != "curvature") needles.push_back(entry["scene_key"]);
     for (const auto& n : needles) EXPECT_NE(r.err.find(n), std::string::npos) << "'" << n << "' not in: " << r.err;
+    // No library's exception text reaches the user (docs/bad-input.md, "The promise").
+    for (const char* library : {"stod", "stoi", "_M_range_check", "bad_alloc", "-nan", "regex"})
+      EXPECT_EQ(r.err.find(library), std::string::npos) << "'" << library << "' in: " << r.err;
   }
 
   // Exit code 0 and every image and text written finite; then the outputs are removed.
