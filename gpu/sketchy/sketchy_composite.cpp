@@ -51,7 +51,7 @@ void SketchyCompositePass::set_uniforms(const SketchyCompositeInputs& in, const 
   glProgramUniform2fv(id, program_.uniform("copy_shifts[0]"), kMaxCopies, glm::value_ptr(shifts[0]));
 }
 
-void SketchyCompositePass::run(const SketchyCompositeInputs& in, const SketchyParams& p, Texture& color,
+void SketchyCompositePass::run(const SketchyCompositeInputs& in, const SketchyParams& p, Texture& color, bool on_paper,
                                const Renderbuffer* under_depth, Texture& sprite_depth, const PixelRect& reach) {
   set_uniforms(in, p);
   set_sampling(in.edge_map, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);  // darkness is read filtered
@@ -66,10 +66,8 @@ void SketchyCompositePass::run(const SketchyCompositeInputs& in, const SketchyPa
   glDrawBuffers(2, draw);
   const float white[4] = {1, 1, 1, 1}, one = 1;
   glClearBufferfv(GL_COLOR, 1, white);
-  if (!under_depth) {
-    glClearBufferfv(GL_COLOR, 0, white);
-    glClearBufferfv(GL_DEPTH, 0, &one);
-  }
+  if (on_paper) glClearBufferfv(GL_COLOR, 0, white);
+  if (!under_depth) glClearBufferfv(GL_DEPTH, 0, &one);
   glViewport(0, 0, color.width, color.height);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -94,8 +92,9 @@ void SketchyCompositePass::run(const SketchyCompositeInputs& in, const SketchyPa
 
 namespace {
 
-// The sketch over what the pencil pipeline drew (its color target, tested against its depth
-// buffer), or over white paper where it did not run.
+// The sketch over what the pencil pipeline drew (its color target), or over white paper where
+// it did not run; tested against the ordinary objects' depth buffer wherever the G-buffer ran
+// (the pencil pipeline's or the strokes').
 class SketchyCompositeStagePass : public GpuPass {
  public:
   explicit SketchyCompositeStagePass(GpuFrame& f)
@@ -106,8 +105,8 @@ class SketchyCompositeStagePass : public GpuPass {
     const Texture* coordinates = f.get(maybe(kNoiseCoordinates));
     pass_.run(
         {f.get(kSketchyEdge), f.get(kSketchyShade), f.get(kSketchyGBuffer), noise_, coordinates ? *coordinates : none_},
-        f.params<SketchyParams>(), f.put(kSketchColor), f.get(maybe(kDepthBuffer)), f.put(kSketchDepth),
-        composite_rect(f.sketchy, f.scene.width, f.scene.height));
+        f.params<SketchyParams>(), f.put(kSketchColor), drawn_over(find_output(kSketchColor.name), f.stages).empty(),
+        f.get(maybe(kDepthBuffer)), f.put(kSketchDepth), composite_rect(f.sketchy, f.scene.width, f.scene.height));
   }
 
  private:

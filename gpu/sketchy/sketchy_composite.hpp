@@ -26,13 +26,14 @@ class SketchyCompositePass {
  public:
   SketchyCompositePass();
   // Draws the sketch into `color` (RGBA8) where its depth sprite passes the depth test
-  // against `under_depth` (the ordinary objects' depth buffer), or over white paper and
-  // an empty depth buffer when `under_depth` is null. `sprite_depth` (R32F): the sprite's
+  // against `under_depth` (the ordinary objects' depth buffer), or an empty depth buffer
+  // when `under_depth` is null; over what `color` holds, or over white paper `on_paper`
+  // (no pipeline drew into it this frame). `sprite_depth` (R32F): the sprite's
   // normalized depth where the sketch was drawn, 1 elsewhere. Only `reach` (the sketchy
   // objects' covered_rect grown by sketch_reach, common/sketchy/sketchy.hpp) runs the shader:
   // outside it both samples are exterior and the fragment would be discarded.
-  void run(const SketchyCompositeInputs& in, const SketchyParams& p, Texture& color, const Renderbuffer* under_depth,
-           Texture& sprite_depth, const PixelRect& reach);
+  void run(const SketchyCompositeInputs& in, const SketchyParams& p, Texture& color, bool on_paper,
+           const Renderbuffer* under_depth, Texture& sprite_depth, const PixelRect& reach);
 
  private:
   void set_uniforms(const SketchyCompositeInputs& in, const SketchyParams& p);
