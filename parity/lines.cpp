@@ -44,7 +44,7 @@ SceneLines scene_lines(const Scene& scene, const std::string& backend) {
   DecalSurface decals = decal_surface(out.scene, backend);
   out.lines = window_lines(out.scene, p, LineObjects::Strokes, nullptr, &decals);
   out.frame = strokes_frame(out.scene, backend);
-  out.keys = keys_from_channels(out.frame.buffers.at("id_image.ids"));
+  out.keys = keys_from_channels(out.frame.buffers.at(kIds.name));
   const ImageU32& keys = out.keys;
   auto test = [&keys](const std::vector<VisibilitySample>& batch) {
     std::vector<uint8_t> flags;
