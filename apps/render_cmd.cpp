@@ -7,6 +7,7 @@
 
 #include "apps/command.hpp"
 #include "apps/scene_options.hpp"
+#include "common/util/progress.hpp"
 #include "common/util/visualize.hpp"
 #include "gpu/core/pipeline.hpp"
 #include "gpu/gl/context.hpp"
@@ -67,8 +68,9 @@ void write_path(const RenderOptions& o, const Scene& scene) {
   OutputFiles out;
   out.folder(o.output);
   PathFrames path(scene, o.backend);
+  Progress progress(o.output + ": frames", size_t(path.count()), true);
   char name[32];
-  for (int i = 0; i < path.count(); ++i) {
+  for (int i = 0; i < path.count(); ++i, progress.advance(1)) {
     std::snprintf(name, sizeof name, "frame_%04d.png", i);
     write_image(path.render(i).color, out.add((std::filesystem::path(o.output) / name).string()));
   }

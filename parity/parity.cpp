@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <deque>
 #include <map>
+#include <set>
 #include <stdexcept>
 
 #include "common/core/passes.hpp"
 #include "common/scene/gbuffer.hpp"
+#include "common/util/memory_budget.hpp"
 #include "gpu/core/pipeline.hpp"
 #include "gpu/core/stage.hpp"
 #include "gpu/gl/context.hpp"
@@ -322,6 +325,24 @@ std::vector<std::string> parity_stages() {
   return names;
 }
 
+namespace {
+
+// What the run would hold at once, against the memory budget before it starts: the
+// reference frames it keeps (one per set of effects its steps run), a step's two halves
+// (its pass's reference frame and the GPU's), and both backends' outputs of every stage it
+// compares; each at most a whole frame (frame_bytes_per_pixel).
+void check_parity_memory(const Scene& scene, size_t kept_frames) {
+  const double frames = double(kept_frames) + 4, pixels = double(scene.width) * scene.height;
+  char what[300];
+  std::snprintf(what, sizeof what,
+                "%s: compare at %dx%d (%zu reference frames kept, a step's two halves and both backends' results: %g "
+                "frames of up to %g bytes a pixel)",
+                scene.source.c_str(), scene.width, scene.height, kept_frames, frames, frame_bytes_per_pixel());
+  check_memory_budget(what, frames * pixels * frame_bytes_per_pixel());
+}
+
+}  // namespace
+
 // One step: a GPU pass on the scene that runs it, or (no pass) the whole frames.
 struct ParityRun::Step {
   Scene running;
@@ -354,6 +375,10 @@ ParityRun::ParityRun(const Scene& scene, const std::vector<std::string>& stages)
       steps_.push_back(std::make_unique<Step>(Step{running, pass, {}, {}}));
     }
   }
+  std::set<std::vector<std::string>> kept;
+  for (const auto& step : steps_)
+    if (step->pass) kept.insert(step->running.effects);
+  check_parity_memory(scene, kept.size());
 }
 
 ParityRun::~ParityRun() = default;

@@ -9,6 +9,7 @@
 
 #include "common/core/preprocess.hpp"
 #include "common/util/noise.hpp"
+#include "common/util/progress.hpp"
 #include "common/util/random.hpp"
 
 namespace plumbago {
@@ -125,7 +126,9 @@ std::vector<Image> pencil_layers(const PencilTexturesParams& p, uint32_t seed, i
   long covering = std::max(1L, long(texels / (p.stroke_length * float(p.size) * p.stroke_width)));
   constexpr double kLeastProgress = 1e-6;
   int end = last < 0 ? p.layers : std::min(last + 1, p.layers);
-  for (int l = 1; l < end; ++l) {
+  Progress progress("pencil textures (" + std::to_string(p.size) + "x" + std::to_string(p.size) + " layers)",
+                    size_t(end - 1), true);
+  for (int l = 1; l < end; ++l, progress.advance(1)) {
     Image next = layers.back();
     double before = sum;
     for (long n = 1; sum / texels > layer_target(p, l); ++n) {

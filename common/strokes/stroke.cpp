@@ -2,11 +2,13 @@
 #include "common/strokes/stroke.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <string>
 
 #include "common/strokes/offset_synthesis.hpp"
 #include "common/strokes/stroke_textures.hpp"
+#include "common/util/memory_budget.hpp"
 
 namespace plumbago {
 
@@ -53,6 +55,29 @@ StrokeStyle decal_style(const StrokeStyle& decal, const WindowPath& path, const 
   return style;
 }
 
+// The finest resampling step any run of `lines` can take: its line kinds' styles', its
+// decals' and hatches'.
+double finest_sample_px(const WindowLines& lines, const StrokeStyles& styles) {
+  double finest = std::min({styles.crease.sample_px, styles.border.sample_px, styles.silhouette.sample_px});
+  for (const StrokeStyle& s : lines.decal_styles) finest = std::min(finest, double(s.sample_px));
+  return finest;
+}
+
+// What the strokes would take, against the memory budget before any is made. Per spline
+// sample (twice a run's window length over the finest step, as a spline through the run's
+// points may run longer than they do, and its two ends): its record, and its two
+// triangles' vertices as the ribbon makes them, as drawn, and as the GPU's copy.
+void check_stroke_memory(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles) {
+  double step = finest_sample_px(lines, styles), length = 0;
+  for (const VisibleRun& run : visibility.runs) length += run.s1 - run.s0;
+  double samples = 2 * length / step + 2.0 * double(visibility.runs.size());
+  char what[200];
+  std::snprintf(what, sizeof what, "the strokes of %zu visible runs (%.3g px long, resampled every %g px)",
+                visibility.runs.size(), length, step);
+  check_memory_budget(what,
+                      samples * double(sizeof(StrokeSample) + 6 * (sizeof(RibbonVertex) + 2 * sizeof(StrokeVertex))));
+}
+
 }  // namespace
 
 StrokeStyle RunStyles::of(const WindowPath& path, const VisibleRun& run, size_t index) {
@@ -78,6 +103,7 @@ StrokeStyle RunStyles::of(const WindowPath& path, const VisibleRun& run, size_t 
 
 std::vector<RunStroke> run_strokes(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
                                    uint32_t seed) {
+  check_stroke_memory(lines, visibility, styles);
   std::vector<RunStroke> out;
   RunStyles run_styles(styles, seed, lines.decal_styles);
   for (size_t i = 0; i < visibility.runs.size(); ++i) {

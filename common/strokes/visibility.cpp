@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+
+#include "common/util/memory_budget.hpp"
 
 namespace plumbago {
 
@@ -90,6 +93,19 @@ std::vector<double> sample_arcs(const WindowPath& p, double step, double width, 
   return s;
 }
 
+// At least as many samples as sample_arcs takes of p: the stretch of each segment within
+// the margin over `step`, and its ends.
+double first_round_bound(const WindowPath& p, double step, double width, double height) {
+  double bound = 2;
+  size_t n = p.window.size(), segments = p.closed ? n : n - 1;
+  for (size_t k = 0; k < segments; ++k) {
+    glm::dvec2 a = p.window[k], b = p.window[(k + 1) % n];
+    double t0, t1;
+    if (clip_to_window(a, b, width, height, kWindowMargin, t0, t1)) bound += (t1 - t0) * glm::distance(a, b) / step + 3;
+  }
+  return bound;
+}
+
 struct Tested {
   double s;
   bool visible;
@@ -101,9 +117,23 @@ struct Change {
   Tested a, b;  // a.s < b.s (b.s may pass a closed path's length)
 };
 
+// What the samples would take, against the memory budget before any is made: each sample's
+// arc length and flag (Tested, and one byte in Visibility::flags), its record three times at most (the first round's
+// batch, a bisection round's, which tests at most one sample per change, and the GPU's copy).
+void check_visibility_memory(const WindowLines& lines, double step) {
+  double samples = 0, length = 0;
+  for (const WindowPath& p : lines.paths) samples += first_round_bound(p, step, lines.width, lines.height);
+  for (const WindowPath& p : lines.paths) length += p.length_px;
+  char what[200];
+  std::snprintf(what, sizeof what, "the visibility samples of %zu lines (%.3g px long, every strokes.vis_step_px %g)",
+                lines.paths.size(), length, step);
+  check_memory_budget(what, samples * double(sizeof(Tested) + 1 + 3 * sizeof(VisibilitySample)));
+}
+
 class RunBuilder {
  public:
   RunBuilder(const WindowLines& lines, const StrokesParams& p, const SampleTest& test) : lines_(lines), test_(test) {
+    check_visibility_memory(lines, p.vis_step_px);
     for (uint32_t i = 0; i < lines.paths.size(); ++i) {
       std::vector<double> s = sample_arcs(lines.paths[i], p.vis_step_px, lines.width, lines.height);
       first_.push_back(tested_.size());

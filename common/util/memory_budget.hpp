@@ -34,9 +34,14 @@ std::string over_memory_budget(const std::string& what, double bytes);
 // Throws std::length_error with over_memory_budget's message when it is not empty.
 void check_memory_budget(const std::string& what, double bytes);
 
+// Bytes per pixel of every frame stage's outputs as the reference keeps them (floats): an
+// upper bound for one frame of any effects, since a frame holds at most all of them.
+double frame_bytes_per_pixel();
+
 // The scene's meshes, its frame's buffers at its size (every frame stage's outputs as
 // floats: an upper bound for any effects) and the textures its parameters size (the
-// pencil stack, layers x size^2; the paper; the 2D and 3D noise), against the budget;
+// pencil stack, layers x size^2; the paper; the 2D and 3D noise) and the GPU's projection of
+// its largest stroke file (a G-buffer at the file's resolution), against the budget;
 // the message names the scene and its two largest parts (common/scene/scene_memory.cpp).
 void check_scene_memory(const Scene& scene);
 

@@ -6,6 +6,7 @@
 #include "gpu/strokes/decal.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <map>
 
 #include "common/scene/gbuffer.hpp"
@@ -21,8 +22,10 @@ ImageU32 ids_seen_from(const Scene& scene, const StrokeFile& file) {
   view.camera = file.camera, view.width = file.width, view.height = file.height;
   GBufferPass pass(view);
   GBufferTargets targets = make_gbuffer_targets(file.width, file.height, GBufferFormat::RGBA32F);
-  pass.render(view, targets);
-  return download_gbuffer(targets).ids;
+  GBufferChannels ids_only = GBufferChannels::none();
+  ids_only.read_region = {0, 0, INT_MAX, INT_MAX};  // 0 where no object is
+  pass.render(view, targets, ids_only);
+  return download_texture_u32(targets.ids, 2);
 }
 
 // The faces around each vertex of each object, made on first use: where no face seen at

@@ -191,6 +191,16 @@ TEST_F(Cli, CompareReportsEveryStageAsJson) {
       EXPECT_TRUE(s.contains(key)) << key;
 }
 
+// compare holds both backends' frames and results at once: the budget that admits a render
+// of the scene refuses its comparison, before either backend starts, with what it would need.
+TEST_F(Cli, CompareOverTheMemoryBudgetIsRefusedWhereRenderFits) {
+  const std::string budget = "--memory-budget-gb 0.6 ", scene = " builtin:torus --size 800x800";
+  CliRun r = run(budget + "render" + scene + " -o " + path("out.png"));
+  EXPECT_EQ(r.code, 0) << r.err;
+  fs::remove(path("out.png"));
+  expect_refused_as_is(budget + "compare" + scene, {"compare at 800x800", "over the memory budget of 0.6 GB"});
+}
+
 // Every compared output can be written as images, the corner angles and the fused
 // passes' outputs too (this failed on the angles' six channels, after half the files).
 TEST_F(Cli, CompareWritesEveryOutputAsImages) {
