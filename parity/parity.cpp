@@ -228,10 +228,11 @@ class PassParity {
     if (!bound) return compared(shown, std::move(ref), std::move(ras), o.tolerance, mask, note);
     Image b = bound(rf_);
     ImageDiff raw = compare_images(ref, ras, o.tolerance, mask);
-    size_t bounded = size_t(std::count_if(b.data.begin(), b.data.end(), [](float v) { return v > 0; }));
+    size_t bounded = size_t(std::count_if(b.data.begin(), b.data.end(), [&](float v) { return v > o.tolerance; }));
     char text[200];
-    std::snprintf(text, sizeof text, "; a derived per-pixel bound allows %zu pixels more (max abs without it %.3g)",
-                  bounded, raw.max_abs);
+    std::snprintf(text, sizeof text,
+                  "; a derived per-pixel bound over the tolerance at %zu pixels (max abs without it %.3g)", bounded,
+                  raw.max_abs);
     StageParity r = compared(shown, ref, within_bound(ref, ras, b), o.tolerance, mask, note + text);
     r.gpu = std::move(ras);  // what the GPU wrote; the diff is what the bound leaves
     r.bounded = bounded;

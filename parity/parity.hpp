@@ -23,7 +23,7 @@ struct StageParity {
   bool pass = false;
   Image reference, gpu;  // the two outputs (the heat map is made on request; angles are compared as (cos, sin))
   std::string note;      // what was excluded, and why the tolerance is what it is
-  size_t bounded = 0;    // pixels where a derived per-pixel bound allows more than the tolerance
+  size_t bounded = 0;    // pixels where a derived per-pixel bound is over the tolerance (doubles what it allows)
 };
 
 // The stage registry as a program starts: the descriptors and their parameter structs
