@@ -117,9 +117,10 @@ struct Change {
   Tested a, b;  // a.s < b.s (b.s may pass a closed path's length)
 };
 
-// What the samples would take, against the memory budget before any is made: each sample's
-// arc length and flag (Tested, and one byte in Visibility::flags), its record three times at most (the first round's
-// batch, a bisection round's, which tests at most one sample per change, and the GPU's copy).
+// What the samples would take, against the memory budget before any is made: each
+// sample's arc length and flag (Tested, and a byte of Visibility::flags), and its record
+// three times at most (the first round's batch, a bisection round's, which tests at most
+// one sample per change, and the GPU's copy).
 void check_visibility_memory(const WindowLines& lines, double step) {
   double samples = 0, length = 0;
   for (const WindowPath& p : lines.paths) samples += first_round_bound(p, step, lines.width, lines.height);

@@ -54,9 +54,7 @@ double spread(const glm::uvec3& tri, Value value, Distance distance) {
   return std::max(distance(value(tri[1]), value(tri[0])), distance(value(tri[2]), value(tri[0])));
 }
 
-double bary_moves(const WorldObject&, const glm::uvec3&, const GBuffer&, int, int, SliverBound b) {
-  return b.d_lambda;
-}
+double bary_moves(const WorldObject&, const glm::uvec3&, const GBuffer&, int, int, SliverBound b) { return b.d_lambda; }
 
 // The normalized depth of docs/conventions.md, (d - near) / (far - near).
 double depth_moves(const WorldObject&, const glm::uvec3&, const GBuffer& g, int, int, SliverBound b) {
@@ -65,7 +63,8 @@ double depth_moves(const WorldObject&, const glm::uvec3&, const GBuffer& g, int,
 
 double gouraud_moves(const WorldObject& obj, const glm::uvec3& tri, const GBuffer&, int, int, SliverBound b) {
   return 2 * b.d_lambda *
-         spread(tri, [&](uint32_t v) { return obj.gouraud[v]; }, [](float a, float b) { return std::abs(a - b); });
+         spread(
+             tri, [&](uint32_t v) { return obj.gouraud[v]; }, [](float a, float b) { return std::abs(a - b); });
 }
 
 double normal_moves(const WorldObject& obj, const glm::uvec3& tri, const GBuffer& g, int x, int y, SliverBound b) {
@@ -73,8 +72,9 @@ double normal_moves(const WorldObject& obj, const glm::uvec3& tri, const GBuffer
   glm::vec3 n(0);
   for (int k = 0; k < 3; ++k) n += g.bary.at(x, y, k) * obj.normals[tri[k]];
   double moved = 2 * b.d_lambda *
-                 spread(tri, [&](uint32_t v) { return obj.normals[v]; },
-                        [](glm::vec3 a, glm::vec3 b) { return double(glm::length(a - b)); });
+                 spread(
+                     tri, [&](uint32_t v) { return obj.normals[v]; },
+                     [](glm::vec3 a, glm::vec3 b) { return double(glm::length(a - b)); });
   return std::min(2.0, 2 * moved / std::max(double(glm::length(n)), 1e-9));
 }
 
