@@ -26,19 +26,15 @@ struct MeshFile {
   std::vector<glm::uvec3> triangles;
 };
 
-// The weld's grid pitch for coordinates within ±half_extent of the center: half float's
-// spacing at half_extent (2^(floor(log2 half_extent) + 1 - 24), from 2^-24 to 2^-23 of
-// it), and at least float's smallest normal number. A multiple of it within ±half_extent
-// is exactly a float.
-double weld_pitch(double half_extent);
-
 // The file's coordinates made a Mesh: centered on their bounding box's center, in double
-// (Mesh::origin); each then rounded to the nearest point of a grid of weld_pitch (a
-// tolerance relative to the object's size, not to its place: the same mesh at 0 and at
-// 1e7 welds the same), and vertices on the same grid point merged. Faces with two
-// corners on one vertex are dropped, and so are faces with the same corners in the same
-// cyclic order as an earlier one; a face with the opposite order is kept (a two-sided
-// sheet). Counts in Mesh::cleanup. No normals.
+// (Mesh::origin), then rounded once to float; vertices whose centered coordinates are the
+// same float are merged. The weld's tolerance is thus float's spacing at the centered
+// coordinate: at most 2^-24 of the object's half-extent, relative to its size and not to
+// its place (the same mesh at 0 and at 1e7 welds the same), and it merges only vertices
+// that the renderers, which work in float relative to the objects' center, could not hold
+// apart. Faces with two corners on one vertex are dropped, and so are faces with the same
+// corners in the same cyclic order as an earlier one; a face with the opposite order is
+// kept (a two-sided sheet). Counts in Mesh::cleanup. No normals.
 Mesh center_and_weld(const MeshFile& file);
 
 MeshFile read_off(const std::string& path);

@@ -176,10 +176,10 @@ void validate_file(const MeshFile& f) {
   if (f.triangles.empty()) throw MeshError(f.name + ": the mesh has no faces");
 }
 
-struct CellHash {
-  size_t operator()(const glm::i64vec3& q) const {
+struct PositionHash {
+  size_t operator()(const glm::vec3& p) const {
     size_t h = 0;
-    for (int c = 0; c < 3; ++c) h = h * 1000003u ^ std::hash<int64_t>()(q[c]);
+    for (int c = 0; c < 3; ++c) h = h * 1000003u ^ std::hash<float>()(p[c]);
     return h;
   }
 };
@@ -217,11 +217,6 @@ std::string no_face_left(const MeshFile& f) {
 
 }  // namespace
 
-double weld_pitch(double half_extent) {
-  if (!(half_extent > 0)) return 1.0;
-  return std::max(std::ldexp(1.0, std::ilogb(half_extent) + 1 - 24), std::ldexp(1.0, -126));
-}
-
 Mesh center_and_weld(const MeshFile& file) {
   Mesh m;
   m.name = file.name;
@@ -231,18 +226,12 @@ Mesh center_and_weld(const MeshFile& file) {
     hi = glm::max(hi, p);
   }
   m.origin = file.positions.empty() ? glm::dvec3(0.0) : (lo + hi) * 0.5;
-  double half_extent = 0;
-  for (const glm::dvec3& p : file.positions)
-    half_extent =
-        std::max({half_extent, std::abs(p.x - m.origin.x), std::abs(p.y - m.origin.y), std::abs(p.z - m.origin.z)});
-  const double h = weld_pitch(half_extent);
-  std::unordered_map<glm::i64vec3, unsigned, CellHash> first;
+  std::unordered_map<glm::vec3, unsigned, PositionHash> first;
   std::vector<unsigned> remap(file.positions.size());
   for (size_t i = 0; i < file.positions.size(); ++i) {
-    glm::dvec3 d = (file.positions[i] - m.origin) / h;
-    glm::i64vec3 q(std::llround(d.x), std::llround(d.y), std::llround(d.z));
-    auto [it, added] = first.emplace(q, unsigned(m.positions.size()));
-    if (added) m.positions.push_back(glm::vec3(glm::dvec3(q) * h));  // exact: |q| <= 2^24
+    const glm::vec3 p(file.positions[i] - m.origin);  // rounded once, from double
+    auto [it, added] = first.emplace(p, unsigned(m.positions.size()));
+    if (added) m.positions.push_back(p);
     remap[i] = it->second;
   }
   m.cleanup.merged_vertices = file.positions.size() - m.positions.size();
