@@ -61,9 +61,10 @@ void for_each_obj_line(const std::string& path, Visit visit) {
   }
 }
 
-// OBJ text checked before OpenMesh reads it, so that a bad coordinate or index is
-// reported with its line (OpenMesh skips such faces with a warning), a file cut off
-// inside a data line is refused, and the counts are held to the memory budget. Two
+// OBJ text checked before read_obj reads it, so that a bad coordinate or index is
+// reported with its line (OpenMesh, which read it before, skipped such faces with a
+// warning), a file cut off inside a data line is refused, and the counts are held to the
+// memory budget before anything is stored. Two
 // passes, nothing stored: the first counts the vertices (a positive index may name one
 // defined after its face), the second checks the indices.
 void check_obj_lines(const std::string& path) {

@@ -41,11 +41,13 @@ std::string path_length_fault(const std::string& path) {
     return "the path is " + std::to_string(path.size()) + " bytes long, over the " + std::to_string(kMaxPathBytes) +
            " the system takes (PATH_MAX)";
   for (size_t begin = 0; begin <= path.size();) {
-    size_t end = std::min(path.find('/', begin), path.size());
+    const size_t end = std::min(path.find('/', begin), path.size());
+    const std::string over = std::to_string(end - begin) + " bytes long, over the " +
+                             std::to_string(kMaxFileNameBytes) + " the system takes (NAME_MAX)";
     if (end - begin > kMaxFileNameBytes)
-      return "a file or folder name in the path is " + std::to_string(end - begin) + " bytes long, over the " +
-             std::to_string(kMaxFileNameBytes) + " the system takes (NAME_MAX): '" +
-             shortened_path(path.substr(begin, end - begin)) + "'";
+      return end == path.size()
+                 ? "its file name is " + over
+                 : "the folder name '" + shortened_path(path.substr(begin, end - begin)) + "' in it is " + over;
     begin = end + 1;
   }
   return {};
