@@ -349,7 +349,11 @@ class SceneReader {
       if (!added)
         fail(key, "'" + j[i].get<std::string>() + "' is listed twice (at " + path + "/" +
                       std::to_string(first->second) + " and " + key + "): list each stroke file once");
-      out.push_back(load_stroke_file(full.string(), origin));
+      try {  // the file's refusal, through the scene's key
+        out.push_back(load_stroke_file(full.string(), origin));
+      } catch (const SceneError& e) {
+        fail(key, e.what());
+      }
     }
     return out;
   }
