@@ -5,6 +5,7 @@
 // propagated from the neighbors, 1: the estimate's, held fixed).
 #include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -34,13 +35,25 @@ void append_number(std::string& out, float value) {
   out.append(buffer, end);
 }
 
+// A coordinate in the file's frame (Mesh::origin + the centered position): as a float
+// where float holds it to within the mesh's own precision, else in double (a file far from
+// the origin, whose float would be off by more than its vertices' spacing).
+void append_coordinate(std::string& out, double value, double precision) {
+  if (std::abs(double(float(value)) - value) <= precision) return append_number(out, float(value));
+  char buffer[32];
+  auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+  out.push_back(',');
+  out.append(buffer, end);
+}
+
 void write_csv(std::FILE* out, const Mesh& mesh, const Curvature& c, const CurvatureParams& p) {
   float diagonal = mesh.bbox_diagonal();
+  const double precision = std::ldexp(double(diagonal), -24);
   std::fputs(kHeader, out);
   std::string row;
   for (size_t v = 0; v < c.size(); ++v) {
     row = std::to_string(v);
-    for (int k = 0; k < 3; ++k) append_number(row, mesh.positions[v][k]);
+    for (int k = 0; k < 3; ++k) append_coordinate(row, mesh.origin[k] + double(mesh.positions[v][k]), precision);
     for (int k = 0; k < 3; ++k) append_number(row, c.normal[v][k]);
     append_number(row, c.k_min[v]);
     append_number(row, c.k_max[v]);

@@ -1,5 +1,7 @@
 // plumbago render [SCENE] [-o out.png | -o DIR] [--frame I] [--backend gpu|reference]
 //                 [--size WxH] [--set k=v ...] [--stats] [--json] [--dump-stages DIR]
+// --stats: the renderer, every pass with its time, the frame's counts and each object's
+// mesh as loaded (vertices, triangles, and the duplicate and degenerate faces dropped).
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
@@ -50,6 +52,17 @@ void print_stats(const RenderOptions& o, const Scene& scene, const Frame& frame)
       j["ran"].push_back({{"name", p.name.substr(plus + 1)}, {"ms", 0.0}, {"gpu_pass", p.name}});
     }
     j["counts"] = frame.counts;
+    j["objects"] = nlohmann::json::array();
+    for (const SceneObject& object : scene.objects) {
+      const Mesh& m = *object.mesh;
+      j["objects"].push_back({{"mesh", m.name},
+                              {"style", style_names()[size_t(object.style)]},
+                              {"vertices", m.positions.size()},
+                              {"triangles", m.triangles.size()},
+                              {"welded_vertices", m.cleanup.merged_vertices},
+                              {"degenerate_faces", m.cleanup.degenerate_faces},
+                              {"duplicate_faces", m.cleanup.duplicate_faces}});
+    }
     std::printf("%s\n", j.dump(2).c_str());
     return;
   }
@@ -57,6 +70,15 @@ void print_stats(const RenderOptions& o, const Scene& scene, const Frame& frame)
               o.backend.c_str(), renderer.c_str());
   for (const auto& p : frame.ran) std::printf("  %-24s %10.3f ms\n", p.name.c_str(), p.ms);
   for (const auto& [name, n] : frame.counts) std::printf("  %-24s %10.0f\n", name.c_str(), n);
+  // Each object's mesh as loaded: what welding dropped (common/mesh/mesh.hpp, MeshCleanup).
+  for (size_t i = 0; i < scene.objects.size(); ++i) {
+    const Mesh& m = *scene.objects[i].mesh;
+    std::printf(
+        "object %zu  %s (%s): %zu vertices, %zu triangles; dropped %zu duplicate and %zu degenerate faces, "
+        "welded %zu vertices\n",
+        i, m.name.c_str(), style_names()[size_t(scene.objects[i].style)].c_str(), m.positions.size(),
+        m.triangles.size(), m.cleanup.duplicate_faces, m.cleanup.degenerate_faces, m.cleanup.merged_vertices);
+  }
   for (const auto& m : gl_messages) std::printf("GL: %s\n", m.c_str());
 }
 
@@ -111,7 +133,9 @@ void setup(CLI::App& app) {
   cmd->add_option("--backend", o->backend, "gpu (GLSL) or reference (CPU)")
       ->check(CLI::IsMember({"gpu", "reference"}))
       ->capture_default_str();
-  cmd->add_flag("--stats", o->stats, "Print the renderer and every pass that ran with its time");
+  cmd->add_flag("--stats", o->stats,
+                "Print the renderer, every pass that ran with its time, and each object's mesh counts (duplicate and "
+                "degenerate faces dropped)");
   cmd->add_flag("--json", o->json, "With --stats: one JSON object");
   cmd->add_option("--dump-stages", o->dump_dir, "Write every intermediate buffer (PNG + EXR) into DIR");
   cmd->callback([o] { run(*o); });

@@ -37,6 +37,8 @@ py::dict curvature(const std::filesystem::path& path, bool cache, const py::kwar
   for (size_t v = 0; v < c.size(); ++v)
     firmness[v] = float(direction_firmness(c.k_min[v], c.k_max[v], params, diagonal));
   std::string method = method_name(resolved_method(mesh, params));
+  // In the file's coordinates, as before load_mesh centered them (Mesh::origin).
+  for (glm::vec3& p : mesh.positions) p = glm::vec3(mesh.origin + glm::dvec3(p));
   return py::dict("positions"_a = vector_array<float>(std::move(mesh.positions)),
                   "triangles"_a = vector_array<uint32_t>(std::move(mesh.triangles)),
                   "normal"_a = vector_array<float>(std::move(c.normal)), "k_min"_a = vector_array<float>(c.k_min),

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 namespace plumbago {
 
@@ -31,6 +32,33 @@ void compute_normals(Mesh& mesh) {
     double len = glm::length(sum[i]);
     mesh.normals[i] = len > 0 && std::isfinite(len) ? glm::vec3(sum[i] / len) : glm::vec3(0, 0, 1);
   }
+}
+
+size_t weld_vertices(Mesh& mesh) {
+  struct Key {
+    size_t operator()(const glm::vec3& p) const {
+      size_t h = 0;
+      for (int c = 0; c < 3; ++c) h = h * 1000003u ^ std::hash<float>()(p[c]);
+      return h;
+    }
+  };
+  std::unordered_map<glm::vec3, unsigned, Key> first;
+  std::vector<unsigned> remap(mesh.positions.size());
+  std::vector<glm::vec3> kept;
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    auto [it, added] = first.emplace(mesh.positions[i], unsigned(kept.size()));
+    if (added) kept.push_back(mesh.positions[i]);
+    remap[i] = it->second;
+  }
+  std::vector<glm::uvec3> faces;
+  for (const auto& t : mesh.triangles) {
+    glm::uvec3 r(remap[t[0]], remap[t[1]], remap[t[2]]);
+    if (r[0] != r[1] && r[1] != r[2] && r[0] != r[2]) faces.push_back(r);
+  }
+  size_t merged = mesh.positions.size() - kept.size();
+  mesh.positions = std::move(kept);
+  mesh.triangles = std::move(faces);
+  return merged;
 }
 
 }  // namespace plumbago

@@ -1,10 +1,5 @@
-// Mesh files: OBJ and PLY through OpenMesh, each checked first by the project's code so
-// that a refusal names the line (and PLY triangle strips, which OpenMesh cannot read,
-// ../shared/models/igea.ply, read by it); ASCII OFF and STL by the project's own readers
-// (common/mesh/mesh_formats.hpp).
-#include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
-
+// Mesh files, read by the project's own readers (common/mesh/mesh_formats.hpp) in double,
+// then centered and welded (center_and_weld) before they become float.
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -14,16 +9,16 @@
 #include <optional>
 #include <sstream>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "common/mesh/mesh.hpp"
 #include "common/mesh/mesh_formats.hpp"
 #include "common/mesh/ply_file.hpp"
+#include "common/util/input_file.hpp"
 
 namespace plumbago {
 
 namespace {
-
-using OpenMeshTri = OpenMesh::TriMesh_ArrayKernelT<>;
 
 std::string lowercase_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -66,9 +61,10 @@ void for_each_obj_line(const std::string& path, Visit visit) {
   }
 }
 
-// OBJ text checked before OpenMesh reads it, so that a bad coordinate or index is
-// reported with its line (OpenMesh skips such faces with a warning), a file cut off
-// inside a data line is refused, and the counts are held to the memory budget. Two
+// OBJ text checked before read_obj reads it, so that a bad coordinate or index is
+// reported with its line (OpenMesh, which read it before, skipped such faces with a
+// warning), a file cut off inside a data line is refused, and the counts are held to the
+// memory budget before anything is stored. Two
 // passes, nothing stored: the first counts the vertices (a positive index may name one
 // defined after its face), the second checks the indices.
 void check_obj_lines(const std::string& path) {
@@ -107,73 +103,42 @@ void check_obj_lines(const std::string& path) {
   });
 }
 
-// OpenMesh's error stream captured and its log silenced while alive (OpenMesh would
-// print a warning per complex edge of a non-manifold mesh).
-class CapturedOpenMeshComplaints {
- public:
-  CapturedOpenMeshComplaints() {
-    ::omerr().disconnect(std::cerr);
-    ::omerr().connect(text_);
-    ::omlog().disable();
-  }
-  ~CapturedOpenMeshComplaints() {
-    ::omerr().disconnect(text_);
-    ::omerr().connect(std::cerr);
-    ::omlog().enable();
-  }
-  std::string text() const { return text_.str(); }
+}  // namespace
 
- private:
-  std::ostringstream text_;
-};
-
-// Reads through OpenMesh; what it complains about goes into the refusal, not to stderr.
-OpenMeshTri read_with_openmesh(const std::string& path) {
-  OpenMeshTri om;
-  std::string text;
-  bool ok;
-  {
-    CapturedOpenMeshComplaints complaints;
-    OpenMesh::IO::Options options;
-    ok = OpenMesh::IO::read_mesh(om, path, options);
-    text = complaints.text();
-  }
-  if (!ok)
-    throw MeshError(path + ": OpenMesh cannot read it (unknown format or malformed)" +
-                    (text.empty() ? "" : ": " + text));
-  if (text.find("invalid vertex index") != std::string::npos)
-    throw MeshError(path + ": a face has a vertex index out of range");
-  return om;
-}
-
-Mesh flat_arrays(const OpenMeshTri& om, const std::string& path) {
-  Mesh m;
+// OBJ: `v x y z` (in double) and `f` lines (corners `i`, `i/t`, `i//n`, `i/t/n`; negative
+// indices count back), once check_obj_lines has checked every line; polygons fan-triangulated.
+MeshFile read_obj(const std::string& path) {
+  check_obj_lines(path);
+  MeshFile m;
   m.name = path;
-  m.positions.reserve(om.n_vertices());
-  for (auto v : om.vertices()) {
-    auto p = om.point(v);
-    m.positions.push_back({p[0], p[1], p[2]});
-  }
-  m.triangles.reserve(om.n_faces());
-  for (auto f : om.faces()) {
-    glm::uvec3 t;
-    int k = 0;
-    for (auto v : om.fv_range(f)) t[k++] = unsigned(v.idx());
-    m.triangles.push_back(t);
-  }
+  for_each_obj_line(path, [&](size_t, const std::vector<std::string>& w) {
+    if (w[0] != "v") return;
+    glm::dvec3 p;
+    for (int c = 0; c < 3; ++c) mesh_text::is_finite_float(w[size_t(c) + 1], &p[c]);
+    m.positions.push_back(p);
+  });
+  size_t before = 0;
+  std::vector<unsigned> polygon;
+  for_each_obj_line(path, [&](size_t, const std::vector<std::string>& w) {
+    before += w[0] == "v";
+    if (w[0] != "f") return;
+    polygon.clear();
+    for (size_t k = 1; k < w.size(); ++k) {
+      const long index = *corner_index(w[k]);
+      polygon.push_back(unsigned(index > 0 ? index - 1 : long(before) + index));
+    }
+    mesh_text::add_fan(polygon, m.triangles);
+  });
   return m;
 }
 
-// OBJ through OpenMesh once every line is checked; PLY through OpenMesh once the
-// project's reader has read every value (it reads triangle strips itself); OFF and STL
-// with the project's own readers.
-Mesh read_by_format(const std::string& path, const std::string& ext) {
+namespace {
+
+MeshFile read_by_format(const std::string& path, const std::string& ext) {
   if (ext == ".off") return read_off(path);
   if (ext == ".stl") return read_stl(path);
-  if (ext == ".obj") check_obj_lines(path);
-  bool has_strips = false;
-  Mesh strips = ext == ".ply" ? read_ply(path, has_strips) : Mesh{};
-  return has_strips ? std::move(strips) : flat_arrays(read_with_openmesh(path), path);
+  if (ext == ".obj") return read_obj(path);
+  return read_ply(path);
 }
 
 }  // namespace
@@ -190,42 +155,113 @@ void validate_mesh(const Mesh& mesh) {
   if (mesh.triangles.empty()) throw MeshError(mesh.name + ": the mesh has no faces");
 }
 
-size_t weld_vertices(Mesh& mesh) {
-  struct Key {
-    size_t operator()(const glm::vec3& p) const {
-      size_t h = 0;
-      for (int c = 0; c < 3; ++c) h = h * 1000003u ^ std::hash<float>()(p[c]);
-      return h;
-    }
-  };
-  std::unordered_map<glm::vec3, unsigned, Key> first;
-  std::vector<unsigned> remap(mesh.positions.size());
-  std::vector<glm::vec3> kept;
-  for (size_t i = 0; i < mesh.positions.size(); ++i) {
-    auto [it, added] = first.emplace(mesh.positions[i], unsigned(kept.size()));
-    if (added) kept.push_back(mesh.positions[i]);
+namespace {
+
+std::string coordinate_text(double v) {
+  std::ostringstream s;
+  s.precision(6);
+  s << v;
+  return s.str();
+}
+
+// What validate_mesh checks, on the file's coordinates.
+void validate_file(const MeshFile& f) {
+  for (size_t i = 0; i < f.positions.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      if (!std::isfinite(f.positions[i][c]))
+        throw MeshError(f.name + ": vertex " + std::to_string(i) + " has a NaN or infinite coordinate");
+  for (size_t t = 0; t < f.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      if (f.triangles[t][k] >= f.positions.size())
+        throw MeshError(f.name + ": face " + std::to_string(t) + " has a vertex index out of range");
+  if (f.triangles.empty()) throw MeshError(f.name + ": the mesh has no faces");
+}
+
+struct PositionHash {
+  size_t operator()(const glm::vec3& p) const {
+    size_t h = 0;
+    for (int c = 0; c < 3; ++c) h = h * 1000003u ^ std::hash<float>()(p[c]);
+    return h;
+  }
+};
+
+// A face up to the rotation of its corners: the smallest index first, the cyclic order
+// (and so the orientation) kept.
+glm::uvec3 canonical_face(glm::uvec3 t) {
+  if (t[1] < t[0] && t[1] < t[2]) return {t[1], t[2], t[0]};
+  if (t[2] < t[0] && t[2] < t[1]) return {t[2], t[0], t[1]};
+  return t;
+}
+
+struct FaceHash {
+  size_t operator()(const glm::uvec3& t) const {
+    return (size_t(t[0]) * 0x9E3779B97F4A7C15ull) ^ (size_t(t[1]) * 0xC2B2AE3D27D4EB4Full) ^ size_t(t[2]);
+  }
+};
+
+// Why no face is left after welding: the faces are degenerate, or the coordinates lie so
+// far beyond the bound that even double does not hold the mesh apart there (a unit mesh
+// at 1e17). A mesh within reach of double but beyond the bound is refused by the scene
+// (common/scene/scene.cpp, check_extent), which names the bound too.
+std::string no_face_left(const MeshFile& f) {
+  size_t farthest = 0;
+  double largest = 0;
+  for (size_t i = 0; i < f.positions.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      if (std::abs(f.positions[i][c]) > largest) largest = std::abs(f.positions[i][c]), farthest = i;
+  if (largest <= kMaxMeshCoordinate) return "every face is degenerate (no faces left after welding)";
+  const glm::dvec3& p = f.positions[farthest];
+  return "vertex " + std::to_string(farthest) + " lies at (" + coordinate_text(p.x) + ", " + coordinate_text(p.y) +
+         ", " + coordinate_text(p.z) + "), beyond ±" + coordinate_text(kMaxMeshCoordinate) +
+         " (the largest coordinate float buffers can hold): no face is left apart there";
+}
+
+}  // namespace
+
+Mesh center_and_weld(const MeshFile& file) {
+  Mesh m;
+  m.name = file.name;
+  glm::dvec3 lo(INFINITY), hi(-INFINITY);
+  for (const glm::dvec3& p : file.positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  m.origin = file.positions.empty() ? glm::dvec3(0.0) : (lo + hi) * 0.5;
+  std::unordered_map<glm::vec3, unsigned, PositionHash> first;
+  std::vector<unsigned> remap(file.positions.size());
+  for (size_t i = 0; i < file.positions.size(); ++i) {
+    const glm::vec3 p(file.positions[i] - m.origin);  // rounded once, from double
+    auto [it, added] = first.emplace(p, unsigned(m.positions.size()));
+    if (added) m.positions.push_back(p);
     remap[i] = it->second;
   }
-  std::vector<glm::uvec3> faces;
-  for (const auto& t : mesh.triangles) {
+  m.cleanup.merged_vertices = file.positions.size() - m.positions.size();
+  std::unordered_set<glm::uvec3, FaceHash> seen;
+  m.triangles.reserve(file.triangles.size());
+  for (const glm::uvec3& t : file.triangles) {
     glm::uvec3 r(remap[t[0]], remap[t[1]], remap[t[2]]);
-    if (r[0] != r[1] && r[1] != r[2] && r[0] != r[2]) faces.push_back(r);
+    if (r[0] == r[1] || r[1] == r[2] || r[0] == r[2])
+      ++m.cleanup.degenerate_faces;
+    else if (!seen.insert(canonical_face(r)).second)
+      ++m.cleanup.duplicate_faces;
+    else
+      m.triangles.push_back(r);
   }
-  size_t merged = mesh.positions.size() - kept.size();
-  mesh.positions = std::move(kept);
-  mesh.triangles = std::move(faces);
-  return merged;
+  return m;
 }
 
 Mesh load_mesh(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) throw MeshError(path + ": no such mesh file");
+  std::error_code error;
+  if (std::string why = path_length_fault(path); !why.empty())
+    throw MeshError(shortened_path(path) + ": cannot read the mesh file: " + why);
+  if (!std::filesystem::is_regular_file(path, error)) throw MeshError(path + ": no such mesh file");
   std::string ext = lowercase_extension(path);
   if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".stl")
     throw MeshError(path + ": unknown mesh format '" + ext + "' (OBJ, OFF, PLY or STL)");
-  Mesh m = read_by_format(path, ext);
-  validate_mesh(m);
-  weld_vertices(m);
-  if (m.triangles.empty()) throw MeshError(path + ": every face is degenerate (no faces left after welding)");
+  MeshFile file = read_by_format(path, ext);
+  validate_file(file);
+  Mesh m = center_and_weld(file);
+  if (m.triangles.empty()) throw MeshError(path + ": " + no_face_left(file));
   compute_normals(m);
   return m;
 }

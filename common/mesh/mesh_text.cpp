@@ -8,11 +8,11 @@
 
 namespace plumbago::mesh_text {
 
-bool is_finite_float(const std::string& word, float* value) {
+bool is_finite_float(const std::string& word, double* value) {
   char* end = nullptr;
-  float v = std::strtof(word.c_str(), &end);
+  double v = std::strtod(word.c_str(), &end);
   // The whole word, not up to a NUL byte within it: "\0\0032" is not a number.
-  if (word.empty() || end != word.c_str() + word.size() || !std::isfinite(v)) return false;
+  if (word.empty() || end != word.c_str() + word.size() || !std::isfinite(float(v))) return false;
   if (value) *value = v;
   return true;
 }
@@ -38,8 +38,8 @@ void check_mesh_budget(const std::string& path, size_t line, double vertices, do
     throw MeshError(path + (line ? ":" + std::to_string(line) : std::string()) + ": " + why);
 }
 
-void add_fan(const std::vector<unsigned>& polygon, Mesh& mesh) {
-  for (size_t k = 1; k + 1 < polygon.size(); ++k) mesh.triangles.push_back({polygon[0], polygon[k], polygon[k + 1]});
+void add_fan(const std::vector<unsigned>& polygon, std::vector<glm::uvec3>& triangles) {
+  for (size_t k = 1; k + 1 < polygon.size(); ++k) triangles.push_back({polygon[0], polygon[k], polygon[k + 1]});
 }
 
 }  // namespace plumbago::mesh_text

@@ -22,14 +22,14 @@ class OffReader {
     if (!in_) throw MeshError(path + ": cannot be read");
   }
 
-  Mesh read() {
+  MeshFile read() {
     std::vector<std::string> w = header();
     read_counts(w);
-    Mesh m;
+    MeshFile m;
     m.name = path_;
     m.positions.reserve(vertices_);
     for (size_t v = 0; v < vertices_; ++v) m.positions.push_back(vertex_row(next_row("vertex", v)));
-    for (size_t f = 0; f < faces_; ++f) mesh_text::add_fan(face_row(next_row("face", f)), m);
+    for (size_t f = 0; f < faces_; ++f) mesh_text::add_fan(face_row(next_row("face", f)), m.triangles);
     return m;
   }
 
@@ -99,9 +99,9 @@ class OffReader {
     return w;
   }
 
-  glm::vec3 vertex_row(const std::vector<std::string>& w) const {
+  glm::dvec3 vertex_row(const std::vector<std::string>& w) const {
     if (w.size() < 3) fail("a vertex needs 3 coordinates, found " + std::to_string(w.size()));
-    glm::vec3 p;
+    glm::dvec3 p;
     for (int c = 0; c < 3; ++c) mesh_text::is_finite_float(w[c], &p[c]);
     return p;
   }
@@ -128,6 +128,6 @@ class OffReader {
 
 }  // namespace
 
-Mesh read_off(const std::string& path) { return OffReader(path).read(); }
+MeshFile read_off(const std::string& path) { return OffReader(path).read(); }
 
 }  // namespace plumbago

@@ -324,7 +324,7 @@ std::string number_text(double v) {
 }
 
 // Triangle k of a strip is (s_k, s_k+1, s_k+2), with odd k flipped to keep the winding.
-void add_strip(const std::vector<unsigned>& strip, Mesh& m) {
+void add_strip(const std::vector<unsigned>& strip, MeshFile& m) {
   for (size_t k = 0; k + 2 < strip.size(); ++k) {
     glm::uvec3 t(strip[k], strip[k + 1], strip[k + 2]);
     if (k % 2) std::swap(t[0], t[1]);
@@ -333,7 +333,7 @@ void add_strip(const std::vector<unsigned>& strip, Mesh& m) {
 }
 
 // Instance i of element e.
-void read_instance(PlyValues& values, const PlyElement& e, size_t i, Mesh& m) {
+void read_instance(PlyValues& values, const PlyElement& e, size_t i, MeshFile& m) {
   auto what = [&] { return e.name + " " + std::to_string(i); };
   for (const PlyProperty& p : e.properties) {
     if (p.count_type.empty()) {
@@ -342,7 +342,7 @@ void read_instance(PlyValues& values, const PlyElement& e, size_t i, Mesh& m) {
       if (!std::isfinite(v)) throw MeshError(values.where() + ": " + what() + " has a NaN or infinite coordinate");
       if (std::abs(v) > double(FLT_MAX))
         throw MeshError(values.where() + ": " + what() + " has coordinate " + number_text(v) + ", beyond float range");
-      m.positions.back()[p.name[0] - 'x'] = float(v);
+      m.positions.back()[p.name[0] - 'x'] = v;
       continue;
     }
     double count = values.next(p.count_type);
@@ -371,23 +371,21 @@ void read_instance(PlyValues& values, const PlyElement& e, size_t i, Mesh& m) {
       }
     }
     if (e.name == "tristrips") add_strip(corners, m);
-    if (e.name == "face") mesh_text::add_fan(corners, m);
+    if (e.name == "face") mesh_text::add_fan(corners, m.triangles);
   }
 }
 
 }  // namespace
 
-Mesh read_ply(const std::string& path, bool& has_strips) {
+MeshFile read_ply(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   PlyHeader h = read_header(in, path);
   PlyValues values(in, h, path);
-  Mesh m;
+  MeshFile m;
   m.name = path;
-  has_strips = false;
   for (const PlyElement& e : h.elements) {
-    has_strips |= e.name == "tristrips";
     for (size_t i = 0; i < e.count; ++i) {
-      if (e.name == "vertex") m.positions.emplace_back(0.0f);
+      if (e.name == "vertex") m.positions.emplace_back(0.0);
       read_instance(values, e, i, m);
     }
   }

@@ -20,9 +20,12 @@ uint32_t binary_count(const std::string& bytes) {
   return n;
 }
 
-Mesh read_binary(const std::string& path, std::ifstream& in, uint32_t n) {
+// Binary STL holds float32 coordinates by its format: a binary file far from the origin
+// has lost its precision before it is read (float at 1e6 resolves 0.06). They are
+// widened to double exactly.
+MeshFile read_binary(const std::string& path, std::ifstream& in, uint32_t n) {
   mesh_text::check_mesh_budget(path, 0, 3.0 * n, n);
-  Mesh m;
+  MeshFile m;
   m.name = path;
   m.positions.reserve(size_t(3) * n);
   in.seekg(std::streamoff(kBinaryHeader));
@@ -34,7 +37,7 @@ Mesh read_binary(const std::string& path, std::ifstream& in, uint32_t n) {
       std::memcpy(&p, facet + 12 * (k + 1), 12);
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
         throw MeshError(path + ": facet " + std::to_string(t) + " has a NaN or infinite coordinate");
-      m.positions.push_back(p);
+      m.positions.push_back(glm::dvec3(p));
     }
     unsigned first = unsigned(3 * t);
     m.triangles.push_back({first, first + 1, first + 2});
@@ -46,8 +49,8 @@ class AsciiStlReader {
  public:
   AsciiStlReader(const std::string& path, std::ifstream& in) : path_(path), in_(in) {}
 
-  Mesh read() {
-    Mesh m;
+  MeshFile read() {
+    MeshFile m;
     m.name = path_;
     in_.seekg(0);
     expect("solid", 1);
@@ -92,10 +95,11 @@ class AsciiStlReader {
     if (w[0] != keyword || w.size() < least) fail("expected '" + keyword + "', found '" + w[0] + "'");
   }
 
-  glm::vec3 vertex() {
+  // Read in double: ASCII STL can hold coordinates far from the origin exactly.
+  glm::dvec3 vertex() {
     auto w = next("vertex");
     if (w[0] != "vertex" || w.size() != 4) fail("expected 'vertex x y z'");
-    glm::vec3 p;
+    glm::dvec3 p;
     for (int c = 0; c < 3; ++c)
       if (!mesh_text::is_finite_float(w[c + 1], &p[c]))
         fail("vertex coordinate '" + w[c + 1] + "' is not a finite number");
@@ -109,7 +113,7 @@ class AsciiStlReader {
 
 }  // namespace
 
-Mesh read_stl(const std::string& path) {
+MeshFile read_stl(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   const uint64_t size = mesh_text::file_size(path);
   std::string head(size_t(std::min<uint64_t>(size, kBinaryHeader)), '\0');

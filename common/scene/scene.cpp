@@ -15,6 +15,8 @@
 
 namespace plumbago {
 
+static_assert(kMaxCoordinate == kMaxMeshCoordinate, "a mesh file's bound is the world's");
+
 namespace {
 
 using nlohmann::json;
@@ -333,10 +335,25 @@ class SceneReader {
   std::vector<StrokeFile> stroke_files(const json& j, const std::string& path, glm::dvec3 origin) const {
     if (!j.is_array()) fail(path, "expected an array of stroke file paths");
     std::vector<StrokeFile> out;
+    std::map<std::string, size_t> listed;  // the file (canonical where it exists): its first position
     for (size_t i = 0; i < j.size(); ++i) {
-      if (!j[i].is_string()) fail(path + "/" + std::to_string(i), "expected a stroke file path");
+      const std::string key = path + "/" + std::to_string(i);
+      if (!j[i].is_string()) fail(key, "expected a stroke file path");
       fs::path file = j[i].get<std::string>();
-      out.push_back(load_stroke_file(file.is_absolute() ? file.string() : (fs::path(base_) / file).string(), origin));
+      fs::path full = file.is_absolute() ? file : fs::path(base_) / file;
+      std::error_code error;
+      fs::path same = fs::weakly_canonical(full, error);
+      // A file listed twice would draw its strokes twice and give every hatching group of it
+      // two definitions: said as such, not as a conflict between groups.
+      auto [first, added] = listed.emplace((error ? full.lexically_normal() : same).string(), i);
+      if (!added)
+        fail(key, "'" + j[i].get<std::string>() + "' is listed twice (at " + path + "/" +
+                      std::to_string(first->second) + " and " + key + "): list each stroke file once");
+      try {  // the file's refusal, through the scene's key
+        out.push_back(load_stroke_file(full.string(), origin));
+      } catch (const SceneError& e) {
+        fail(key, e.what());
+      }
     }
     return out;
   }
@@ -346,6 +363,8 @@ class SceneReader {
     return ", beyond ±" + format_number(kMaxCoordinate) + " (the largest coordinate float buffers can hold)";
   }
 
+  // A loaded mesh is centered already (load_mesh, in double: its file's coordinates are
+  // origin + positions); a procedural one is centered here.
   static PlacedMesh centered(Mesh m) {
     glm::dvec3 lo(INFINITY), hi(-INFINITY);
     for (const glm::vec3& p : m.positions) {
@@ -353,8 +372,11 @@ class SceneReader {
       hi = glm::max(hi, glm::dvec3(p));
     }
     glm::dvec3 center = m.positions.empty() ? glm::dvec3(0.0) : (lo + hi) * 0.5;
-    for (glm::vec3& p : m.positions) p = glm::vec3(glm::dvec3(p) - center);
-    return {std::make_shared<Mesh>(std::move(m)), center};
+    if (center != glm::dvec3(0.0))
+      for (glm::vec3& p : m.positions) p = glm::vec3(glm::dvec3(p) - center);
+    m.origin += center;
+    glm::dvec3 origin = m.origin;
+    return {std::make_shared<Mesh>(std::move(m)), origin};
   }
 
   PlacedMesh mesh_file(const std::string& relative) {

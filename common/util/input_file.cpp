@@ -1,6 +1,7 @@
 // Text files read whole, checked first: see common/util/input_file.hpp.
 #include "common/util/input_file.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -31,7 +32,30 @@ std::string over_the_limit(const std::string& path, const std::string& what, con
 
 }  // namespace
 
+std::string shortened_path(const std::string& path) {
+  return path.size() <= 100 ? path : path.substr(0, 40) + "..." + path.substr(path.size() - 40);
+}
+
+std::string path_length_fault(const std::string& path) {
+  if (path.size() > kMaxPathBytes)
+    return "the path is " + std::to_string(path.size()) + " bytes long, over the " + std::to_string(kMaxPathBytes) +
+           " the system takes (PATH_MAX)";
+  for (size_t begin = 0; begin <= path.size();) {
+    const size_t end = std::min(path.find('/', begin), path.size());
+    const std::string over = std::to_string(end - begin) + " bytes long, over the " +
+                             std::to_string(kMaxFileNameBytes) + " the system takes (NAME_MAX)";
+    if (end - begin > kMaxFileNameBytes)
+      return end == path.size()
+                 ? "its file name is " + over
+                 : "the folder name '" + shortened_path(path.substr(begin, end - begin)) + "' in it is " + over;
+    begin = end + 1;
+  }
+  return {};
+}
+
 std::string read_input_file(const std::string& path, const std::string& what) {
+  if (std::string why = path_length_fault(path); !why.empty())
+    throw InputError(shortened_path(path) + ": cannot read the " + what + ": " + why);
   std::error_code error;
   const fs::file_status status = fs::status(path, error);  // follows links; opens nothing
   if (status.type() != fs::file_type::regular)

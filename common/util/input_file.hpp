@@ -4,6 +4,7 @@
 // read no further than that, should it grow meanwhile (docs/bad-input.md, "Input files").
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -31,6 +32,19 @@ auto rethrown_as(Read read) {
     throw Error(e.what());
   }
 }
+
+// The longest file name (one component of a path) and whole path the system takes
+// (Linux's NAME_MAX and PATH_MAX, with its NUL).
+constexpr size_t kMaxFileNameBytes = 255, kMaxPathBytes = 4095;
+
+// `path` for a message: itself, or its first and last 40 bytes around "..." when it is
+// longer than 100.
+std::string shortened_path(const std::string& path);
+
+// Why the system would refuse `path` as too long ("File name too long"): the length and
+// the limit, and the name over it; empty when it is not too long. The caller names the
+// path (shortened_path).
+std::string path_length_fault(const std::string& path);
 
 // The bytes of the file at `path`; `what` names its kind in a refusal, which is an
 // InputError such as "PATH: cannot read the stroke file: it is a character device,

@@ -8,7 +8,11 @@
 #include <map>
 
 #include "common/mesh/mesh.hpp"
+#include "common/mesh/mesh_formats.hpp"
+#include "common/mesh/procedural.hpp"
+#include "common/util/input_file.hpp"
 #include "common/util/memory_budget.hpp"
+#include "tests/support/far_mesh_files.hpp"
 #include "tests/support/temp_dir.hpp"
 #include "tests/support/test_scenes.hpp"
 
@@ -61,6 +65,13 @@ TEST(MeshIo, SharedModelsHaveTheirCountsAndFiniteUnitNormals) {
       continue;
     }
     Mesh m = load_mesh(testing::model_path(e.name));
+    // The weld after centering in double (center_and_weld) merges no vertex that the
+    // exact weld in the file's float coordinates kept (the expected counts are its).
+    std::printf(
+        "[model] %s: %zu vertices (exact weld: %zu), %zu triangles (file: %zu); welded %zu, dropped %zu "
+        "degenerate and %zu duplicate faces\n",
+        e.name, m.positions.size(), e.vertices, m.triangles.size(), e.faces, m.cleanup.merged_vertices,
+        m.cleanup.degenerate_faces, m.cleanup.duplicate_faces);
     EXPECT_EQ(m.positions.size(), e.vertices) << e.name;
     EXPECT_EQ(m.triangles.size(), e.faces) << e.name;
     expect_unit_finite_normals(m);
@@ -71,7 +82,9 @@ TEST(MeshIo, SharedModelsHaveTheirCountsAndFiniteUnitNormals) {
 TEST(MeshIo, IgeaTriangleStripsAreDecodedWithOneOrientation) {
   PLUMBAGO_REQUIRE_MODEL("igea.ply");
   Mesh m = load_mesh(testing::model_path("igea.ply"));
-  std::printf("[igea] %zu vertices, %zu triangles\n", m.positions.size(), m.triangles.size());
+  std::printf("[igea] %zu vertices, %zu triangles; welded %zu, dropped %zu degenerate and %zu duplicate faces\n",
+              m.positions.size(), m.triangles.size(), m.cleanup.merged_vertices, m.cleanup.degenerate_faces,
+              m.cleanup.duplicate_faces);
   EXPECT_EQ(m.positions.size(), 134345u);
   EXPECT_GT(m.triangles.size(), 2 * m.positions.size() * 9 / 10);
   EXPECT_GT(consistent_orientation_share(m), 0.99);
@@ -123,7 +136,8 @@ TEST(MeshIo, StlCubeIsWelded) {
     EXPECT_EQ(m.triangles.size(), 12u) << name;
     EXPECT_NEAR(consistent_orientation_share(m), 1.0, 1e-12) << name;
     for (size_t v = 0; v < 8; ++v)  // a corner's normal points away from the cube's center
-      EXPECT_GT(glm::dot(m.normals[v], m.positions[v] - glm::vec3(0.5f)), 0.5f) << name;
+      EXPECT_GT(glm::dot(m.normals[v], glm::vec3(m.origin + glm::dvec3(m.positions[v])) - glm::vec3(0.5f)), 0.5f)
+          << name;
   }
 }
 
@@ -193,7 +207,7 @@ TEST(MeshIo, BinaryPlyInBothByteOrders) {
         Mesh m = load_mesh(path);
         EXPECT_EQ(m.positions.size(), 4u) << order;
         EXPECT_EQ(m.triangles.size(), 2u) << order;
-        EXPECT_EQ(m.positions[3], glm::vec3(1, 1, 0)) << order;
+        EXPECT_EQ(m.origin + glm::dvec3(m.positions[3]), glm::dvec3(1, 1, 0)) << order;
       }
     }
 }
@@ -235,6 +249,100 @@ TEST(MeshIo, MeshesOverTheMemoryBudgetAreRefused) {
     for (const char* name : files) expect_refused(corpus + name, {name, "would need", "over the memory budget of"});
   }
   for (const char* name : files) EXPECT_EQ(load_mesh(corpus + name).triangles.size(), 4u) << name;
+}
+
+// A sphere's file at 1e6 and 1e7, in every text format, reads as the file at 0: the same
+// vertices and faces, the same centered positions to the bit; Mesh::origin holds the
+// offset. Before, the files were read (OpenMesh, the OFF and STL readers) and welded in
+// float: at 1e7 float resolves 1, and the unit sphere became a box of a few vertices.
+TEST(MeshIo, FilesFarFromTheOriginReadAsAtZero) {
+  TempDir tmp;
+  const Mesh sphere = make_procedural("sphere");
+  for (const std::string& format : testing::text_mesh_formats()) {
+    const Mesh zero = load_mesh(tmp.write("zero." + format, testing::mesh_text_at(sphere, format, 0)));
+    EXPECT_EQ(zero.positions.size(), sphere.positions.size()) << format;
+    for (double offset : {1e6, 1e7}) {
+      const Mesh far = load_mesh(tmp.write("far." + format, testing::mesh_text_at(sphere, format, offset)));
+      std::printf("[far %s %g] %zu vertices, %zu triangles (at 0: %zu, %zu)\n", format.c_str(), offset,
+                  far.positions.size(), far.triangles.size(), zero.positions.size(), zero.triangles.size());
+      ASSERT_EQ(far.positions.size(), zero.positions.size()) << format << " " << offset;
+      ASSERT_EQ(far.triangles, zero.triangles) << format << " " << offset;
+      EXPECT_EQ(far.positions, zero.positions) << format << " " << offset;
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(far.origin[c] - zero.origin[c], offset, 1e-9) << format;
+    }
+  }
+}
+
+// The weld's tolerance is relative to the object's size: two vertices 1e-9 of its size
+// apart are one, 1e-5 apart are two, whatever the size (1e-6 to 1e6) and wherever it lies.
+TEST(MeshIo, WeldToleranceIsRelativeToTheObjectsSize) {
+  for (double size : {std::ldexp(1.0, -20), 1.0, std::ldexp(1.0, 20)})  // the pair on a float, not between two
+    for (double at : {0.0, 1e6}) {
+      if (size * 1e-5 < at * 1e-15) continue;  // double itself does not hold them apart there
+      for (double apart : {1e-9, 1e-5}) {
+        MeshFile f;
+        f.name = "test";
+        auto p = [&](double x, double y) { return glm::dvec3(at + size * x, at + size * y, at); };
+        f.positions = {p(0, 0), p(1, 0), p(0, 1), p(0.25, 0.75), p(0.25 + apart, 0.75)};
+        f.triangles = {{0, 1, 3}, {0, 4, 2}};
+        Mesh m = center_and_weld(f);
+        EXPECT_EQ(m.positions.size(), apart < 1e-6 ? 4u : 5u) << size << " at " << at << " apart " << apart;
+        EXPECT_EQ(m.cleanup.merged_vertices, apart < 1e-6 ? 1u : 0u);
+      }
+    }
+}
+
+// Issue 32: a stroke object whose mesh repeated one face 200,000 times took several GB
+// and over a minute. Faces with the same corners in the same cyclic order are dropped when
+// the mesh is read (and counted); the opposite order is kept: a two-sided sheet is valid.
+TEST(MeshIo, DuplicateFacesAreDroppedWhenRead) {
+  TempDir tmp;
+  std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+  const int repeats = 200000;
+  for (int i = 0; i < repeats; ++i) obj += i % 3 == 0 ? "f 2 3 4\n" : i % 3 == 1 ? "f 3 4 2\n" : "f 4 2 3\n";
+  obj += "f 2 4 3\nf 4 3 2\nf 1 1 2\nf 1 2 2\n";  // the opposite order (twice), two degenerate
+  Mesh m = load_mesh(tmp.write("repeated.obj", obj));
+  EXPECT_EQ(m.triangles.size(), 5u);
+  EXPECT_EQ(m.cleanup.duplicate_faces, size_t(repeats) + 1);
+  EXPECT_EQ(m.cleanup.degenerate_faces, 2u);
+  EXPECT_EQ(m.positions.size(), 4u);
+}
+
+// A path the system would refuse as too long is refused naming it (shortened) and the
+// limit, not with the system's "File name too long"; as for every input file.
+TEST(MeshIo, PathsTooLongAreRefusedWithTheLimit) {
+  const std::string name(300, 'a');
+  expect_refused("/tmp/" + name + ".obj", {"/tmp/aaaa", "...", "304 bytes", "255", "NAME_MAX"});
+  std::string deep;
+  for (int i = 0; i < 30; ++i) deep += "/" + std::string(200, 'b');
+  expect_refused(deep + ".obj", {"/bbbb", "bytes long, over the 4095", "PATH_MAX"});
+  expect_refused("/tmp/" + name + "/m.obj", {"the folder name 'aaaa", "' in it is 300 bytes long", "NAME_MAX"});
+  try {
+    load_mesh("/tmp/" + name + ".obj");
+  } catch (const MeshError& e) {
+    EXPECT_EQ(std::string(e.what()).find("File name too long"), std::string::npos) << e.what();
+    EXPECT_LT(std::string(e.what()).size(), 300u) << e.what();  // not the whole path
+  }
+  for (const char* what : {"stroke file", "stroke style file", "SVG drawing", "scene file"}) try {
+      read_input_file("/tmp/" + name + ".json", what);
+      ADD_FAILURE() << what;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("cannot read the " + std::string(what) + ": its file name is 305 bytes"),
+                std::string::npos)
+          << e.what();
+      EXPECT_NE(std::string(e.what()).find("255"), std::string::npos) << e.what();
+    }
+}
+
+// Beyond the coordinate bound a mesh's faces may all collapse even in double (a unit mesh
+// at 1e17): the refusal names the bound, not "every face is degenerate".
+TEST(MeshIo, FacesLostFarBeyondTheBoundNameTheBound) {
+  TempDir tmp;
+  const std::string e17 = "100000000000000000", e17_1 = "100000000000000001";  // one double
+  expect_refused(tmp.write("far.obj", "v " + e17 + " " + e17 + " " + e17 + "\nv " + e17_1 + " " + e17 + " " + e17 +
+                                          "\nv " + e17 + " " + e17_1 + " " + e17 + "\nf 1 2 3\n"),
+                 {"far.obj", "lies at (1e+17, 1e+17, 1e+17), beyond ±1e+09"});
+  expect_refused(tmp.write("flat.obj", "v 0 0 0\nv 0 0 0\nv 1 0 0\nf 1 2 3\n"), {"every face is degenerate"});
 }
 
 }  // namespace

@@ -7,10 +7,13 @@
 #include <cstdio>
 #include <sstream>
 
+#include "common/mesh/procedural.hpp"
 #include "common/scene/scene.hpp"
 #include "common/util/image_compare.hpp"
 #include "gpu/core/pipeline.hpp"
 #include "parity/parity.hpp"
+#include "reference/core/pipeline.hpp"
+#include "tests/support/far_mesh_files.hpp"
 #include "tests/support/temp_dir.hpp"
 #include "tests/support/test_scenes.hpp"
 
@@ -109,6 +112,47 @@ TEST_F(FarFromOrigin, MeshFileCoordinatesAt1e6) {
   std::printf("[origin 1e6 mesh] %s\n", format_diff("image", d).c_str());
   EXPECT_EQ(d.over_tolerance, 0.0);
   for (const StageParity& r : run_parity(scene("far.obj"), {"gbuffer"})) EXPECT_TRUE(r.pass) << r.name;
+}
+
+// The issue's case (32): a sphere whose file sits at 1e6 or 1e7 read as a box, on every
+// format, when the file was read (or welded) in float before it was centered. Now each
+// format is read in double, centered, then welded on a grid relative to the sphere's size:
+// the same pixels as the file at 0, on both backends, for a pencil object (camera framed
+// automatically) and a stroke object (camera given, moved with the file).
+TEST_F(FarFromOrigin, SphereFilesOfEveryFormatAt1e6And1e7RenderAsAt0) {
+  testing::TempDir tmp;
+  const Mesh sphere = make_procedural("sphere");
+  // The strokes object with an explicit camera at the file's offset, the pencil one framed
+  // automatically.
+  auto scene = [&](const std::string& file, const char* style, double offset) {
+    const bool strokes = std::string(style) == "strokes";
+    const std::string camera = R"("camera": {"eye": )" + point(0.3, 0.2, 3.5, offset) + R"(, "target": )" +
+                               point(0, 0, 0, offset) + R"(, "up": [0, 1, 0], "fov_deg": 40},)";
+    return parse_scene(R"({"objects": [{"mesh": ")" + file + R"(", "style": ")" + style + R"("}],
+        "effects": [)" + (strokes ? R"("basecoat")" : R"("contours", "interior")") +
+                           "], " + (strokes ? camera : "") + R"( "resolution": [96, 72]})",
+                       file, tmp.dir());
+  };
+  for (const std::string& format : testing::text_mesh_formats())
+    for (const char* style : {"pencil", "strokes"}) {
+      if (std::string(style) == "strokes" && format != "obj") continue;  // the readers are the pencil case's
+      const std::string at_zero = tmp.write("sphere_0." + format, testing::mesh_text_at(sphere, format, 0));
+      const Scene zero = scene(at_zero, style, 0);
+      const Image gpu_zero = gpu::Renderer(zero).render().color, ref_zero = reference::render(zero).color;
+      for (double offset : {1e6, 1e7}) {
+        const std::string far =
+            tmp.write("sphere_" + number(offset) + "." + format, testing::mesh_text_at(sphere, format, offset));
+        const Scene s = scene(far, style, offset);
+        EXPECT_EQ(s.objects[0].mesh->positions.size(), zero.objects[0].mesh->positions.size()) << far;
+        EXPECT_EQ(s.objects[0].mesh->triangles.size(), zero.objects[0].mesh->triangles.size()) << far;
+        ImageDiff g = compare_images(gpu::Renderer(s).render().color, gpu_zero, 0.0);
+        ImageDiff r = compare_images(reference::render(s).color, ref_zero, 0.0);
+        std::printf("[far %s %s %g] GPU: %s; reference: %s\n", format.c_str(), style, offset,
+                    format_diff("image", g).c_str(), format_diff("image", r).c_str());
+        EXPECT_EQ(g.max_abs, 0.0) << far;
+        EXPECT_EQ(r.max_abs, 0.0) << far;
+      }
+    }
 }
 
 }  // namespace
