@@ -1,4 +1,4 @@
-// Triangle meshes, loaded through OpenMesh or made procedurally.
+// Triangle meshes, read from files (common/mesh/mesh_io.cpp) or made procedurally.
 #pragma once
 
 #include <glm/glm.hpp>
