@@ -11,6 +11,7 @@
 #include "common/core/passes.hpp"
 #include "common/scene/gbuffer.hpp"
 #include "common/util/memory_budget.hpp"
+#include "common/util/progress.hpp"
 #include "gpu/core/pipeline.hpp"
 #include "gpu/core/stage.hpp"
 #include "gpu/gl/context.hpp"
@@ -424,8 +425,9 @@ nlohmann::json parity_report(const std::vector<StageParity>& results) {
 std::vector<StageParity> run_parity(const Scene& scene, const std::vector<std::string>& stages) {
   gpu::Context::get();
   ParityRun run(scene, stages);
+  Progress progress(scene.source + ": compare, steps", run.size(), true);
   std::vector<StageParity> out;
-  for (size_t i = 0; i < run.size(); ++i) {
+  for (size_t i = 0; i < run.size(); ++i, progress.advance(1)) {
     run.reference(i);
     for (auto& s : run.gpu(i)) out.push_back(std::move(s));
   }

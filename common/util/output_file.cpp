@@ -1,5 +1,7 @@
 #include "common/util/output_file.hpp"
 
+#include "common/util/input_file.hpp"
+
 #include <signal.h>
 #include <unistd.h>
 
@@ -80,6 +82,10 @@ OutputFile::OutputFile(std::string path) : path_(std::move(path)) {
   name.insert(0, 1, '.');
   name.append(".partial-").append(std::to_string(::getpid())).append(p.extension().string());
   temporary_ = (dir / name).string();
+  // Written first under its temporary name, 1 + 9 + the pid's digits bytes longer.
+  if (std::string why = path_length_fault(temporary_); !why.empty())
+    throw std::runtime_error(shortened_path(path_) + ": cannot be written: as its temporary file " +
+                             shortened_path(temporary_) + ", " + why);
   Unfinished::get().add(temporary_, false);
 }
 
@@ -108,6 +114,8 @@ OutputFiles::~OutputFiles() {
 }
 
 void OutputFiles::folder(const std::string& dir) {
+  if (std::string why = path_length_fault(dir); !why.empty())
+    throw std::runtime_error(shortened_path(dir) + ": cannot be made: " + why);
   fs::path missing = fs::path(dir).lexically_normal();
   if (!missing.has_filename()) missing = missing.parent_path();  // "out/" -> "out"
   std::vector<fs::path> made;

@@ -6,6 +6,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <string>
 
 #include "tests/support/temp_dir.hpp"
 
@@ -60,6 +62,30 @@ TEST(OutputFiles, LocationsAreCheckedWhenAdded) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("folder.png: is a folder, not a file"), std::string::npos) << e.what();
   }
+}
+
+// A name the system would refuse, once written under its temporary name, or a folder path
+// too long: refused when added, with the limit, not the system's "File name too long".
+TEST(OutputFiles, NamesTooLongForTheSystemAreRefusedWhenAdded) {
+  testing::TempDir tmp;
+  auto refusal = [](const std::function<void()>& add) {
+    try {
+      add();
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  OutputFiles out;
+  const std::string fits = std::string(230, 'a') + ".png", over = std::string(250, 'a') + ".png";
+  EXPECT_EQ(refusal([&] { out.add(tmp.path(fits)); }), "");
+  std::string why = refusal([&] { out.add(tmp.path(over)); });
+  EXPECT_NE(why.find("as its temporary file"), std::string::npos) << why;
+  EXPECT_NE(why.find("NAME_MAX"), std::string::npos) << why;
+  why = refusal([&] { out.folder(tmp.path(std::string(300, 'd'))); });
+  EXPECT_NE(why.find("cannot be made"), std::string::npos) << why;
+  EXPECT_NE(why.find("NAME_MAX"), std::string::npos) << why;
+  EXPECT_EQ(std::distance(fs::directory_iterator(tmp.dir()), {}), 0) << "nothing made";
 }
 
 }  // namespace
