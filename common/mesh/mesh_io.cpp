@@ -141,19 +141,24 @@ MeshFile read_by_format(const std::string& path, const std::string& ext) {
   return read_ply(path);
 }
 
+// NaN or infinite coordinates, indices out of range, no faces: of a Mesh, or of a
+// MeshFile's coordinates in double before they are centered.
+template <class Arrays>
+void validate_arrays(const Arrays& m) {
+  for (size_t i = 0; i < m.positions.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      if (!std::isfinite(m.positions[i][c]))
+        throw MeshError(m.name + ": vertex " + std::to_string(i) + " has a NaN or infinite coordinate");
+  for (size_t t = 0; t < m.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      if (m.triangles[t][k] >= m.positions.size())
+        throw MeshError(m.name + ": face " + std::to_string(t) + " has a vertex index out of range");
+  if (m.triangles.empty()) throw MeshError(m.name + ": the mesh has no faces");
+}
+
 }  // namespace
 
-void validate_mesh(const Mesh& mesh) {
-  for (size_t i = 0; i < mesh.positions.size(); ++i)
-    for (int c = 0; c < 3; ++c)
-      if (!std::isfinite(mesh.positions[i][c]))
-        throw MeshError(mesh.name + ": vertex " + std::to_string(i) + " has a NaN or infinite coordinate");
-  for (size_t t = 0; t < mesh.triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k)
-      if (mesh.triangles[t][k] >= mesh.positions.size())
-        throw MeshError(mesh.name + ": face " + std::to_string(t) + " has a vertex index out of range");
-  if (mesh.triangles.empty()) throw MeshError(mesh.name + ": the mesh has no faces");
-}
+void validate_mesh(const Mesh& mesh) { validate_arrays(mesh); }
 
 namespace {
 
@@ -162,19 +167,6 @@ std::string coordinate_text(double v) {
   s.precision(6);
   s << v;
   return s.str();
-}
-
-// What validate_mesh checks, on the file's coordinates.
-void validate_file(const MeshFile& f) {
-  for (size_t i = 0; i < f.positions.size(); ++i)
-    for (int c = 0; c < 3; ++c)
-      if (!std::isfinite(f.positions[i][c]))
-        throw MeshError(f.name + ": vertex " + std::to_string(i) + " has a NaN or infinite coordinate");
-  for (size_t t = 0; t < f.triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k)
-      if (f.triangles[t][k] >= f.positions.size())
-        throw MeshError(f.name + ": face " + std::to_string(t) + " has a vertex index out of range");
-  if (f.triangles.empty()) throw MeshError(f.name + ": the mesh has no faces");
 }
 
 struct PositionHash {
@@ -259,7 +251,7 @@ Mesh load_mesh(const std::string& path) {
   if (ext != ".obj" && ext != ".off" && ext != ".ply" && ext != ".stl")
     throw MeshError(path + ": unknown mesh format '" + ext + "' (OBJ, OFF, PLY or STL)");
   MeshFile file = read_by_format(path, ext);
-  validate_file(file);
+  validate_arrays(file);
   Mesh m = center_and_weld(file);
   if (m.triangles.empty()) throw MeshError(path + ": " + no_face_left(file));
   compute_normals(m);
