@@ -106,13 +106,13 @@ Image gbuffer_bound(const ReferenceFrame& f, AttributeBound moves) {
 
 }  // namespace
 
-PLUMBAGO_REFERENCE_BOUND(gbuffer_bary, "gbuffer.bary",
+PLUMBAGO_REFERENCE_BOUND(gbuffer_bary, kGBuffer.bary.name,
                          [](const ReferenceFrame& f) { return gbuffer_bound(f, bary_moves); });
-PLUMBAGO_REFERENCE_BOUND(gbuffer_depth, "gbuffer.depth",
+PLUMBAGO_REFERENCE_BOUND(gbuffer_depth, kGBuffer.depth.name,
                          [](const ReferenceFrame& f) { return gbuffer_bound(f, depth_moves); });
-PLUMBAGO_REFERENCE_BOUND(gbuffer_normal, "gbuffer.normal",
+PLUMBAGO_REFERENCE_BOUND(gbuffer_normal, kGBuffer.normal.name,
                          [](const ReferenceFrame& f) { return gbuffer_bound(f, normal_moves); });
-PLUMBAGO_REFERENCE_BOUND(gbuffer_gouraud, "gbuffer.gouraud",
+PLUMBAGO_REFERENCE_BOUND(gbuffer_gouraud, kGBuffer.gouraud.name,
                          [](const ReferenceFrame& f) { return gbuffer_bound(f, gouraud_moves); });
 
 }  // namespace plumbago::reference
