@@ -1,7 +1,8 @@
 // plumbago lines SCENE -o lines.json|lines.svg [--backend gpu|reference]: the feature
 // lines of every object but the sketchy ones (Kalnins et al. 2002, §4.5) and the decals of the scene's
 // stroke files (Kalnins et al. 2002, §3, §4.5, projected by the chosen backend), for the scene's camera, with
-// their visibility from the chosen backend's ID image (Kalnins et al. 2002, §4.6). It prints how many
+// their visibility from the chosen backend's ID image (Kalnins et al. 2002, §4.6); the silhouettes are
+// that backend's own (the GPU's chained by the GPU, parity/lines.hpp). It prints how many
 // paths there are, how many show (a visible run or more), and the visible runs drawn.
 //   .json: every path, {"paths": [{"kind", "object", "closed", "points" (world),
 //          "screen" (pixels, origin bottom-left), "visible" (per point)}]};
@@ -172,7 +173,7 @@ void setup(CLI::App& app) {
   o->scene.add_to(cmd, true);
   cmd->add_option("-o,--output", o->output, "lines.json (every path) or lines.svg (the visible strokes)")
       ->capture_default_str();
-  cmd->add_option("--backend", o->backend, "whose ID image decides visibility: gpu or reference")
+  cmd->add_option("--backend", o->backend, "whose silhouettes and ID image: gpu or reference")
       ->check(CLI::IsMember({"gpu", "reference"}))
       ->capture_default_str();
   cmd->add_flag("--truth", o->truth,

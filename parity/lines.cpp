@@ -2,6 +2,7 @@
 
 #include "common/strokes/decal.hpp"
 #include "common/strokes/id_image.hpp"
+#include "common/strokes/silhouette_paths.hpp"
 #include "common/strokes/stroke.hpp"
 #include "gpu/core/pipeline.hpp"
 #include "gpu/gl/context.hpp"
@@ -36,14 +37,27 @@ DecalSurface decal_surface(const Scene& scene, const std::string& backend) {
   return gpu::project_decals_through_gbuffer(scene);
 }
 
+// The silhouettes a GPU frame chained itself, from its tables (common/strokes/silhouette_paths.hpp).
+std::vector<ChainPath> frame_silhouettes(const Scene& scene, const LineMeshes& meshes, const Frame& frame,
+                                         bool normalized) {
+  auto table = [&](const Buffer& b) { return frame.buffers.at(b.name).data; };
+  return chain_paths(scene, meshes, table(kSilhouettePaths), table(kSilhouettePoints), table(kSilhouettePointFaces),
+                     normalized);
+}
+
 }  // namespace
 
 SceneLines scene_lines(const Scene& scene, const std::string& backend) {
   SceneLines out{lines_scene(scene)};
   auto p = out.scene.params.get<StrokesParams>();
   DecalSurface decals = decal_surface(out.scene, backend);
-  out.lines = window_lines(out.scene, p, LineObjects::Strokes, nullptr, &decals);
   out.frame = strokes_frame(out.scene, backend);
+  std::shared_ptr<const LineMeshes> meshes = line_meshes(out.scene, p, LineObjects::Strokes);
+  std::vector<ChainPath> gpu_silhouettes;
+  if (backend != "reference")
+    gpu_silhouettes = frame_silhouettes(out.scene, *meshes, out.frame, p.silhouette_normalized);
+  out.lines = window_lines(out.scene, p, LineObjects::Strokes, meshes.get(), &decals,
+                           backend != "reference" ? &gpu_silhouettes : nullptr);
   out.keys = keys_from_channels(out.frame.buffers.at(kIds.name));
   const ImageU32& keys = out.keys;
   auto test = [&keys](const std::vector<VisibilitySample>& batch) {

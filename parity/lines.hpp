@@ -23,6 +23,8 @@ struct SceneLines {
 
 // The lines of every object but the sketchy ones, and the decals of the scene's stroke
 // files projected by `backend` ("gpu" or "reference"), their visibility from its ID image.
+// The silhouettes are the backend's own: the GPU's chains (its frame's silhouette_paths
+// tables), the reference's chained in double.
 SceneLines scene_lines(const Scene& scene, const std::string& backend);
 
 // Per point of `path`: whether it shows (front-facing, and its sample passes the ID image).

@@ -27,6 +27,7 @@
 #include "common/strokes/id_image.hpp"
 #include "common/strokes/line_meshes.hpp"
 #include "common/strokes/silhouette_chains.hpp"
+#include "common/strokes/silhouette_paths.hpp"
 #include "common/strokes/silhouette_segments.hpp"
 #include "common/strokes/stroke.hpp"
 #include "common/strokes/stroke_paper.hpp"
@@ -63,6 +64,7 @@ using AllStages = TypeList<
     StrokePaperStage,
     SilhouetteSegmentsStage,
     SilhouetteChainsStage,
+    SilhouettePathsStage,
     CreasePointsStage,
     IdImageStage,
     VisibilityStage,

@@ -6,6 +6,8 @@
 #include <numbers>
 #include <numeric>
 
+#include <tbb/parallel_for.h>
+
 #include "common/mesh/mesh_topology.hpp"
 
 namespace plumbago {
@@ -252,35 +254,38 @@ double silhouette_test(glm::dvec3 normal, glm::dvec3 x, glm::dvec3 eye, bool nor
 std::vector<double> corner_silhouette_values(const Geometry& g, const std::vector<glm::dvec3>& normals, glm::dvec3 eye,
                                              bool normalized) {
   std::vector<double> values(normals.size());
-  for (uint32_t c = 0; c < normals.size(); ++c)
-    values[c] = silhouette_test(normals[c], g.corner(c / 3, int(c % 3)), eye, normalized);
+  tbb::parallel_for(size_t(0), normals.size(), [&](size_t c) {
+    values[c] = silhouette_test(normals[c], g.corner(uint32_t(c / 3), int(c % 3)), eye, normalized);
+  });
   return values;
 }
 
 // --- silhouette segments -----------------------------------------------------------------
 
-// The segment of g = 0 in one face: the two face slots (k: edge from corner k to k + 1)
-// where g changes sign, and whether it is front-facing.
-struct FaceSegment {
-  int slot[2] = {-1, -1};
-  bool front = true;
-  bool exists() const { return slot[0] >= 0; }
-};
-
-// Kalnins et al. 2002, §4.5: the crossing on the edge in slot `slot` of face f (corners slot, slot + 1),
-// p = a + (b - a) g_a / (g_a - g_b), a -> b running the edge's own way (from -> to) so
-// that both faces of the edge give the same point. The slot is one where g changes sign.
-SurfacePoint edge_crossing(const Geometry& g, const std::vector<double>& values, uint32_t f, int slot) {
+// The corners of face f's slot in the edge's own direction (from -> to).
+std::pair<int, int> slot_corners(const Geometry& g, uint32_t f, int slot) {
   const auto& edge = g.topology.edges[g.topology.face_edges[f][slot]];
   int ka = slot, kb = (slot + 1) % 3;
   if (g.mesh.triangles[f][ka] != edge.from) std::swap(ka, kb);
-  double ga = values[3 * f + uint32_t(ka)], gb = values[3 * f + uint32_t(kb)];
-  double t = ga / (ga - gb);  // opposite signs, neither 0: t in (0, 1)
+  return {ka, kb};
+}
+
+// The point at t from corner ka to corner kb of face f.
+SurfacePoint point_on_edge(const Geometry& g, uint32_t f, int ka, int kb, double t) {
   glm::dvec3 a = g.corner(f, ka), b = g.corner(f, kb);
   SurfacePoint p{f, glm::dvec3(0.0), a + (b - a) * t};
   p.bary[ka] = 1 - t;
   p.bary[kb] = t;
   return p;
+}
+
+// Kalnins et al. 2002, §4.5: the crossing on the edge in slot `slot` of face f (corners slot, slot + 1),
+// p = a + (b - a) g_a / (g_a - g_b), a -> b running the edge's own way (from -> to) so
+// that both faces of the edge give the same point. The slot is one where g changes sign.
+SurfacePoint edge_crossing(const Geometry& g, const std::vector<double>& values, uint32_t f, int slot) {
+  auto [ka, kb] = slot_corners(g, f, slot);
+  double ga = values[3 * f + uint32_t(ka)], gb = values[3 * f + uint32_t(kb)];
+  return point_on_edge(g, f, ka, kb, ga / (ga - gb));  // opposite signs, neither 0: t in (0, 1)
 }
 
 bool sign_changes(const std::vector<double>& values, uint32_t f, int slot) {
@@ -299,151 +304,80 @@ glm::dvec3 scaled_gradient(const Geometry& g, const std::vector<double>& values,
   return gradient;
 }
 
-FaceSegment face_segment(const Geometry& g, const std::vector<double>& values, glm::dvec3 eye, uint32_t f) {
-  FaceSegment s;
-  int found = 0;
+// Face f's segment, oriented by the sign of g at its lone corner (oriented_slots), and its
+// facing: ∇g · (eye - m) >= 0 (Kalnins et al. 2002, §4.5 front/back).
+FaceSilhouette face_segment(const Geometry& g, const std::vector<double>& values, glm::dvec3 eye, uint32_t f) {
+  int slot[2], found = 0;
   for (int k = 0; k < 3 && found < 2; ++k)
-    if (sign_changes(values, f, k)) s.slot[found++] = k;
-  if (found < 2) return FaceSegment{};
-  glm::dvec3 mid =
-      0.5 * (edge_crossing(g, values, f, s.slot[0]).position + edge_crossing(g, values, f, s.slot[1]).position);
-  s.front = glm::dot(scaled_gradient(g, values, f), eye - mid) >= 0;  // Kalnins et al. 2002, §4.5 front/back
+    if (sign_changes(values, f, k)) slot[found++] = k;
+  if (found < 2) return {};
+  int c = lone_corner(slot[0], slot[1]);
+  SegmentSlots o = oriented_slots(slot[0], slot[1], values[3 * f + uint32_t(c)] > 0);
+  FaceSilhouette s{
+      true, {o.entry, o.exit}, {edge_crossing(g, values, f, o.entry), edge_crossing(g, values, f, o.exit)}};
+  glm::dvec3 mid = 0.5 * (s.ends[0].position + s.ends[1].position);
+  s.front = glm::dot(scaled_gradient(g, values, f), eye - mid) >= 0;
   return s;
 }
 
-// A face and one of its slots.
-struct FaceSlot {
-  int32_t face = kNone;
-  int slot = -1;
-};
-
-// The slot of face f that lies on edge e and where g changes sign, or -1.
-int crossing_slot_on_edge(const Geometry& g, const std::vector<double>& values, uint32_t f, uint32_t e) {
-  for (int k = 0; k < 3; ++k)
-    if (g.topology.face_edges[f][k] == e && sign_changes(values, f, k)) return k;
-  return -1;
-}
-
-// Where the path goes on through slot `slot` of face f: the other face of that edge and
-// its slot on the edge, when the edge is smooth and that face holds a segment crossing
-// it; none otherwise (a crease, a border, no matching segment).
-FaceSlot face_across(const Geometry& g, const std::vector<double>& values, const std::vector<FaceSegment>& segments,
-                     uint32_t f, int slot) {
-  uint32_t e = g.topology.face_edges[f][slot];
-  if (g.edge_kinds[e] != EdgeKind::smooth) return {};
+// The face across the smooth edge in face f's slot k and its slot on that edge; kNone across
+// a crease, a border or a non-manifold edge.
+std::pair<int32_t, int> face_across(const Geometry& g, uint32_t f, int k) {
+  uint32_t e = g.topology.face_edges[f][k];
   const auto& edge = g.topology.edges[e];
   int32_t other = edge.face[0] == int32_t(f) ? edge.face[1] : edge.face[0];
-  if (other < 0 || uint32_t(other) == f || !segments[size_t(other)].exists()) return {};
-  int k = crossing_slot_on_edge(g, values, uint32_t(other), e);
-  if (k < 0) return {};
-  return {other, k};
+  if (g.edge_kinds[e] != EdgeKind::smooth || other < 0 || uint32_t(other) == f) return {kNone, -1};
+  for (int j = 0; j < 3; ++j)
+    if (g.topology.face_edges[size_t(other)][j] == e) return {other, j};
+  return {kNone, -1};
 }
 
-int other_slot(const FaceSegment& s, int slot) { return s.slot[0] == slot ? s.slot[1] : s.slot[0]; }
+// The segment across the slot that face f's segment leaves by (end 1) or enters by (end 0),
+// when it goes on through that edge the other way with the same facing; kNone otherwise.
+int32_t linked(const Geometry& g, const std::vector<FaceSilhouette>& segments, uint32_t f, int end) {
+  auto [other, slot] = face_across(g, f, segments[f].slots[end]);
+  if (other == kNone) return kNone;
+  const FaceSilhouette& s = segments[size_t(other)];
+  return s.exists && s.front == segments[f].front && s.slots[1 - end] == slot ? other : kNone;
+}
 
-// A traced silhouette: the faces in order, and the slot through which it enters each (the
-// first entry is where an open path begins) and leaves the last one.
-struct FaceChain {
+// A chain of segments: its faces from its start.
+struct SilhouetteChain {
   std::vector<uint32_t> faces;
-  std::vector<int> entry_slots;
-  int exit_slot = -1;
   bool closed = false;
 };
 
-// Traces from face `start`, entering through slot `entry`, face to face, each face at
-// most once (`visited`), so at most one step per face of the mesh.
-FaceChain trace_faces(const Geometry& g, const std::vector<double>& values, const std::vector<FaceSegment>& segments,
-                      std::vector<bool>& visited, uint32_t start, int entry) {
-  FaceChain chain;
-  uint32_t f = start;
-  while (true) {
-    visited[f] = true;
-    chain.faces.push_back(f);
-    chain.entry_slots.push_back(entry);
-    chain.exit_slot = other_slot(segments[f], entry);
-    FaceSlot next = face_across(g, values, segments, f, chain.exit_slot);
-    if (next.face == int32_t(start) && chain.faces.size() > 1 && next.slot == chain.entry_slots[0]) {
-      chain.closed = true;
-      break;
-    }
-    if (next.face == kNone || visited[size_t(next.face)]) break;
-    f = uint32_t(next.face);
-    entry = next.slot;
-  }
-  return chain;
-}
-
-// Kalnins et al. 2002, §4.5 tracing: open paths from their dead ends (a crease, a border, a face without a
-// matching segment), then closed loops from whatever is left.
-std::vector<FaceChain> trace_silhouettes(const Geometry& g, const std::vector<double>& values,
-                                         const std::vector<FaceSegment>& segments) {
-  std::vector<bool> visited(segments.size(), false);
-  std::vector<FaceChain> chains;
+// Kalnins et al. 2002, §4.5 chaining by the links: open chains from the segment with no
+// predecessor, then loops from their lowest face; each face at most once. Ordered by start.
+std::vector<SilhouetteChain> chain_segments(const Geometry& g, const std::vector<FaceSilhouette>& segments) {
+  std::vector<bool> chained(segments.size(), false);
+  std::vector<SilhouetteChain> chains;
+  auto walk = [&](uint32_t start) {
+    SilhouetteChain chain;
+    int32_t f = int32_t(start);
+    do {
+      chained[size_t(f)] = true;
+      chain.faces.push_back(uint32_t(f));
+      f = linked(g, segments, uint32_t(f), 1);
+    } while (f != kNone && !chained[size_t(f)]);
+    chain.closed = f == int32_t(start);
+    chains.push_back(std::move(chain));
+  };
   for (uint32_t f = 0; f < segments.size(); ++f)
-    for (int end = 0; end < 2; ++end)
-      if (segments[f].exists() && !visited[f] &&
-          face_across(g, values, segments, f, segments[f].slot[end]).face == kNone)
-        chains.push_back(trace_faces(g, values, segments, visited, f, segments[f].slot[end]));
+    if (segments[f].exists && linked(g, segments, f, 0) == kNone) walk(f);
   for (uint32_t f = 0; f < segments.size(); ++f)
-    if (segments[f].exists() && !visited[f])
-      chains.push_back(trace_faces(g, values, segments, visited, f, segments[f].slot[0]));
+    if (segments[f].exists && !chained[f]) walk(f);
+  std::sort(chains.begin(), chains.end(), [](const auto& a, const auto& b) { return a.faces[0] < b.faces[0]; });
   return chains;
 }
 
-// A crossing as a path point: on a smooth edge it carries that edge's face[0] (when that
-// face sees the crossing too), else the face the path runs in.
-SurfacePoint crossing_point(const Geometry& g, const std::vector<double>& values, uint32_t f, int slot) {
-  uint32_t e = g.topology.face_edges[f][slot];
-  const auto& edge = g.topology.edges[e];
-  if (g.edge_kinds[e] == EdgeKind::smooth && edge.face[0] >= 0 && uint32_t(edge.face[0]) != f) {
-    int k = crossing_slot_on_edge(g, values, uint32_t(edge.face[0]), e);
-    if (k >= 0) return edge_crossing(g, values, uint32_t(edge.face[0]), k);
-  }
-  return edge_crossing(g, values, f, slot);
-}
-
-// (n_f × d) · ∇g > 0 for the segment of face f from a to b: the visible side on the left.
-double left_side_visibility(const Geometry& g, const std::vector<double>& values, uint32_t f, glm::dvec3 a,
-                            glm::dvec3 b) {
-  return glm::dot(glm::cross(g.face_area_normals[f], b - a), scaled_gradient(g, values, f));
-}
-
-// The chain's points and facing labels, oriented with g > 0 on the left (see header).
-LabeledPath chain_points(const Geometry& g, const std::vector<double>& values, const std::vector<FaceSegment>& segments,
-                         const FaceChain& chain) {
-  LabeledPath path;
-  path.closed = chain.closed;
-  for (size_t i = 0; i < chain.faces.size(); ++i) {
-    path.points.push_back(crossing_point(g, values, chain.faces[i], chain.entry_slots[i]));
-    path.labels.push_back(segments[chain.faces[i]].front ? 1 : 0);
-  }
-  if (!chain.closed) path.points.push_back(crossing_point(g, values, chain.faces.back(), chain.exit_slot));
-  for (size_t i = 0; i < chain.faces.size(); ++i) {
-    double side = left_side_visibility(g, values, chain.faces[i], path.points[i].position,
-                                       path.points[(i + 1) % path.points.size()].position);
-    if (side == 0) continue;
-    if (side < 0) {
-      std::reverse(path.points.begin(), path.points.end());
-      std::reverse(path.labels.begin(), path.labels.end());
-      if (path.closed) {  // keep segment i from point i to point i + 1
-        std::rotate(path.points.begin(), path.points.end() - 1, path.points.end());
-      }
-    }
-    break;
-  }
+// A chain's crossings, each on its own face: each face's entry, then the last face's exit of
+// an open chain.
+FeaturePath chain_path(const std::vector<FaceSilhouette>& segments, const SilhouetteChain& chain) {
+  FeaturePath path{{}, chain.closed, segments[chain.faces[0]].front};
+  for (uint32_t f : chain.faces) path.points.push_back(segments[f].ends[0]);
+  if (!chain.closed) path.points.push_back(segments[chain.faces.back()].ends[1]);
   return path;
-}
-
-void add_silhouettes(const Geometry& g, const std::vector<glm::dvec3>& normals, glm::dvec3 eye,
-                     const FeatureLineOptions& options, FeatureLines& out) {
-  auto values = corner_silhouette_values(g, normals, eye, options.silhouette_normalized);
-  std::vector<FaceSegment> segments(g.mesh.triangles.size());
-  for (uint32_t f = 0; f < segments.size(); ++f) segments[f] = face_segment(g, values, eye, f);
-  for (const auto& chain : trace_silhouettes(g, values, segments))
-    for (auto& [path, front] : split_by_label(chain_points(g, values, segments, chain))) {
-      path.front_facing = front != 0;
-      if (path.front_facing || options.keep_back_facing) out.silhouettes.push_back(std::move(path));
-    }
 }
 
 }  // namespace
@@ -471,7 +405,10 @@ FeatureLines FeatureLineMesh::lines(const glm::dmat4& object_to_world, glm::dvec
                                     const FeatureLineOptions& options) const {
   if (!impl_) return {};
   FeatureLines out = impl_->fixed;
-  add_silhouettes(impl_->g, impl_->normals, eye_in_object_space(object_to_world, eye_world), options, out);
+  glm::dvec3 eye = eye_in_object_space(object_to_world, eye_world);
+  std::vector<double> values = silhouette_values(eye, options.silhouette_normalized);
+  for (SilhouettePath& p : silhouette_paths(face_silhouettes(values, eye), options.keep_back_facing))
+    out.silhouettes.push_back(std::move(p.path));
   return out;
 }
 
@@ -493,16 +430,7 @@ uint32_t FeatureLineMesh::reversed_slots(uint32_t f) const {
   return bits;
 }
 
-std::pair<int32_t, int> FeatureLineMesh::across(uint32_t f, int k) const {
-  const Geometry& g = impl_->g;
-  uint32_t e = g.topology.face_edges[f][k];
-  const auto& edge = g.topology.edges[e];
-  int32_t other = edge.face[0] == int32_t(f) ? edge.face[1] : edge.face[0];
-  if (g.edge_kinds[e] != EdgeKind::smooth || other < 0 || uint32_t(other) == f) return {kNone, -1};
-  for (int j = 0; j < 3; ++j)
-    if (g.topology.face_edges[size_t(other)][j] == e) return {other, j};
-  return {kNone, -1};
-}
+std::pair<int32_t, int> FeatureLineMesh::across(uint32_t f, int k) const { return face_across(impl_->g, f, k); }
 
 std::vector<double> FeatureLineMesh::silhouette_values(glm::dvec3 eye_object, bool normalized) const {
   return corner_silhouette_values(impl_->g, impl_->normals, eye_object, normalized);
@@ -510,12 +438,34 @@ std::vector<double> FeatureLineMesh::silhouette_values(glm::dvec3 eye_object, bo
 
 FaceSilhouette FeatureLineMesh::face_silhouette(const std::vector<double>& values, glm::dvec3 eye_object,
                                                 uint32_t f) const {
-  FaceSegment s = face_segment(impl_->g, values, eye_object, f);
-  if (!s.exists()) return {};
-  return {true,
-          {s.slot[0], s.slot[1]},
-          {edge_crossing(impl_->g, values, f, s.slot[0]), edge_crossing(impl_->g, values, f, s.slot[1])},
-          s.front};
+  return face_segment(impl_->g, values, eye_object, f);
+}
+
+SurfacePoint FeatureLineMesh::crossing(glm::dvec3 eye_object, bool normalized, uint32_t f, int slot) const {
+  const Geometry& g = impl_->g;
+  auto [ka, kb] = slot_corners(g, f, slot);
+  double ga = silhouette_test(impl_->normals[3 * f + uint32_t(ka)], g.corner(f, ka), eye_object, normalized);
+  double gb = silhouette_test(impl_->normals[3 * f + uint32_t(kb)], g.corner(f, kb), eye_object, normalized);
+  double t = ga / (ga - gb);
+  return point_on_edge(g, f, ka, kb, std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.5);
+}
+
+std::vector<FaceSilhouette> FeatureLineMesh::face_silhouettes(const std::vector<double>& values,
+                                                              glm::dvec3 eye_object) const {
+  std::vector<FaceSilhouette> segments(impl_->g.mesh.triangles.size());
+  tbb::parallel_for(size_t(0), segments.size(),
+                    [&](size_t f) { segments[f] = face_segment(impl_->g, values, eye_object, uint32_t(f)); });
+  return segments;
+}
+
+std::vector<SilhouettePath> FeatureLineMesh::silhouette_paths(const std::vector<FaceSilhouette>& segments,
+                                                              bool keep_back_facing) const {
+  std::vector<SilhouettePath> out;
+  for (const SilhouetteChain& chain : chain_segments(impl_->g, segments)) {
+    FeaturePath path = chain_path(segments, chain);
+    if (path.front_facing || keep_back_facing) out.push_back({chain.faces[0], std::move(path)});
+  }
+  return out;
 }
 
 std::vector<double> silhouette_function(const Mesh& mesh, glm::dvec3 eye_object, const FeatureLineOptions& options) {

@@ -30,24 +30,30 @@
 //   - a face holds a segment where g changes sign along two of its edges; the crossing on
 //     edge ab is p = a + (b - a) g_a / (g_a - g_b), computed along the edge's own
 //     direction (MeshTopology::Edge from -> to) so that both faces give the same point.
-//   - segments are traced face to face through the exit edge, never across a crease or
-//     border edge (the path stops there), each face at most once: closed loops or open
-//     paths. A crossing on a smooth edge carries that edge's face[0]; one on a crease or
-//     border edge carries the face the path runs in.
-//   - orientation: a traced path runs so that the visible side (g > 0) lies on its left,
-//     seen from the side the face normal points to: (n_f × d) · ∇g > 0 for the first
-//     segment with a nonzero gradient.
+//   - segments are chained face to face (Kalnins et al. 2002, §4.5): a segment links to the
+//     segment across the smooth edge it leaves by when that one enters through the same edge
+//     with the same facing; never across a crease or border edge. Links go both ways, so
+//     each chain is an open path, started at its segment without a predecessor, or a closed
+//     loop, started at its lowest face; chains are ordered by their start face. Nothing in
+//     a chain depends on the order work is done in, so a GPU ranking the links in parallel
+//     finds the same chains (common/strokes/silhouette_chains.hpp). A path point is a
+//     crossing on its own face: each face's entry, then an open chain's last exit.
+//   - orientation: a segment runs with the visible side (g > 0) on its left, seen from the
+//     side the face normal points to. For a counter-clockwise face whose slots s0 < s1
+//     change sign around the lone corner c (oriented_slots), that is from slot c to slot
+//     c - 1 when g(c) > 0 and the other way otherwise: the signs alone decide it.
 //   - front/back (Kalnins et al. 2002, §4.5). ∇g is the gradient of g interpolated linearly
 //     over the face, in the face's plane. A segment is front-facing when ∇g · (eye - m) >= 0,
 //     m its midpoint: g grows towards the eye, i.e. the surface bends away from the viewer
 //     (positive radial curvature), as on the whole silhouette of a convex object seen
 //     from outside; zero-area faces (∇g = 0) count as front-facing. The wording "the
 //     gradient points away from the eye side" (docs/readings.md) is the same test with g of
-//     the opposite sign, n·(x - c). Paths are cut where the facing changes; back-facing
-//     pieces are dropped unless `keep_back_facing`, and kept ones say which they are.
+//     the opposite sign, n·(x - c). Links join only segments of one facing, so a path is
+//     all front- or all back-facing; back-facing paths are dropped unless
+//     `keep_back_facing`, and kept ones say which they are.
 //
 // Robustness: every face and every edge is visited a bounded number of times, so the
-// tracing ends on any input (non-manifold edges, zero-area or repeated faces, vertices
+// chaining ends on any input (non-manifold edges, zero-area or repeated faces, vertices
 // where g = 0); no position is NaN for finite input. A silhouette path has at most one
 // point more than its faces, a crease or border path one more than its edges.
 #pragma once
@@ -84,13 +90,33 @@ struct FeatureLineOptions {
   bool silhouette_normalized = true;  // strokes.silhouette_normalized
 };
 
-// The silhouette segment of one face on its own (what a GPU computes face by face): its two
-// edge crossings in slot order (slot k: the edge from corner k to k + 1) and its facing.
+// The slots a segment that crosses slots s0 < s1 enters and leaves by. The corner c between
+// them is the one whose g has the other sign; for a counter-clockwise face, the segment from
+// slot c - 1 to slot c has c on its right, so it runs from slot c to slot c - 1 when
+// g(c) > 0 and the other way otherwise.
+struct SegmentSlots {
+  int entry, exit;
+};
+constexpr int lone_corner(int s0, int s1) { return s1 == s0 + 1 ? s1 : 0; }
+constexpr SegmentSlots oriented_slots(int s0, int s1, bool lone_corner_positive) {
+  int c = lone_corner(s0, s1), before = (c + 2) % 3;
+  return lone_corner_positive ? SegmentSlots{c, before} : SegmentSlots{before, c};
+}
+
+// The silhouette segment of one face on its own (what a GPU computes face by face): the
+// slots it enters and leaves by (slot k: the edge from corner k to k + 1), its crossings
+// there (on the face's own slots) and its facing.
 struct FaceSilhouette {
   bool exists = false;
-  int slots[2] = {-1, -1};
-  SurfacePoint ends[2];
+  int slots[2] = {-1, -1};  // entry, exit
+  SurfacePoint ends[2];     // the crossings it enters and leaves by
   bool front = true;
+};
+
+// A chain of silhouette segments (see above) as a path, and the face it starts at.
+struct SilhouettePath {
+  uint32_t start_face;
+  FeaturePath path;
 };
 
 // What does not depend on the eye, made once per mesh and crease angle (adjacency,
@@ -116,6 +142,17 @@ class FeatureLineMesh {
   // g per face corner (silhouette_function below) for an eye in object space.
   std::vector<double> silhouette_values(glm::dvec3 eye_object, bool normalized) const;
   FaceSilhouette face_silhouette(const std::vector<double>& values, glm::dvec3 eye_object, uint32_t f) const;
+  // The crossing of g = 0 on face f's slot (the crossing rule above) with g of the slot's two
+  // corners only, for a backend that found the segment itself: where double precision sees
+  // one sign at both corners, the nearer end (t clamped to [0, 1]).
+  SurfacePoint crossing(glm::dvec3 eye_object, bool normalized, uint32_t f, int slot) const;
+  // Every face's segment, in parallel; `lines` chains them all.
+  std::vector<FaceSilhouette> face_silhouettes(const std::vector<double>& values, glm::dvec3 eye_object) const;
+  // The chains of the faces whose segment exists, as paths of crossings ordered by their start
+  // face, the back-facing ones only when `keep_back_facing`: a caller that drops segments
+  // (the near plane, common/strokes/strokes.hpp) chains what is left.
+  std::vector<SilhouettePath> silhouette_paths(const std::vector<FaceSilhouette>& segments,
+                                               bool keep_back_facing) const;
 
  private:
   struct Impl;

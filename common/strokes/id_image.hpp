@@ -30,6 +30,9 @@
 // a second raster of every face would cost as much again (the Ogre's strokes frame on
 // llvmpipe: bench/results).
 //
+// The silhouettes: the reference chains them in double (common/strokes/strokes.hpp); the GPU
+// reads its own chains (common/strokes/silhouette_paths.hpp), which follow the same rule.
+//
 // Output: the key as two channels, (key >> 16, key & 0xffff), each exact as a float.
 #pragma once
 
@@ -43,6 +46,7 @@
 #include "common/scene/gbuffer.hpp"
 #include "common/strokes/hatching.hpp"
 #include "common/strokes/line_meshes.hpp"
+#include "common/strokes/silhouette_paths.hpp"
 #include "common/strokes/strokes.hpp"
 #include "common/util/image.hpp"
 
@@ -90,7 +94,12 @@ struct IdImageStage {
         .kind = StageKind::Frame,
         .doc = "ID reference image: faces, crease and silhouette quads (Kalnins et al. 2002, §4.6)",
         .params = {"strokes"},
-        .inputs = {{.handle = kLineMeshes}, {.handle = kGBuffer.ids}, {.handle = kGBuffer.depth}},
+        .inputs = {{.handle = kLineMeshes},
+                   {.handle = kGBuffer.ids},
+                   {.handle = kGBuffer.depth},
+                   {.handle = kSilhouettePaths},
+                   {.handle = kSilhouettePoints},
+                   {.handle = kSilhouettePointFaces}},
         .outputs = {{.handle = kIds,
                      .channels = 2,
                      .texel = Texel::Uint,

@@ -3,8 +3,8 @@
 //
 // Links: a segment links to the segment across the smooth edge it leaves by when that one
 // enters through the same edge with the same facing. So a path never crosses a crease or a
-// border, and it is cut where the facing changes (as the traced paths of
-// common/strokes/feature_lines.hpp). Links go both ways, so every chain is an open path or a
+// border, and it is cut where the facing changes: the rule of common/strokes/feature_lines.hpp,
+// by which the stroke frame's silhouettes are chained. Links go both ways, so every chain is an open path or a
 // closed loop, and chains, starts and ranks follow from the links alone: no id depends on
 // the order in which work is done.
 //   - an open chain starts at its segment without a predecessor, a closed loop at its

@@ -14,12 +14,13 @@
 //   - facing: 1 front-facing, -1 back-facing, 0 no segment;
 //   - slots: the slots it enters and leaves by (slot k: the edge from corner k to k + 1).
 // Orientation: a segment runs with g > 0 on its left, seen from the side the face normal
-// points to (as the traced paths of common/strokes/feature_lines.hpp). It follows from the
-// signs alone (oriented_slots below), so both backends orient alike wherever they agree on them.
+// points to. It follows from the signs alone (oriented_slots, common/strokes/feature_lines.hpp),
+// so both backends orient alike wherever they agree on them.
 // A segment with an end nearer than the near plane is left out: the paths split there.
 //
-// They run where a scene asks for the effect `line_tables` (compare and the tests add it):
-// the stroke stages do not read them yet.
+// They run in every stroke frame: the GPU's ID image draws the silhouettes of its own
+// tables (common/strokes/silhouette_paths.hpp), the reference's its chains in double
+// (common/strokes/strokes.hpp), and parity compares the tables.
 //
 // Parity is float against double. Where the reference's g at a corner of a face lies within
 // the float evaluation error of 0, the backends may disagree on its sign and so on the
@@ -41,19 +42,6 @@ inline constexpr Buffer kSegmentSlots{"silhouette_segments.slots"};
 
 // The ends' tolerance in px, beyond which the derived per-face bound must explain a difference.
 constexpr double kSegmentEndPx = 1e-2;
-
-// The slots a segment that crosses slots s0 < s1 enters and leaves by. The corner c between
-// them is the one whose g has the other sign; for a counter-clockwise face, the segment from
-// slot c - 1 to slot c has c on its right, so it runs from slot c to slot c - 1 when
-// g(c) > 0 and the other way otherwise.
-struct SegmentSlots {
-  int entry, exit;
-};
-constexpr int lone_corner(int s0, int s1) { return s1 == s0 + 1 ? s1 : 0; }
-constexpr SegmentSlots oriented_slots(int s0, int s1, bool lone_corner_positive) {
-  int c = lone_corner(s0, s1), before = (c + 2) % 3;
-  return lone_corner_positive ? SegmentSlots{c, before} : SegmentSlots{before, c};
-}
 
 struct SilhouetteSegmentsStage {
   using Params = TypeList<>;  // reads strokes.silhouette_normalized, which the ID image declares
@@ -84,9 +72,10 @@ struct SilhouetteSegmentsStage {
             .effects = {"line_tables"},
             .declared_effects = {{"line_tables",
                                   "the feature lines of the stroke objects as tables computed by each backend: "
-                                  "silhouette segments per face and their chains with arc length, crease and border "
-                                  "points in the window (Kalnins et al. 2002, §4.5); on request: the stroke frame "
-                                  "does not read them yet"}}};
+                                  "silhouette segments per face, their chains with arc length and their paths, "
+                                  "crease and border points in the window (Kalnins et al. 2002, §4.5); a stroke "
+                                  "frame makes the silhouette tables anyway (the GPU draws its own), the crease "
+                                  "points only on request"}}};
   }
 };
 

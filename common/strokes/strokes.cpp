@@ -12,10 +12,6 @@ namespace plumbago {
 
 namespace {
 
-FeatureLineOptions line_options(const StrokesParams& p) {
-  return {double(p.crease_deg), p.keep_back_facing, p.silhouette_normalized};
-}
-
 bool drawn(const SceneObject& o, LineObjects which) {
   return which == LineObjects::Strokes ? o.style == Style::Strokes : o.style != Style::Sketchy;
 }
@@ -65,10 +61,11 @@ class PathBuilder {
       : scene_(scene), project_(project), out_(out), eye_(scene.camera.eye) {}
 
   // Adds the pieces of `path` in front of the near plane.
-  void add(const FeaturePath& path, LineKind kind, uint32_t object, const EdgeFaces* edges) {
+  // `key`: a silhouette's start record (assign_keys adds the base); 0 for the others.
+  void add(const FeaturePath& path, LineKind kind, uint32_t object, const EdgeFaces* edges, uint32_t key = 0) {
     const SceneObject& o = scene_.objects[object];
     glm::dmat4 m(o.transform);
-    WindowPath piece = empty(path, kind, object);
+    WindowPath piece = empty(path, kind, object, key);
     size_t n = path.points.size();
     bool whole = true;
     for (size_t i = 0; i < n; ++i) {
@@ -77,7 +74,7 @@ class PathBuilder {
       if (win.z < double(scene_.camera.near)) {
         whole = false;
         flush(piece);
-        piece = empty(path, kind, object);
+        piece = empty(path, kind, object, key);
         continue;
       }
       piece.surface.push_back(path.points[i]);
@@ -125,8 +122,8 @@ class PathBuilder {
   }
 
  private:
-  WindowPath empty(const FeaturePath& path, LineKind kind, uint32_t object) const {
-    return {kind, object, false, path.front_facing, 0, {}, {}, {}, {}, {}, {}, 0, {}, 0};
+  WindowPath empty(const FeaturePath& path, LineKind kind, uint32_t object, uint32_t key) const {
+    return {kind, object, false, path.front_facing, key, {}, {}, {}, {}, {}, {}, 0, {}, 0};
   }
 
   glm::uvec2 front_faces(const Mesh& mesh, const glm::dmat4& m, const SurfacePoint& a, const SurfacePoint& b,
@@ -183,25 +180,38 @@ class PathBuilder {
   glm::vec3 eye_;
 };
 
-// Numbers the paths (creases and borders first) and checks that the keys fit 32 bits.
+// Object o's silhouettes (Kalnins et al. 2002, §4.5): its segments with both ends in front of
+// the near plane, chained (common/strokes/feature_lines.hpp), in the order of their start face.
+void add_window_silhouettes(const Scene& scene, const WindowProjection& project, uint32_t object,
+                            const FeatureLineMesh& mesh, const StrokesParams& p, std::vector<ChainPath>& out) {
+  glm::dmat4 m(scene.objects[object].transform);
+  glm::dvec3 eye = eye_in_object_space(m, glm::dvec3(scene.camera.eye));
+  std::vector<double> g = mesh.silhouette_values(eye, p.silhouette_normalized);
+  std::vector<FaceSilhouette> segments = mesh.face_silhouettes(g, eye);
+  auto behind = [&](const SurfacePoint& end) {
+    return project(glm::dvec3(m * glm::dvec4(end.position, 1.0))).z < double(scene.camera.near);
+  };
+  for (FaceSilhouette& s : segments) s.exists = s.exists && !behind(s.ends[0]) && !behind(s.ends[1]);
+  uint32_t first = first_faces(scene)[object];
+  for (SilhouettePath& s : mesh.silhouette_paths(segments, p.keep_back_facing))
+    out.push_back({object, first + s.start_face, std::move(s.path)});
+}
+
+// Numbers the paths (creases and borders first; a silhouette by its start record) and checks
+// that the keys fit 32 bits.
 void assign_keys(WindowLines& lines) {
   std::stable_partition(lines.paths.begin(), lines.paths.end(),
                         [](const WindowPath& p) { return p.kind != LineKind::Silhouette; });
   uint64_t next = uint64_t(lines.face_count) + 1;
-  size_t silhouettes = 0;
   for (WindowPath& p : lines.paths)
-    if (p.kind != LineKind::Silhouette)
-      p.key = uint32_t(next++);
-    else
-      ++silhouettes;
+    if (p.kind != LineKind::Silhouette) p.key = uint32_t(next++);
   uint64_t base = ((next - 1) >> 8) + 1;
-  if (base + silhouettes >= (uint64_t(1) << 24))
+  if (base + lines.face_count >= (uint64_t(1) << 24))
     throw std::length_error("the ID image's keys do not fit 32 bits: " + std::to_string(lines.face_count) + " faces, " +
-                            std::to_string(next - 1 - lines.face_count) + " crease and border paths, " +
-                            std::to_string(silhouettes) + " silhouette paths");
+                            std::to_string(next - 1 - lines.face_count) + " crease and border paths");
   lines.silhouette_base = uint32_t(base);
   for (WindowPath& p : lines.paths)
-    if (p.kind == LineKind::Silhouette) p.key = uint32_t(base++);
+    if (p.kind == LineKind::Silhouette) p.key += uint32_t(base);
 }
 
 }  // namespace
@@ -276,7 +286,7 @@ const FeatureLineMesh* line_mesh(const LineMeshes& meshes, size_t object) {
 }
 
 WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which, const LineMeshes* prepared,
-                         const DecalSurface* decals) {
+                         const DecalSurface* decals, const std::vector<ChainPath>* silhouettes) {
   std::shared_ptr<const LineMeshes> made;
   if (!prepared) made = line_meshes(scene, p, which), prepared = made.get();
   WindowLines out;
@@ -286,16 +296,18 @@ WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects
   out.first_face.pop_back();
   WindowProjection project(scene.camera, scene.width, scene.height);
   PathBuilder builder(scene, project, out);
+  std::vector<ChainPath> own;
   for (uint32_t i = 0; i < scene.objects.size(); ++i) {
-    const SceneObject& o = scene.objects[i];
-    if (!prepared->lines[i]) continue;
-    FeatureLines lines =
-        prepared->lines[i]->lines(glm::dmat4(o.transform), glm::dvec3(scene.camera.eye), line_options(p));
+    const FeatureLineMesh* mesh = line_mesh(*prepared, i);
+    if (!mesh) continue;
+    const FeatureLines& fixed = mesh->creases_and_borders();
     const EdgeFaces* edges = prepared->edges[i].get();
-    for (const FeaturePath& path : lines.creases) builder.add(path, LineKind::Crease, i, edges);
-    for (const FeaturePath& path : lines.borders) builder.add(path, LineKind::Border, i, edges);
-    for (const FeaturePath& path : lines.silhouettes) builder.add(path, LineKind::Silhouette, i, nullptr);
+    for (const FeaturePath& path : fixed.creases) builder.add(path, LineKind::Crease, i, edges);
+    for (const FeaturePath& path : fixed.borders) builder.add(path, LineKind::Border, i, edges);
+    if (!silhouettes) add_window_silhouettes(scene, project, i, *mesh, p, own);
   }
+  for (const ChainPath& c : silhouettes ? *silhouettes : own)
+    builder.add(c.path, LineKind::Silhouette, c.object, nullptr, c.start_record);
   assign_keys(out);
   if (!decals) return out;
   out.hatching = hatch_states(scene, *decals, scene.params.get<HatchingParams>());

@@ -6,14 +6,22 @@
 // Keys (Kalnins et al. 2002, §4.6; one 32-bit space, 0 = nothing):
 //   - face f of object o (every object of the scene, in order): first_face[o] + f + 1;
 //   - crease and border path i: face_count + 1 + i;
-//   - silhouette path j: silhouette_base + j, drawn as key << 8 | floor(255 s / L), with
-//     silhouette_base the smallest key whose shifted values lie above every other key;
+//   - a silhouette path: silhouette_base + its start record (its chain's first face, as
+//     first_face[o] + f: common/strokes/silhouette_paths.hpp), drawn as key << 8 | floor(255 s / L),
+//     with silhouette_base the smallest key whose shifted values lie above every other key.
+//     So a silhouette's key depends on its own chain only, not on how many come before it;
 //   - decal and hatching paths (Kalnins et al. 2002, §3, §6, common/strokes/decal.hpp, common/strokes/hatching.hpp)
 //     have none: they are not drawn in the ID image, their samples test their faces' keys.
 // A scene whose keys do not fit 32 bits is refused (std::length_error, with the counts).
 //
 // Window coordinates are docs/conventions.md's (pixels, origin bottom-left); depth is linear view depth
-// d = -z_view. A path point nearer than the near plane is dropped and splits its path.
+// d = -z_view. A path point nearer than the near plane is dropped and splits its path; a
+// silhouette segment with an end there is dropped before the segments are chained, so its
+// pieces are chains of their own (as the GPU's tables, common/strokes/silhouette_segments.hpp).
+//
+// Order: the creases and borders (object by object, its creases then its borders), then the
+// silhouettes (object by object, by their start face: chains, common/strokes/feature_lines.hpp);
+// keys follow that order.
 #pragma once
 
 #include <cstdint>
@@ -118,14 +126,24 @@ uint32_t vertex_of(const Mesh& mesh, const SurfacePoint& p);
 // Whether face f faces the world point `eye`: n·(eye - p0) > 0 in world space, in double.
 bool faces_eye(const Mesh& mesh, const glm::dmat4& object_to_world, uint32_t f, glm::dvec3 eye);
 
+// One silhouette path as window_lines takes it: its object, its start record (its key, less
+// the base) and its points on the surface.
+struct ChainPath {
+  uint32_t object, start_record;
+  FeaturePath path;
+};
+
 // `prepared` (from line_meshes with the same scene, parameters and `which`) or none;
 // `decals`, the surface points of decals and hatches (Kalnins et al. 2002, §3, §6, common/strokes/decal.hpp),
 // placed after the feature lines, or none; a hatch absent at this frame's level of detail
-// (weight 0) is left out.
+// (weight 0) is left out. `silhouettes`: the silhouettes a backend chained itself
+// (common/strokes/silhouette_paths.hpp), in front of the near plane, in start order; none:
+// chained here in double.
 struct ProjectedDecal;
 using DecalSurface = std::vector<ProjectedDecal>;  // common/strokes/decal.hpp
 WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which = LineObjects::Strokes,
-                         const LineMeshes* prepared = nullptr, const DecalSurface* decals = nullptr);
+                         const LineMeshes* prepared = nullptr, const DecalSurface* decals = nullptr,
+                         const std::vector<ChainPath>* silhouettes = nullptr);
 
 // The part [t0, t1] of window segment a -> b within `margin` px of the window (Liang-Barsky);
 // false when none is.

@@ -1,5 +1,6 @@
 #include "gpu/gl/gl_objects.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <stdexcept>
 #include <string>
@@ -115,6 +116,22 @@ ImageU32 download_texture_u32(const Texture& tex, int channels) {
   ImageU32 img(tex.width, tex.height, channels);
   read_texture(tex, integer_format_of(channels), GL_UNSIGNED_INT, img.data);
   return img;
+}
+
+std::vector<float> read_table(const Texture& table, int channels, size_t records) {
+  const auto width = size_t(table.width), columns = std::min(width, records);
+  const size_t rows = std::min(size_t(table.height), (records + width - 1) / width);
+  std::vector<float> out(columns * rows * size_t(channels));
+  if (out.empty()) return out;
+  read_back += out.size() * sizeof(float);
+  Framebuffer fbo = make_framebuffer();
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo.id());
+  glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, table.id(), 0);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, GLsizei(columns), GLsizei(rows), format_of(channels), GL_FLOAT, out.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  return out;
 }
 
 void set_sampling(const Texture& tex, GLenum filter, GLenum wrap_s, GLenum wrap_t, GLenum wrap_r) {

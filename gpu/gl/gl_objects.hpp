@@ -79,6 +79,9 @@ void set_sampling(const Texture& tex, GLenum filter, GLenum wrap_s, GLenum wrap_
 // integer texture's values as floats.
 Image download_texture(const Texture& tex, int channels);
 ImageU32 download_texture_u32(const Texture& tex, int channels);
+// The first `records` records of a float table (common/util/image.hpp table_image), `channels`
+// floats each, read back in record order: the rows they take, a partial one whole.
+std::vector<float> read_table(const Texture& table, int channels, size_t records);
 
 Buffer make_buffer(const void* data, size_t bytes);
 // Reads the first `bytes` of a buffer back into `out`.

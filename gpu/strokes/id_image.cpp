@@ -3,9 +3,12 @@
 // the fragment's depth. The faces are the G-buffer's, copied in one full-window pass
 // (shaders/strokes/id_gbuffer.frag); the sketchy objects' are pulled from their meshes,
 // uploaded once (shaders/strokes/id_faces.vert): no CPU loop over faces per frame. The
-// lines' quads come from the CPU (id_line_triangles).
+// silhouettes are the GPU's own (silhouette_paths), read back for now (their paths' rows
+// only) and made window paths on the CPU with the creases; the lines' quads come from the
+// CPU (id_line_triangles).
 #include "common/strokes/id_image.hpp"
 
+#include "common/strokes/silhouette_paths.hpp"
 #include "gpu/core/stage.hpp"
 #include "gpu/scene/mesh_buffers.hpp"
 #include "gpu/strokes/decal.hpp"
@@ -37,8 +40,9 @@ class IdImagePass : public GpuPass {
 
   void run(GpuFrame& f) override {
     auto p = f.params<StrokesParams>();
+    std::vector<ChainPath> silhouettes = read_silhouettes(f, p);
     f.put(kWindowLines, window_lines(f.scene, p, LineObjects::Strokes, &f.get(kLineMeshes),
-                                     has_decals(f.scene) ? &decals_ : nullptr));
+                                     has_decals(f.scene) ? &decals_ : nullptr, &silhouettes));
     std::vector<IdVertex> lines = id_line_triangles(f.scene, f.get(kWindowLines), p);
     Texture& target = f.put(kIds);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
@@ -61,6 +65,17 @@ class IdImagePass : public GpuPass {
   }
 
  private:
+  // The silhouette paths this frame's tables hold (common/strokes/silhouette_paths.hpp): the
+  // counts, then the rows they use.
+  static std::vector<ChainPath> read_silhouettes(const GpuFrame& f, const StrokesParams& p) {
+    const Texture& paths = f.get(kSilhouettePaths);
+    std::vector<float> counts = read_table(paths, 4, 1);
+    const auto path_count = size_t(counts[0]), point_count = size_t(counts[1]);
+    return chain_paths(f.scene, f.get(kLineMeshes), read_table(paths, 4, path_count + 1),
+                       read_table(f.get(kSilhouettePoints), 4, point_count),
+                       read_table(f.get(kSilhouettePointFaces), 1, point_count), p.silhouette_normalized);
+  }
+
   // Rule 1: the G-buffer's faces,
   void draw_gbuffer_faces(const GpuFrame& f) {
     const GBufferTargets& g = f.get(kGBuffer);

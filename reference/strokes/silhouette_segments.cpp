@@ -169,17 +169,13 @@ PLUMBAGO_REFERENCE_STAGE(silhouette_segments, [](ReferenceFrame& f) {
                 [&](uint32_t i, const ObjectView& v, uint32_t face) {
                   FaceSilhouette s = v.lines.face_silhouette(v.g, v.eye, face);
                   if (!s.exists) return;
-                  int c = lone_corner(s.slots[0], s.slots[1]);
-                  SegmentSlots o = oriented_slots(s.slots[0], s.slots[1], v.g[3 * face + uint32_t(c)] > 0);
-                  const SurfacePoint& entry = s.ends[o.entry == s.slots[0] ? 0 : 1];
-                  const SurfacePoint& exit = s.ends[o.entry == s.slots[0] ? 1 : 0];
-                  WindowEnd w[2] = {project(v, entry.position), project(v, exit.position)};
+                  WindowEnd w[2] = {project(v, s.ends[0].position), project(v, s.ends[1].position)};
                   if (!in_front(w, f.scene)) return;
                   float* e = &ends.data[size_t(i) * 4];
                   e[0] = float(w[0].window.x), e[1] = float(w[0].window.y);
                   e[2] = float(w[1].window.x), e[3] = float(w[1].window.y);
                   facing.data[i] = s.front ? 1.0f : -1.0f;
-                  slots.data[size_t(i) * 2] = float(o.entry), slots.data[size_t(i) * 2 + 1] = float(o.exit);
+                  slots.data[size_t(i) * 2] = float(s.slots[0]), slots.data[size_t(i) * 2 + 1] = float(s.slots[1]);
                 });
   f.put(kSegmentEnds, std::move(ends));
   f.put(kSegmentFacing, std::move(facing));

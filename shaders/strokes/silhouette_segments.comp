@@ -58,7 +58,7 @@ void main() {
     if ((g[k] > 0.0) != (g[(k + 1) % 3] > 0.0)) found_slots[found++] = k;
   if (found < 2) return;
   // Run with g > 0 on the left: from the slot after the lone corner to the one before it
-  // when its g > 0 (common/strokes/silhouette_segments.hpp oriented_slots).
+  // when its g > 0 (common/strokes/feature_lines.hpp oriented_slots).
   int lone = found_slots[1] == found_slots[0] + 1 ? found_slots[1] : 0, before = (lone + 2) % 3;
   int entry = g[lone] > 0.0 ? lone : before, exit = g[lone] > 0.0 ? before : lone;
   vec3 a = edge_crossing(c, g, face.w, entry), b = edge_crossing(c, g, face.w, exit);
