@@ -6,8 +6,7 @@
 namespace plumbago {
 
 std::vector<ChainPath> chain_paths(const Scene& scene, const LineMeshes& meshes, const std::vector<float>& paths,
-                                   const std::vector<float>& points, const std::vector<float>& faces,
-                                   bool normalized) {
+                                   const std::vector<float>& points, const std::vector<float>& faces, bool normalized) {
   const std::vector<uint32_t> first = first_faces(scene);
   const auto path_count = size_t(paths.at(0)), point_count = size_t(paths.at(1));
   if (paths.size() < 4 * (path_count + 1) || points.size() < 4 * point_count || faces.size() < point_count)
@@ -18,7 +17,8 @@ std::vector<ChainPath> chain_paths(const Scene& scene, const LineMeshes& meshes,
     const auto start = uint32_t(row[0]) - 1, first_point = uint32_t(row[1]), flags = uint32_t(row[3]);
     const auto object = uint32_t(std::upper_bound(first.begin(), first.end(), start) - first.begin()) - 1;
     const FeatureLineMesh& mesh = *line_mesh(meshes, object);
-    const glm::dvec3 eye = eye_in_object_space(glm::dmat4(scene.objects[object].transform), glm::dvec3(scene.camera.eye));
+    const glm::dvec3 eye =
+        eye_in_object_space(glm::dmat4(scene.objects[object].transform), glm::dvec3(scene.camera.eye));
     ChainPath c{object, start, {{}, (flags & 1u) != 0, (flags & 2u) != 0}};
     for (uint32_t q = first_point; q < first_point + uint32_t(row[2]); ++q)
       c.path.points.push_back(

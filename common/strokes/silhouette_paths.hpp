@@ -45,8 +45,7 @@ constexpr size_t silhouette_point_rows(size_t records) { return 2 * records; }
 // crossing on its face's slot in double (FeatureLineMesh::crossing), from `meshes` and this
 // frame's eye: the tables say where the chains run, the reference's formula where they cross.
 std::vector<ChainPath> chain_paths(const Scene& scene, const LineMeshes& meshes, const std::vector<float>& paths,
-                                   const std::vector<float>& points, const std::vector<float>& faces,
-                                   bool normalized);
+                                   const std::vector<float>& points, const std::vector<float>& faces, bool normalized);
 
 struct SilhouettePathsStage {
   using Params = TypeList<>;  // reads strokes.keep_back_facing, which the ID image declares
@@ -55,8 +54,11 @@ struct SilhouettePathsStage {
             .kind = StageKind::Frame,
             .doc = "the silhouette chains laid out path by path, their points in order (Kalnins et al. 2002, §4.5)",
             .params = {"strokes"},
-            .inputs = {{.handle = kChains}, {.handle = kChainArcs}, {.handle = kSegmentFacing},
-                       {.handle = kSegmentSlots}, {.handle = kSegmentEnds}},
+            .inputs = {{.handle = kChains},
+                       {.handle = kChainArcs},
+                       {.handle = kSegmentFacing},
+                       {.handle = kSegmentSlots},
+                       {.handle = kSegmentEnds}},
             .outputs = {{.handle = kSilhouettePaths,
                          .channels = 4,
                          .doc = "row 0 (paths, points); row 1 + p: (start record + 1, first point, points, closed + "

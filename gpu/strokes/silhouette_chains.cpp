@@ -3,8 +3,9 @@
 // by pointer jumping (Wyllie 1979), twice; the second also sums the window arc lengths.
 // Each round is an indirect dispatch over the compacted segments, whose size the GPU writes:
 // bit_width(records) rounds are issued (enough for a chain through every face), and those
-// past 2^k >= the segments' count (more than any chain needs) dispatch no work. The CPU
-// never learns the count: nothing is read back.
+// past 2^k >= the segments' count (more than any chain needs) dispatch no work, nor do the
+// ranking rounds after one that moved no pointer. The CPU never learns the count: nothing
+// is read back.
 #include "common/strokes/silhouette_chains.hpp"
 
 #include <algorithm>
@@ -36,7 +37,7 @@ class SilhouetteChainsPass : public GpuPass {
     slot_links_ = make_buffer(links.data(), n * sizeof(glm::uvec4));
     links_ = make_buffer(nullptr, n * sizeof(glm::uvec4));
     members_ = make_buffer(nullptr, n * sizeof(uint32_t));
-    count_ = make_buffer(nullptr, kRoundArgs + 32 * 4 * sizeof(uint32_t));
+    count_ = make_buffer(nullptr, kRoundArgs + 2 * 32 * 4 * sizeof(uint32_t));
     jump_[0] = make_buffer(nullptr, n * sizeof(glm::uvec4));
     jump_[1] = make_buffer(nullptr, n * sizeof(glm::uvec4));
     arc_[0] = make_buffer(nullptr, n * sizeof(glm::vec2));
@@ -55,10 +56,10 @@ class SilhouetteChainsPass : public GpuPass {
     barrier();
     dispatch_in_chunks(args_, 1, "first_record");
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-    for (int r = 0; r < rounds_; ++r) over_members(loops_, r);  // each loop's lowest record
-    over_members(cut_, -1);
-    for (int r = 0; r < rounds_; ++r) over_members(rank_, r);  // starts, ranks, ends
-    over_members(write_, -1);
+    for (int r = 0; r < rounds_; ++r) over_members(loops_, round_args(r), r);  // each loop's lowest record
+    over_members(cut_, kAllMembers);
+    for (int r = 0; r < rounds_; ++r) over_members(rank_, rank_args(r), r);  // starts, ranks, ends
+    over_members(write_, kAllMembers);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
   }
 
@@ -86,13 +87,14 @@ class SilhouetteChainsPass : public GpuPass {
   // Where the Count buffer (shaders/strokes/silhouette_chains.comp) holds each dispatch's groups.
   static constexpr GLintptr kAllMembers = 4, kRoundArgs = 16;
   static GLintptr round_args(int r) { return kRoundArgs + GLintptr(r) * 16; }
+  static GLintptr rank_args(int r) { return round_args(32 + r); }
 
-  // Round `round` of a phase (its groups written by the GPU), or (-1) over every member.
-  static void over_members(const Program& p, int round) {
+  // A dispatch whose groups the GPU wrote at `args`: round `round` of a phase, or over every member.
+  static void over_members(const Program& p, GLintptr args, int round = -1) {
     glUseProgram(p.id());
     if (round >= 0) glProgramUniform1ui(p.id(), p.uniform("round_index"), GLuint(round));
-    glDispatchComputeIndirect(round >= 0 ? round_args(round) : kAllMembers);
-    barrier();
+    glDispatchComputeIndirect(args);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
   }
 
   static void barrier() { glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); }

@@ -13,7 +13,7 @@ namespace plumbago::gpu {
 
 namespace {
 
-constexpr uint32_t kTile = 1024;  // records per workgroup of the tile steps (4 per invocation)
+constexpr uint32_t kTile = 4096;  // records per workgroup of the tile steps (16 per invocation)
 
 Program step(const char* name) {
   return Program::compute("strokes/silhouette_paths.comp", table_prelude() + "#define " + name + "\n");

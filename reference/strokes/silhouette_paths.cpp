@@ -52,8 +52,8 @@ void add_points(const Tables& t, size_t i, const std::vector<size_t>& first_poin
 }  // namespace
 
 PLUMBAGO_REFERENCE_STAGE(silhouette_paths, [](ReferenceFrame& f) {
-  Tables t{f.get(kChains), f.get(kChainArcs), f.get(kSegmentFacing), f.get(kSegmentSlots), f.get(kSegmentEnds),
-           f.params<StrokesParams>().keep_back_facing};
+  Tables t{f.get(kChains),       f.get(kChainArcs),   f.get(kSegmentFacing),
+           f.get(kSegmentSlots), f.get(kSegmentEnds), f.params<StrokesParams>().keep_back_facing};
   const size_t records = first_faces(f.scene).back();
   PathRows out{table_image(silhouette_path_rows(records), 4), table_image(silhouette_point_rows(records), 4),
                table_image(silhouette_point_rows(records), 1)};

@@ -13,12 +13,15 @@ layout(std430, binding = 0) readonly buffer SlotLinks { uvec4 slot_links[]; };  
 // Per record: (successor, predecessor, closed, -), kNoLink where none.
 layout(std430, binding = 1) buffer Links { uvec4 links[]; };
 layout(std430, binding = 2) buffer Members { uint members[]; };  // the records that hold a segment
-// How many members, the indirect dispatch over them all, and round k's: over them all while
-// 2^k < count (a chain is no longer than the count), else none.
+// How many members, the indirect dispatch over them all, and round k's of each phase: over
+// them all while 2^k < count (a chain is no longer than the count), else none. Ranking also
+// stops once a round moved no pointer: that round wrote what it read, so both buffers hold
+// the result, whichever the steps after it read.
 layout(std430, binding = 3) buffer Count {
   uint count;
   uint all_x, all_y, all_z;  // not a uvec3: std430 would align it to 16 bytes
   uvec4 round_groups[32];
+  uvec4 rank_groups[32];
 };
 // Pointer jumping between two buffers, each step reading one and writing the other:
 // finding loops, (next, lowest record so far, -, -); ranking, (start, rank, end, distance to it),
@@ -104,7 +107,10 @@ void main() {
   all_x = (count + 63u) / 64u;
   all_y = 1u;
   all_z = 1u;
-  for (uint k = 0u; k < 32u; ++k) round_groups[k] = uvec4(count > (1u << k) ? all_x : 0u, 1u, 1u, 0u);
+  for (uint k = 0u; k < 32u; ++k) {
+    round_groups[k] = uvec4(count > (1u << k) ? all_x : 0u, 1u, 1u, 0u);
+    rank_groups[k] = uvec4(k == 0u && count > 1u ? all_x : 0u, 1u, 1u, 0u);  // later ones: STEP_RANK
+  }
 #elif defined(STEP_LOOPS)  // next <- next of next, lowest <- the lower of both
   uint i = member();
   if (i == kNoLink) return;
@@ -125,8 +131,13 @@ void main() {
   uint i = member();
   if (i == kNoLink) return;
   uvec4 here = src(i), back = src(here.x), ahead = src(here.z);
-  put(i, uvec4(back.x, here.y + back.y, ahead.z, here.w + ahead.w));
+  uvec4 jumped = uvec4(back.x, here.y + back.y, ahead.z, here.w + ahead.w);
+  put(i, jumped);
   arc_put(i, vec2(arc_src(i).x + arc_src(here.x).x, arc_src(i).y + arc_src(here.z).y));
+  // Only a start and an end point at themselves, with rank and distance 0 (and s 0): a
+  // member whose pointers did not move is done.
+  uint k = round_index + 1u;
+  if (jumped != here && k < 32u && count > (1u << k)) rank_groups[k].x = all_x;
 #elif defined(STEP_WRITE)
   uint i = member();
   if (i == kNoLink) return;

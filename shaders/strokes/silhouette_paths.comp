@@ -3,7 +3,7 @@
 // gpu/strokes/silhouette_paths.cpp, one program each. The layout is that of
 // common/strokes/silhouette_paths.hpp; the loop it replaces is reference/strokes/silhouette_paths.cpp.
 // Paths and their points are placed by prefix sums over the records in order (reduce, then
-// scan): a tile of 1024 records per workgroup, 4 per invocation.
+// scan): a tile of 4096 records per workgroup, 16 in a row per invocation.
 //   STEP_COUNT:  per tile, its paths and their points;
 //   STEP_TILES:  one workgroup: the tiles' sums made exclusive prefixes, and the totals;
 //   STEP_PATHS:  per tile, each path's row and where its points start;
@@ -16,7 +16,7 @@ layout(local_size_x = 256) in;
 
 #include "util/common_table.glsl"
 
-const uint kPerInvocation = 4u, kTile = 1024u;
+const uint kPerInvocation = 16u, kTile = 4096u;
 
 uniform sampler2D chains;  // silhouette_chains.chains: (start + 1, rank, length, closed)
 uniform sampler2D arcs;    // silhouette_chains.arcs: (s, L)

@@ -78,8 +78,8 @@ TEST_F(SilhouettePaths, GpuFrameChainsTheSilhouettesTheReferenceDraws) {
     expect_consistent(paths, points, faces, name + " (GPU frame)");
     const StrokesParams p = s.params.get<StrokesParams>();
     std::shared_ptr<const LineMeshes> meshes = line_meshes(s, p, LineObjects::Strokes);
-    std::vector<ChainPath> gpu = chain_paths(s, *meshes, values(paths), values(points), values(faces),
-                                            p.silhouette_normalized);
+    std::vector<ChainPath> gpu =
+        chain_paths(s, *meshes, values(paths), values(points), values(faces), p.silhouette_normalized);
     WindowLines reference = window_lines(s, p, LineObjects::Strokes, meshes.get());
     std::vector<const WindowPath*> drawn;
     for (const WindowPath& w : reference.paths)
