@@ -41,8 +41,7 @@ DecalSurface decal_surface(const Scene& scene, const std::string& backend) {
 std::vector<ChainPath> frame_silhouettes(const Scene& scene, const LineMeshes& meshes, const Frame& frame,
                                          bool normalized) {
   auto table = [&](const Buffer& b) { return frame.buffers.at(b.name).data; };
-  return chain_paths(scene, meshes, table(kSilhouettePaths), table(kSilhouettePoints), table(kSilhouettePointFaces),
-                     normalized);
+  return chain_paths(scene, meshes, table(kSilhouettePaths), table(kSilhouetteCrossings), normalized);
 }
 
 }  // namespace

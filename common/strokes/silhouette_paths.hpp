@@ -14,10 +14,10 @@
 //   - paths, records + 1 rows: row 0 holds the counts (paths, points, 0, 0); row 1 + p
 //     path p: (start record + 1, its first point, its points, closed + 2 front-facing);
 //   - points, 2 records rows (an open chain of one segment has two): row q, point q of
-//     the paths in order: (x, y, s, slot), its window position, arc length (px) and the slot
-//     of its face it lies on;
-//   - faces, as many rows: the record + 1 of that face (the member whose entry it is, the
-//     last member for an exit).
+//     the paths in order: (x, y, s), its window position and arc length (px);
+//   - crossings, as many rows: (record + 1, slot), the face it lies on (the member whose
+//     entry it is, the last member for an exit) and the slot of that face. What the CPU
+//     reads back to make window paths (8 bytes a point).
 // Unused rows are 0. The GPU counts and places them with prefix sums over the records
 // (gpu/strokes/silhouette_paths.cpp), the reference in one loop in record order
 // (reference/strokes/silhouette_paths.cpp). Fed the same chains, both give the same tables:
@@ -34,18 +34,18 @@ namespace plumbago {
 
 inline constexpr Buffer kSilhouettePaths{"silhouette_paths.paths"};
 inline constexpr Buffer kSilhouettePoints{"silhouette_paths.points"};
-inline constexpr Buffer kSilhouettePointFaces{"silhouette_paths.faces"};
+inline constexpr Buffer kSilhouetteCrossings{"silhouette_paths.crossings"};
 
 // The table sizes for `records` face records.
 constexpr size_t silhouette_path_rows(size_t records) { return records + 1; }
 constexpr size_t silhouette_point_rows(size_t records) { return 2 * records; }
 
-// The paths of the tables' first rows: `paths` (4 channels) from row 0, `points` (4) and
-// `faces` (1) from row 0, as many as the counts say. Each point's surface point is the
+// The paths of the tables' first rows: `paths` (4 channels) from row 0 and `crossings` (2),
+// as many as the counts say. Each point's surface point is the
 // crossing on its face's slot in double (FeatureLineMesh::crossing), from `meshes` and this
 // frame's eye: the tables say where the chains run, the reference's formula where they cross.
 std::vector<ChainPath> chain_paths(const Scene& scene, const LineMeshes& meshes, const std::vector<float>& paths,
-                                   const std::vector<float>& points, const std::vector<float>& faces, bool normalized);
+                                   const std::vector<float>& crossings, bool normalized);
 
 struct SilhouettePathsStage {
   using Params = TypeList<>;  // reads strokes.keep_back_facing, which the ID image declares
@@ -65,11 +65,12 @@ struct SilhouettePathsStage {
                                 "2 front)",
                          .tolerance_why = "integers from the same chains: exact"},
                         {.handle = kSilhouettePoints,
-                         .channels = 4,
-                         .doc = "per path point in order: (x, y, s, slot): window position, arc length (px), slot",
+                         .channels = 3,
+                         .doc = "per path point in order: (x, y, s): window position and arc length (px)",
                          .tolerance_why = "copied from the same segments and arcs: exact"},
-                        {.handle = kSilhouettePointFaces,
-                         .doc = "per path point: the record + 1 of the face it lies on",
+                        {.handle = kSilhouetteCrossings,
+                         .channels = 2,
+                         .doc = "per path point: (record + 1, slot), the face it lies on and that face's slot",
                          .tolerance_why = "integers from the same chains: exact"}},
             .effects = {"line_tables"}};
   }

@@ -72,8 +72,7 @@ class IdImagePass : public GpuPass {
     std::vector<float> counts = read_table(paths, 4, 1);
     const auto path_count = size_t(counts[0]), point_count = size_t(counts[1]);
     return chain_paths(f.scene, f.get(kLineMeshes), read_table(paths, 4, path_count + 1),
-                       read_table(f.get(kSilhouettePoints), 4, point_count),
-                       read_table(f.get(kSilhouettePointFaces), 1, point_count), p.silhouette_normalized);
+                       read_table(f.get(kSilhouetteCrossings), 2, point_count), p.silhouette_normalized);
   }
 
   // Rule 1: the G-buffer's faces,

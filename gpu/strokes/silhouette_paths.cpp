@@ -34,7 +34,7 @@ class SilhouettePathsPass : public GpuPass {
   void run(GpuFrame& f) override {
     const Texture* tables[] = {&table_target(f, silhouette_path_rows(records_), kSilhouettePaths),
                                &table_target(f, silhouette_point_rows(records_), kSilhouettePoints),
-                               &table_target(f, silhouette_point_rows(records_), kSilhouettePointFaces)};
+                               &table_target(f, silhouette_point_rows(records_), kSilhouetteCrossings)};
     const float zero[4] = {0, 0, 0, 0};
     for (GLuint unit = 0; unit < 3; ++unit) {
       glClearTexImage(tables[unit]->id(), 0, GL_RGBA, GL_FLOAT, zero);

@@ -19,13 +19,13 @@ struct Tables {
 };
 
 struct PathRows {
-  Image paths, points, faces;
+  Image paths, points, crossings;
   size_t path_count = 0, point_count = 0;
 
   void point(size_t q, glm::vec2 window, float s, float slot, size_t record) {
-    float* row = &points.data[q * 4];
-    row[0] = window.x, row[1] = window.y, row[2] = s, row[3] = slot;
-    faces.data[q] = float(record + 1);
+    float* row = &points.data[q * 3];
+    row[0] = window.x, row[1] = window.y, row[2] = s;
+    crossings.data[q * 2] = float(record + 1), crossings.data[q * 2 + 1] = slot;
   }
 };
 
@@ -55,8 +55,8 @@ PLUMBAGO_REFERENCE_STAGE(silhouette_paths, [](ReferenceFrame& f) {
   Tables t{f.get(kChains),       f.get(kChainArcs),   f.get(kSegmentFacing),
            f.get(kSegmentSlots), f.get(kSegmentEnds), f.params<StrokesParams>().keep_back_facing};
   const size_t records = first_faces(f.scene).back();
-  PathRows out{table_image(silhouette_path_rows(records), 4), table_image(silhouette_point_rows(records), 4),
-               table_image(silhouette_point_rows(records), 1)};
+  PathRows out{table_image(silhouette_path_rows(records), 4), table_image(silhouette_point_rows(records), 3),
+               table_image(silhouette_point_rows(records), 2)};
   std::vector<size_t> first_point(records);
   for (size_t i = 0; i < records; ++i)
     if (t.drawn(i) && t.chain(i)[1] == 0) add_path(t, i, out, first_point);
@@ -65,7 +65,7 @@ PLUMBAGO_REFERENCE_STAGE(silhouette_paths, [](ReferenceFrame& f) {
   out.paths.data[0] = float(out.path_count), out.paths.data[1] = float(out.point_count);
   f.put(kSilhouettePaths, std::move(out.paths));
   f.put(kSilhouettePoints, std::move(out.points));
-  f.put(kSilhouettePointFaces, std::move(out.faces));
+  f.put(kSilhouetteCrossings, std::move(out.crossings));
 });
 
 }  // namespace plumbago::reference

@@ -28,7 +28,7 @@ uniform bool keep_back_facing;
 
 layout(rgba32f, binding = 0) writeonly uniform image2D paths;
 layout(rgba32f, binding = 1) writeonly uniform image2D points;
-layout(r32f, binding = 2) writeonly uniform image2D point_faces;
+layout(rg32f, binding = 2) writeonly uniform image2D crossings;
 
 // Per tile: (paths, points) it holds; STEP_TILES turns them into those before it.
 layout(std430, binding = 0) buffer TileSums { uvec2 tile_sums[]; };
@@ -110,10 +110,10 @@ void main() {
   vec4 c = chain(i), e = texelFetch(ends, table_texel(i), 0), slot = texelFetch(slots, table_texel(i), 0);
   vec2 arc = texelFetch(arcs, table_texel(i), 0).xy;
   uint q = first_point[uint(c.x) - 1u] + uint(c.y);
-  imageStore(points, table_texel(q), vec4(e.xy, arc.x, slot.x));
-  imageStore(point_faces, table_texel(q), vec4(float(i + 1u)));
+  imageStore(points, table_texel(q), vec4(e.xy, arc.x, 0.0));
+  imageStore(crossings, table_texel(q), vec4(float(i + 1u), slot.x, 0.0, 0.0));
   if (c.w != 0.0 || c.y + 1.0 != c.z) return;
-  imageStore(points, table_texel(q + 1u), vec4(e.zw, arc.y, slot.y));
-  imageStore(point_faces, table_texel(q + 1u), vec4(float(i + 1u)));
+  imageStore(points, table_texel(q + 1u), vec4(e.zw, arc.y, 0.0));
+  imageStore(crossings, table_texel(q + 1u), vec4(float(i + 1u), slot.y, 0.0, 0.0));
 #endif
 }

@@ -18,7 +18,7 @@ namespace plumbago {
 namespace {
 
 const std::vector<std::string> kPathResults = {kSilhouettePaths.name, kSilhouettePoints.name,
-                                               kSilhouettePointFaces.name};
+                                               kSilhouetteCrossings.name};
 
 std::vector<std::pair<std::string, Scene>> scenes() {
   return {{"torus", testing::drawn_with_strokes(testing::builtin_at("torus", 320, 240))},
@@ -31,21 +31,22 @@ std::vector<std::pair<std::string, Scene>> scenes() {
 std::vector<float> values(const Image& table) { return table.data; }
 
 // The tables' counts agree with their rows: each path's points follow the one before's, its
-// arc length rises from 0 along them, and its faces are records of the scene.
-void expect_consistent(const Image& paths, const Image& points, const Image& faces, const std::string& label) {
+// arc length rises from 0 along them, and exactly the counted points have a crossing.
+void expect_consistent(const Image& paths, const Image& points, const Image& crossings, const std::string& label) {
   const auto path_count = size_t(paths.data[0]), point_count = size_t(paths.data[1]);
   size_t next = 0;
   for (size_t p = 1; p <= path_count; ++p) {
     const float* row = &paths.data[4 * p];
     ASSERT_EQ(size_t(row[1]), next) << label << " path " << p - 1;
     EXPECT_GE(row[2], 2.0f) << label;
-    EXPECT_EQ(points.data[4 * next + 2], 0.0f) << label << ": s at a path's start";
-    for (size_t q = next + 1; q < next + size_t(row[2]); ++q) EXPECT_GT(points.data[4 * q + 2], points.data[4 * q - 2]);
+    EXPECT_EQ(points.data[3 * next + 2], 0.0f) << label << ": s at a path's start";
+    for (size_t q = next + 1; q < next + size_t(row[2]); ++q) EXPECT_GT(points.data[3 * q + 2], points.data[3 * q - 1]);
     next += size_t(row[2]);
   }
   EXPECT_EQ(next, point_count) << label;
   EXPECT_GT(path_count, 0u) << label;
-  for (size_t q = 0; q < faces.pixels(); ++q) EXPECT_EQ(faces.data[q] != 0, q < point_count) << label << " row " << q;
+  for (size_t q = 0; q < crossings.pixels(); ++q)
+    EXPECT_EQ(crossings.data[2 * q] != 0, q < point_count) << label << " row " << q;
 }
 
 class SilhouettePaths : public testing::GlTest {};
@@ -74,12 +75,11 @@ TEST_F(SilhouettePaths, GpuFrameChainsTheSilhouettesTheReferenceDraws) {
     const size_t ambiguous = segments[1].bounded;  // the facing: faces whose signs may flip
     Frame frame = gpu::Renderer(s).render(FrameOptions{true});
     const Image &paths = frame.buffers.at(kSilhouettePaths.name), &points = frame.buffers.at(kSilhouettePoints.name),
-                &faces = frame.buffers.at(kSilhouettePointFaces.name);
-    expect_consistent(paths, points, faces, name + " (GPU frame)");
+                &crossings = frame.buffers.at(kSilhouetteCrossings.name);
+    expect_consistent(paths, points, crossings, name + " (GPU frame)");
     const StrokesParams p = s.params.get<StrokesParams>();
     std::shared_ptr<const LineMeshes> meshes = line_meshes(s, p, LineObjects::Strokes);
-    std::vector<ChainPath> gpu =
-        chain_paths(s, *meshes, values(paths), values(points), values(faces), p.silhouette_normalized);
+    std::vector<ChainPath> gpu = chain_paths(s, *meshes, values(paths), values(crossings), p.silhouette_normalized);
     WindowLines reference = window_lines(s, p, LineObjects::Strokes, meshes.get());
     std::vector<const WindowPath*> drawn;
     for (const WindowPath& w : reference.paths)
@@ -95,7 +95,7 @@ TEST_F(SilhouettePaths, GpuFrameChainsTheSilhouettesTheReferenceDraws) {
       EXPECT_EQ(gpu[i].path.closed, w.closed) << name << " path " << i;
       ASSERT_EQ(gpu[i].path.points.size(), w.window.size()) << name << " path " << i;
       for (size_t k = 0; k < w.window.size(); ++k, ++q) {
-        glm::dvec2 g(points.data[4 * q], points.data[4 * q + 1]);
+        glm::dvec2 g(points.data[3 * q], points.data[3 * q + 1]);
         worst = std::max(worst, glm::distance(g, w.window[k]));
         EXPECT_EQ(gpu[i].path.points[k].position, w.surface[k].position) << name << " path " << i << " point " << k;
       }
