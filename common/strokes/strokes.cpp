@@ -61,19 +61,25 @@ class PathBuilder {
       : scene_(scene), project_(project), out_(out), eye_(scene.camera.eye) {}
 
   // Adds the pieces of `path` in front of the near plane.
-  // `key`: a silhouette's start record (assign_keys adds the base); 0 for the others.
+  // `key`: a silhouette's start record (assign_keys adds the base); 0 for the others. A
+  // silhouette keeps its first piece only, the one its chain's key names: its segments lie in
+  // front of the near plane, but a backend's float chain may hold a point that double
+  // precision puts just behind it.
   void add(const FeaturePath& path, LineKind kind, uint32_t object, const EdgeFaces* edges, uint32_t key = 0) {
     const SceneObject& o = scene_.objects[object];
     glm::dmat4 m(o.transform);
     WindowPath piece = empty(path, kind, object, key);
     size_t n = path.points.size();
-    bool whole = true;
+    bool whole = true, kept = false;
+    auto keep = [&] {
+      if (kind != LineKind::Silhouette || !kept) kept = flush(piece) || kept;
+    };
     for (size_t i = 0; i < n; ++i) {
       glm::dvec3 w = glm::dvec3(m * glm::dvec4(path.points[i].position, 1.0));
       glm::dvec3 win = project_(w);
       if (win.z < double(scene_.camera.near)) {
         whole = false;
-        flush(piece);
+        keep();
         piece = empty(path, kind, object, key);
         continue;
       }
@@ -87,7 +93,7 @@ class PathBuilder {
     piece.closed = path.closed && whole;
     if (edges && piece.closed)
       piece.front_faces.push_back(front_faces(*o.mesh, m, path.points[n - 1], path.points[0], object, *edges));
-    flush(piece);
+    keep();
   }
 
   // Adds the pieces of surface stroke `index` (Kalnins et al. 2002, §3, §6), a decal or a hatch with its
@@ -162,9 +168,9 @@ class PathBuilder {
     flush(piece);
   }
 
-  // Keeps a piece of two points or more, with its window arc lengths.
-  void flush(WindowPath& piece) {
-    if (piece.window.size() < 2) return;
+  // Keeps a piece of two points or more, with its window arc lengths; whether it did.
+  bool flush(WindowPath& piece) {
+    if (piece.window.size() < 2) return false;
     piece.front_faces.resize(piece.closed ? piece.window.size() : piece.window.size() - 1);
     piece.arc_px.push_back(0);
     for (size_t i = 1; i < piece.window.size(); ++i)
@@ -172,6 +178,7 @@ class PathBuilder {
     piece.length_px = piece.arc_px.back();
     if (piece.closed) piece.length_px += glm::distance(piece.window.back(), piece.window.front());
     out_.paths.push_back(std::move(piece));
+    return true;
   }
 
   const Scene& scene_;

@@ -105,5 +105,27 @@ TEST_F(SilhouettePaths, GpuFrameChainsTheSilhouettesTheReferenceDraws) {
   }
 }
 
+// A backend's silhouette whose point double precision puts behind the near plane (its float
+// chain kept the segment) keeps one piece, its first of two points or more, under its chain's
+// key: no second path may carry the same key.
+TEST(SilhouettePathsNearPlane, AChainCutInDoubleKeepsOnePieceUnderItsKey) {
+  Scene s = testing::drawn_with_strokes(testing::builtin_at("sphere", 320, 240));
+  s.camera = Camera{};  // the eye at (0, 0, 5), near 0.1
+  s.objects.resize(1);
+  s.objects[0].transform = glm::mat4(1.0f);
+  auto at = [](double x, double y, double z) { return SurfacePoint{0, glm::dvec3(1, 0, 0), glm::dvec3(x, y, z)}; };
+  const uint32_t start = 7;
+  std::vector<ChainPath> chain = {
+      {0, start, {{at(1, 0, 0), at(0, 1, 0), at(0, 0, 4.95), at(-1, 0, 0), at(0, -1, 0)}, false, true}}};
+  const StrokesParams p = s.params.get<StrokesParams>();
+  WindowLines lines = window_lines(s, p, LineObjects::Strokes, nullptr, nullptr, &chain);
+  std::vector<const WindowPath*> silhouettes;
+  for (const WindowPath& w : lines.paths)
+    if (w.kind == LineKind::Silhouette) silhouettes.push_back(&w);
+  ASSERT_EQ(silhouettes.size(), 1u);
+  EXPECT_EQ(silhouettes[0]->key, lines.silhouette_base + start);
+  EXPECT_EQ(silhouettes[0]->window.size(), 2u);
+}
+
 }  // namespace
 }  // namespace plumbago
