@@ -131,7 +131,7 @@ std::map<std::string, double> stroke_counts(const WindowLines* lines, const Visi
   if (!v || !lines) return out;
   out["strokes"] = double(v->runs.size());
   out["paths"] = double(lines->paths.size());
-  out["samples"] = double(v->flags.size());
+  out["samples"] = double(v->samples);
   for (const VisibleRun& run : v->runs) out[std::string("strokes.") + line_kind_name(lines->paths[run.path].kind)] += 1;
   for (const HatchGroupState& g : lines->hatching) {
     std::string name = "hatching.group" + std::to_string(g.number);

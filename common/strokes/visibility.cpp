@@ -141,8 +141,9 @@ class RunBuilder {
       for (double at : s) tested_.push_back({at, false}), batch_.push_back(sample_at(lines.paths[i], at));
     }
     first_.push_back(tested_.size());
-    std::vector<uint8_t> f = run_batch();
-    for (size_t k = 0; k < tested_.size(); ++k) tested_[k].visible = f[k];
+    out_.flags = run_batch();
+    out_.samples = tested_.size();
+    for (size_t k = 0; k < tested_.size(); ++k) tested_[k].visible = out_.flags[k];
   }
 
   Visibility build() {
@@ -156,7 +157,6 @@ class RunBuilder {
  private:
   std::vector<uint8_t> run_batch() {
     std::vector<uint8_t> f = batch_.empty() ? std::vector<uint8_t>{} : test_(batch_);
-    out_.flags.insert(out_.flags.end(), f.begin(), f.end());
     batch_.clear();
     return f;
   }
@@ -217,20 +217,7 @@ class RunBuilder {
   }
 
   void add_run(uint32_t i, double s0, double s1, bool closed, bool occluded_start, bool occluded_end) {
-    const WindowPath& p = lines_.paths[i];
-    VisibleRun run{i, s0, s1, closed, occluded_start, occluded_end, {}};
-    if (closed) {
-      run.window = p.window;
-    } else {
-      run.window.push_back(point_at(p, s0).window);
-      for (int lap = 0; lap < (p.closed ? 2 : 1); ++lap)  // a closed path's run may pass the seam once
-        for (size_t k = 0; k < p.window.size(); ++k) {
-          double s = p.arc_px[k] + lap * p.length_px;
-          if (s > s0 && s < s1) run.window.push_back(p.window[k]);
-        }
-      run.window.push_back(point_at(p, s1).window);
-    }
-    out_.runs.push_back(std::move(run));
+    out_.runs.push_back(run_along(lines_.paths[i], i, s0, s1, closed, occluded_start, occluded_end));
   }
 
   const WindowLines& lines_;
@@ -266,6 +253,23 @@ bool sample_visible(const ImageU32& keys, const VisibilitySample& s) {
   return false;
 }
 
+VisibleRun run_along(const WindowPath& p, uint32_t i, double s0, double s1, bool closed, bool occluded_start,
+                     bool occluded_end) {
+  VisibleRun run{i, s0, s1, closed, occluded_start, occluded_end, {}};
+  if (closed) {
+    run.window = p.window;
+    return run;
+  }
+  run.window.push_back(point_at(p, s0).window);
+  for (int lap = 0; lap < (p.closed ? 2 : 1); ++lap)  // a closed path's run may pass the seam once
+    for (size_t k = 0; k < p.window.size(); ++k) {
+      double s = p.arc_px[k] + lap * p.length_px;
+      if (s > s0 && s < s1) run.window.push_back(p.window[k]);
+    }
+  run.window.push_back(point_at(p, s1).window);
+  return run;
+}
+
 Visibility visible_runs(const WindowLines& lines, const StrokesParams& p, const SampleTest& test) {
   return RunBuilder(lines, p, test).build();
 }
@@ -274,6 +278,17 @@ Image flags_image(const std::vector<uint8_t>& flags) {
   Image out = table_image(flags.size(), 1);
   for (size_t k = 0; k < flags.size(); ++k) out.data[k] = flags[k] ? 1.0f : 0.0f;
   return out;
+}
+
+std::pair<Image, Image> run_tables(const std::vector<VisibleRun>& runs) {
+  Image paths = table_image(runs.size(), 2), ends = table_image(runs.size(), 2);
+  for (size_t k = 0; k < runs.size(); ++k) {
+    const VisibleRun& r = runs[k];
+    paths.data[2 * k] = float(r.path + 1);
+    paths.data[2 * k + 1] = float(r.closed + 2 * r.occluded_start + 4 * r.occluded_end);
+    ends.data[2 * k] = float(r.s0), ends.data[2 * k + 1] = float(r.s1);
+  }
+  return {std::move(paths), std::move(ends)};
 }
 
 }  // namespace plumbago

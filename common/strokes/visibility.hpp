@@ -19,9 +19,11 @@
 // samples at the midpoints, tested the same way) until it is located within 1 px
 // (Kalnins et al. 2002, §4.1). What is visible then makes the runs the strokes draw.
 //
-// `sample_visible` is the one test both backends run (the GPU as a compute shader,
-// shaders/strokes/visibility.comp, the formula written twice); the bisection calls a backend's
-// batch test through `visible_runs`.
+// `sample_visible` is the one test both backends run. The reference samples, bisects and
+// makes the runs here, calling its batch test through `visible_runs`; the GPU does all of it
+// in compute shaders (shaders/strokes/visibility.comp, the formula written twice), one
+// invocation per segment, sample or change, and reads back the number of samples and
+// the runs' ends.
 #pragma once
 
 #include <cstdint>
@@ -74,17 +76,26 @@ struct VisibleRun {
 using SampleTest = std::function<std::vector<uint8_t>(const std::vector<VisibilitySample>&)>;
 
 struct Visibility {
-  std::vector<uint8_t> flags;  // every tested sample, the first round then each bisection round
+  size_t samples = 0;          // the first round's
+  std::vector<uint8_t> flags;  // the first round's, path after path (the GPU: only when dumping)
   std::vector<VisibleRun> runs;
 };
 
 // Samples every path, tests them with `test`, bisects the changes and returns the runs.
 Visibility visible_runs(const WindowLines& lines, const StrokesParams& p, const SampleTest& test);
 
+// The run of path i (index `i` in WindowLines::paths) from s0 to s1, with its window polyline.
+VisibleRun run_along(const WindowPath& path, uint32_t i, double s0, double s1, bool closed, bool occluded_start,
+                     bool occluded_end);
+
 // The flags as the stage's output image: one texel per sample, row after row of 1024.
 Image flags_image(const std::vector<uint8_t>& flags);
+// The runs as two tables: (path + 1, closed + 2 occluded start + 4 occluded end) and (s0, s1).
+std::pair<Image, Image> run_tables(const std::vector<VisibleRun>& runs);
 
 inline constexpr Buffer kFlags{"visibility.flags"};
+inline constexpr Buffer kRunPaths{"visibility.run_paths"};
+inline constexpr Buffer kRunEnds{"visibility.run_ends"};
 inline constexpr Slot<Visibility> kVisibleRuns{"visibility.runs"};
 
 struct VisibilityStage {
@@ -97,8 +108,19 @@ struct VisibilityStage {
             .inputs = {{.handle = kIds}, {.handle = kWindowLines}},
             .outputs = {{.handle = kFlags,
                          .texel = Texel::Unorm8,
-                         .doc = "1 where a sample is visible: one texel per sample, 1024 a row",
-                         .tolerance_why = "fed the same ID image: the same integer test on both"},
+                         .doc = "1 where a first-round sample is visible: one texel per sample, 1024 a row",
+                         .tolerance_why = "fed the same ID image and paths: the same integer test, at positions "
+                                          "the GPU interpolates in float"},
+                        {.handle = kRunPaths,
+                         .channels = 2,
+                         .doc = "per visible run: (path + 1, closed + 2 occluded start + 4 occluded end)",
+                         .tolerance_why = "integers from the same flags: exact"},
+                        {.handle = kRunEnds,
+                         .channels = 2,
+                         .doc = "per visible run: (s0, s1), its ends in window arc length (px)",
+                         .tolerance = 1,
+                         .tolerance_why = "each backend locates a change within 0.5 px of where its tests change "
+                                          "(Kalnins et al. 2002, §4.1: 1 px)"},
                         {.handle = kVisibleRuns,
                          .channels = 0,
                          .texel = Texel::Host,

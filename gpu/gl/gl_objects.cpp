@@ -190,10 +190,10 @@ Renderbuffer make_renderbuffer(int width, int height, GLenum internal_format) {
   return Renderbuffer(id);
 }
 
-void read_buffer(const Buffer& buffer, void* out, size_t bytes) {
+void read_buffer(const Buffer& buffer, void* out, size_t bytes, size_t offset) {
   read_back += bytes;
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer.id());  // not glGetNamedBufferSubData: OSMesa has no such entry
-  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(bytes), out);
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, GLintptr(offset), GLsizeiptr(bytes), out);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
 }
 

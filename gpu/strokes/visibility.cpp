@@ -1,23 +1,37 @@
-// Visibility of stroke samples on the GPU (Kalnins et al. 2002, §4.6), the twin of reference/strokes/visibility.cpp:
-// a compute shader tests each batch of samples against the ID image where it lies, and
-// only the flags come back (Kalnins et al. read the whole ID image back every frame).
+// Visibility of stroke samples on the GPU (Kalnins et al. 2002, §4.6, §4.1), the twin of
+// common/strokes/visibility.cpp: the paths go up as a table, then compute shaders
+// (shaders/strokes/visibility.comp) take the first round of samples segment by segment,
+// test them against the ID image, bisect each change to 1 px in one invocation and list the
+// runs, placing everything by prefix sums. Read back: the number of samples, then the runs'
+// ends (Kalnins et al. read the whole ID image back every frame).
 #include "gpu/strokes/visibility.hpp"
 
+#include <cstdio>
+
+#include "common/util/memory_budget.hpp"
 #include "gpu/core/stage.hpp"
+#include "gpu/gl/scan.hpp"
 
 namespace plumbago::gpu {
 
-SampleTest::SampleTest() : program_(Program::compute("strokes/visibility.comp")) {}
+namespace {
+
+Program step(const char* name) {
+  return Program::compute("strokes/visibility.comp", std::string("#define ") + name + "\n");
+}
+
+}  // namespace
+
+SampleTest::SampleTest() : program_(step("STEP_TEST")) {}
 
 std::vector<uint8_t> SampleTest::operator()(const Texture& ids, const std::vector<VisibilitySample>& batch) {
   Buffer samples = make_buffer(batch.data(), batch.size() * sizeof(VisibilitySample));
   Buffer flags = make_buffer(nullptr, batch.size() * sizeof(uint32_t));
-  glUseProgram(program_.id());
   glProgramUniform1ui(program_.id(), program_.uniform("sample_count"), GLuint(batch.size()));
   bind_textures(program_, {{"ids", &ids}});
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, samples.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, flags.id());
-  dispatch_in_chunks(program_, batch.size(), "first_sample");
+  dispatch_in_chunks(program_, batch.size(), "first");
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<uint32_t> read(batch.size());
   read_buffer(flags, read.data(), read.size() * sizeof(uint32_t));
@@ -26,24 +40,172 @@ std::vector<uint8_t> SampleTest::operator()(const Texture& ids, const std::vecto
 
 namespace {
 
+// shaders/strokes/visibility.comp's Path, Point, Tested and Run (std430).
+struct PathRow {
+  uint32_t first_point, points, first_entry, kind, key, byte_window;
+  float length_px;
+  uint32_t sampled;
+};
+struct PointRow {
+  glm::vec2 window;
+  float s;
+  uint32_t unused;
+  glm::uvec2 faces, unused2;
+};
+struct TestedRow {
+  float s;
+  uint32_t flags, path;
+  float change;
+};
+struct RunRow {
+  uint32_t path, flags;
+  float s0, s1;
+};
+
+// The paths as the shaders read them; the entries are each path's segments and its end.
+struct PathTable {
+  explicit PathTable(const WindowLines& lines) {
+    for (const WindowPath& p : lines.paths) {
+      uint32_t n = uint32_t(p.window.size());
+      VisibilitySample first = sample_at(p, 0);  // its kind and (silhouettes) byte window
+      paths.push_back({uint32_t(points.size()), n, entries, first.kind | (p.closed ? 16u : 0u), first.key,
+                       first.byte_window, float(p.length_px), 0});
+      entries += (p.closed ? n : n - 1) + 1;
+      for (uint32_t k = 0; k < n; ++k)
+        points.push_back({glm::vec2(p.window[k]), float(p.arc_px[k]), 0,
+                          k < p.front_faces.size() ? p.front_faces[k] : glm::uvec2(0), glm::uvec2(0)});
+    }
+  }
+  std::vector<PathRow> paths;
+  std::vector<PointRow> points;
+  uint32_t entries = 0;
+};
+
+Buffer zeros(size_t count) {
+  Buffer b = make_buffer(nullptr, count * sizeof(uint32_t));
+  const uint32_t zero = 0;
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, b.id());  // not glClearNamedBufferData: OSMesa has no such entry
+  glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  return b;
+}
+
+uint32_t read_uint(const Buffer& b, size_t at) {
+  uint32_t v = 0;
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  read_buffer(b, &v, sizeof v, at * sizeof(uint32_t));
+  return v;
+}
+
 class VisibilityPass : public GpuPass {
  public:
-  explicit VisibilityPass(GpuFrame&) {}
+  explicit VisibilityPass(GpuFrame&)
+      : count_(step("STEP_COUNT")),
+        ends_(step("STEP_ENDS")),
+        samples_(step("STEP_SAMPLES")),
+        changes_(step("STEP_CHANGES")),
+        marks_(step("STEP_MARKS")),
+        runs_(step("STEP_RUNS")) {}
 
   void run(GpuFrame& f) override {
-    const Texture& ids = f.get(kIds);
-    auto test = [&](const std::vector<VisibilitySample>& batch) { return test_(ids, batch); };
-    Visibility v = visible_runs(f.get(kWindowLines), f.params<StrokesParams>(), test);
-    if (f.dump) f.put(kFlags, upload_texture(flags_image(v.flags), GL_RGBA8));
+    const WindowLines& lines = f.get(kWindowLines);
+    Visibility v;
+    if (!lines.paths.empty()) v = visibility(f, lines);
+    if (f.dump) {
+      auto [paths, ends] = run_tables(v.runs);
+      dumped_ = {{kFlags.name, flags_image(v.flags)}, {kRunPaths.name, paths}, {kRunEnds.name, ends}};
+    }
     f.put(kVisibleRuns, std::move(v));
   }
 
-  void dump(GpuFrame& f, const std::vector<std::string>&, std::map<std::string, Image>& out) override {
-    out[kFlags.name] = download_texture(f.get(kFlags), 1);
+  void dump(GpuFrame&, const std::vector<std::string>&, std::map<std::string, Image>& out) override {
+    for (auto& [name, image] : dumped_) out[name] = image;
   }
 
  private:
-  SampleTest test_;
+  Visibility visibility(GpuFrame& f, const WindowLines& lines) {
+    PathTable table(lines);
+    Buffer paths = make_buffer(table.paths.data(), table.paths.size() * sizeof(PathRow));
+    Buffer points = make_buffer(table.points.data(), table.points.size() * sizeof(PointRow));
+    Buffer entries = zeros(size_t(table.entries) + 1);
+    set_uniforms(f, lines, table);
+    bind({&paths, &points, &entries});
+    dispatch_in_chunks(count_, table.entries, "first");
+    barrier();
+    dispatch_in_chunks(ends_, table.paths.size(), "first");
+    barrier();
+    scan_(entries, size_t(table.entries) + 1);
+    const uint32_t samples = read_uint(entries, table.entries);
+    check_memory(lines, samples);
+    for (const Program* p : {&changes_, &marks_, &runs_})
+      glProgramUniform1ui(p->id(), p->uniform("sample_count"), samples);
+    Buffer tested = make_buffer(nullptr, std::max<size_t>(samples, 1) * sizeof(TestedRow));
+    Buffer change_marks = zeros(size_t(samples) + 1), run_marks = zeros(2 * size_t(samples) + 1);
+    Buffer changes = make_buffer(nullptr, std::max<size_t>(samples, 1) * sizeof(glm::vec2));
+    Buffer runs = make_buffer(nullptr, std::max<size_t>(2 * size_t(samples), 1) * sizeof(RunRow));
+    bind({&paths, &points, &entries, &tested, &change_marks, &run_marks, &changes, &runs});
+    bind_textures(samples_, {{"ids", &f.get(kIds)}});
+    bind_textures(changes_, {{"ids", &f.get(kIds)}});
+    dispatch_in_chunks(samples_, table.entries, "first");
+    barrier();
+    dispatch_in_chunks(changes_, samples, "first");
+    barrier();
+    scan_(change_marks, size_t(samples) + 1);
+    bind({&paths, &points, &entries, &tested, &change_marks, &run_marks, &changes, &runs});
+    dispatch_in_chunks(marks_, samples, "first");
+    barrier();
+    scan_(run_marks, 2 * size_t(samples) + 1);
+    bind({&paths, &points, &entries, &tested, &change_marks, &run_marks, &changes, &runs});
+    dispatch_in_chunks(runs_, 2 * size_t(samples), "first");
+    return read_runs(f, lines, runs, run_marks, tested, samples);
+  }
+
+  Visibility read_runs(const GpuFrame& f, const WindowLines& lines, const Buffer& runs, const Buffer& run_marks,
+                       const Buffer& tested, uint32_t samples) {
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<RunRow> rows(read_uint(run_marks, 2 * size_t(samples)));
+    read_buffer(runs, rows.data(), rows.size() * sizeof(RunRow));
+    Visibility v;
+    v.samples = samples;
+    for (const RunRow& r : rows)
+      v.runs.push_back(run_along(lines.paths[r.path], r.path, r.s0, r.s1, r.flags & 1u, r.flags & 2u, r.flags & 4u));
+    if (f.dump) {
+      std::vector<TestedRow> t(samples);
+      read_buffer(tested, t.data(), t.size() * sizeof(TestedRow));
+      for (const TestedRow& row : t) v.flags.push_back(row.flags & 1u);
+    }
+    return v;
+  }
+
+  void set_uniforms(GpuFrame& f, const WindowLines& lines, const PathTable& table) {
+    for (const Program* p : {&count_, &ends_, &samples_, &changes_, &marks_, &runs_}) {
+      glProgramUniform1ui(p->id(), p->uniform("path_count"), GLuint(table.paths.size()));
+      glProgramUniform1ui(p->id(), p->uniform("entry_count"), table.entries);
+      glProgramUniform1f(p->id(), p->uniform("step_px"), f.params<StrokesParams>().vis_step_px);
+      glProgramUniform1f(p->id(), p->uniform("width"), float(lines.width));
+      glProgramUniform1f(p->id(), p->uniform("height"), float(lines.height));
+    }
+  }
+
+  // What the samples take (their record, a mark and a change, two run marks and two runs
+  // at most), against the memory budget before any is made.
+  static void check_memory(const WindowLines& lines, uint32_t samples) {
+    char what[160];
+    std::snprintf(what, sizeof what, "the visibility samples of %zu lines on the GPU (%u)", lines.paths.size(),
+                  samples);
+    check_memory_budget(what, double(samples) * double(sizeof(TestedRow) + 4 + 8 + 8 + 2 * sizeof(RunRow)));
+  }
+
+  static void bind(std::initializer_list<const Buffer*> buffers) {
+    GLuint binding = 0;
+    for (const Buffer* b : buffers) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding++, b->id());
+  }
+
+  static void barrier() { glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); }
+
+  Program count_, ends_, samples_, changes_, marks_, runs_;
+  ExclusiveScan scan_;
+  std::map<std::string, Image> dumped_;
 };
 
 }  // namespace

@@ -1,5 +1,7 @@
 // Visibility of stroke samples on the GPU (Kalnins et al. 2002, §4.6): the test of common/strokes/visibility.hpp
-// as a compute shader (shaders/strokes/visibility.comp), reading back only the flags.
+// on a given batch of samples (shaders/strokes/visibility.comp STEP_TEST), reading back one
+// flag per sample. The frame's pass (gpu/strokes/visibility.cpp) samples, tests and bisects
+// on the GPU instead; this batch test is how tests and benchmarks reach the formula alone.
 #pragma once
 
 #include <cstdint>

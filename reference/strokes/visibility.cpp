@@ -18,6 +18,9 @@ PLUMBAGO_REFERENCE_STAGE(visibility, [](ReferenceFrame& f) {
   };
   Visibility v = visible_runs(f.get(kWindowLines), f.params<StrokesParams>(), test);
   f.put(kFlags, flags_image(v.flags));
+  auto [paths, ends] = run_tables(v.runs);
+  f.put(kRunPaths, std::move(paths));
+  f.put(kRunEnds, std::move(ends));
   f.put(kVisibleRuns, std::move(v));
 });
 

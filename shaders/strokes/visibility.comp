@@ -1,21 +1,27 @@
 #version 450 core
-// Visibility of stroke samples (Kalnins et al. 2002, §4.6), one invocation per sample: the test of
-// common/strokes/visibility.cpp (sample_visible) on the ID image's keys.
-layout(local_size_x = 64) in;
+// Visibility of stroke samples (Kalnins et al. 2002, §4.6, §4.1): the steps of gpu/strokes/visibility.cpp, one
+// program each, doing what common/strokes/visibility.cpp defines. A path is split into entries:
+// its segments, then one for its end. Prefix sums (gpu/gl/scan.hpp) run between the steps.
+//   STEP_COUNT:   per entry, how many first-round samples a segment takes;
+//   STEP_ENDS:    per path, its end entry's: an open path's end, and s = 0 where no segment took one;
+//   STEP_SAMPLES: per entry, its samples at their prefix sum, each tested against the ID image;
+//   STEP_CHANGES: per sample, whether the next one along its path disagrees: the change bisected to 1 px;
+//   STEP_MARKS:   per sample, its change listed, and where a visible run starts (at most 2 a sample);
+//   STEP_RUNS:    per run start, the run to the next change;
+//   STEP_TEST:    per sample of a given batch, the test alone (gpu::SampleTest).
+layout(local_size_x = 64) in;  // gpu/gl/program.hpp dispatch_in_chunks
 
-struct Sample {
+struct Sample {  // common/strokes/visibility.hpp VisibilitySample
   vec2 window;
-  uint kind;  // 0 crease or border, 1 silhouette, 2 decal, 3 hatch (common/strokes/visibility.hpp SampleKind)
+  uint kind;  // 0 crease or border, 1 silhouette, 2 decal, 3 hatch (SampleKind)
   uint key;
   uint faces[2];
   uint byte_value;
   uint byte_window;  // at most 255; bit 8: a closed path (bytes compared around the seam)
 };
-layout(std430, binding = 0) readonly buffer Samples { Sample samples[]; };
-layout(std430, binding = 1) writeonly buffer Flags { uint flags[]; };
+
 uniform usampler2D ids;  // (key >> 16, key & 0xffff)
-uniform uint sample_count;
-uniform uint first_sample;  // of this dispatch (a batch may take several: 65535 groups at most each)
+uniform uint first;      // of this dispatch (a step may take several: 65535 groups at most each)
 
 bool holds(uint value, Sample s) {
   if (value == 0u) return false;
@@ -28,25 +34,246 @@ bool holds(uint value, Sample s) {
   return d <= int(s.byte_window & 0xffu);
 }
 
-void main() {
-  uint k = first_sample + gl_GlobalInvocationID.x;
-  if (k >= sample_count) return;
-  Sample s = samples[k];
+// The test of common/strokes/visibility.cpp sample_visible: some pixel of the 3x3 box (5x5 for a hatch).
+bool sample_visible(Sample s) {
   ivec2 size = textureSize(ids, 0);
   bool near_window =
       s.window.x > -2.0 && s.window.y > -2.0 && s.window.x < float(size.x + 2) && s.window.y < float(size.y + 2);
+  if (!near_window) return false;
+  ivec2 p = ivec2(floor(s.window));
+  int r = s.kind == 3u ? 2 : 1;
   bool visible = false;
-  if (near_window) {
-    ivec2 p = ivec2(floor(s.window));
-    int r = s.kind == 3u ? 2 : 1;
-    for (int dy = -r; dy <= r; ++dy)
-      for (int dx = -r; dx <= r; ++dx) {
-        ivec2 q = p + ivec2(dx, dy);
-        if (all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, size))) {
-          uvec2 halves = texelFetch(ids, q, 0).xy;
-          visible = visible || holds(halves.x << 16 | halves.y, s);
-        }
+  for (int dy = -r; dy <= r; ++dy)
+    for (int dx = -r; dx <= r; ++dx) {
+      ivec2 q = p + ivec2(dx, dy);
+      if (all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, size))) {
+        uvec2 halves = texelFetch(ids, q, 0).xy;
+        visible = visible || holds(halves.x << 16 | halves.y, s);
       }
-  }
-  flags[k] = visible ? 1u : 0u;
+    }
+  return visible;
 }
+
+#if defined(STEP_TEST)
+layout(std430, binding = 0) readonly buffer Samples { Sample samples[]; };
+layout(std430, binding = 1) writeonly buffer Flags { uint flags[]; };
+uniform uint sample_count;
+
+void main() {
+  uint k = first + gl_GlobalInvocationID.x;
+  if (k < sample_count) flags[k] = sample_visible(samples[k]) ? 1u : 0u;
+}
+#else
+
+struct Path {
+  uint first_point, points, first_entry;
+  uint kind;  // SampleKind; bit 4: closed
+  uint key, byte_window;
+  float length_px;
+  uint sampled;  // STEP_COUNT: 1 where a segment took a sample
+};
+struct Point {
+  vec2 window;
+  float s;  // window arc length from the path's start
+  uint unused;
+  uvec2 faces;  // of the segment from this point (common/strokes/strokes.hpp WindowPath::front_faces)
+  uvec2 unused2;
+};
+struct Tested {
+  float s;
+  uint flags;  // 1: visible; 2: the next sample along the path disagrees; 4: ... and is visible
+  uint path;
+  float change;  // where that change is located
+};
+struct Run {
+  uint path;
+  uint flags;  // 1: the whole closed path; 2: occluded at its start; 4: at its end
+  float s0, s1;
+};
+
+layout(std430, binding = 0) buffer Paths { Path paths[]; };
+layout(std430, binding = 1) readonly buffer Points { Point points[]; };
+layout(std430, binding = 2) buffer Entries { uint entries[]; };  // counts, then their prefix sums
+layout(std430, binding = 3) buffer Samples { Tested tested[]; };
+layout(std430, binding = 4) buffer ChangeMarks { uint change_marks[]; };  // per sample, then prefix sums
+layout(std430, binding = 5) buffer RunMarks { uint run_marks[]; };        // 2 per sample, then prefix sums
+layout(std430, binding = 6) buffer Changes { vec2 changes[]; };           // (located s, turns visible)
+layout(std430, binding = 7) writeonly buffer Runs { Run runs[]; };
+
+uniform uint path_count, entry_count, sample_count;
+uniform float step_px, width, height;
+
+const float kMargin = 4.0;     // px around the window where samples are taken (the test reaches 2)
+const float kLocatedPx = 1.0;  // Kalnins et al. 2002, §4.1: a change is located within 1 px
+
+bool is_closed(Path p) { return (p.kind & 16u) != 0u; }
+uint segments(Path p) { return is_closed(p) ? p.points : p.points - 1u; }
+Point point(Path p, uint k) { return points[p.first_point + k % p.points]; }
+
+// The last path whose first entry is at most e.
+uint path_of_entry(uint e) {
+  uint lo = 0u, hi = path_count;
+  while (hi - lo > 1u) {
+    uint mid = (lo + hi) / 2u;
+    if (paths[mid].first_entry <= e) lo = mid; else hi = mid;
+  }
+  return lo;
+}
+
+uint entry_end(uint p) { return p + 1u < path_count ? paths[p + 1u].first_entry : entry_count; }
+
+// Path p's first sample and the one after its last.
+uvec2 sample_range(uint p) { return uvec2(entries[paths[p].first_entry], entries[entry_end(p)]); }
+
+// common/strokes/strokes.cpp clip_to_window with kMargin.
+bool clip_to_window(vec2 a, vec2 b, out float t0, out float t1) {
+  vec2 d = b - a, lo = vec2(-kMargin), hi = vec2(width + kMargin, height + kMargin);
+  t0 = 0.0, t1 = 1.0;
+  for (int c = 0; c < 2; ++c) {
+    if (d[c] == 0.0) {
+      if (a[c] < lo[c] || a[c] > hi[c]) return false;
+      continue;
+    }
+    float u = (lo[c] - a[c]) / d[c], v = (hi[c] - a[c]) / d[c];
+    t0 = max(t0, min(u, v)), t1 = min(t1, max(u, v));
+  }
+  return t0 <= t1;
+}
+
+// Segment k's first-round samples: where it enters the margin, the multiples of the step
+// from there up to where it leaves (one at the segment's end belongs to the next), and that.
+struct Stretch {
+  float u, v;  // in arc length
+  uint first_multiple, multiples;
+  bool enters, leaves;
+};
+
+bool stretch_of(Path p, uint k, out Stretch st) {
+  Point a = point(p, k), b = point(p, k + 1u);
+  float length = distance(a.window, b.window), t0, t1;
+  if (!clip_to_window(a.window, b.window, t0, t1)) return false;
+  st.u = a.s + t0 * length, st.v = a.s + t1 * length;
+  st.enters = t0 > 0.0, st.leaves = t1 < 1.0;
+  float lo = st.enters ? floor(st.u / step_px) + 1.0 : ceil(st.u / step_px);
+  float hi = ceil(min(st.v, p.length_px) / step_px) - 1.0;  // the last multiple below v and the length
+  st.first_multiple = uint(max(lo, 0.0));
+  st.multiples = hi >= lo ? uint(hi - lo) + 1u : 0u;
+  return true;
+}
+
+uint count_of(Stretch st) { return st.multiples + (st.enters ? 1u : 0u) + (st.leaves ? 1u : 0u); }
+
+// The sample of path p at arc length s on its segment k, t along it.
+Sample sample_on(Path p, uint k, float t, float s) {
+  Point a = point(p, k), b = point(p, k + 1u);
+  Sample v;
+  v.window = mix(a.window, b.window, t);
+  v.kind = p.kind & 15u;
+  v.key = p.key;
+  v.faces[0] = a.faces.x, v.faces[1] = a.faces.y;
+  if (v.kind == 2u) v.faces[0] = t < 0.5 ? a.faces.x : a.faces.y, v.faces[1] = 0u;  // the nearer end's face
+  v.byte_value = 0u;
+  if (v.kind == 1u && p.length_px > 0.0) {
+    float wrapped = is_closed(p) ? mod(s, p.length_px) : s;
+    v.byte_value = uint(clamp(floor(255.0 * wrapped / p.length_px), 0.0, 255.0));
+  }
+  v.byte_window = p.byte_window;
+  return v;
+}
+
+// Where along segment k arc length s lies.
+float along(Path p, uint k, float s) {
+  float s0 = point(p, k).s, s1 = k + 1u < p.points ? point(p, k + 1u).s : p.length_px;
+  return s1 > s0 ? clamp((s - s0) / (s1 - s0), 0.0, 1.0) : 0.0;
+}
+
+// common/strokes/visibility.cpp point_at: the segment holding arc length s (a closed path wraps).
+bool visible_at(Path p, float s) {
+  if (is_closed(p) && p.length_px > 0.0) s = mod(s, p.length_px);
+  uint lo = 0u, hi = p.points;
+  while (hi - lo > 1u) {
+    uint mid = (lo + hi) / 2u;
+    if (point(p, mid).s <= s) lo = mid; else hi = mid;
+  }
+  uint k = is_closed(p) ? lo : min(lo, p.points - 2u);
+  return sample_visible(sample_on(p, k, along(p, k, s), s));
+}
+
+void put(uint at, uint path, Path p, uint k, float s) {
+  tested[at] = Tested(s, sample_visible(sample_on(p, k, along(p, k, s), s)) ? 1u : 0u, path, 0.0);
+}
+
+void main() {
+  uint i = first + gl_GlobalInvocationID.x;
+#if defined(STEP_COUNT)
+  if (i >= entry_count) return;
+  uint path = path_of_entry(i), k = i - paths[path].first_entry;
+  Stretch st;
+  uint n = k < segments(paths[path]) && stretch_of(paths[path], k, st) ? count_of(st) : 0u;
+  entries[i] = n;
+  if (n > 0u) atomicOr(paths[path].sampled, 1u);
+#elif defined(STEP_ENDS)
+  if (i >= path_count) return;
+  Path p = paths[i];
+  entries[entry_end(i) - 1u] = (is_closed(p) ? 0u : 1u) + (p.sampled == 0u ? 1u : 0u);
+#elif defined(STEP_SAMPLES)
+  if (i >= entry_count) return;
+  uint path = path_of_entry(i), k = i - paths[path].first_entry, at = entries[i];
+  Path p = paths[path];
+  if (k == segments(p)) {  // the end entry
+    if (p.sampled == 0u) put(at++, path, p, 0u, 0.0);
+    if (!is_closed(p)) put(at, path, p, p.points - 2u, p.length_px);
+    return;
+  }
+  Stretch st;
+  if (!stretch_of(p, k, st)) return;
+  if (st.enters) put(at++, path, p, k, st.u);
+  for (uint m = 0u; m < st.multiples; ++m) put(at++, path, p, k, float(st.first_multiple + m) * step_px);
+  if (st.leaves) put(at, path, p, k, st.v);
+#elif defined(STEP_CHANGES)  // Kalnins et al. 2002, §4.1: bisected until located within 1 px
+  if (i >= sample_count) return;
+  Tested a = tested[i];
+  Path p = paths[a.path];
+  uvec2 range = sample_range(a.path);
+  uint next = i + 1u < range.y ? i + 1u : (is_closed(p) && range.y - range.x > 1u ? range.x : ~0u);
+  bool changes = next != ~0u && (tested[next].flags & 1u) != (a.flags & 1u);
+  change_marks[i] = changes ? 1u : 0u;
+  if (!changes) return;
+  float s0 = a.s, s1 = tested[next].s + (next < i ? p.length_px : 0.0);
+  bool v0 = (a.flags & 1u) != 0u;
+  while (s1 - s0 > kLocatedPx) {
+    float mid = (s0 + s1) / 2.0;
+    if (visible_at(p, mid) == v0) s0 = mid; else s1 = mid;
+  }
+  tested[i].flags = a.flags | 2u | (v0 ? 0u : 4u);
+  tested[i].change = (s0 + s1) / 2.0;
+#elif defined(STEP_MARKS)
+  if (i >= sample_count) return;
+  Tested a = tested[i];
+  if ((a.flags & 2u) != 0u) changes[change_marks[i]] = vec2(a.change, (a.flags & 4u) != 0u ? 1.0 : 0.0);
+  uvec2 range = sample_range(a.path);
+  bool unchanged = change_marks[range.x] == change_marks[range.y];
+  bool head = i == range.x && (a.flags & 1u) != 0u && (!is_closed(paths[a.path]) || unchanged);
+  run_marks[2u * i] = head ? 1u : 0u;
+  run_marks[2u * i + 1u] = (a.flags & 4u) != 0u ? 1u : 0u;
+#elif defined(STEP_RUNS)  // one invocation per slot (2 per sample)
+  if (i >= 2u * sample_count || run_marks[i] == run_marks[i + 1u]) return;
+  uint at = i / 2u, path = tested[at].path;
+  Path p = paths[path];
+  uvec2 range = sample_range(path);
+  uint c_first = change_marks[range.x], c_end = change_marks[range.y];
+  Run r = Run(path, 0u, 0.0, p.length_px);
+  if (i % 2u == 0u && is_closed(p)) {
+    r.flags = 1u;  // visible all around
+  } else if (i % 2u == 0u) {  // an open path visible from its start
+    if (c_first < c_end) r.s1 = changes[c_first].x, r.flags = 4u;
+  } else {
+    uint c = change_marks[at];
+    r.s0 = changes[c].x, r.flags = 2u;
+    if (c + 1u < c_end) r.s1 = changes[c + 1u].x, r.flags |= 4u;
+    else if (is_closed(p)) r.s1 = changes[c_first].x + p.length_px, r.flags |= 4u;
+  }
+  runs[run_marks[i]] = r;
+#endif
+}
+#endif

@@ -2,6 +2,8 @@
 // both backends, fed the same inputs; visibility against what is analytically hidden.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "common/mesh/procedural.hpp"
@@ -20,7 +22,9 @@ const std::vector<std::string> kStrokeStages = {"id_image", "visibility", "strok
 
 void expect_stroke_parity(const Scene& scene, const std::string& label) {
   auto results = run_parity(scene, kStrokeStages);
-  ASSERT_EQ(testing::names_of(results), (std::vector<std::string>{"id_image.ids", "visibility.flags", "stroke.color"}));
+  ASSERT_EQ(testing::names_of(results),
+            (std::vector<std::string>{"id_image.ids", "visibility.flags", "visibility.run_paths", "visibility.run_ends",
+                                      "stroke.color"}));
   for (const StageParity& r : results) {
     std::printf("[strokes %s] %s  [%s]\n", label.c_str(), format_diff(r.name, r.diff).c_str(), r.note.c_str());
     EXPECT_TRUE(r.pass) << label << " " << r.name << ": " << r.note;
@@ -64,6 +68,23 @@ TEST_F(StrokeParityNear, SketchyFacesCutByTheNearPlane) {
   std::printf("torus seen from 0.25 of its tube: %zu faces cut by the near plane\n", cut);
   ASSERT_GT(cut, 20u);
   expect_stroke_parity(s, "sketchy, near plane");
+}
+
+// Lines that run out of the window: the first round's edge samples where a path leaves and
+// enters the 4 px margin, closed loops cut by it, and whole paths off it (one sample each).
+TEST_F(StrokeParityNear, LinesLeavingTheWindow) {
+  Scene s = testing::one_stroke_object(make_procedural("torus"), glm::vec3(0.3f, 0.9f, 1.0f));
+  WindowLines lines = window_lines(s, s.params.get<StrokesParams>());
+  auto outside = [&](glm::dvec2 w) { return w.x < -4 || w.y < -4 || w.x > s.width + 4 || w.y > s.height + 4; };
+  size_t leaving = 0, off = 0;
+  for (const WindowPath& p : lines.paths) {
+    size_t out = size_t(std::count_if(p.window.begin(), p.window.end(), outside));
+    leaving += out > 0 && out < p.window.size(), off += out == p.window.size();
+  }
+  std::printf("%zu paths, %zu leaving the window, %zu off it\n", lines.paths.size(), leaving, off);
+  ASSERT_GE(leaving, 1u);
+  ASSERT_GE(off, 1u);
+  expect_stroke_parity(s, "leaving the window");
 }
 
 class StrokeModelParity : public testing::GlTest, public ::testing::WithParamInterface<std::string> {};

@@ -1,0 +1,37 @@
+// Exclusive prefix sums on the GPU (gpu/gl/scan.hpp) against std::exclusive_scan, across the
+// sizes where its steps change: one partial tile, whole tiles, and more tiles than the
+// one-workgroup step has invocations (each then sums a run of them).
+#include <gtest/gtest.h>
+
+#include <numeric>
+#include <random>
+#include <vector>
+
+#include "gpu/gl/scan.hpp"
+#include "tests/support/test_scenes.hpp"
+
+namespace plumbago::gpu {
+namespace {
+
+class Scan : public testing::GlTest {};
+
+TEST_F(Scan, GivesTheSumsBeforeEachValueAndTheTotalAfterThem) {
+  ExclusiveScan scan;
+  std::mt19937 random(7);
+  for (size_t n : {size_t(1), size_t(5), size_t(2048), size_t(2049), size_t(300'000), size_t(1'100'000)}) {
+    SCOPED_TRACE(n);
+    std::vector<uint32_t> values(n + 1, 0);
+    for (size_t k = 0; k < n; ++k) values[k] = random() % 4;  // zeros and runs, as marks and counts are
+    std::vector<uint32_t> expected(n + 1);
+    std::exclusive_scan(values.begin(), values.end(), expected.begin(), 0u);
+    Buffer buffer = make_buffer(values.data(), values.size() * sizeof(uint32_t));
+    scan(buffer, n + 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<uint32_t> got(n + 1);
+    read_buffer(buffer, got.data(), got.size() * sizeof(uint32_t));
+    EXPECT_EQ(got, expected);
+  }
+}
+
+}  // namespace
+}  // namespace plumbago::gpu
