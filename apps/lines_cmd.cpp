@@ -89,10 +89,11 @@ std::string svg(const Scene& scene, const WindowLines& lines, const Visibility& 
                     "\" height=\"" + std::to_string(scene.height) + "\" viewBox=\"0 0 " + std::to_string(scene.width) +
                     " " + std::to_string(scene.height) + "\">\n";
   RunStyles run_styles(scene.strokes, scene.seed, lines.decal_styles);
+  std::vector<uint32_t> ordinals = run_ordinals(v.runs);
   for (size_t i = 0; i < v.runs.size(); ++i) {
     const VisibleRun& run = v.runs[i];
     const WindowPath& p = lines.paths[run.path];
-    StrokeStyle style = run_styles.of(p, run, i);
+    StrokeStyle style = run_styles.of(p, run, ordinals[i]);
     std::string d =
         outline(base_stroke({run.window, run.closed, run.occluded_start, run.occluded_end}, style), scene.height);
     if (d.empty()) continue;

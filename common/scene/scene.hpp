@@ -40,8 +40,8 @@ struct StrokeStyles {
   StrokeStyle crease = default_stroke_style(), border = default_stroke_style(), silhouette = default_stroke_style();
   // The offset examples drawn in the scene's stroke files (roles "crease" and "silhouette",
   // common/strokes/stroke_file.hpp drawn_offsets), which replace the styles' own: creases and
-  // borders take the crease examples. Several are rubber-stamped in turn (run after run)
-  // or make one Markov chain (Kalnins et al. 2002, §4.3, §5, App. A).
+  // borders take the crease examples. Several are rubber-stamped in turn (run after run
+  // along a path) or make one Markov chain (Kalnins et al. 2002, §4.3, §5, App. A).
   std::vector<OffsetExample> crease_examples, silhouette_examples;
 };
 

@@ -276,7 +276,7 @@ OffsetSynthesizer::OffsetSynthesizer(std::span<const OffsetExample> examples, co
   for (size_t i = 0; i < n; ++i) transition_row(*costs, future, options_.alpha, rho_, i, rows_[i].to, rows_[i].cdf);
 }
 
-size_t OffsetSynthesizer::next_state(size_t i, Rng& rng) const {
+size_t OffsetSynthesizer::next_state(size_t i, CounterStream& rng) const {
   if (!markov_) return successor_[i];
   const Row& row = rows_[i];
   double u = rng.uniform() * row.cdf.back();
@@ -284,7 +284,7 @@ size_t OffsetSynthesizer::next_state(size_t i, Rng& rng) const {
   return row.to[std::min(k, row.to.size() - 1)];
 }
 
-std::vector<size_t> OffsetSynthesizer::walk(size_t n, Rng& rng) const {
+std::vector<size_t> OffsetSynthesizer::walk(size_t n, CounterStream& rng) const {
   std::vector<size_t> out;
   if (n == 0 || values_.empty()) return out;
   out.reserve(n);
@@ -296,7 +296,7 @@ std::vector<size_t> OffsetSynthesizer::walk(size_t n, Rng& rng) const {
 
 std::vector<double> OffsetSynthesizer::synthesize(double length_px, uint32_t seed, std::string_view name) const {
   size_t n = offset_count(length_px, options_.step_px);
-  Rng rng(seed, "offset-synthesis/" + std::string(name));
+  CounterStream rng(named_key(seed, "offset-synthesis/" + std::string(name)));
   std::vector<size_t> states = walk(n, rng);
   std::vector<double> out(n, 0.0);
   for (size_t k = 0; k < states.size(); ++k) out[k] = values_[states[k]];
@@ -304,10 +304,13 @@ std::vector<double> OffsetSynthesizer::synthesize(double length_px, uint32_t see
 }
 
 OffsetExample OffsetSynthesizer::synthesize_example(double length_px, uint32_t seed, std::string_view name) const {
+  return synthesize_example(length_px, CounterStream(named_key(seed, "offset-synthesis/" + std::string(name))));
+}
+
+OffsetExample OffsetSynthesizer::synthesize_example(double length_px, CounterStream rng) const {
   const double step = options_.step_px;
   double length = std::max(length_px > 0 ? length_px : 0.0, 1.0);  // NaN: 1; infinity: refused below
   size_t n = offset_count(length, step);
-  Rng rng(seed, "offset-synthesis/" + std::string(name));
   std::vector<size_t> states = walk(n, rng);
   auto value = [&](size_t k) { return states.empty() ? 0.0 : values_[states[k]]; };
   auto pressure = [&](size_t k) { return states.empty() ? 1.0 : pressures_[states[k]]; };

@@ -69,8 +69,10 @@
 //     repeating).
 //   - Row weights exp(-(D''_ij - min_j D''_ij) / rho) under 1e-12 are dropped (the
 //     probability each carried is below 1e-12 x the row's count).
-//   - Seeding: Rng(seed, "offset-synthesis/" + name), so that a stroke's name used to seed
-//     something else does not give the same numbers.
+//   - Seeding: a counter-based stream (common/util/random.hpp CounterStream), keyed by the
+//     seed and "offset-synthesis/" + name, so that a stroke's name used to seed something
+//     else does not give the same numbers, or given its key (a stroke run's: integers only,
+//     common/strokes/stroke.hpp RunStyles).
 //   - Size: at most 2048 states (8192 px of examples at 4 px); more throws
 //     std::invalid_argument (the model holds a states x states matrix while it is built).
 #pragma once
@@ -113,11 +115,11 @@ class OffsetSynthesizer {
   // n states of the chain (indices into values()), from a random example's start: one
   // rng.uniform() for the start and one per transition, so a longer walk begins like a
   // shorter one. Empty when there is no state.
-  std::vector<size_t> walk(size_t n, Rng& rng) const;
+  std::vector<size_t> walk(size_t n, CounterStream& rng) const;
 
   // The displacements (px), one every step_px: ceil(length_px / step_px) + 1 of them
   // (the first at 0, the last at or past length_px); a length not positive (or NaN) gives
-  // one. Seeded by Rng(seed, "offset-synthesis/" + name). Throws std::invalid_argument
+  // one. Seeded by the seed and "offset-synthesis/" + name. Throws std::invalid_argument
   // for more than 1e7 offsets (an infinite length included).
   std::vector<double> synthesize(double length_px, uint32_t seed, std::string_view name) const;
 
@@ -128,6 +130,8 @@ class OffsetSynthesizer {
   // interpolated between the last two synthesized (the offsets of
   // synthesize(max(length_px, 1), seed, name)); pressures from the states; no breaks.
   OffsetExample synthesize_example(double length_px, uint32_t seed, std::string_view name) const;
+  // The same from a given stream.
+  OffsetExample synthesize_example(double length_px, CounterStream stream) const;
 
   // Inspection, for tests.
   size_t state_count() const { return values_.size(); }
@@ -146,7 +150,7 @@ class OffsetSynthesizer {
     std::vector<uint32_t> to;  // allowed targets, increasing
     std::vector<double> cdf;   // cumulative weights, last = total
   };
-  size_t next_state(size_t i, Rng& rng) const;
+  size_t next_state(size_t i, CounterStream& rng) const;
 
   OffsetSynthesisOptions options_;
   std::vector<double> values_, pressures_;

@@ -80,7 +80,13 @@ void check_stroke_memory(const WindowLines& lines, const Visibility& visibility,
 
 }  // namespace
 
-StrokeStyle RunStyles::of(const WindowPath& path, const VisibleRun& run, size_t index) {
+namespace {
+
+enum RunStream : uint32_t { kStampStart = 1, kOffsetWalk = 2 };  // what a run's stream draws
+
+}  // namespace
+
+StrokeStyle RunStyles::of(const WindowPath& path, const VisibleRun& run, uint32_t ordinal) {
   if (path.kind == LineKind::Decal) return decal_style(decals_.at(path.decal), path, run);
   if (path.kind == LineKind::Hatching) {  // Kalnins et al. 2002, §6: faded and thickened by its level of detail
     StrokeStyle style = decal_style(decals_.at(path.decal), path, run);
@@ -91,14 +97,24 @@ StrokeStyle RunStyles::of(const WindowPath& path, const VisibleRun& run, size_t 
   StrokeStyle style = style_of(path.kind, styles_);
   const std::vector<OffsetExample>& drawn =
       path.kind == LineKind::Silhouette ? styles_.silhouette_examples : styles_.crease_examples;
-  if (!drawn.empty()) style.offsets = drawn[index % drawn.size()];  // the stamp: each in turn
+  if (!drawn.empty()) {  // the stamp: in turn along the path, from the one the path's key picks
+    double start = CounterStream(stream_key({seed_, path.key, kStampStart})).uniform();
+    style.offsets = drawn[(size_t(start * double(drawn.size())) + ordinal) % drawn.size()];
+  }
   if (style.synthesis != OffsetSynthesis::Markov || !style.offsets) return style;
   auto it = chains_.find(path.kind);
   if (it == chains_.end())
     it = chains_.emplace(path.kind, drawn.empty() ? OffsetSynthesizer(*style.offsets) : OffsetSynthesizer(drawn)).first;
-  std::string name = "stroke run " + std::to_string(path.key) + "/" + std::to_string(index);
-  style.offsets = it->second.synthesize_example(run.s1 - run.s0, seed_, name);
+  CounterStream walk(stream_key({seed_, path.key, ordinal, kOffsetWalk}));
+  style.offsets = it->second.synthesize_example(run.s1 - run.s0, walk);
   return style;
+}
+
+std::vector<uint32_t> run_ordinals(const std::vector<VisibleRun>& runs) {
+  std::map<uint32_t, uint32_t> seen;  // per path
+  std::vector<uint32_t> out;
+  for (const VisibleRun& run : runs) out.push_back(seen[run.path]++);
+  return out;
 }
 
 std::vector<RunStroke> run_strokes(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
@@ -106,9 +122,10 @@ std::vector<RunStroke> run_strokes(const WindowLines& lines, const Visibility& v
   check_stroke_memory(lines, visibility, styles);
   std::vector<RunStroke> out;
   RunStyles run_styles(styles, seed, lines.decal_styles);
+  std::vector<uint32_t> ordinals = run_ordinals(visibility.runs);
   for (size_t i = 0; i < visibility.runs.size(); ++i) {
     const VisibleRun& run = visibility.runs[i];
-    StrokeStyle style = run_styles.of(lines.paths[run.path], run, i);
+    StrokeStyle style = run_styles.of(lines.paths[run.path], run, ordinals[i]);
     StrokeRun stroke{run.window, run.closed, run.occluded_start, run.occluded_end};
     out.push_back({style, base_stroke_samples(stroke, style)});
   }

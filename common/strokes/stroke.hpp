@@ -35,17 +35,21 @@ struct StrokeVertex {
 };
 static_assert(sizeof(StrokeVertex) == 9 * sizeof(float), "shaders/strokes/stroke.vert reads 9 packed floats");
 
-// The style a run is drawn with: its line kind's (its offsets example the scene's drawn
-// examples where it has some, StrokeStyles), with the offsets example synthesized
-// over the run's length (Kalnins et al. 2002, §4.3, §5, App. A) where the style asks for it, seeded by the scene seed
-// and the run's name (its path key and its index among the frame's runs); a decal's
-// (Kalnins et al. 2002, §3, §4.5), with its drawn pressure over the run (common/strokes/decal.hpp 3.); a hatch's the
-// same, its alpha and width times its level-of-detail factors (Kalnins et al. 2002, §6).
+// The style a run is drawn with: its line kind's, with the offsets example synthesized over
+// the run's length (Kalnins et al. 2002, §4.3, §5, App. A) where the style asks for it; where the scene
+// has drawn examples (StrokeStyles), those: rubber-stamped in turn along the path from one
+// its key picks, or synthesized from all of them. A decal's (Kalnins et al. 2002, §3, §4.5), with its drawn
+// pressure over the run (common/strokes/decal.hpp 3.); a hatch's the same, its alpha and width times its
+// level-of-detail factors (Kalnins et al. 2002, §6).
+// What is random is drawn from counter-based streams keyed by the scene seed, the path's
+// key and the run's ordinal along its path (common/util/random.hpp): a run keeps its
+// style when other paths come or go, and each run's numbers can be drawn on their own.
 class RunStyles {
  public:
   RunStyles(const StrokeStyles& styles, uint32_t seed, const std::vector<StrokeStyle>& decals)
       : styles_(styles), seed_(seed), decals_(decals) {}
-  StrokeStyle of(const WindowPath& path, const VisibleRun& run, size_t index);
+  // `ordinal`: the run's place among its path's runs (run_ordinals).
+  StrokeStyle of(const WindowPath& path, const VisibleRun& run, uint32_t ordinal);
 
  private:
   const StrokeStyles& styles_;
@@ -53,6 +57,9 @@ class RunStyles {
   const std::vector<StrokeStyle>& decals_;
   std::map<LineKind, OffsetSynthesizer> chains_;  // one chain per kind's example, made on first use
 };
+
+// Each run's place among its path's runs, in visibility.runs' order.
+std::vector<uint32_t> run_ordinals(const std::vector<VisibleRun>& runs);
 
 // One visible run as it is drawn: its style (RunStyles::of) and its base stroke's samples.
 struct RunStroke {

@@ -113,7 +113,7 @@ TEST(StrokeFile, ScenesListThemRelativeToTheirFolder) {
 
 // A crease example drawn in a stroke file becomes the creases' offsets (Kalnins et al. 2002, §3, §4.3, §5):
 // measured from its chord, to the left of its direction of travel, its pressure kept; the
-// rubber stamp takes the drawn examples in turn, the Markov chain draws from them.
+// rubber stamp takes the drawn examples in turn along a path, the Markov chain draws from them.
 TEST(StrokeFile, DrawnExamplesStyleTheCreases) {
   testing::TempDir dir;
   std::string wave;
@@ -139,8 +139,9 @@ TEST(StrokeFile, DrawnExamplesStyleTheCreases) {
   WindowPath path{LineKind::Crease, 0, false, true, 7, {}, {}, {}, {}, {}, {}, 0, {}, 0};
   VisibleRun run{0, 0, 80, false, false, false, {}};
   RunStyles stamp(s.strokes, 1, {});
-  EXPECT_EQ(stamp.of(path, run, 0).offsets->offsets.size(), 41u);  // in turn, run after run
-  EXPECT_EQ(stamp.of(path, run, 1).offsets->offsets.size(), 2u);
+  size_t first = stamp.of(path, run, 0).offsets->offsets.size();  // in turn, run after run along the path
+  EXPECT_EQ(first + stamp.of(path, run, 1).offsets->offsets.size(), 43u);
+  EXPECT_EQ(stamp.of(path, run, 2).offsets->offsets.size(), first);
   s.strokes.crease.synthesis = OffsetSynthesis::Markov;
   RunStyles markov(s.strokes, 1, {});
   StrokeStyle synthesized = markov.of(path, run, 0);
