@@ -199,6 +199,10 @@ bool visible_at(Path p, float s) {
   return sample_visible(sample_on(p, k, along(p, k, s), s));
 }
 
+// An open path's end is sampled after its segments' samples; a path none of whose segments
+// took one gets s = 0, and its end only where it has a length.
+bool has_end_sample(Path p) { return !is_closed(p) && (p.sampled != 0u || p.length_px > 0.0); }
+
 void put(uint at, uint path, Path p, uint k, float s) {
   tested[at] = Tested(s, sample_visible(sample_on(p, k, along(p, k, s), s)) ? 1u : 0u, path, 0.0);
 }
@@ -215,14 +219,14 @@ void main() {
 #elif defined(STEP_ENDS)
   if (i >= path_count) return;
   Path p = paths[i];
-  entries[entry_end(i) - 1u] = (is_closed(p) ? 0u : 1u) + (p.sampled == 0u ? 1u : 0u);
+  entries[entry_end(i) - 1u] = (has_end_sample(p) ? 1u : 0u) + (p.sampled == 0u ? 1u : 0u);
 #elif defined(STEP_SAMPLES)
   if (i >= entry_count) return;
   uint path = path_of_entry(i), k = i - paths[path].first_entry, at = entries[i];
   Path p = paths[path];
   if (k == segments(p)) {  // the end entry
     if (p.sampled == 0u) put(at++, path, p, 0u, 0.0);
-    if (!is_closed(p)) put(at, path, p, p.points - 2u, p.length_px);
+    if (has_end_sample(p)) put(at, path, p, p.points - 2u, p.length_px);
     return;
   }
   Stretch st;

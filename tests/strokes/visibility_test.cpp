@@ -1,14 +1,17 @@
 // The Kalnins et al. 2002, §4.6 test of one sample against an ID image, by hand (every kind of sample) and
 // on both backends (the C++ function and the compute shader) over random images and
-// samples.
+// samples; and the GPU pass's runs against the reference's on paths made to be hard.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <tuple>
 
 #include "common/strokes/id_image.hpp"
 #include "common/strokes/visibility.hpp"
 #include "common/util/random.hpp"
+#include "gpu/core/stage.hpp"
 #include "gpu/strokes/visibility.hpp"
 #include "tests/support/test_scenes.hpp"
 
@@ -92,6 +95,83 @@ TEST_F(VisibilityBackends, TheComputeShaderGivesTheSameFlags) {
   }
   EXPECT_GT(visible, 500u);  // both outcomes are exercised
   EXPECT_LT(visible, 4500u);
+}
+
+// A path through window points; creases and borders face face 5 on one side, decals and
+// hatches lie on face 5.
+WindowPath path_through(LineKind kind, bool closed, std::vector<glm::dvec2> points) {
+  WindowPath p{kind, 0, closed, true, 100, {}, {}, {}, {}, {}, {}, 0, {}, 0};
+  p.window = std::move(points);
+  size_t n = p.window.size();
+  for (size_t k = 0; k < n; ++k) {
+    p.arc_px.push_back(p.length_px);
+    if (k + 1 < n || closed) p.length_px += glm::distance(p.window[k], p.window[(k + 1) % n]);
+    p.front_faces.push_back(kind == LineKind::Crease ? glm::uvec2(kFace, 0) : glm::uvec2(kFace));
+  }
+  p.depth.assign(n, 1.0);
+  p.world.assign(n, glm::dvec3(0.0));
+  return p;
+}
+
+// 64 x 48 with face 5 left of x = 32: lines crossing that edge, around the seam of a closed
+// path either way, out of the window and back, wholly off it, of no length, of one point.
+WindowLines hard_paths() {
+  WindowLines lines;
+  lines.width = 64, lines.height = 48;
+  auto add = [&](LineKind kind, bool closed, std::vector<glm::dvec2> points) {
+    lines.paths.push_back(path_through(kind, closed, std::move(points)));
+  };
+  add(LineKind::Crease, false, {{4, 10}, {60, 10}});
+  add(LineKind::Crease, true, {{20, 20}, {44, 20}, {44, 40}, {20, 40}});  // starts visible
+  add(LineKind::Border, true, {{44, 20}, {44, 40}, {20, 40}, {20, 20}});  // starts hidden
+  add(LineKind::Crease, true, {{4, 4}, {12, 4}, {12, 12}});               // visible all around
+  add(LineKind::Crease, false, {{10, 30}, {200, 30}, {200, 44}, {6, 44}});
+  add(LineKind::Crease, false, {{-50, -50}, {-20, -60}});
+  add(LineKind::Crease, false, {{10, 44}, {10, 44}});
+  add(LineKind::Crease, false, {{12, 46}});
+  add(LineKind::Decal, false, {{2.5, 2.5}, {40.5, 30.5}, {2.5, 46.5}});
+  add(LineKind::Hatching, false, {{30.25, 1.5}, {35.75, 46.5}});
+  return lines;
+}
+
+TEST_F(VisibilityBackends, TheGpuPassListsTheReferenceRunsOnHardPaths) {
+  ImageU32 keys(64, 48, 1);
+  for (int y = 0; y < 48; ++y)
+    for (int x = 0; x < 32; ++x) keys.at(x, y) = kFace;
+  WindowLines lines = hard_paths();
+  Scene scene = testing::builtin_at("torus", 64, 48);
+  const auto p = scene.params.get<StrokesParams>();
+  auto test = [&](const std::vector<VisibilitySample>& batch) {
+    std::vector<uint8_t> flags;
+    for (const VisibilitySample& s : batch) flags.push_back(sample_visible(keys, s));
+    return flags;
+  };
+  Visibility want = visible_runs(lines, p, test);
+  gpu::GpuFrame f(scene, Preprocessed{}, {"visibility"});
+  f.dump = true;
+  f.put(kWindowLines, lines);
+  f.put(kIds, gpu::upload_texture(key_channels(keys), GL_RG32UI));
+  const gpu::GpuPassDef* def = nullptr;
+  for (const gpu::GpuPassDef& d : gpu::registered_passes())
+    if (d.stages == std::vector<std::string>{"visibility"}) def = &d;
+  ASSERT_NE(def, nullptr);
+  std::unique_ptr<gpu::GpuPass> pass = gpu::make_checked(*def, f);
+  gpu::run_checked(*def, *pass, f);
+  const Visibility& got = f.get(kVisibleRuns);
+  EXPECT_EQ(got.samples, want.samples);
+  EXPECT_EQ(got.flags, want.flags);
+  ASSERT_EQ(got.runs.size(), want.runs.size());
+  std::printf("%zu paths: %zu samples, %zu runs\n", lines.paths.size(), want.samples, want.runs.size());
+  for (size_t k = 0; k < want.runs.size(); ++k) {
+    const VisibleRun &g = got.runs[k], &w = want.runs[k];
+    EXPECT_EQ(g.path, w.path) << k;
+    EXPECT_EQ(std::tuple(g.closed, g.occluded_start, g.occluded_end),
+              std::tuple(w.closed, w.occluded_start, w.occluded_end))
+        << k;
+    EXPECT_NEAR(g.s0, w.s0, 1e-3) << k;  // the same tests at float positions
+    EXPECT_NEAR(g.s1, w.s1, 1e-3) << k;
+  }
+  EXPECT_GE(want.runs.size(), 9u);
 }
 
 }  // namespace
