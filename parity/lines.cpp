@@ -1,5 +1,8 @@
 #include "parity/lines.hpp"
 
+#include <stdexcept>
+#include <string>
+
 #include "common/strokes/decal.hpp"
 #include "common/strokes/id_image.hpp"
 #include "common/strokes/silhouette_paths.hpp"
@@ -44,6 +47,21 @@ std::vector<ChainPath> frame_silhouettes(const Scene& scene, const LineMeshes& m
   return chain_paths(scene, meshes, table(kSilhouettePaths), table(kSilhouetteCrossings), normalized);
 }
 
+// The runs a GPU frame listed (its visibility.run_paths and run_ends tables, whose rows end
+// at the first path 0), along `lines`, the paths that frame tested.
+Visibility frame_visibility(const Frame& frame, const WindowLines& lines) {
+  const Image &paths = frame.buffers.at(kRunPaths.name), &ends = frame.buffers.at(kRunEnds.name);
+  Visibility v;
+  for (size_t k = 0; k < paths.pixels() && paths.data[2 * k] > 0; ++k) {
+    auto path = uint32_t(paths.data[2 * k]) - 1, flags = uint32_t(paths.data[2 * k + 1]);
+    if (path >= lines.paths.size())
+      throw std::logic_error("the GPU frame's run " + std::to_string(k) + " is on path " + std::to_string(path) +
+                             " of " + std::to_string(lines.paths.size()));
+    v.runs.push_back(run_from_row(lines.paths[path], path, ends.data[2 * k], ends.data[2 * k + 1], flags));
+  }
+  return v;
+}
+
 }  // namespace
 
 SceneLines scene_lines(const Scene& scene, const std::string& backend) {
@@ -58,7 +76,11 @@ SceneLines scene_lines(const Scene& scene, const std::string& backend) {
   out.lines = window_lines(out.scene, p, LineObjects::Strokes, meshes.get(), &decals,
                            backend != "reference" ? &gpu_silhouettes : nullptr);
   out.keys = keys_from_channels(out.frame.buffers.at(kIds.name));
-  const ImageU32& keys = out.keys;
+  if (backend != "reference") {
+    out.visibility = frame_visibility(out.frame, out.lines);
+    return out;
+  }
+  const ImageU32& keys = out.keys;  // the reference's runs in double, as its frame made them
   auto test = [&keys](const std::vector<VisibilitySample>& batch) {
     std::vector<uint8_t> flags;
     for (const VisibilitySample& s : batch) flags.push_back(sample_visible(keys, s));

@@ -88,6 +88,10 @@ Visibility visible_runs(const WindowLines& lines, const StrokesParams& p, const 
 VisibleRun run_along(const WindowPath& path, uint32_t i, double s0, double s1, bool closed, bool occluded_start,
                      bool occluded_end);
 
+// A run as the GPU lists it, ends in float and flags as in run_tables: an end that is not
+// occluded is its path's own end (0 or the length), taken exactly.
+VisibleRun run_from_row(const WindowPath& path, uint32_t i, double s0, double s1, uint32_t flags);
+
 // The flags as the stage's output image: one texel per sample, row after row of 1024.
 Image flags_image(const std::vector<uint8_t>& flags);
 // The runs as two tables: (path + 1, closed + 2 occluded start + 4 occluded end) and (s0, s1).

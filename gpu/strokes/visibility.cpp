@@ -167,8 +167,7 @@ class VisibilityPass : public GpuPass {
     read_buffer(runs, rows.data(), rows.size() * sizeof(RunRow));
     Visibility v;
     v.samples = samples;
-    for (const RunRow& r : rows)
-      v.runs.push_back(run_along(lines.paths[r.path], r.path, r.s0, r.s1, r.flags & 1u, r.flags & 2u, r.flags & 4u));
+    for (const RunRow& r : rows) v.runs.push_back(run_from_row(lines.paths[r.path], r.path, r.s0, r.s1, r.flags));
     if (f.dump) {
       std::vector<TestedRow> t(samples);
       read_buffer(tested, t.data(), t.size() * sizeof(TestedRow));

@@ -10,6 +10,7 @@
 #include "common/strokes/id_image.hpp"
 #include "common/strokes/visibility.hpp"
 #include "gpu/core/pipeline.hpp"
+#include "parity/lines.hpp"
 #include "parity/parity.hpp"
 #include "reference/core/pipeline.hpp"
 #include "tests/support/parity_checks.hpp"
@@ -85,6 +86,31 @@ TEST_F(StrokeParityNear, LinesLeavingTheWindow) {
   ASSERT_GE(leaving, 1u);
   ASSERT_GE(off, 1u);
   expect_stroke_parity(s, "leaving the window");
+}
+
+// `plumbago lines --backend gpu` lists the runs the GPU frame found, on the paths it tested:
+// the same runs as the reference's bisection in double finds on those paths from that
+// frame's ID image, ends within float rounding.
+TEST_F(StrokeParityNear, GpuLinesAreTheRunsItsFrameListed) {
+  for (const std::string name : {"torus", "cad"}) {
+    SCOPED_TRACE(name);
+    SceneLines gpu = scene_lines(testing::builtin_at(name, 320, 240), "gpu");
+    const ImageU32& keys = gpu.keys;
+    auto test = [&](const std::vector<VisibilitySample>& batch) {
+      std::vector<uint8_t> flags;
+      for (const VisibilitySample& s : batch) flags.push_back(sample_visible(keys, s));
+      return flags;
+    };
+    Visibility cpu = visible_runs(gpu.lines, gpu.scene.params.get<StrokesParams>(), test);
+    ASSERT_EQ(gpu.visibility.runs.size(), cpu.runs.size());
+    ASSERT_GT(cpu.runs.size(), 0u);
+    for (size_t k = 0; k < cpu.runs.size(); ++k) {
+      EXPECT_EQ(gpu.visibility.runs[k].path, cpu.runs[k].path) << k;
+      EXPECT_NEAR(gpu.visibility.runs[k].s0, cpu.runs[k].s0, 1e-3) << k;
+      EXPECT_NEAR(gpu.visibility.runs[k].s1, cpu.runs[k].s1, 1e-3) << k;
+      EXPECT_EQ(gpu.visibility.runs[k].window.size(), cpu.runs[k].window.size()) << k;
+    }
+  }
 }
 
 class StrokeModelParity : public testing::GlTest, public ::testing::WithParamInterface<std::string> {};
