@@ -78,10 +78,6 @@ void check_stroke_memory(const WindowLines& lines, const Visibility& visibility,
                       samples * double(sizeof(StrokeSample) + 6 * (sizeof(RibbonVertex) + 2 * sizeof(StrokeVertex))));
 }
 
-}  // namespace
-
-namespace {
-
 enum RunStream : uint32_t { kStampStart = 1, kOffsetWalk = 2 };  // what a run's stream draws
 
 }  // namespace
