@@ -7,6 +7,7 @@
 #include "gpu/strokes/visibility.hpp"
 
 #include <cstdio>
+#include <stdexcept>
 
 #include "common/util/memory_budget.hpp"
 #include "gpu/core/stage.hpp"
@@ -67,6 +68,7 @@ struct PathTable {
   explicit PathTable(const WindowLines& lines) {
     for (const WindowPath& p : lines.paths) {
       uint32_t n = uint32_t(p.window.size());
+      if (n == 0) throw std::logic_error("visibility: a window path has no points");  // window_lines makes none
       VisibilitySample first = sample_at(p, 0);  // its kind and (silhouettes) byte window
       paths.push_back({uint32_t(points.size()), n, entries, first.kind | (p.closed ? 16u : 0u), first.key,
                        first.byte_window, float(p.length_px), 0});
