@@ -22,8 +22,8 @@
 // `sample_visible` is the one test both backends run. The reference samples, bisects and
 // makes the runs here, calling its batch test through `visible_runs`; the GPU does all of it
 // in compute shaders (shaders/strokes/visibility.comp, the formula written twice), one
-// invocation per segment, sample or change, and reads back the number of samples and
-// the runs' ends.
+// invocation per segment, sample or change, and reads back, once, the totals and the runs'
+// ends.
 #pragma once
 
 #include <cstdint>

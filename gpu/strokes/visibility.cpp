@@ -2,11 +2,15 @@
 // common/strokes/visibility.cpp: the paths go up as a table, then compute shaders
 // (shaders/strokes/visibility.comp) take the first round of samples segment by segment,
 // test them against the ID image, bisect each change to 1 px in one invocation and list the
-// runs, placing everything by prefix sums. Read back: the number of samples, then the runs'
-// ends (Kalnins et al. read the whole ID image back every frame).
+// runs, placing everything by prefix sums. The buffers hold a bound on the samples the CPU
+// takes from the paths; the steps over samples are dispatched indirectly, so the count
+// stays on the GPU. Read back at the end: the totals and the runs' ends (Kalnins et al. read
+// the whole ID image back every frame).
 #include "gpu/strokes/visibility.hpp"
 
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 #include "common/util/memory_budget.hpp"
@@ -63,24 +67,38 @@ struct RunRow {
   float s0, s1;
 };
 
+constexpr double kMarginPx = 4;  // shaders/strokes/visibility.comp kMargin
+
 // The paths as the shaders read them; the entries are each path's segments and its end.
 struct PathTable {
-  explicit PathTable(const WindowLines& lines) {
+  PathTable(const WindowLines& lines, double step) {
     for (const WindowPath& p : lines.paths) {
       uint32_t n = uint32_t(p.window.size());
       if (n == 0) throw std::logic_error("visibility: a window path has no points");  // window_lines makes none
       VisibilitySample first = sample_at(p, 0);  // its kind and (silhouettes) byte window
       paths.push_back({uint32_t(points.size()), n, entries, first.kind | (p.closed ? 16u : 0u), first.key,
                        first.byte_window, float(p.length_px), 0});
-      entries += (p.closed ? n : n - 1) + 1;
-      for (uint32_t k = 0; k < n; ++k)
+      const uint32_t segments = p.closed ? n : n - 1;
+      entries += segments + 1;
+      size_t outside = 0;
+      for (uint32_t k = 0; k < n; ++k) {
         points.push_back({glm::vec2(p.window[k]), float(p.arc_px[k]), 0,
                           k < p.front_faces.size() ? p.front_faces[k] : glm::uvec2(0), glm::uvec2(0)});
+        outside += !in_margin(p.window[k], lines);
+      }
+      // The multiples of the step along it, one more at each segment's end where float arc
+      // lengths overlap, an edge sample on each side of a point outside the margin, its end
+      // and s = 0.
+      bound += std::ceil(p.length_px / step) + 1 + segments + 4 * double(outside) + 2;
     }
+  }
+  static bool in_margin(glm::dvec2 w, const WindowLines& lines) {
+    return w.x >= -kMarginPx && w.y >= -kMarginPx && w.x <= lines.width + kMarginPx && w.y <= lines.height + kMarginPx;
   }
   std::vector<PathRow> paths;
   std::vector<PointRow> points;
   uint32_t entries = 0;
+  double bound = 0;  // at least the first round's samples
 };
 
 Buffer zeros(size_t count) {
@@ -106,6 +124,7 @@ class VisibilityPass : public GpuPass {
         ends_(step("STEP_ENDS")),
         samples_(step("STEP_SAMPLES")),
         changes_(step("STEP_CHANGES")),
+        args_(step("STEP_ARGS")),
         marks_(step("STEP_MARKS")),
         runs_(step("STEP_RUNS")) {}
 
@@ -126,60 +145,81 @@ class VisibilityPass : public GpuPass {
 
  private:
   Visibility visibility(GpuFrame& f, const WindowLines& lines) {
-    PathTable table(lines);
+    const auto p = f.params<StrokesParams>();
+    PathTable table(lines, p.vis_step_px);
+    check_memory(lines, p.vis_step_px, table.bound);
+    const auto capacity = uint32_t(table.bound);
+    const size_t n = std::max<size_t>(capacity, 1), args = size_t(table.entries) + 1;
     Buffer paths = make_buffer(table.paths.data(), table.paths.size() * sizeof(PathRow));
     Buffer points = make_buffer(table.points.data(), table.points.size() * sizeof(PointRow));
-    Buffer entries = zeros(size_t(table.entries) + 1);
-    set_uniforms(f, lines, table);
-    bind({&paths, &points, &entries});
+    Buffer entries = zeros(args + 6);  // the counts, their total, then two dispatches' groups
+    Buffer tested = make_buffer(nullptr, n * sizeof(TestedRow)), changes = make_buffer(nullptr, n * sizeof(glm::vec2));
+    Buffer change_marks = zeros(n + 1), run_marks = zeros(2 * n + 1),
+           runs = make_buffer(nullptr, 2 * n * sizeof(RunRow));
+    set_uniforms(f, lines, table, capacity);
+    const std::initializer_list<const Buffer*> all = {&paths,        &points,    &entries, &tested,
+                                                      &change_marks, &run_marks, &changes, &runs};
+    bind(all);
+    bind_textures(samples_, {{"ids", &f.get(kIds)}});
+    bind_textures(changes_, {{"ids", &f.get(kIds)}});
     dispatch_in_chunks(count_, table.entries, "first");
     barrier();
     dispatch_in_chunks(ends_, table.paths.size(), "first");
     barrier();
-    scan_(entries, size_t(table.entries) + 1);
-    const uint32_t samples = read_uint(entries, table.entries);
-    check_memory(lines, samples);
-    for (const Program* p : {&changes_, &marks_, &runs_})
-      glProgramUniform1ui(p->id(), p->uniform("sample_count"), samples);
-    Buffer tested = make_buffer(nullptr, std::max<size_t>(samples, 1) * sizeof(TestedRow));
-    Buffer change_marks = zeros(size_t(samples) + 1), run_marks = zeros(2 * size_t(samples) + 1);
-    Buffer changes = make_buffer(nullptr, std::max<size_t>(samples, 1) * sizeof(glm::vec2));
-    Buffer runs = make_buffer(nullptr, std::max<size_t>(2 * size_t(samples), 1) * sizeof(RunRow));
-    bind({&paths, &points, &entries, &tested, &change_marks, &run_marks, &changes, &runs});
-    bind_textures(samples_, {{"ids", &f.get(kIds)}});
-    bind_textures(changes_, {{"ids", &f.get(kIds)}});
+    scan_(entries, args);
+    bind(all);
     dispatch_in_chunks(samples_, table.entries, "first");
-    barrier();
-    dispatch_in_chunks(changes_, samples, "first");
-    barrier();
-    scan_(change_marks, size_t(samples) + 1);
-    bind({&paths, &points, &entries, &tested, &change_marks, &run_marks, &changes, &runs});
-    dispatch_in_chunks(marks_, samples, "first");
-    barrier();
-    scan_(run_marks, 2 * size_t(samples) + 1);
-    bind({&paths, &points, &entries, &tested, &change_marks, &run_marks, &changes, &runs});
-    dispatch_in_chunks(runs_, 2 * size_t(samples), "first");
-    return read_runs(f, lines, runs, run_marks, tested, samples);
+    glUseProgram(args_.id());
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries.id());
+    over_samples(changes_, args);
+    scan_(change_marks, n + 1);
+    bind(all);
+    over_samples(marks_, args);
+    scan_(run_marks, 2 * n + 1);
+    bind(all);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries.id());
+    over_samples(runs_, args + 3);
+    return read_runs(f, lines, {entries, args - 1}, {run_marks, 2 * n}, runs, tested, capacity);
   }
 
-  Visibility read_runs(const GpuFrame& f, const WindowLines& lines, const Buffer& runs, const Buffer& run_marks,
-                       const Buffer& tested, uint32_t samples) {
+  // A step over the samples (or their run slots), with the groups the GPU wrote at uint `at`.
+  static void over_samples(const Program& p, size_t at) {
+    glUseProgram(p.id());
+    glDispatchComputeIndirect(GLintptr(at * sizeof(uint32_t)));
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+
+  struct Total {
+    const Buffer& buffer;
+    size_t at;
+  };
+
+  // One readback after the frame's visibility work: the totals, then the runs (and, for a
+  // dump, the flags).
+  Visibility read_runs(const GpuFrame& f, const WindowLines& lines, Total samples, Total run_count, const Buffer& runs,
+                       const Buffer& tested, uint32_t capacity) {
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::vector<RunRow> rows(read_uint(run_marks, 2 * size_t(samples)));
-    read_buffer(runs, rows.data(), rows.size() * sizeof(RunRow));
     Visibility v;
-    v.samples = samples;
+    v.samples = read_uint(samples.buffer, samples.at);
+    if (v.samples > capacity)
+      throw std::logic_error("visibility: " + std::to_string(v.samples) + " samples over the bound of " +
+                             std::to_string(capacity));
+    std::vector<RunRow> rows(read_uint(run_count.buffer, run_count.at));
+    read_buffer(runs, rows.data(), rows.size() * sizeof(RunRow));
     for (const RunRow& r : rows) v.runs.push_back(run_from_row(lines.paths[r.path], r.path, r.s0, r.s1, r.flags));
     if (f.dump) {
-      std::vector<TestedRow> t(samples);
+      std::vector<TestedRow> t(v.samples);
       read_buffer(tested, t.data(), t.size() * sizeof(TestedRow));
       for (const TestedRow& row : t) v.flags.push_back(row.flags & 1u);
     }
     return v;
   }
 
-  void set_uniforms(GpuFrame& f, const WindowLines& lines, const PathTable& table) {
-    for (const Program* p : {&count_, &ends_, &samples_, &changes_, &marks_, &runs_}) {
+  void set_uniforms(GpuFrame& f, const WindowLines& lines, const PathTable& table, uint32_t capacity) {
+    for (const Program* p : {&count_, &ends_, &samples_, &args_, &changes_, &marks_, &runs_}) {
+      glProgramUniform1ui(p->id(), p->uniform("capacity"), capacity);
       glProgramUniform1ui(p->id(), p->uniform("path_count"), GLuint(table.paths.size()));
       glProgramUniform1ui(p->id(), p->uniform("entry_count"), table.entries);
       glProgramUniform1f(p->id(), p->uniform("step_px"), f.params<StrokesParams>().vis_step_px);
@@ -188,13 +228,17 @@ class VisibilityPass : public GpuPass {
     }
   }
 
-  // What the samples take (their record, a mark and a change, two run marks and two runs
-  // at most), against the memory budget before any is made.
-  static void check_memory(const WindowLines& lines, uint32_t samples) {
-    char what[160];
-    std::snprintf(what, sizeof what, "the visibility samples of %zu lines on the GPU (%u)", lines.paths.size(),
-                  samples);
-    check_memory_budget(what, double(samples) * double(sizeof(TestedRow) + 4 + 8 + 8 + 2 * sizeof(RunRow)));
+  // What the samples may take (the bound: their record, a mark and a change, two run marks
+  // and two runs), against the memory budget before any is made.
+  static void check_memory(const WindowLines& lines, double step, double bound) {
+    char what[200];
+    std::snprintf(what, sizeof what,
+                  "the visibility samples of %zu lines on the GPU (at most %.0f, every "
+                  "strokes.vis_step_px %g)",
+                  lines.paths.size(), bound, step);
+    check_memory_budget(what, bound * double(sizeof(TestedRow) + 4 + 8 + 8 + 2 * sizeof(RunRow)));
+    if (bound > double(std::numeric_limits<uint32_t>::max() / 2 - 1))
+      throw std::length_error(std::string(what) + ": more than 2^31 samples");
   }
 
   static void bind(std::initializer_list<const Buffer*> buffers) {
@@ -204,7 +248,7 @@ class VisibilityPass : public GpuPass {
 
   static void barrier() { glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); }
 
-  Program count_, ends_, samples_, changes_, marks_, runs_;
+  Program count_, ends_, samples_, changes_, args_, marks_, runs_;
   ExclusiveScan scan_;
   std::map<std::string, Image> dumped_;
 };

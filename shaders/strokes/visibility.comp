@@ -7,6 +7,7 @@
 //   STEP_SAMPLES: per entry, its samples at their prefix sum, each tested against the ID image;
 //   STEP_CHANGES: per sample, whether the next one along its path disagrees: the change bisected to 1 px;
 //   STEP_MARKS:   per sample, its change listed, and where a visible run starts (at most 2 a sample);
+//   STEP_ARGS:    one invocation: the dispatches over the samples, whose count stays on the GPU;
 //   STEP_RUNS:    per run start, the run to the next change;
 //   STEP_TEST:    per sample of a given batch, the test alone (gpu::SampleTest).
 layout(local_size_x = 64) in;  // gpu/gl/program.hpp dispatch_in_chunks
@@ -100,7 +101,12 @@ layout(std430, binding = 5) buffer RunMarks { uint run_marks[]; };        // 2 p
 layout(std430, binding = 6) buffer Changes { vec2 changes[]; };           // (located s, turns visible)
 layout(std430, binding = 7) writeonly buffer Runs { Run runs[]; };
 
-uniform uint path_count, entry_count, sample_count;
+uniform uint path_count, entry_count;
+uniform uint capacity;  // samples the buffers hold: the CPU's bound
+
+// The first round's samples: the prefix sum after the last entry. entries[] holds after it
+// the indirect dispatches over the samples (entry_count + 1) and their run slots (+ 4).
+uint sample_total() { return entries[entry_count]; }
 uniform float step_px, width, height;
 
 const float kMargin = 4.0;     // px around the window where samples are taken (the test reaches 2)
@@ -204,8 +210,59 @@ bool visible_at(Path p, float s) {
 bool has_end_sample(Path p) { return !is_closed(p) && (p.sampled != 0u || p.length_px > 0.0); }
 
 void put(uint at, uint path, Path p, uint k, float s) {
+  if (at >= capacity) return;  // past the CPU's bound: the CPU refuses the frame
   tested[at] = Tested(s, sample_visible(sample_on(p, k, along(p, k, s), s)) ? 1u : 0u, path, 0.0);
 }
+
+#if defined(STEP_CHANGES)  // Kalnins et al. 2002, §4.1: bisected until located within 1 px
+void at_sample(uint i) {
+  Tested a = tested[i];
+  Path p = paths[a.path];
+  uvec2 range = sample_range(a.path);
+  uint next = i + 1u < range.y ? i + 1u : (is_closed(p) && range.y - range.x > 1u ? range.x : ~0u);
+  bool changes = next != ~0u && (tested[next].flags & 1u) != (a.flags & 1u);
+  change_marks[i] = changes ? 1u : 0u;
+  if (!changes) return;
+  float s0 = a.s, s1 = tested[next].s + (next < i ? p.length_px : 0.0);
+  bool v0 = (a.flags & 1u) != 0u;
+  while (s1 - s0 > kLocatedPx) {
+    float mid = (s0 + s1) / 2.0;
+    if (visible_at(p, mid) == v0) s0 = mid; else s1 = mid;
+  }
+  tested[i].flags = a.flags | 2u | (v0 ? 0u : 4u);
+  tested[i].change = (s0 + s1) / 2.0;
+}
+#elif defined(STEP_MARKS)
+void at_sample(uint i) {
+  Tested a = tested[i];
+  if ((a.flags & 2u) != 0u) changes[change_marks[i]] = vec2(a.change, (a.flags & 4u) != 0u ? 1.0 : 0.0);
+  uvec2 range = sample_range(a.path);
+  bool unchanged = change_marks[range.x] == change_marks[range.y];
+  bool head = i == range.x && (a.flags & 1u) != 0u && (!is_closed(paths[a.path]) || unchanged);
+  run_marks[2u * i] = head ? 1u : 0u;
+  run_marks[2u * i + 1u] = (a.flags & 4u) != 0u ? 1u : 0u;
+}
+#elif defined(STEP_RUNS)
+void at_slot(uint i) {  // slot i % 2 of sample i / 2
+  if (run_marks[i] == run_marks[i + 1u]) return;
+  uint at = i / 2u, path = tested[at].path;
+  Path p = paths[path];
+  uvec2 range = sample_range(path);
+  uint c_first = change_marks[range.x], c_end = change_marks[range.y];
+  Run r = Run(path, 0u, 0.0, p.length_px);
+  if (i % 2u == 0u && is_closed(p)) {
+    r.flags = 1u;  // visible all around
+  } else if (i % 2u == 0u) {  // an open path visible from its start
+    if (c_first < c_end) r.s1 = changes[c_first].x, r.flags = 4u;
+  } else {
+    uint c = change_marks[at];
+    r.s0 = changes[c].x, r.flags = 2u;
+    if (c + 1u < c_end) r.s1 = changes[c + 1u].x, r.flags |= 4u;
+    else if (is_closed(p)) r.s1 = changes[c_first].x + p.length_px, r.flags |= 4u;
+  }
+  runs[run_marks[i]] = r;
+}
+#endif
 
 void main() {
   uint i = first + gl_GlobalInvocationID.x;
@@ -234,50 +291,18 @@ void main() {
   if (st.enters) put(at++, path, p, k, st.u);
   for (uint m = 0u; m < st.multiples; ++m) put(at++, path, p, k, float(st.first_multiple + m) * step_px);
   if (st.leaves) put(at, path, p, k, st.v);
-#elif defined(STEP_CHANGES)  // Kalnins et al. 2002, §4.1: bisected until located within 1 px
-  if (i >= sample_count) return;
-  Tested a = tested[i];
-  Path p = paths[a.path];
-  uvec2 range = sample_range(a.path);
-  uint next = i + 1u < range.y ? i + 1u : (is_closed(p) && range.y - range.x > 1u ? range.x : ~0u);
-  bool changes = next != ~0u && (tested[next].flags & 1u) != (a.flags & 1u);
-  change_marks[i] = changes ? 1u : 0u;
-  if (!changes) return;
-  float s0 = a.s, s1 = tested[next].s + (next < i ? p.length_px : 0.0);
-  bool v0 = (a.flags & 1u) != 0u;
-  while (s1 - s0 > kLocatedPx) {
-    float mid = (s0 + s1) / 2.0;
-    if (visible_at(p, mid) == v0) s0 = mid; else s1 = mid;
-  }
-  tested[i].flags = a.flags | 2u | (v0 ? 0u : 4u);
-  tested[i].change = (s0 + s1) / 2.0;
-#elif defined(STEP_MARKS)
-  if (i >= sample_count) return;
-  Tested a = tested[i];
-  if ((a.flags & 2u) != 0u) changes[change_marks[i]] = vec2(a.change, (a.flags & 4u) != 0u ? 1.0 : 0.0);
-  uvec2 range = sample_range(a.path);
-  bool unchanged = change_marks[range.x] == change_marks[range.y];
-  bool head = i == range.x && (a.flags & 1u) != 0u && (!is_closed(paths[a.path]) || unchanged);
-  run_marks[2u * i] = head ? 1u : 0u;
-  run_marks[2u * i + 1u] = (a.flags & 4u) != 0u ? 1u : 0u;
-#elif defined(STEP_RUNS)  // one invocation per slot (2 per sample)
-  if (i >= 2u * sample_count || run_marks[i] == run_marks[i + 1u]) return;
-  uint at = i / 2u, path = tested[at].path;
-  Path p = paths[path];
-  uvec2 range = sample_range(path);
-  uint c_first = change_marks[range.x], c_end = change_marks[range.y];
-  Run r = Run(path, 0u, 0.0, p.length_px);
-  if (i % 2u == 0u && is_closed(p)) {
-    r.flags = 1u;  // visible all around
-  } else if (i % 2u == 0u) {  // an open path visible from its start
-    if (c_first < c_end) r.s1 = changes[c_first].x, r.flags = 4u;
-  } else {
-    uint c = change_marks[at];
-    r.s0 = changes[c].x, r.flags = 2u;
-    if (c + 1u < c_end) r.s1 = changes[c + 1u].x, r.flags |= 4u;
-    else if (is_closed(p)) r.s1 = changes[c_first].x + p.length_px, r.flags |= 4u;
-  }
-  runs[run_marks[i]] = r;
+#elif defined(STEP_ARGS)  // one invocation: the dispatches over the samples and over their run slots
+  if (gl_GlobalInvocationID.x != 0u) return;
+  uint n = min(sample_total(), capacity);
+  for (uint k = 1u; k <= 6u; ++k) entries[entry_count + k] = 1u;  // (x, 1, 1) twice
+  entries[entry_count + 1u] = clamp((n + 63u) / 64u, 1u, 65535u);
+  entries[entry_count + 4u] = clamp((2u * n + 63u) / 64u, 1u, 65535u);
+#elif defined(STEP_RUNS)  // each invocation every (groups x 64)th slot
+  for (uint j = gl_GlobalInvocationID.x; j < 2u * min(sample_total(), capacity); j += gl_NumWorkGroups.x * 64u)
+    at_slot(j);
+#else  // STEP_CHANGES, STEP_MARKS: each invocation every (groups x 64)th sample
+  for (uint j = gl_GlobalInvocationID.x; j < min(sample_total(), capacity); j += gl_NumWorkGroups.x * 64u)
+    at_sample(j);
 #endif
 }
 #endif

@@ -10,6 +10,7 @@
 
 #include "common/strokes/id_image.hpp"
 #include "common/strokes/visibility.hpp"
+#include "common/util/memory_budget.hpp"
 #include "common/util/random.hpp"
 #include "gpu/core/stage.hpp"
 #include "gpu/strokes/visibility.hpp"
@@ -134,6 +135,21 @@ WindowLines hard_paths() {
   return lines;
 }
 
+// The GPU's visibility pass alone, fed `lines` and an ID image.
+Visibility gpu_visibility(const Scene& scene, const WindowLines& lines, const ImageU32& keys) {
+  gpu::GpuFrame f(scene, Preprocessed{}, {"visibility"});
+  f.dump = true;
+  f.put(kWindowLines, lines);
+  f.put(kIds, gpu::upload_texture(key_channels(keys), GL_RG32UI));
+  const gpu::GpuPassDef* def = nullptr;
+  for (const gpu::GpuPassDef& d : gpu::registered_passes())
+    if (d.stages == std::vector<std::string>{"visibility"}) def = &d;
+  if (!def) throw std::logic_error("no GPU pass computes visibility alone");
+  std::unique_ptr<gpu::GpuPass> pass = gpu::make_checked(*def, f);
+  gpu::run_checked(*def, *pass, f);
+  return f.get(kVisibleRuns);
+}
+
 TEST_F(VisibilityBackends, TheGpuPassListsTheReferenceRunsOnHardPaths) {
   ImageU32 keys(64, 48, 1);
   for (int y = 0; y < 48; ++y)
@@ -147,17 +163,7 @@ TEST_F(VisibilityBackends, TheGpuPassListsTheReferenceRunsOnHardPaths) {
     return flags;
   };
   Visibility want = visible_runs(lines, p, test);
-  gpu::GpuFrame f(scene, Preprocessed{}, {"visibility"});
-  f.dump = true;
-  f.put(kWindowLines, lines);
-  f.put(kIds, gpu::upload_texture(key_channels(keys), GL_RG32UI));
-  const gpu::GpuPassDef* def = nullptr;
-  for (const gpu::GpuPassDef& d : gpu::registered_passes())
-    if (d.stages == std::vector<std::string>{"visibility"}) def = &d;
-  ASSERT_NE(def, nullptr);
-  std::unique_ptr<gpu::GpuPass> pass = gpu::make_checked(*def, f);
-  gpu::run_checked(*def, *pass, f);
-  const Visibility& got = f.get(kVisibleRuns);
+  Visibility got = gpu_visibility(scene, lines, keys);
   EXPECT_EQ(got.samples, want.samples);
   EXPECT_EQ(got.flags, want.flags);
   ASSERT_EQ(got.runs.size(), want.runs.size());
@@ -172,6 +178,32 @@ TEST_F(VisibilityBackends, TheGpuPassListsTheReferenceRunsOnHardPaths) {
     EXPECT_NEAR(g.s1, w.s1, 1e-3) << k;
   }
   EXPECT_GE(want.runs.size(), 9u);
+}
+
+// Lines whose samples the budget cannot hold are refused on the GPU too, before any sample is
+// made: 20 open lines of 49 turns across a 1000 px window, 24016 samples each every 2 px.
+TEST_F(VisibilityBackends, TheGpuRefusesSamplesOverTheBudgetBeforeMakingAny) {
+  WindowLines lines;
+  lines.width = lines.height = 1000;
+  for (int i = 0; i < 20; ++i) {
+    std::vector<glm::dvec2> points;
+    for (int k = 0; k <= 49; ++k) points.push_back({k % 2 ? 990.0 : 10.0, 10.0 + 20.0 * k});
+    lines.paths.push_back(path_through(LineKind::Crease, false, points));
+  }
+  Scene scene = testing::builtin_at("torus", 1000, 1000);
+  ImageU32 keys(1000, 1000, 1);
+  set_memory_budget_gb(0.0005);
+  try {
+    gpu_visibility(scene, lines, keys);
+    ADD_FAILURE() << "refused nothing";
+  } catch (const std::length_error& e) {
+    std::printf("%s\n", e.what());
+    EXPECT_NE(std::string(e.what()).find("the visibility samples of 20 lines on the GPU (at most"), std::string::npos);
+  }
+  set_memory_budget_gb(kDefaultMemoryBudgetGb);
+  auto none = [](const std::vector<VisibilitySample>& batch) { return std::vector<uint8_t>(batch.size(), 0); };
+  EXPECT_EQ(gpu_visibility(scene, lines, keys).samples,
+            visible_runs(lines, scene.params.get<StrokesParams>(), none).samples);
 }
 
 }  // namespace
