@@ -78,22 +78,27 @@ struct PathTable {
       VisibilitySample first = sample_at(p, 0);  // its kind and (silhouettes) byte window
       paths.push_back({uint32_t(points.size()), n, entries, first.kind | (p.closed ? 16u : 0u), first.key,
                        first.byte_window, float(p.length_px), 0});
-      const uint32_t segments = p.closed ? n : n - 1;
-      entries += segments + 1;
-      size_t outside = 0;
-      for (uint32_t k = 0; k < n; ++k) {
+      entries += (p.closed ? n : n - 1) + 1;
+      for (uint32_t k = 0; k < n; ++k)
         points.push_back({glm::vec2(p.window[k]), float(p.arc_px[k]), 0,
                           k < p.front_faces.size() ? p.front_faces[k] : glm::uvec2(0), glm::uvec2(0)});
-        outside += !in_margin(p.window[k], lines);
-      }
-      // The multiples of the step along it, one more at each segment's end where float arc
-      // lengths overlap, an edge sample on each side of a point outside the margin, its end
-      // and s = 0.
-      bound += std::ceil(p.length_px / step) + 1 + segments + 4 * double(outside) + 2;
+      bound += path_bound(p, lines, step);
     }
   }
-  static bool in_margin(glm::dvec2 w, const WindowLines& lines) {
-    return w.x >= -kMarginPx && w.y >= -kMarginPx && w.x <= lines.width + kMarginPx && w.y <= lines.height + kMarginPx;
+  // Per segment within the margin, the step's multiples along that stretch and one more
+  // (float arc lengths of neighbouring segments may overlap), its edge samples; per path its
+  // end, s = 0 and one for a segment the float clip keeps where the double one does not. A
+  // line mostly off the window costs nothing off it.
+  static double path_bound(const WindowPath& p, const WindowLines& lines, double step) {
+    double b = 3;
+    const size_t n = p.window.size(), segments = p.closed ? n : n - 1;
+    for (size_t k = 0; k < segments; ++k) {
+      glm::dvec2 a = p.window[k], c = p.window[(k + 1) % n];
+      double t0, t1;
+      if (clip_to_window(a, c, lines.width, lines.height, kMarginPx, t0, t1))
+        b += (t1 - t0) * glm::distance(a, c) / step + 2 + (t0 > 0) + (t1 < 1);
+    }
+    return b;
   }
   std::vector<PathRow> paths;
   std::vector<PointRow> points;
