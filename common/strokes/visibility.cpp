@@ -93,19 +93,6 @@ std::vector<double> sample_arcs(const WindowPath& p, double step, double width, 
   return s;
 }
 
-// At least as many samples as sample_arcs takes of p: the stretch of each segment within
-// the margin over `step`, and its ends.
-double first_round_bound(const WindowPath& p, double step, double width, double height) {
-  double bound = 2;
-  size_t n = p.window.size(), segments = p.closed ? n : n - 1;
-  for (size_t k = 0; k < segments; ++k) {
-    glm::dvec2 a = p.window[k], b = p.window[(k + 1) % n];
-    double t0, t1;
-    if (clip_to_window(a, b, width, height, kWindowMargin, t0, t1)) bound += (t1 - t0) * glm::distance(a, b) / step + 3;
-  }
-  return bound;
-}
-
 struct Tested {
   double s;
   bool visible;
@@ -251,6 +238,17 @@ bool sample_visible(const ImageU32& keys, const VisibilitySample& s) {
       if (px >= 0 && py >= 0 && px < keys.width && py < keys.height && holds(keys.at(px, py), s)) return true;
     }
   return false;
+}
+
+double first_round_bound(const WindowPath& p, double step, double width, double height) {
+  double bound = 3;
+  size_t n = p.window.size(), segments = p.closed ? n : n - 1;
+  for (size_t k = 0; k < segments; ++k) {
+    glm::dvec2 a = p.window[k], b = p.window[(k + 1) % n];
+    double t0, t1;
+    if (clip_to_window(a, b, width, height, kWindowMargin, t0, t1)) bound += (t1 - t0) * glm::distance(a, b) / step + 4;
+  }
+  return bound;
 }
 
 VisibleRun run_along(const WindowPath& p, uint32_t i, double s0, double s1, bool closed, bool occluded_start,

@@ -84,6 +84,13 @@ struct Visibility {
 // Samples every path, tests them with `test`, bisects the changes and returns the runs.
 Visibility visible_runs(const WindowLines& lines, const StrokesParams& p, const SampleTest& test);
 
+// At least as many first-round samples as either backend takes of path p: per segment
+// within the window's 4 px margin, the step's multiples along that stretch, one more where
+// float arc lengths of neighbouring segments overlap, and its two edge samples; per path its
+// end, s = 0 and a segment the GPU's float clip keeps where the double one does not. Both
+// backends size their memory by it; a line far off the window costs nothing off it.
+double first_round_bound(const WindowPath& p, double step, double width, double height);
+
 // The run of path i (index `i` in WindowLines::paths) from s0 to s1, with its window polyline.
 VisibleRun run_along(const WindowPath& path, uint32_t i, double s0, double s1, bool closed, bool occluded_start,
                      bool occluded_end);

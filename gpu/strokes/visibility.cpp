@@ -67,8 +67,6 @@ struct RunRow {
   float s0, s1;
 };
 
-constexpr double kMarginPx = 4;  // shaders/strokes/visibility.comp kMargin
-
 // The paths as the shaders read them; the entries are each path's segments and its end.
 struct PathTable {
   PathTable(const WindowLines& lines, double step) {
@@ -82,23 +80,8 @@ struct PathTable {
       for (uint32_t k = 0; k < n; ++k)
         points.push_back({glm::vec2(p.window[k]), float(p.arc_px[k]), 0,
                           k < p.front_faces.size() ? p.front_faces[k] : glm::uvec2(0), glm::uvec2(0)});
-      bound += path_bound(p, lines, step);
+      bound += first_round_bound(p, step, lines.width, lines.height);
     }
-  }
-  // Per segment within the margin, the step's multiples along that stretch and one more
-  // (float arc lengths of neighbouring segments may overlap), its edge samples; per path its
-  // end, s = 0 and one for a segment the float clip keeps where the double one does not. A
-  // line mostly off the window costs nothing off it.
-  static double path_bound(const WindowPath& p, const WindowLines& lines, double step) {
-    double b = 3;
-    const size_t n = p.window.size(), segments = p.closed ? n : n - 1;
-    for (size_t k = 0; k < segments; ++k) {
-      glm::dvec2 a = p.window[k], c = p.window[(k + 1) % n];
-      double t0, t1;
-      if (clip_to_window(a, c, lines.width, lines.height, kMarginPx, t0, t1))
-        b += (t1 - t0) * glm::distance(a, c) / step + 2 + (t0 > 0) + (t1 < 1);
-    }
-    return b;
   }
   std::vector<PathRow> paths;
   std::vector<PointRow> points;
