@@ -271,8 +271,7 @@ TEST_F(DecalStrokes, Parity) {
     ASSERT_GT(decals, 5u) << name;
     auto results = run_parity(scene, {"id_image", "visibility", "stroke"});
     ASSERT_EQ(testing::names_of(results),
-              (std::vector<std::string>{"id_image.ids", "visibility.flags", "visibility.run_paths",
-                                        "visibility.run_ends", "stroke.color"}));
+              (std::vector<std::string>{kIds.name, kFlags.name, kRunPaths.name, kRunEnds.name, kStrokeColor.name}));
     for (const StageParity& r : results) {
       std::printf("[decals %s] %s  [%s]\n", name, format_diff(r.name, r.diff).c_str(), r.note.c_str());
       EXPECT_TRUE(r.pass) << name << " " << r.name << ": " << r.note;

@@ -8,6 +8,7 @@
 
 #include "common/mesh/procedural.hpp"
 #include "common/strokes/id_image.hpp"
+#include "common/strokes/stroke.hpp"
 #include "common/strokes/visibility.hpp"
 #include "gpu/core/pipeline.hpp"
 #include "parity/lines.hpp"
@@ -24,8 +25,7 @@ const std::vector<std::string> kStrokeStages = {"id_image", "visibility", "strok
 void expect_stroke_parity(const Scene& scene, const std::string& label) {
   auto results = run_parity(scene, kStrokeStages);
   ASSERT_EQ(testing::names_of(results),
-            (std::vector<std::string>{"id_image.ids", "visibility.flags", "visibility.run_paths", "visibility.run_ends",
-                                      "stroke.color"}));
+            (std::vector<std::string>{kIds.name, kFlags.name, kRunPaths.name, kRunEnds.name, kStrokeColor.name}));
   for (const StageParity& r : results) {
     std::printf("[strokes %s] %s  [%s]\n", label.c_str(), format_diff(r.name, r.diff).c_str(), r.note.c_str());
     EXPECT_TRUE(r.pass) << label << " " << r.name << ": " << r.note;
