@@ -1,7 +1,8 @@
 // Base strokes (Kalnins et al. 2002 §4.2, §5): a visible run of a
-// path, in window pixels (origin bottom-left, docs/conventions.md), turned into the triangles of a
-// ribbon that both backends draw: the GPU as GL_TRIANGLES, the reference with its scalar
-// rasterizer, the very same triangles. Geometry is double inside, the output float.
+// path, in window pixels (origin bottom-left, docs/conventions.md), turned into samples and the
+// triangles of a ribbon through them: the reference makes them here, in double (output float),
+// and draws them with its scalar rasterizer; the GPU expands the same samples into the same
+// triangles in its vertex shader (shaders/strokes/stroke.vert), in float.
 //
 // 1. Spline (Kalnins et al. 2002, §4.1). Input points that are not finite are dropped, and repeats (closer
 //    than 1e-6 px) merged; a closed run's last point equal to its first is dropped. A

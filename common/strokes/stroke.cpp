@@ -66,7 +66,8 @@ double finest_sample_px(const WindowLines& lines, const StrokeStyles& styles) {
 // What the strokes would take, against the memory budget before any is made. Per spline
 // sample (twice a run's window length over the finest step, as a spline through the run's
 // points may run longer than they do, and its two ends): its record, and its two
-// triangles' vertices as the ribbon makes them, as drawn, and as the GPU's copy.
+// triangles' vertices as the reference's ribbon makes them and as it draws them (the GPU
+// expands them from a 32-byte copy of the sample instead).
 void check_stroke_memory(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles) {
   double step = finest_sample_px(lines, styles), length = 0;
   for (const VisibleRun& run : visibility.runs) length += run.s1 - run.s0;
@@ -74,8 +75,7 @@ void check_stroke_memory(const WindowLines& lines, const Visibility& visibility,
   char what[200];
   std::snprintf(what, sizeof what, "the strokes of %zu visible runs (%.3g px long, resampled every %g px)",
                 visibility.runs.size(), length, step);
-  check_memory_budget(what,
-                      samples * double(sizeof(StrokeSample) + 6 * (sizeof(RibbonVertex) + 2 * sizeof(StrokeVertex))));
+  check_memory_budget(what, samples * double(sizeof(StrokeSample) + 6 * (sizeof(RibbonVertex) + sizeof(StrokeVertex))));
 }
 
 enum RunStream : uint32_t { kStampStart = 1, kOffsetWalk = 2 };  // what a run's stream draws

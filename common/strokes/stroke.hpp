@@ -8,8 +8,9 @@
 //   out = color a' + out (1 - a'),  a' = the paper's alpha transfer of a (Kalnins et al. 2002, §4.4)
 // premultiplied "over", ribbon after ribbon in path order (creases and borders, then
 // silhouettes, then decals and hatches, Kalnins et al. 2002, §3, §6), triangle after triangle. Both
-// backends draw the same triangles: the GPU as one draw call, the reference through its
-// scalar rasterizer.
+// backends draw the ribbons through the same samples: the reference makes their triangles in
+// double (common/strokes/base_stroke.hpp 6.) and draws them with its scalar rasterizer; the
+// GPU expands them in its vertex shader, in float, and draws them in one call.
 #pragma once
 
 #include <map>
@@ -106,11 +107,14 @@ struct StrokeStage {
                      .texel = Texel::Unorm8,
                      .doc = "the strokes over the page",
                      .tolerance = tolerance::kByte,
-                     .tolerance_why = "fed the same page, visible runs and paper; the same triangles; the GPU filters "
-                                      "the stroke texture with 8-bit weights and blends each fragment into an 8-bit "
-                                      "target: a derived bound allows 4.5/255 per fragment less the tolerance, and "
-                                      "anything in the 1-px band where a ribbon's edge passes within a subpixel of "
-                                      "the pixel center (measured max 0.0128 on the teapot where ribbons overlap)",
+                     .tolerance_why =
+                         "fed the same page, visible runs and paper; the ribbons through the same samples, their "
+                         "corners made in float on the GPU, which moves an edge by float rounding, within the band "
+                         "below; the GPU filters "
+                         "the stroke texture with 8-bit weights and blends each fragment into an 8-bit "
+                         "target: a derived bound allows 4.5/255 per fragment less the tolerance, and "
+                         "anything in the 1-px band where a ribbon's edge passes within a subpixel of "
+                         "the pixel center (measured max 0.0128 on the teapot where ribbons overlap)",
                      .frame_color = true,
                      .draws_over = {kPage.name}},
                     {.handle = kStrokeFragments, .texel = Texel::Host, .doc = "reference only: fragments per pixel"},

@@ -66,7 +66,7 @@ TEST_F(StrokeMemory, StrokesOfRunsOverTheBudgetAreRefusedBeforeAnyIsMade) {
   WindowLines lines = zigzags(20, 100);
   set_memory_budget_gb(1);
   Visibility v = visible_runs(lines, ParamSet().get<StrokesParams>(), kAllVisible);
-  set_memory_budget_gb(0.2);  // the runs' ribbons take about 0.35 GB
+  set_memory_budget_gb(0.2);  // the runs' ribbons take about 0.23 GB
   std::string why = refusal([&] { stroke_triangles(lines, v, StrokeStyles{}, 1); });
   EXPECT_NE(why.find("the strokes of 20 visible runs"), std::string::npos) << why;
   EXPECT_NE(why.find("resampled every 3.5 px"), std::string::npos) << why;
