@@ -26,7 +26,7 @@
 
 namespace plumbago {
 
-// One vertex as both backends read it: window position, (u, v), alpha, color, the stroke
+// One vertex as the reference draws it: window position, (u, v), alpha, color, the stroke
 // texture's layer (StrokeTextureKind).
 struct StrokeVertex {
   glm::vec2 position, uv;
@@ -34,7 +34,6 @@ struct StrokeVertex {
   glm::vec3 color;
   float layer;
 };
-static_assert(sizeof(StrokeVertex) == 9 * sizeof(float), "shaders/strokes/stroke.vert reads 9 packed floats");
 
 // The style a run is drawn with: its line kind's, with the offsets example synthesized over
 // the run's length (Kalnins et al. 2002, §4.3, §5, App. A) where the style asks for it; where the scene

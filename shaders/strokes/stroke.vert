@@ -60,8 +60,7 @@ void main() {
   last_sample = int(run.first + run.count) - 1;
   color = run.color_layer.rgb;
   layer = run.color_layer.a;
-  vec2 n = segment_normal(j);
-  if (!drawn(j) || n == vec2(0.0)) {  // no triangles: both outside the clip volume, at one point
+  if (!drawn(j) || segment_normal(j) == vec2(0.0)) {  // no triangles: both outside the clip volume, at one point
     gl_Position = vec4(-2.0, -2.0, 0.0, 1.0);
     uv = vec2(0.0);
     alpha = 0.0;
