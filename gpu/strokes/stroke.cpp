@@ -1,7 +1,7 @@
 // The stroke raster on the GPU (Kalnins et al. 2002, §4.1), the twin of reference/strokes/stroke.cpp: the
-// runs' samples uploaded, their ribbons expanded in the vertex shader (common/strokes/base_stroke.hpp
-// 6.) and drawn in one call, blended premultiplied "over" onto the page.
-#include "common/strokes/stroke.hpp"
+// runs' samples uploaded, their ribbons expanded in the vertex shader (shaders/strokes/common_ribbon.glsl)
+// and drawn in one call, blended premultiplied "over" onto the page.
+#include "gpu/strokes/stroke.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -13,56 +13,19 @@ namespace plumbago::gpu {
 
 namespace {
 
-// One sample as shaders/strokes/stroke.vert reads it (std430).
-struct SampleRecord {
-  glm::vec2 position;
-  float u, width, alpha;
-  uint32_t run, pen_down_after, pad = 0;
-};
-// One run: its color and stroke texture layer, its samples, whether it is drawn as a loop.
-struct RunRecord {
-  glm::vec4 color_layer;
-  uint32_t first, count, cyclic, pad = 0;
-};
-static_assert(sizeof(SampleRecord) == 32 && sizeof(RunRecord) == 32, "std430 layouts of stroke.vert");
-
-// The samples of every run that draws a ribbon (common/strokes/base_stroke.hpp ribbon: 2 or
-// more), in GPU buffers bound as stroke.vert reads them.
-class RibbonBuffers {
- public:
-  explicit RibbonBuffers(const std::vector<RunStroke>& strokes) {
-    std::vector<SampleRecord> samples;
-    std::vector<RunRecord> runs;
-    for (const RunStroke& stroke : strokes) append(stroke, samples, runs);
-    vertices_ = GLsizei(6 * samples.size());
-    if (samples.empty()) return;
-    samples_ = make_buffer(samples.data(), samples.size() * sizeof(SampleRecord));
-    runs_ = make_buffer(runs.data(), runs.size() * sizeof(RunRecord));
-  }
-  // Six a sample: the two triangles to the next one.
-  GLsizei vertices() const { return vertices_; }
-  void bind() const {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, samples_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, runs_.id());
-  }
-
- private:
-  static void append(const RunStroke& stroke, std::vector<SampleRecord>& samples, std::vector<RunRecord>& runs) {
-    const std::vector<StrokeSample>& q = stroke.samples.samples;
-    if (q.size() < 2) return;
-    const StrokeStyle& style = stroke.style;
-    bool whole = std::all_of(q.begin(), q.end() - 1, [](const StrokeSample& x) { return x.pen_down_after; });
-    auto run = uint32_t(runs.size());
-    runs.push_back({glm::vec4(style.color_r, style.color_g, style.color_b, float(int(style.texture))),
-                    uint32_t(samples.size()), uint32_t(q.size()), stroke.samples.closed && whole});
-    for (const StrokeSample& x : q)
-      samples.push_back({glm::vec2(x.position), float(x.s / style.texture_period_px), float(x.width), float(x.alpha),
-                         run, x.pen_down_after});
-  }
-
-  Buffer samples_, runs_;
-  GLsizei vertices_ = 0;
-};
+// A run's samples appended as records, with the run's own record.
+void append(const RunStroke& stroke, std::vector<SampleRecord>& samples, std::vector<RunRecord>& runs) {
+  const std::vector<StrokeSample>& q = stroke.samples.samples;
+  if (q.size() < 2) return;
+  const StrokeStyle& style = stroke.style;
+  bool whole = std::all_of(q.begin(), q.end() - 1, [](const StrokeSample& x) { return x.pen_down_after; });
+  auto run = uint32_t(runs.size());
+  runs.push_back({glm::vec4(style.color_r, style.color_g, style.color_b, float(int(style.texture))),
+                  uint32_t(samples.size()), uint32_t(q.size()), stroke.samples.closed && whole});
+  for (const StrokeSample& x : q)
+    samples.push_back({glm::vec2(x.position), float(x.s / style.texture_period_px), float(x.width), float(x.alpha), run,
+                       x.pen_down_after});
+}
 
 class StrokePass : public GpuPass {
  public:
@@ -110,6 +73,21 @@ class StrokePass : public GpuPass {
 };
 
 }  // namespace
+
+RibbonBuffers::RibbonBuffers(const std::vector<RunStroke>& strokes) {
+  std::vector<SampleRecord> samples;
+  std::vector<RunRecord> runs;
+  for (const RunStroke& stroke : strokes) append(stroke, samples, runs);
+  vertices_ = GLsizei(6 * samples.size());
+  if (samples.empty()) return;
+  samples_ = make_buffer(samples.data(), samples.size() * sizeof(SampleRecord));
+  runs_ = make_buffer(runs.data(), runs.size() * sizeof(RunRecord));
+}
+
+void RibbonBuffers::bind() const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, samples_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, runs_.id());
+}
 
 PLUMBAGO_GPU_PASS(stroke, {{"stroke"}, {}, make_pass<StrokePass>, Probe::Raster});
 
