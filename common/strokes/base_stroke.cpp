@@ -16,7 +16,10 @@ constexpr double kPiecesPerPx = 4.0;  // dense pieces per px of control polygon 
 constexpr int kMinPieces = 4, kMaxPieces = 4096;
 constexpr double kMaxSamples = 1e7;      // refuse runs that would take more samples
 constexpr double kSameArcLength = 1e-9;  // px: sample arc lengths closer than this are one
-constexpr double kDegenerate = 1e-9;     // px: shorter segments have no direction of their own
+// px: an even sample this close to a pen change, or a change this close to an end, is dropped:
+// shorter segments have no reliable direction in float (tests/strokes/stroke_ribbon_test.cpp)
+constexpr double kNearPenChange = 0.05;
+constexpr double kDegenerate = 1e-9;  // px: shorter segments have no direction of their own
 
 // 1. Finite points, repeats merged; a closed run's last point equal to its first dropped.
 std::vector<glm::dvec2> distinct_points(const std::vector<glm::dvec2>& in, bool closed) {
@@ -131,15 +134,24 @@ std::vector<double> pen_changes(const OffsetExample& e, double length) {
   return out;
 }
 
-// 3. and 4.: the even samples plus the pen changes, sorted, without repeats.
+// True when `s` lies within kNearPenChange of one of the sorted `changes`.
+bool near_any(double s, const std::vector<double>& changes) {
+  auto at = std::lower_bound(changes.begin(), changes.end(), s - kNearPenChange);
+  return at != changes.end() && *at < s + kNearPenChange;
+}
+
+// 3. and 4.: the even samples plus the pen changes, sorted, without repeats; an even sample
+// near a change gives way to it, a change near an end of the run to the end.
 std::vector<double> sample_arc_lengths(double length, const StrokeStyle& style) {
   std::vector<double> s = even_arc_lengths(length, style.sample_px);
-  if (style.offsets) {
-    std::vector<double> changes = pen_changes(*style.offsets, length);
-    s.insert(s.end(), changes.begin(), changes.end());
-    std::sort(s.begin(), s.end());
-    s.erase(std::unique(s.begin(), s.end(), [](double a, double b) { return b - a < kSameArcLength; }), s.end());
-  }
+  if (!style.offsets) return s;
+  std::vector<double> changes = pen_changes(*style.offsets, length);
+  std::erase_if(changes, [&](double c) { return c < kNearPenChange || c > length - kNearPenChange; });
+  std::sort(changes.begin(), changes.end());
+  std::erase_if(s, [&](double at) { return at > 0 && at < length && near_any(at, changes); });
+  s.insert(s.end(), changes.begin(), changes.end());
+  std::sort(s.begin(), s.end());
+  s.erase(std::unique(s.begin(), s.end(), [](double a, double b) { return b - a < kSameArcLength; }), s.end());
   return s;
 }
 

@@ -24,7 +24,11 @@
 // 3. Samples. The run of length L is cut into n = ceil(L / sample_px) equal pieces
 //    (n + 1 samples, the first and last at the ends; a closed run's last sample is its
 //    first again, at arc length L), so the step is sample_px or a little less. Where the
-//    offsets lift or land the pen, a sample is added at exactly that arc length.
+//    offsets lift or land the pen, a sample is added at exactly that arc length; an even
+//    sample within 0.05 px of it is dropped, and so is a change within 0.05 px of an end of
+//    the run, so that no drawn segment is shorter than that (in float, a segment of length l
+//    turns its normal by up to 2^-22 C / l, C the window coordinate: at l = 1e-6 px an
+//    arbitrary direction for the GPU's corners).
 // 4. Offsets, rubber-stamped (Kalnins et al. 2002, §4.3, §5, App. A; Kalnins et al. 2003). At arc length s the
 //    example's offset list is interpolated linearly at t = (s mod L_drawn) / L_drawn, wrapping from its last
 //    offset to its first (period L_drawn); the displacement is scaled by

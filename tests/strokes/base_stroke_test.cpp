@@ -387,6 +387,29 @@ TEST(BaseStroke, BreaksSplitTheRibbon) {
   EXPECT_EQ(strips(base_stroke(horizontal(140), st)).size(), 1u);
 }
 
+// A pen change 1e-4 px from an even sample takes its place (a segment that short has no
+// reliable direction in float), and one 0.01 px from the run's start gives way to the start.
+TEST(BaseStroke, PenChangesNearOtherSamplesLeaveNoSegmentUnder005Px) {
+  StrokeStyle st = plain_style();
+  st.sample_px = 4;  // even samples at 0, 4, ..., 140
+  double near_even = 0.5 + 1e-4 / 40;
+  st.offsets = OffsetExample{40, {{0, 0, 1, false}, {near_even, 0, 1, true}, {0.75, 0, 1, false}}};
+  std::vector<StrokeSample> q = base_stroke_samples(horizontal(140), st).samples;
+  for (size_t j = 0; j + 1 < q.size(); ++j) EXPECT_GE(q[j + 1].s - q[j].s, 0.05) << "s " << q[j].s;
+  for (double lift : {20.0001, 60.0001, 100.0001}) {
+    auto at = std::find_if(q.begin(), q.end(), [&](const StrokeSample& x) { return std::abs(x.s - lift) < 1e-9; });
+    ASSERT_NE(at, q.end()) << "no sample where the pen lifts at " << lift;
+    EXPECT_FALSE(at->pen_down_after);
+    EXPECT_TRUE((at - 1)->pen_down_after);
+    EXPECT_NEAR((at - 1)->s, lift - 4.0001, 1e-9);  // the even sample at 20 gave way
+  }
+  st.offsets = OffsetExample{40, {{0.01 / 40, 0, 1, true}, {0.5, 0, 1, false}}};  // lifts at 0.01, 40.01, ...
+  q = base_stroke_samples(horizontal(140), st).samples;
+  EXPECT_EQ(q[1].s, 4.0);  // no sample at 0.01: the lift starts at the start
+  EXPECT_FALSE(q[0].pen_down_after);
+  EXPECT_TRUE(std::any_of(q.begin(), q.end(), [](const StrokeSample& x) { return std::abs(x.s - 40.01) < 1e-9; }));
+}
+
 TEST(BaseStroke, PressureScalesWidthAndOptionallyAlpha) {
   StrokeStyle st = plain_style();
   st.offsets = OffsetExample{40, {{0, 0, 0.5, false}}};

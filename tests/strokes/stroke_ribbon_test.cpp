@@ -33,8 +33,8 @@ struct GpuCorner {
 // ribbon_corner in a compute shader over the buffers the stroke pass draws from.
 std::vector<GpuCorner> gpu_corners(const std::vector<RunStroke>& strokes) {
   gpu::RibbonBuffers buffers(strokes);
-  std::string source = "#version 450 core\nlayout(local_size_x = 64) in;\n" +
-                       gpu::shader_source("strokes/common_ribbon.glsl") + R"(
+  std::string source =
+      "#version 450 core\nlayout(local_size_x = 64) in;\n" + gpu::shader_source("strokes/common_ribbon.glsl") + R"(
 struct Captured { vec4 window_uv; vec4 alpha_drawn; };
 layout(std430, binding = 2) writeonly buffer Corners { Captured corners[]; };
 uniform uint count;
@@ -152,7 +152,7 @@ std::vector<RunStroke> hard_cases() {
   tapered.fade_px = 10;
   std::vector<glm::dvec2> wave;
   for (int i = 0; i <= 40; ++i) wave.push_back({20.0 + 8 * i, 300 + 40 * std::sin(i * 0.4)});
-  out.push_back(from_run({wave, false, true, false}, tapered));            // open, tapered, haloed at its start
+  out.push_back(from_run({wave, false, true, false}, tapered));           // open, tapered, haloed at its start
   out.push_back(from_run({arc({200, 200}, 60, 36, 1), true}, style(6)));  // closed, drawn whole
   StrokeStyle lifted = style(5);
   lifted.offsets = OffsetExample{70, {{0, 0, 1, false}, {0.4, 2, 0.7, true}, {0.6, -1, 1, false}}};
@@ -162,12 +162,12 @@ std::vector<RunStroke> hard_cases() {
   zigzag.offsets = OffsetExample{5, {{0, 1.5, 1, false}, {0.5, -1.5, 1, false}}};
   out.push_back(from_run({{{30, 500}, {300, 520}, {560, 480}}, false}, zigzag));  // faster than the spacing
   out.push_back(from_samples({{100, 100}, {110, 100}, {110, 100}, {110, 100}, {120, 105}}, false, 4));  // repeats
-  out.push_back(from_samples({{300, 60}, {350, 60}, {300, 60}}, false, 6));           // exact hairpin
-  out.push_back(from_samples({{50, 50}, {50, 50}, {50, 50}}, false, 3));              // no direction
-  out.push_back(from_samples({{500, 500}, {540, 500}, {540, 540}, {500, 540}, {500, 500}}, true, 5));  // square
-  out.push_back(from_samples({{60, 60}}, false, 3));                                   // one sample
+  out.push_back(from_samples({{300, 60}, {350, 60}, {300, 60}}, false, 6));                             // exact hairpin
+  out.push_back(from_samples({{50, 50}, {50, 50}, {50, 50}}, false, 3));                                // no direction
+  out.push_back(from_samples({{500, 500}, {540, 500}, {540, 540}, {500, 540}, {500, 500}}, true, 5));   // square
+  out.push_back(from_samples({{60, 60}}, false, 3));                                                    // one sample
   out.push_back(from_samples({{10, 10}, {20, 12}, {30, 10}, {40, 14}}, false, 4, {1}));  // a lift between
-  out.push_back(from_run({arc({3800, 2900}, 25, 20, 0.7), false}, style(7)));           // far from the origin
+  out.push_back(from_run({arc({3800, 2900}, 25, 20, 0.7), false}, style(7)));            // far from the origin
   return out;
 }
 
@@ -199,7 +199,8 @@ TEST_F(StrokeRibbonParity, GpuCornersMatchTheReferenceWithinTheFloatBound) {
         const GpuCorner& g = gpu.at(k);
         if (g.alpha_drawn.y == 0) continue;
         ++drawn;
-        ASSERT_LT(next, ref.size()) << "run " << r << " sample " << j << ": the GPU draws a segment the reference does not";
+        ASSERT_LT(next, ref.size()) << "run " << r << " sample " << j
+                                    << ": the GPU draws a segment the reference does not";
         const RibbonVertex& v = ref[next++];
         size_t i = j + (corner == 2 || corner == 3 || corner == 5 ? 1 : 0);
         double coordinate = std::max(std::abs(q[i].position.x), std::abs(q[i].position.y)) + q[i].width;
