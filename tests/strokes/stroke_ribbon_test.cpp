@@ -50,7 +50,7 @@ void main() {
   glGetProgramiv(program, GL_LINK_STATUS, &linked);
   char log[4096] = {};
   glGetProgramInfoLog(program, sizeof log, nullptr, log);
-  EXPECT_TRUE(linked) << log;
+  EXPECT_TRUE(linked && std::string(log).find_first_not_of(" \t\r\n") == std::string::npos) << log;
   auto count = size_t(buffers.vertices());
   std::vector<GpuCorner> out(count);
   if (count == 0) return out;
