@@ -14,7 +14,8 @@ layout(std430, binding = 0) readonly buffer SlotLinks { uvec4 slot_links[]; };  
 layout(std430, binding = 1) buffer Links { uvec4 links[]; };
 layout(std430, binding = 2) buffer Members { uint members[]; };  // the records that hold a segment
 // How many members, the indirect dispatch over them all, and round k's of each phase: over
-// them all while 2^k < count (a chain is no longer than the count), else none. Ranking also
+// them all while 2^k < count (a chain is no longer than the count), else none. Over them all
+// is all_x x all_y groups, all_x at most GL's least maximum of 65535 (member() flattens them). Ranking also
 // stops once a round moved no pointer: that round wrote what it read, so both buffers hold
 // the result, whichever the steps after it read.
 layout(std430, binding = 3) buffer Count {
@@ -90,7 +91,7 @@ uint linked(uint i, int end) {
 
 // The member this invocation works on, or kNoLink past the count.
 uint member() {
-  uint m = gl_GlobalInvocationID.x;
+  uint m = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * 64u + gl_LocalInvocationID.x;
   return m < count ? members[m] : kNoLink;
 }
 
@@ -104,12 +105,14 @@ void main() {
   put(i, uvec4(next == kNoLink ? i : next, i, 0u, 0u));
 #elif defined(STEP_ARGS)  // one invocation
   if (gl_GlobalInvocationID.x != 0u) return;
-  all_x = (count + 63u) / 64u;
-  all_y = 1u;
+  const uint kMaxGroups = 65535u;
+  uint groups = (count + 63u) / 64u;
+  all_y = (groups + kMaxGroups - 1u) / kMaxGroups;
+  all_x = all_y > 1u ? kMaxGroups : groups;
   all_z = 1u;
   for (uint k = 0u; k < 32u; ++k) {
-    round_groups[k] = uvec4(count > (1u << k) ? all_x : 0u, 1u, 1u, 0u);
-    rank_groups[k] = uvec4(k == 0u && count > 1u ? all_x : 0u, 1u, 1u, 0u);  // later ones: STEP_RANK
+    round_groups[k] = uvec4(count > (1u << k) ? all_x : 0u, all_y, 1u, 0u);
+    rank_groups[k] = uvec4(k == 0u && count > 1u ? all_x : 0u, all_y, 1u, 0u);  // later ones: STEP_RANK
   }
 #elif defined(STEP_LOOPS)  // next <- next of next, lowest <- the lower of both
   uint i = member();

@@ -11,6 +11,7 @@
 #include "common/mesh/procedural.hpp"
 #include "common/strokes/silhouette_chains.hpp"
 #include "common/strokes/strokes.hpp"
+#include "gpu/core/stage.hpp"
 #include "parity/parity.hpp"
 #include "tests/support/parity_checks.hpp"
 #include "tests/support/test_scenes.hpp"
@@ -79,6 +80,45 @@ TEST_F(SilhouetteChains, GpuRanksTheSameChainsAsTheWalk) {
   for (const char* name : {"torus", "sphere", "cad"})
     chain_parity(testing::drawn_with_strokes(testing::builtin_at(name, 320, 240)), name);
   chain_parity(testing::drawn_with_strokes(testing::square_and_torus("continuous")), "two objects");
+}
+
+// More members than 65535 groups of 64 reach (GL's least maximum per dimension, which some
+// drivers keep): the dispatch over them all goes 65535 x 2 groups, and a round of the loop
+// search (shaders/strokes/silhouette_chains.comp STEP_LOOPS, self-loops here) reaches every
+// member, the last of the second row too. No mesh of the suite has 4.2 million silhouette
+// segments; this runs the pass's own steps on buffers made for them.
+TEST_F(SilhouetteChains, MembersBeyondOneDispatchRowAreAllReached) {
+  const uint32_t count = 64u * 65535u + 1000u;
+  std::vector<uint32_t> members(count);
+  std::vector<glm::uvec4> jump(count);
+  for (uint32_t m = 0; m < count; ++m) members[m] = m, jump[m] = glm::uvec4(m, m, 0, 0);
+  std::vector<uint32_t> args(4 + 2 * 32 * 4, 0);  // Count: count, all_x, all_y, all_z, round_groups, rank_groups
+  args[0] = count;
+  gpu::Buffer member_buffer = gpu::make_buffer(members.data(), count * sizeof(uint32_t));
+  gpu::Buffer from = gpu::make_buffer(jump.data(), count * sizeof(glm::uvec4));
+  gpu::Buffer to = gpu::make_buffer(nullptr, count * sizeof(glm::uvec4));
+  gpu::Buffer count_buffer = gpu::make_buffer(args.data(), args.size() * sizeof(uint32_t));
+  for (auto [binding, buffer] : {std::pair{2, &member_buffer}, {3, &count_buffer}, {4, &from}, {5, &to}})
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(binding), buffer->id());
+  gpu::Program step_args =
+      gpu::Program::compute("strokes/silhouette_chains.comp", gpu::table_prelude() + "#define STEP_ARGS\n");
+  gpu::Program loops =
+      gpu::Program::compute("strokes/silhouette_chains.comp", gpu::table_prelude() + "#define STEP_LOOPS\n");
+  glUseProgram(step_args.id());
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  gpu::read_buffer(count_buffer, args.data(), args.size() * sizeof(uint32_t));
+  EXPECT_EQ((std::vector<uint32_t>(args.begin() + 1, args.begin() + 8)),
+            (std::vector<uint32_t>{65535, 2, 1, 65535, 2, 1, 0}));  // all, then round 0's
+  glProgramUniform1ui(loops.id(), loops.uniform("round_index"), 0);
+  glUseProgram(loops.id());
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, count_buffer.id());
+  glDispatchComputeIndirect(4 * sizeof(uint32_t));  // round_groups[0]
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  gpu::read_buffer(to, jump.data(), count * sizeof(glm::uvec4));
+  uint32_t reached = 0;
+  for (uint32_t m = 0; m < count; ++m) reached += jump[m] == glm::uvec4(m, m, 0, 0);
+  EXPECT_EQ(reached, count);
 }
 
 // A finer torus than the built-in one, seen from where its silhouette has several loops and
