@@ -231,7 +231,7 @@ void GBufferPass::compute_corner_angles(const glm::mat4& view_projection, int w,
     glUniform1ui(program.uniform("vertex_count"), b.mesh_vertices);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, b.vertex_curvature.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, b.vertex_angles.id());
-    glDispatchCompute((b.mesh_vertices + 63) / 64, 1, 1);
+    dispatch_in_chunks(program, b.mesh_vertices, "first");
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   const Program& gather = *triangle_angles_program_;
@@ -244,7 +244,7 @@ void GBufferPass::compute_corner_angles(const glm::mat4& view_projection, int w,
     glUniform1ui(gather.uniform("first_triangle"), b.first_triangle);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, b.vertex_angles.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, b.triangle_vertices.id());
-    glDispatchCompute((triangles + 63) / 64, 1, 1);
+    dispatch_in_chunks(gather, triangles, "first");
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }

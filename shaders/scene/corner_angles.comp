@@ -11,9 +11,10 @@ struct VertexCurvature {
 layout(std430, binding = 0) readonly buffer Curvatures { VertexCurvature vertex_curvature[]; };
 layout(std430, binding = 1) writeonly buffer Angles { vec2 vertex_angles[]; };  // theta_min, theta_max
 uniform uint vertex_count;
+uniform uint first;  // of this dispatch (gpu/gl/program.hpp dispatch_in_chunks)
 
 void main() {
-  uint v = gl_GlobalInvocationID.x;
+  uint v = first + gl_GlobalInvocationID.x;
   if (v >= vertex_count) return;
   VertexCurvature c = vertex_curvature[v];
   vertex_angles[v] = vec2(stroke_angle(c.position.xyz, c.d_min.xyz, c.d_max.xyz),

@@ -9,9 +9,10 @@ layout(std430, binding = 2) readonly buffer Triangles { uint triangle_vertices[]
 layout(std430, binding = 3) writeonly buffer TriangleAngles { vec4 triangle_angles[]; };  // 2 a triangle
 uniform uint triangle_count;
 uniform uint first_triangle;  // this object's first record
+uniform uint first;           // of this dispatch (gpu/gl/program.hpp dispatch_in_chunks)
 
 void main() {
-  uint t = gl_GlobalInvocationID.x;
+  uint t = first + gl_GlobalInvocationID.x;
   if (t >= triangle_count) return;
   vec2 a0 = vertex_angles[triangle_vertices[3u * t]], a1 = vertex_angles[triangle_vertices[3u * t + 1u]],
        a2 = vertex_angles[triangle_vertices[3u * t + 2u]];

@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "common/core/passes.hpp"
+#include "common/curvature/curvature.hpp"
 #include "gpu/core/pipeline.hpp"
 #include "gpu/scene/gbuffer.hpp"
 #include "parity/parity.hpp"
@@ -228,6 +229,51 @@ TEST_F(GBufferBackground, ASecondRenderLeavesNoTraceOfTheFirstOnTheBackground) {
   gpu::GBufferChannels frame = gpu::Renderer(scene).frame_channels("gbuffer");
   frame.read_region = {0, 0, scene.width, scene.height};  // the moved sphere's region is elsewhere
   expect_second_render_leaves_no_trace(frame, "a frame's channels");
+}
+
+// A flat grid of more vertices and triangles than one dispatch reaches, 65535 groups of 64
+// (GL's least maximum per dimension, which llvmpipe keeps), with one stroke direction
+// everywhere (Lee et al. 2006, §5.3): the corner angles go in chunks, so the last
+// triangles' records hold their angles as the first's do. (A 4.5M-triangle mesh drawn with
+// crosshatching failed with GL_INVALID_VALUE in glDispatchCompute before.)
+using GBufferAngles = testing::GlTest;
+
+TEST_F(GBufferAngles, EveryTriangleOfAMeshBeyondOneDispatchGetsItsAngles) {
+  const uint32_t n = 1450;  // 2(n - 1)^2 = 4,199,202 triangles, 2,102,500 vertices
+  Mesh grid;
+  grid.name = "test:grid";
+  for (uint32_t r = 0; r < n; ++r)
+    for (uint32_t c = 0; c < n; ++c) grid.positions.push_back({2.0f * c / (n - 1) - 1, 2.0f * r / (n - 1) - 1, 0});
+  grid.normals.assign(grid.positions.size(), glm::vec3(0, 0, 1));
+  for (uint32_t r = 0; r + 1 < n; ++r)
+    for (uint32_t c = 0; c + 1 < n; ++c) {
+      uint32_t i = r * n + c;
+      grid.triangles.push_back({i, i + 1, i + n});
+      grid.triangles.push_back({i + 1, i + n + 1, i + n});
+    }
+  const size_t triangles = grid.triangles.size(), vertices = grid.positions.size();
+  ASSERT_GT(triangles, 64u * 65535u);
+  Curvature c{std::vector<float>(vertices, 0.0f), std::vector<float>(vertices, 1.0f),
+              std::vector<glm::vec3>(vertices, glm::vec3(0, 0, 1)),
+              std::vector<glm::vec3>(vertices, glm::normalize(glm::vec3(1, 2, 0))),
+              std::vector<glm::vec3>(vertices, glm::normalize(glm::vec3(-2, 1, 0)))};
+  Scene scene = builtin_with_mesh("sphere", std::move(grid));
+  scene.camera.eye = {0.3f, -1.5f, 2.5f};
+  scene.camera.target = {0, 0, 0};
+  scene.camera.up = {0, 0, 1};
+  gpu::GBufferTargets targets = gpu::make_gbuffer_targets(scene.width, scene.height, GBufferFormat::RGBA32F);
+  gpu::GBufferPass pass(scene, {c});
+  pass.render(scene, targets);
+  const size_t checked = 100000;  // the first and the last triangles' records: vec4 theta_min, vec4 theta_max
+  std::vector<glm::vec4> first(2 * checked), last(2 * checked);
+  gpu::read_buffer(pass.triangle_angles().angles, first.data(), first.size() * sizeof(glm::vec4));
+  gpu::read_buffer(pass.triangle_angles().angles, last.data(), last.size() * sizeof(glm::vec4),
+                   2 * (triangles - checked) * sizeof(glm::vec4));
+  size_t unset = 0;
+  for (const std::vector<glm::vec4>* records : {&first, &last})
+    for (const glm::vec4& r : *records)
+      for (int k = 0; k < 3; ++k) unset += !(std::isfinite(r[k]) && r[k] != 0.0f);
+  EXPECT_EQ(unset, 0u) << "corner angles left at 0 or not finite";
 }
 
 }  // namespace
