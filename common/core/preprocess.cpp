@@ -3,10 +3,12 @@
 #include <algorithm>
 
 #include "common/core/stage.hpp"
+#include "common/mesh/mesh.hpp"
 
 namespace plumbago {
 
 Preprocessed preprocess(const Scene& scene, const std::vector<std::string>& passes) {
+  for (const SceneObject& object : scene.objects) validate_drawable_mesh(*object.mesh);
   Preprocessed out;
   for (const StageDesc& stage : stage_table()) {
     if (stage.kind != StageKind::Preprocessing) continue;

@@ -39,6 +39,8 @@ struct Preprocessed {
   std::vector<PassTime> ran;  // the steps that ran, with their times
 };
 
+// The preprocessing stages among `passes`, in stage order, after checking that every object's
+// mesh can be drawn (validate_drawable_mesh: MeshError naming it, before any work).
 Preprocessed preprocess(const Scene& scene, const std::vector<std::string>& passes);
 
 }  // namespace plumbago

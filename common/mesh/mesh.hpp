@@ -63,4 +63,8 @@ size_t weld_vertices(Mesh& mesh);
 // Throws MeshError if any position is NaN/Inf or any index is out of range.
 void validate_mesh(const Mesh& mesh);
 
+// validate_mesh, and one normal per position, as a mesh both backends draw needs (a mesh
+// made in code gets them from compute_normals). Throws MeshError naming the mesh.
+void validate_drawable_mesh(const Mesh& mesh);
+
 }  // namespace plumbago

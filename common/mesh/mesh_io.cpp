@@ -160,6 +160,13 @@ void validate_arrays(const Arrays& m) {
 
 void validate_mesh(const Mesh& mesh) { validate_arrays(mesh); }
 
+void validate_drawable_mesh(const Mesh& mesh) {
+  validate_mesh(mesh);
+  if (mesh.normals.size() != mesh.positions.size())
+    throw MeshError(mesh.name + ": " + std::to_string(mesh.normals.size()) + " normals for " +
+                    std::to_string(mesh.positions.size()) + " vertices (compute_normals makes them)");
+}
+
 namespace {
 
 std::string coordinate_text(double v) {

@@ -3,6 +3,8 @@
 // strokes, and drawn sketchy.
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include "gpu/core/pipeline.hpp"
 #include "reference/core/pipeline.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -82,6 +84,34 @@ TEST_F(HardCases, ZeroAreaFaces) {
             "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 2 0 0\nv 0.5 0.5 1\n"
             "f 1 2 3\nf 2 4 3\nf 1 2 5\nf 1 5 2\nf 3 6 4\nf 1 1 2\n");
   expect_finite_everywhere(hard_scene(R"("mesh": "degenerate.obj")", tmp.dir()), "zero-area faces");
+}
+
+// A mesh made in code without its normals (or with another count) is refused by both
+// backends before any work, naming it and what makes them; with compute_normals it renders.
+TEST_F(HardCases, MeshMadeInCodeWithoutNormalsIsRefusedByName) {
+  Scene scene = hard_scene(R"("mesh": {"procedural": "sphere"})");
+  Mesh bare = *scene.objects[0].mesh;
+  bare.name = "test:bare sphere";
+  bare.normals.clear();
+  for (size_t normals : {size_t(0), bare.positions.size() - 1}) {
+    Mesh m = bare;
+    m.normals.assign(normals, glm::vec3(0, 0, 1));
+    scene.objects[0].mesh = std::make_shared<const Mesh>(m);
+    for (const std::function<void()>& render : std::vector<std::function<void()>>{
+             [&] { reference::render(scene); }, [&] { gpu::Renderer(scene).render(); }}) {
+      try {
+        render();
+        ADD_FAILURE() << "a mesh of " << normals << " normals rendered";
+      } catch (const MeshError& e) {
+        EXPECT_NE(std::string(e.what()).find("test:bare sphere: " + std::to_string(normals) + " normals for "),
+                  std::string::npos)
+            << e.what();
+      }
+    }
+  }
+  compute_normals(bare);
+  scene.objects[0].mesh = std::make_shared<const Mesh>(bare);
+  expect_finite_frames(scene, "normals computed");
 }
 
 TEST_F(HardCases, FullyFlatScene) {
