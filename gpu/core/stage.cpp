@@ -225,6 +225,13 @@ std::vector<const GpuPassDef*> plan_passes(const std::vector<std::string>& stage
 const Texture& table_target(GpuFrame& f, size_t records, plumbago::Buffer table) {
   if (const Texture* made = f.get(maybe(table))) return *made;
   auto [width, height] = table_size(records);
+  GLint largest = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &largest);
+  if (height > largest)
+    throw std::runtime_error(std::string(table.name) + ": " + std::to_string(records) + " records take " +
+                             std::to_string(height) + " rows of " + std::to_string(kTableRow) +
+                             ", over this GL's largest texture (" + std::to_string(largest) + " rows): at most " +
+                             std::to_string(size_t(largest) * kTableRow) + " records");
   f.put(table, make_texture(width, height, texture_format(find_output(table.name))));
   return f.get(table);
 }

@@ -140,7 +140,8 @@ std::vector<const GpuPassDef*> plan_passes(const std::vector<std::string>& stage
 // The GL texture format of a declared output.
 GLenum texture_format(const Output& output);
 // A table output of `records` records (common/util/image.hpp table_image): made at its size in
-// the declared format the first time, then kept by the frame across frames.
+// the declared format the first time, then kept by the frame across frames. Throws
+// std::runtime_error naming the table and GL's limit where its rows exceed the largest texture.
 const Texture& table_target(GpuFrame& f, size_t records, plumbago::Buffer table);
 // The prelude of a shader that includes util/common_table.glsl (common/util/image.hpp table_image).
 inline std::string table_prelude() { return "#define TABLE_ROW " + std::to_string(kTableRow) + "\n"; }

@@ -10,6 +10,7 @@
 #include "common/mesh/procedural.hpp"
 #include "common/strokes/silhouette_segments.hpp"
 #include "common/strokes/strokes.hpp"
+#include "gpu/core/stage.hpp"
 #include "parity/parity.hpp"
 #include "tests/support/parity_checks.hpp"
 #include "tests/support/test_scenes.hpp"
@@ -149,6 +150,26 @@ TEST_F(SilhouetteSegments, DegenerateMeshesStayFiniteAndAgree) {
   auto results = segment_parity(testing::one_stroke_object(sheet, glm::vec3(3, 0.0f, 0.0f)), "sheet edge-on");
   ASSERT_EQ(results.size(), 3u);
   EXPECT_EQ(segments_in(results[1].reference), 0u) << "g = 0 everywhere is taken as -1e-8: no sign change";
+}
+
+// A face table longer than GL's largest texture (1024 records a row) is refused with the
+// table, the rows and the limit named, not left to a GL error: stroke objects of more than
+// 1024 x GL_MAX_TEXTURE_SIZE faces (16.7M on llvmpipe) cannot be drawn by the GPU backend.
+TEST_F(SilhouetteSegments, TablesBeyondTheLargestTextureAreRefusedByName) {
+  GLint largest = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &largest);
+  Scene scene = testing::builtin_at("torus", 64, 48);
+  gpu::GpuFrame f(scene, Preprocessed{}, {"silhouette_segments"});
+  const size_t fits = size_t(largest) * kTableRow;
+  try {
+    gpu::table_target(f, fits + 1, kSegmentEnds);
+    ADD_FAILURE() << "a table of " << fits + 1 << " records was made";
+  } catch (const std::runtime_error& e) {
+    std::string expected = std::string(kSegmentEnds.name) + ": " + std::to_string(fits + 1) + " records take " +
+                           std::to_string(largest + 1) + " rows of 1024, over this GL's largest texture";
+    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(gpu::table_target(f, 5000, kSegmentEnds).height, 5);  // 5000 records: 5 rows
 }
 
 }  // namespace
