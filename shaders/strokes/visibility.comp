@@ -158,8 +158,12 @@ bool stretch_of(Path p, uint k, out Stretch st) {
   Point a = point(p, k), b = point(p, k + 1u);
   float length = distance(a.window, b.window), t0, t1;
   if (!clip_to_window(a.window, b.window, t0, t1)) return false;
-  st.u = a.s + t0 * length, st.v = a.s + t1 * length;
   st.enters = t0 > 0.0, st.leaves = t1 < 1.0;
+  // A segment that does not leave ends where the next one starts, at the next point's arc
+  // length (a closed path's last one at its length): a.s + length rounds elsewhere in float,
+  // and a multiple of the step between the two would go to neither segment, or to both.
+  float end = k + 1u < p.points ? b.s : p.length_px;
+  st.u = a.s + t0 * length, st.v = st.leaves ? a.s + t1 * length : end;
   float lo = st.enters ? floor(st.u / step_px) + 1.0 : ceil(st.u / step_px);
   float hi = ceil(min(st.v, p.length_px) / step_px) - 1.0;  // the last multiple below v and the length
   st.first_multiple = uint(max(lo, 0.0));
