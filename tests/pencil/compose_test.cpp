@@ -61,7 +61,7 @@ TEST_F(ComposeParity, ParametersReachBothBackends) {
   ASSERT_EQ(testing::names_of(before), kComposeResults);
   ASSERT_EQ(testing::names_of(after), kComposeResults);
   for (size_t i = 0; i < before.size(); ++i) {
-    if (before[i].name.rfind("compose.color", 0) != 0) continue;  // D_c does not read them
+    if (before[i].name.rfind(kComposeColor.name, 0) != 0) continue;  // D_c does not read them
     EXPECT_NE(before[i].reference.data, after[i].reference.data) << before[i].name;
     EXPECT_NE(before[i].gpu.data, after[i].gpu.data) << before[i].name;
   }

@@ -282,7 +282,7 @@ TEST_F(DecalStrokes, Parity) {
 // The share of each decal path's length visible in the ID image of `scene`'s reference frame.
 double visible_decal_share(const Scene& scene, const DecalSurface& surface) {
   WindowLines lines = window_lines(scene, scene.params.get<StrokesParams>(), LineObjects::Strokes, nullptr, &surface);
-  ImageU32 keys = keys_from_channels(reference::render(scene, FrameOptions{true}).buffers.at("id_image.ids"));
+  ImageU32 keys = keys_from_channels(reference::render(scene, FrameOptions{true}).buffers.at(kIds.name));
   int seen = 0, n = 0;
   for (const WindowPath& p : lines.paths)
     if (p.kind == LineKind::Decal)

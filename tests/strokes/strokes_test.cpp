@@ -165,7 +165,7 @@ TEST_F(StrokeVisibility, ACubeShowsNineOfItsTwelveEdges) {
   ASSERT_EQ(lines.paths.size(), 12u);  // no silhouette of its own: a cube's outline is crease edges
   FrameOptions keep{true};
   for (const Frame& f : {reference::render(scene, keep), gpu::Renderer(scene).render(keep)}) {
-    std::vector<double> share = visible_share_per_path(keys_from_channels(f.buffers.at("id_image.ids")), lines);
+    std::vector<double> share = visible_share_per_path(keys_from_channels(f.buffers.at(kIds.name)), lines);
     int visible = 0, hidden = 0;
     for (double s : share) visible += s == 1.0, hidden += s == 0.0;
     EXPECT_EQ(visible, 9);
@@ -199,7 +199,7 @@ void expect_half_hidden(const Scene& scene) {
   double edge_y = plane_edge_y(scene);
   FrameOptions keep{true};
   for (const Frame& f : {reference::render(scene, keep), gpu::Renderer(scene).render(keep)}) {
-    ImageU32 keys = keys_from_channels(f.buffers.at("id_image.ids"));
+    ImageU32 keys = keys_from_channels(f.buffers.at(kIds.name));
     const WindowPath& p = lines.paths[0];
     int checked = 0;
     for (int k = 0; k < 200; ++k) {
@@ -227,7 +227,7 @@ TEST_F(StrokeVisibility, RunsEndAtTheOccluderWithinAPixel) {
   WindowLines lines = window_lines(scene, p);
   double edge_y = plane_edge_y(scene);
   FrameOptions keep{true};
-  ImageU32 keys = keys_from_channels(reference::render(scene, keep).buffers.at("id_image.ids"));
+  ImageU32 keys = keys_from_channels(reference::render(scene, keep).buffers.at(kIds.name));
   auto test = [&](const std::vector<VisibilitySample>& batch) {
     std::vector<uint8_t> flags;
     for (const VisibilitySample& s : batch) flags.push_back(sample_visible(keys, s));
