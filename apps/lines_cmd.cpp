@@ -8,9 +8,10 @@
 //          "screen" (pixels, origin bottom-left), "visible" (per point)}]};
 //          With --truth also, per path, its window arc length at each point ("arc_px"),
 //          the visible runs the strokes would draw ("runs": [[s0, s1], ...], arc px), and
-//          what rays say ("truth": an Embree occlusion ray to the path every 0.5 px of
-//          arc, reference/strokes/ray_visibility.hpp, passing over hits within two of the point's
-//          face's longest edges: its own facets), and the frame's passes with their times
+//          what rays say ("truth": an Embree ray to the path every 0.5 px of arc,
+//          reference/strokes/ray_visibility.hpp; a silhouette's passes over hits within two of
+//          its face's longest edges, its own facets; a crease's, border's, decal's or hatch's
+//          over the triangles the point lies on), and the frame's passes with their times
 //          ("ran"): the accuracy study of experiments/stroke_visibility compares them;
 //   .svg:  the visible runs as the strokes draw them: one <path> per run, the outline of
 //          its variable-width ribbon (Kalnins et al. 2002, §4.1), filled with its style's color and alpha.
@@ -114,20 +115,28 @@ double longest_edge(const SceneObject& o, uint32_t f) {
   return std::max({glm::distance(p[0], p[1]), glm::distance(p[1], p[2]), glm::distance(p[2], p[0])});
 }
 
+// Where the rays aim along a path, every kTruthStepPx of arc, and how each tells its own
+// surface from an occluder (reference/strokes/ray_visibility.hpp): a silhouette passes over hits
+// within two of its face's longest edges, a line on the mesh over the triangles it lies on.
+void add_targets(const Scene& scene, const WindowPath& p, std::vector<reference::RayTarget>& targets) {
+  for (double s = 0; s <= p.length_px; s += kTruthStepPx) {
+    double own = 0;
+    if (p.kind == LineKind::Silhouette)
+      own = 2 * longest_edge(scene.objects[p.object], p.surface[segment_at(p, s)].face);
+    targets.push_back({world_at(p, s), own});
+  }
+}
+
 // Adds "arc_px", "runs" and "truth" to each path's JSON.
 void add_truth(const Scene& scene, const WindowLines& lines, const Visibility& v, nlohmann::json& paths) {
-  std::vector<glm::dvec3> points;
-  std::vector<double> own;  // the surface a point lies on: two edges of its face
+  std::vector<reference::RayTarget> targets;
   std::vector<size_t> first;
   for (const WindowPath& p : lines.paths) {
-    first.push_back(points.size());
-    for (double s = 0; s <= p.length_px; s += kTruthStepPx) {
-      points.push_back(world_at(p, s));
-      own.push_back(2 * longest_edge(scene.objects[p.object], p.surface[segment_at(p, s)].face));
-    }
+    first.push_back(targets.size());
+    add_targets(scene, p, targets);
   }
-  first.push_back(points.size());
-  std::vector<uint8_t> seen = reference::visible_by_rays(scene, points, own);
+  first.push_back(targets.size());
+  std::vector<uint8_t> seen = reference::visible_by_rays(scene, targets);
   for (size_t i = 0; i < lines.paths.size(); ++i) {
     paths[i]["arc_px"] = lines.paths[i].arc_px;
     paths[i]["runs"] = nlohmann::json::array();

@@ -29,8 +29,8 @@ std::vector<ClipPoint> clipped_to_near(const ClipPoint (&corners)[3], double nea
 
 class IdTriangles {
  public:
-  IdTriangles(const Scene& scene, double bias)
-      : project_(scene.camera, scene.width, scene.height), near_(scene.camera.near), bias_(bias) {}
+  explicit IdTriangles(const Scene& scene)
+      : project_(scene.camera, scene.width, scene.height), near_(scene.camera.near) {}
 
   void face(const ClipPoint (&corners)[3], uint32_t key) {
     std::vector<ClipPoint> polygon = clipped_to_near(corners, near_);
@@ -41,12 +41,13 @@ class IdTriangles {
       }
   }
 
-  // Segment a -> b of a path as a quad `width` px wide.
-  void segment(glm::dvec2 a, glm::dvec2 b, double da, double db, double width, uint32_t key) {
+  // Segment a -> b of a path as a quad `width` px wide, placed at depth d (1 - bias).
+  void segment(glm::dvec2 a, glm::dvec2 b, double da, double db, double width, double bias, uint32_t key) {
     glm::dvec2 along = b - a;
     double length = glm::length(along);
     if (!(length > 0)) return;
     glm::dvec2 n = glm::dvec2(-along.y, along.x) / length * (width / 2);
+    da *= 1.0 - bias, db *= 1.0 - bias;
     IdVertex q[4] = {line_vertex(a - n, da, key), line_vertex(a + n, da, key), line_vertex(b + n, db, key),
                      line_vertex(b - n, db, key)};
     for (int k : {0, 1, 2, 0, 2, 3}) out.push_back(q[k]);
@@ -61,11 +62,11 @@ class IdTriangles {
 
  private:
   IdVertex line_vertex(glm::dvec2 at, double d, uint32_t key) const {
-    return {glm::vec2(at), float(near_ / std::max(d * (1.0 - bias_), near_)), key};
+    return {glm::vec2(at), float(near_ / std::max(d, near_)), key};
   }
 
   WindowProjection project_;
-  double near_, bias_;
+  double near_;
 };
 
 // The key a silhouette segment draws: the path's key << 8 | floor(255 s / L).
@@ -80,18 +81,19 @@ uint32_t silhouette_value(const WindowPath& path, double s_mid) {
 // a pixel is drawn: a narrow field of view makes segments of millions of pixels.
 constexpr double kSilhouettePiecePx = 1.0;
 
-void add_silhouette_segment(const WindowPath& path, size_t k, double width, IdTriangles& tri) {
+void add_silhouette_segment(const WindowPath& path, size_t k, const StrokesParams& p, IdTriangles& tri) {
   size_t next = (k + 1) % path.window.size();
   glm::dvec2 a = path.window[k], b = path.window[next];
   double t0, t1;
-  if (!tri.covers(a, b, width, t0, t1)) return;
+  if (!tri.covers(a, b, p.id_silhouette_px, t0, t1)) return;
   double length = glm::distance(a, b), inv_a = 1 / path.depth[k], inv_b = 1 / path.depth[next];
   int pieces = std::max(1, int(std::ceil((t1 - t0) * length / kSilhouettePiecePx)));
   auto at = [&](int i) { return t0 + (t1 - t0) * i / pieces; };
   auto depth_at = [&](double t) { return 1 / ((1 - t) * inv_a + t * inv_b); };  // 1/d is affine in the window
   for (int i = 0; i < pieces; ++i) {
     double u0 = at(i), u1 = at(i + 1), s_mid = path.arc_px[k] + length * (u0 + u1) / 2;
-    tri.segment(a + u0 * (b - a), a + u1 * (b - a), depth_at(u0), depth_at(u1), width, silhouette_value(path, s_mid));
+    tri.segment(a + u0 * (b - a), a + u1 * (b - a), depth_at(u0), depth_at(u1), p.id_silhouette_px, p.id_depth_bias,
+                silhouette_value(path, s_mid));
   }
 }
 
@@ -102,11 +104,12 @@ void add_path(const WindowPath& path, const StrokesParams& p, IdTriangles& tri) 
   size_t n = path.window.size(), segments = path.closed ? n : n - 1;
   for (size_t k = 0; k < segments; ++k) {
     if (silhouette) {
-      add_silhouette_segment(path, k, p.id_silhouette_px, tri);
+      add_silhouette_segment(path, k, p, tri);
       continue;
     }
     size_t next = (k + 1) % n;
-    tri.segment(path.window[k], path.window[next], path.depth[k], path.depth[next], p.id_crease_px, path.key);
+    tri.segment(path.window[k], path.window[next], path.depth[k], path.depth[next], p.id_crease_px,
+                p.id_crease_depth_bias, path.key);
   }
 }
 
@@ -141,7 +144,7 @@ std::vector<uint32_t> gbuffer_first_keys(const Scene& scene) {
 }
 
 std::vector<IdVertex> id_sketchy_face_triangles(const Scene& scene, const WindowLines& lines) {
-  IdTriangles tri(scene, 0.0);
+  IdTriangles tri(scene);
   glm::dmat4 view(scene.camera.view());
   for (uint32_t o = 0; o < scene.objects.size(); ++o) {
     const SceneObject& object = scene.objects[o];
@@ -159,7 +162,7 @@ std::vector<IdVertex> id_sketchy_face_triangles(const Scene& scene, const Window
 }
 
 std::vector<IdVertex> id_line_triangles(const Scene& scene, const WindowLines& lines, const StrokesParams& p) {
-  IdTriangles tri(scene, p.id_depth_bias);
+  IdTriangles tri(scene);
   add_paths(lines, p, tri);
   return std::move(tri.out);
 }

@@ -17,8 +17,11 @@
 // Depth: each triangle vertex carries z = near / d, d its linear view depth: 1/d, and so z, is
 // affine in window space on a planar triangle, so interpolating z affinely over the
 // window is exact (perspective-correct) and the same rule on both backends. A line vertex
-// is placed at d (1 - `strokes.id_depth_bias`) (an explicit bias, not glPolygonOffset's
-// implementation-defined units). A pixel keeps the triangle with the largest z (the
+// is placed at d (1 - bias) (an explicit bias, not glPolygonOffset's implementation-defined
+// units): a silhouette's `strokes.id_depth_bias`, as it lies off the facets, which graze
+// it; a crease's or border's `strokes.id_crease_depth_bias`, which only clears depth ties
+// with its own faces (its test also accepts its front-facing faces, so it needs none to
+// show, and a larger one lets a line just behind a surface through). A pixel keeps the triangle with the largest z (the
 // nearest; GL_GREATER, the buffer cleared to 0); equal z keeps the first drawn.
 //
 // Rasterization (both backends, docs/conventions.md): a triangle covers the pixel centers inside it and

@@ -41,7 +41,7 @@ struct StrokesParams {
   static constexpr const char* stage = "strokes";
   float crease_deg;
   bool silhouette_normalized, keep_back_facing;
-  float id_crease_px, id_silhouette_px, id_depth_bias, vis_step_px;
+  float id_crease_px, id_silhouette_px, id_depth_bias, id_crease_depth_bias, vis_step_px;
   template <class V>
   void visit(V& v) {
     v.real(crease_deg, "crease_deg", 60.0, 0.0, 180.0,
@@ -57,8 +57,11 @@ struct StrokesParams {
     v.real(id_silhouette_px, "id_silhouette_px", 3.0, 0.5, 16.0,
            "width of silhouette quads in the ID image (Kalnins et al. 2002, §4.6)");
     v.real(id_depth_bias, "id_depth_bias", 0.005, 0.0, 0.5,
-           "lines are depth-tested at d (1 - bias) against the faces (Kalnins et al. 2002, §4.6; relative, linear view "
-           "depth)");
+           "silhouette quads are depth-tested at d (1 - bias) against the faces (Kalnins et al. 2002, §4.6; relative, "
+           "linear view depth)");
+    v.real(id_crease_depth_bias, "id_crease_depth_bias", 1e-4, 0.0, 0.5,
+           "crease and border quads are depth-tested at d (1 - bias) against the faces (relative, linear view depth; "
+           "they need none to show, as their front-facing faces pass the test, only to clear depth ties)");
     v.real(vis_step_px, "vis_step_px", 2.0, 0.25, 64.0,
            "visibility samples along a path, pixels apart (Kalnins et al. "
            "2002, §4.6)");

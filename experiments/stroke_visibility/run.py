@@ -10,14 +10,16 @@ visible runs the strokes draw are compared with them:
   - false hidden: the share of ray-visible arc that no run covers;
 over every path, and apart for silhouettes and for creases with borders (their tests differ),
 against the sampling step (strokes.vis_step_px), the width of the ID image's line quads
-(strokes.id_silhouette_px and id_crease_px together) and the depth bias
-(strokes.id_depth_bias), one at a time around the defaults, with the time of the ID
+(strokes.id_silhouette_px and id_crease_px together) and the depth biases of the silhouettes'
+quads (strokes.id_depth_bias) and of the creases' and borders' (strokes.id_crease_depth_bias),
+one at a time around the defaults, with the time of the ID
 image and visibility passes (CPU reference, wall time, the fastest of 3 runs; the flags
 are the same on the GPU, whose parity is exact).
 
-The rays pass over hits within two of the point's face's longest edges: a silhouette
-point lies on the smooth (interpolated-normal) silhouette, which the mesh's own facets
-graze. So an occluder closer than that to the line is not seen by the rays either.
+A silhouette's rays pass over hits within two of the point's face's longest edges: a
+silhouette point lies on the smooth (interpolated-normal) silhouette, which the mesh's own
+facets graze, so an occluder closer than that to it is not seen by the rays either. A
+crease's or border's pass over the triangles the point lies on, and nothing else.
 
 Settings (experiments/config/*.yaml, stroke_visibility): scenes, size, repeats, sweeps
 (parameter: values). Run through experiments/Snakefile (lib/study_cli.py).
@@ -32,7 +34,8 @@ sys.path.insert(0, str(HERE.parent / "lib"))
 import plumbago_cli as pc  # noqa: E402
 import study_cli  # noqa: E402
 
-DEFAULTS = {"vis_step_px": 2, "id_width_px": 3, "id_depth_bias": 0.005}  # the program's defaults
+# the program's defaults
+DEFAULTS = {"vis_step_px": 2, "id_width_px": 3, "id_depth_bias": 0.005, "id_crease_depth_bias": 1e-4}
 FIGURES = ["visibility_error.png"]
 
 
@@ -138,6 +141,8 @@ def plot(rows, out):
             for r in pts:
                 ax.annotate("%.0f ms" % (r["id_image_ms"] + r["visibility_ms"]), (r["value"], 100 * r["false_hidden"]),
                             fontsize=6, xytext=(3, 3), textcoords="offset points")
+        if name.endswith("bias"):  # 0 and values a decade apart
+            ax.set_xscale("symlog", linthresh=1e-4)
         ax.set_xlabel("strokes." + name + " (default %g)" % DEFAULTS[name])
         ax.set_ylabel("% of the arc (rays decide)")
         ax.grid(alpha=0.3)
