@@ -38,13 +38,17 @@ double pressure_at(const WindowPath& path, double s) {
   return path.pressure[k] + t * (path.pressure[next] - path.pressure[k]);
 }
 
+// px: an example made to span a run is this much longer, so that the rubber stamp's period
+// does not wrap the run's end to its start where the spline's length and the run's agree to
+// rounding (a straight run's).
+constexpr double kPastTheRunEnd = 1e-6;
+
 // A decal's style over one run (common/strokes/decal.hpp 3.): an offsets example of zero
 // displacement carrying the path's pressure at the run's ends and at every path point
-// between. It spans the run (at least 1 px, an example's least length) and 1e-6 px more,
-// so that the rubber stamp's period does not wrap the run's end to its start.
+// between. It spans the run (at least 1 px, an example's least length) and kPastTheRunEnd more.
 StrokeStyle decal_style(const StrokeStyle& decal, const WindowPath& path, const VisibleRun& run) {
   StrokeStyle style = decal;
-  double length = std::max(run.s1 - run.s0, 1.0) + 1e-6;
+  double length = std::max(run.s1 - run.s0, 1.0) + kPastTheRunEnd;
   OffsetExample pressure{length, {{0.0, 0.0, pressure_at(path, run.s0), false}}};
   for (size_t k = 0; k < path.arc_px.size(); ++k)
     if (path.arc_px[k] > run.s0 && path.arc_px[k] < run.s1)
@@ -102,7 +106,7 @@ StrokeStyle RunStyles::of(const WindowPath& path, const VisibleRun& run, uint32_
   if (it == chains_.end())
     it = chains_.emplace(path.kind, drawn.empty() ? OffsetSynthesizer(*style.offsets) : OffsetSynthesizer(drawn)).first;
   CounterStream walk(stream_key({seed_, path.key, ordinal, kOffsetWalk}));
-  style.offsets = it->second.synthesize_example(run.s1 - run.s0, walk);
+  style.offsets = it->second.synthesize_example(run.s1 - run.s0 + kPastTheRunEnd, walk);
   return style;
 }
 
@@ -113,18 +117,25 @@ std::vector<uint32_t> run_ordinals(const std::vector<VisibleRun>& runs) {
   return out;
 }
 
-std::vector<RunStroke> run_strokes(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
+std::vector<StyledRun> styled_runs(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
                                    uint32_t seed) {
-  check_stroke_memory(lines, visibility, styles);
-  std::vector<RunStroke> out;
+  std::vector<StyledRun> out;
   RunStyles run_styles(styles, seed, lines.decal_styles);
   std::vector<uint32_t> ordinals = run_ordinals(visibility.runs);
   for (size_t i = 0; i < visibility.runs.size(); ++i) {
     const VisibleRun& run = visibility.runs[i];
-    StrokeStyle style = run_styles.of(lines.paths[run.path], run, ordinals[i]);
-    StrokeRun stroke{run.window, run.closed, run.occluded_start, run.occluded_end};
-    out.push_back({style, base_stroke_samples(stroke, style)});
+    out.push_back({{run.window, run.closed, run.occluded_start, run.occluded_end},
+                   run_styles.of(lines.paths[run.path], run, ordinals[i])});
   }
+  return out;
+}
+
+std::vector<RunStroke> run_strokes(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
+                                   uint32_t seed) {
+  check_stroke_memory(lines, visibility, styles);
+  std::vector<RunStroke> out;
+  for (StyledRun& r : styled_runs(lines, visibility, styles, seed))
+    out.push_back({r.style, base_stroke_samples(r.run, r.style)});
   return out;
 }
 

@@ -8,9 +8,11 @@
 //   out = color a' + out (1 - a'),  a' = the paper's alpha transfer of a (Kalnins et al. 2002, §4.4)
 // premultiplied "over", ribbon after ribbon in path order (creases and borders, then
 // silhouettes, then decals and hatches, Kalnins et al. 2002, §3, §6), triangle after triangle. Both
-// backends draw the ribbons through the same samples: the reference makes their triangles in
-// double (common/strokes/base_stroke.hpp 6.) and draws them with its scalar rasterizer; the
-// GPU expands them in its vertex shader, in float, and draws them in one call.
+// backends make the same samples in double (common/strokes/base_stroke.hpp 1.-5.; the GPU in a
+// compute shader, gpu/strokes/stroke_samples.hpp) from the same runs and styles
+// (styled_runs); the reference makes their triangles in double (6.) and draws them with its
+// scalar rasterizer; the GPU expands them in its vertex shader, in float, and draws them in
+// one indirect call.
 #pragma once
 
 #include <map>
@@ -61,6 +63,18 @@ class RunStyles {
 // Each run's place among its path's runs, in visibility.runs' order.
 std::vector<uint32_t> run_ordinals(const std::vector<VisibleRun>& runs);
 
+// One visible run as a base stroke takes it (its window polyline and ends) and the style it
+// is drawn in (RunStyles::of).
+struct StyledRun {
+  StrokeRun run;
+  StrokeStyle style;
+};
+
+// Every visible run with its style, in drawing order (visibility.runs' order): what both
+// backends make the stroke samples of (the GPU: gpu/strokes/stroke_samples.hpp).
+std::vector<StyledRun> styled_runs(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
+                                   uint32_t seed);
+
 // One visible run as it is drawn: its style (RunStyles::of) and its base stroke's samples.
 struct RunStroke {
   StrokeStyle style;
@@ -107,9 +121,9 @@ struct StrokeStage {
                      .doc = "the strokes over the page",
                      .tolerance = tolerance::kByte,
                      .tolerance_why =
-                         "fed the same page, visible runs and paper; the ribbons through the same samples, their "
-                         "corners made in float on the GPU, which moves an edge by float rounding, within the band "
-                         "below; the GPU filters "
+                         "fed the same page, visible runs and paper; the ribbons through the same samples (the GPU's "
+                         "made in double, within one float rounding), their corners made in float on the GPU, which "
+                         "moves an edge by float rounding, within the band below; the GPU filters "
                          "the stroke texture with 8-bit weights and blends each fragment into an 8-bit "
                          "target: a derived bound allows 4.5/255 per fragment less the tolerance, and "
                          "anything in the 1-px band where a ribbon's edge passes within a subpixel of "

@@ -1,31 +1,16 @@
 // The stroke raster on the GPU (Kalnins et al. 2002, §4.1), the twin of reference/strokes/stroke.cpp: the
-// runs' samples uploaded, their ribbons expanded in the vertex shader (shaders/strokes/common_ribbon.glsl)
-// and drawn in one call, blended premultiplied "over" onto the page.
+// runs' samples made on the GPU (gpu/strokes/stroke_samples.hpp), their ribbons expanded in the vertex
+// shader (shaders/strokes/common_ribbon.glsl) and drawn in one indirect call, blended premultiplied
+// "over" onto the page.
 #include "gpu/strokes/stroke.hpp"
-
-#include <algorithm>
-#include <cstdint>
 
 #include "common/strokes/stroke_paper.hpp"
 #include "gpu/core/stage.hpp"
+#include "gpu/strokes/stroke_samples.hpp"
 
 namespace plumbago::gpu {
 
 namespace {
-
-// A run's samples appended as records, with the run's own record.
-void append(const RunStroke& stroke, std::vector<SampleRecord>& samples, std::vector<RunRecord>& runs) {
-  const std::vector<StrokeSample>& q = stroke.samples.samples;
-  if (q.size() < 2) return;
-  const StrokeStyle& style = stroke.style;
-  bool whole = std::all_of(q.begin(), q.end() - 1, [](const StrokeSample& x) { return x.pen_down_after; });
-  auto run = uint32_t(runs.size());
-  runs.push_back({glm::vec4(style.color_r, style.color_g, style.color_b, float(int(style.texture))),
-                  uint32_t(samples.size()), uint32_t(q.size()), stroke.samples.closed && whole});
-  for (const StrokeSample& x : q)
-    samples.push_back({glm::vec2(x.position), float(x.s / style.texture_period_px), float(x.width), float(x.alpha), run,
-                       x.pen_down_after});
-}
 
 class StrokePass : public GpuPass {
  public:
@@ -39,10 +24,10 @@ class StrokePass : public GpuPass {
   }
 
   void run(GpuFrame& f) override {
-    RibbonBuffers ribbons(run_strokes(f.get(kWindowLines), f.get(kVisibleRuns), f.scene.strokes, f.scene.seed));
+    samples_(styled_runs(f.get(kWindowLines), f.get(kVisibleRuns), f.scene.strokes, f.scene.seed));
     Texture& target = f.put(kStrokeColor);
     if (drawn_over(find_output(kStrokeColor.name), f.stages).empty()) copy_page(f.get(kPage), target);
-    if (ribbons.vertices() == 0) return;
+    if (!samples_.draw()) return;
     program_.set_params(f.params<StrokePaperParams>());
     glProgramUniform2f(program_.id(), program_.uniform("window_size"), float(target.width), float(target.height));
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
@@ -52,9 +37,11 @@ class StrokePass : public GpuPass {
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     bind_textures(program_, {{"stroke_textures", &textures_}, {"paper_height", &height_}});
     glUseProgram(program_.id());
-    ribbons.bind();
+    samples_.bind();
     glBindVertexArray(empty_.id());
-    glDrawArrays(GL_TRIANGLES, 0, ribbons.vertices());
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, samples_.draw()->id());
+    glDrawArraysIndirect(GL_TRIANGLES, nullptr);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
     glDisable(GL_BLEND);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
@@ -66,6 +53,7 @@ class StrokePass : public GpuPass {
                        page.height, 1);
   }
 
+  StrokeSamples samples_;
   Program program_;
   Texture textures_, height_;
   Framebuffer fbo_;
@@ -73,21 +61,6 @@ class StrokePass : public GpuPass {
 };
 
 }  // namespace
-
-RibbonBuffers::RibbonBuffers(const std::vector<RunStroke>& strokes) {
-  std::vector<SampleRecord> samples;
-  std::vector<RunRecord> runs;
-  for (const RunStroke& stroke : strokes) append(stroke, samples, runs);
-  vertices_ = GLsizei(6 * samples.size());
-  if (samples.empty()) return;
-  samples_ = make_buffer(samples.data(), samples.size() * sizeof(SampleRecord));
-  runs_ = make_buffer(runs.data(), runs.size() * sizeof(RunRecord));
-}
-
-void RibbonBuffers::bind() const {
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, samples_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, runs_.id());
-}
 
 PLUMBAGO_GPU_PASS(stroke, {{"stroke"}, {}, make_pass<StrokePass>, Probe::Raster});
 

@@ -3,8 +3,10 @@
 // cases of a ribbon: taper, halo, closed loops drawn whole and split by pen lifts, offsets
 // that zigzag faster than the sample spacing, repeated samples, an exact hairpin, a piece with
 // no direction, a one-sample run, coordinates far from the origin. The same samples feed both
-// (gpu/strokes/stroke.hpp RibbonBuffers), so (u, v), alpha and which segments draw must agree
-// exactly, and each corner within the float rounding bound derived below.
+// (gpu/strokes/stroke.hpp SampleRecord), so (u, v), alpha and which segments draw must agree
+// exactly, and each corner within the float rounding bound derived below. The samples are
+// given here (some of them by hand: no base stroke makes repeats or hairpins), not made by
+// the GPU (tests/strokes/stroke_samples_test.cpp checks those).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +15,7 @@
 #include <limits>
 #include <numbers>
 
+#include "common/strokes/stroke.hpp"
 #include "gpu/gl/program.hpp"
 #include "gpu/strokes/stroke.hpp"
 #include "tests/support/test_scenes.hpp"
@@ -23,6 +26,43 @@ namespace {
 constexpr double kUnitRoundoff = 0x1p-24;  // float's
 constexpr double kDegenerate = 1e-9;       // px: as common/strokes/base_stroke.cpp
 
+// The samples of every run that draws a ribbon (2 or more) as common_ribbon.glsl reads them, in
+// SSBOs 0 (samples) and 1 (runs).
+class RibbonBuffers {
+ public:
+  explicit RibbonBuffers(const std::vector<RunStroke>& strokes) {
+    std::vector<gpu::SampleRecord> samples;
+    std::vector<gpu::RunRecord> runs;
+    for (const RunStroke& stroke : strokes) append(stroke, samples, runs);
+    vertices_ = 6 * samples.size();
+    if (samples.empty()) return;
+    samples_ = gpu::make_buffer(samples.data(), samples.size() * sizeof(gpu::SampleRecord));
+    runs_ = gpu::make_buffer(runs.data(), runs.size() * sizeof(gpu::RunRecord));
+  }
+  size_t vertices() const { return vertices_; }  // six a sample
+  void bind() const {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, samples_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, runs_.id());
+  }
+
+ private:
+  static void append(const RunStroke& stroke, std::vector<gpu::SampleRecord>& samples,
+                     std::vector<gpu::RunRecord>& runs) {
+    const std::vector<StrokeSample>& q = stroke.samples.samples;
+    if (q.size() < 2) return;
+    const StrokeStyle& style = stroke.style;
+    bool whole = std::all_of(q.begin(), q.end() - 1, [](const StrokeSample& x) { return x.pen_down_after; });
+    auto run = uint32_t(runs.size());
+    runs.push_back({glm::vec4(style.color_r, style.color_g, style.color_b, float(int(style.texture))),
+                    uint32_t(samples.size()), uint32_t(q.size()), stroke.samples.closed && whole});
+    for (const StrokeSample& x : q)
+      samples.push_back({glm::vec2(x.position), float(x.s / style.texture_period_px), float(x.width), float(x.alpha),
+                         run, x.pen_down_after});
+  }
+  gpu::Buffer samples_, runs_;
+  size_t vertices_ = 0;
+};
+
 // One corner as the GPU made it.
 struct GpuCorner {
   glm::vec4 window_uv;    // x, y, u, v
@@ -32,7 +72,7 @@ struct GpuCorner {
 // Every corner of `strokes`' ribbons, six a sample, computed by common_ribbon.glsl's
 // ribbon_corner in a compute shader over the buffers the stroke pass draws from.
 std::vector<GpuCorner> gpu_corners(const std::vector<RunStroke>& strokes) {
-  gpu::RibbonBuffers buffers(strokes);
+  RibbonBuffers buffers(strokes);
   std::string source =
       "#version 450 core\nlayout(local_size_x = 64) in;\n" + gpu::shader_source("strokes/common_ribbon.glsl") + R"(
 struct Captured { vec4 window_uv; vec4 alpha_drawn; };

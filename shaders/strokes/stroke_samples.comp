@@ -1,0 +1,418 @@
+#version 450 core
+// Stroke samples on the GPU (Kalnins et al. 2002, §4.1, §4.3): steps 1.-5. of
+// common/strokes/base_stroke.hpp, in double as the reference makes them, one invocation per
+// visible run. STEP_COUNT keeps the run's distinct points and counts its samples; after a
+// prefix sum over the counts, STEP_WRITE writes them where shaders/strokes/common_ribbon.glsl
+// reads them; STEP_ARGS writes the indirect draw of their ribbons (six vertices a sample).
+layout(local_size_x = 64) in;
+
+struct RunIn {  // gpu/strokes/stroke_samples.hpp RunInput
+  vec4 color_layer;
+  uint first_point, point_count, first_offset, offset_count;
+  double example_length;  // the offsets example's L_drawn (no offsets: offset_count 0)
+  float width, alpha, taper, fade, halo, flare, sample_px, period;
+  uint flags, pad;  // kClosed | kOccludedStart | kOccludedEnd | kPressureWidth | kPressureAlpha
+};
+struct Offset {  // gpu/strokes/stroke_samples.hpp OffsetInput
+  double t, displacement, pressure;
+  uint pen_up, pad;
+};
+const uint kClosed = 1u, kOccludedStart = 2u, kOccludedEnd = 4u, kPressureWidth = 8u, kPressureAlpha = 16u;
+
+layout(std430, binding = 2) readonly buffer RunsIn { RunIn runs_in[]; };
+layout(std430, binding = 3) readonly buffer Points { dvec2 points[]; };
+layout(std430, binding = 4) readonly buffer Offsets { Offset offsets[]; };
+// Per run: its sample count, then (scanned) its first sample; the total at [run_count].
+layout(std430, binding = 5) buffer Counts { uint counts[]; };
+// Each run's distinct points, at its first_point.
+layout(std430, binding = 6) buffer Distinct { dvec2 distinct[]; };
+// Per run: the length of its spline (2.) and how many distinct points it kept.
+struct RunState {  // gpu/strokes/stroke_samples.cpp RunState
+  double length;
+  uint distinct_count, pad;
+};
+layout(std430, binding = 7) buffer RunStates { RunState states[]; };
+
+uniform uint run_count, first, capacity;
+
+const double kSamePoint = 1e-6lf, kPiecesPerPx = 4.0lf, kSameArcLength = 1e-9lf, kNearPenChange = 0.05lf;
+const double kDegenerate = 1e-9lf;
+const int kMinPieces = 4, kMaxPieces = 4096;
+
+bool finite(dvec2 p) { return !any(isnan(p)) && !any(isinf(p)); }
+
+// 1. The run's finite points, repeats merged, a closed run's last point equal to its first
+// dropped: kept in `distinct` at its first_point.
+uint keep_distinct_points(RunIn r) {
+  uint n = 0u;
+  for (uint k = 0u; k < r.point_count; ++k) {
+    dvec2 p = points[r.first_point + k];
+    if (finite(p) && (n == 0u || distance(distinct[r.first_point + n - 1u], p) > kSamePoint))
+      distinct[r.first_point + n++] = p;
+  }
+  if ((r.flags & kClosed) != 0u && n > 1u &&
+      distance(distinct[r.first_point], distinct[r.first_point + n - 1u]) <= kSamePoint)
+    --n;
+  return n;
+}
+
+// A cubic Hermite span: p(t) = h00 p0 + h10 m0 + h01 p1 + h11 m1, t in [0, 1].
+struct Span {
+  dvec2 p0, m0, p1, m1;
+};
+
+dvec2 span_at(Span s, double t) {
+  double t2 = t * t, t3 = t2 * t;
+  return (2.0lf * t3 - 3.0lf * t2 + 1.0lf) * s.p0 + (t3 - 2.0lf * t2 + t) * s.m0 + (-2.0lf * t3 + 3.0lf * t2) * s.p1 +
+         (t3 - t2) * s.m1;
+}
+
+// Length of the Bézier control polygon p0, p0 + m0/3, p1 - m1/3, p1.
+double control_length(Span s) {
+  return length(s.m0) / 3.0lf + distance(s.p0 + s.m0 / 3.0lf, s.p1 - s.m1 / 3.0lf) + length(s.m1) / 3.0lf;
+}
+
+// The run's curve: its distinct points, their count, closed.
+struct Curve {
+  uint first, n;
+  bool closed;
+};
+
+dvec2 point(Curve c, uint i) { return distinct[c.first + i % c.n]; }
+
+// v_i = (p_{i+1} - p_{i-1}) / (|p_{i+1} - p_i| + |p_i - p_{i-1}|): the tangent per px of chord.
+dvec2 velocity(Curve c, uint i) {
+  dvec2 prev = point(c, i + c.n - 1u), here = point(c, i), next = point(c, i + 1u);
+  return (next - prev) / (distance(next, here) + distance(here, prev));
+}
+
+uint span_count(Curve c) { return c.closed ? c.n : c.n - 1u; }
+
+// Span i of the non-uniform Catmull-Rom spline, with parabolic end slopes when open.
+Span span(Curve c, uint i) {
+  dvec2 a = point(c, i), b = point(c, i + 1u);
+  if (c.n == 2u) return Span(a, b - a, b, b - a);
+  double d = distance(a, b);
+  bool first_span = !c.closed && i == 0u, last_span = !c.closed && i + 1u == span_count(c);
+  dvec2 m0 = first_span ? dvec2(0.0lf) : velocity(c, i) * d;
+  dvec2 m1 = last_span ? dvec2(0.0lf) : velocity(c, i + 1u) * d;
+  if (first_span) m0 = 2.0lf * (b - a) - m1;  // parabolic end slopes
+  if (last_span) m1 = 2.0lf * (b - a) - m0;
+  return Span(a, m0, b, m1);
+}
+
+int pieces(Span s) { return int(clamp(ceil(kPiecesPerPx * control_length(s)), double(kMinPieces), double(kMaxPieces))); }
+
+// 2. A walk along the dense polyline of the spline: the piece [a, b] from arc length sa to sb.
+struct Walk {
+  Curve c;
+  uint span_index;
+  int k, m;
+  Span s;
+  dvec2 a, b;
+  double sa, sb;
+  bool last;  // b is the curve's last dense point
+};
+
+// Moves the walk one piece on; false at the end of the curve.
+bool step(inout Walk w) {
+  if (w.k == w.m) {
+    if (w.span_index + 1u == span_count(w.c)) return false;
+    w.s = span(w.c, ++w.span_index);
+    w.m = pieces(w.s);
+    w.k = 0;
+  }
+  ++w.k;
+  w.a = w.b, w.sa = w.sb;
+  w.b = span_at(w.s, double(w.k) / double(w.m));
+  w.sb = w.sa + distance(w.a, w.b);
+  w.last = w.k == w.m && w.span_index + 1u == span_count(w.c);
+  return true;
+}
+
+Walk start_walk(Curve c) {
+  Walk w;
+  w.c = c;
+  w.span_index = 0u;
+  w.s = span(c, 0u);
+  w.m = pieces(w.s);
+  w.k = 0;
+  w.b = w.s.p0, w.sb = 0.0lf;
+  step(w);
+  return w;
+}
+
+double curve_length(Curve c) {
+  Walk w = start_walk(c);
+  while (step(w)) {}
+  return w.sb;
+}
+
+// The point at arc length `at` (nondecreasing from call to call), linear between dense points.
+dvec2 point_at(inout Walk w, double at) {
+  while (w.sb <= at && !w.last) step(w);
+  double piece = w.sb - w.sa;
+  return piece > 0.0lf ? mix(w.a, w.b, (at - w.sa) / piece) : w.a;
+}
+
+// 4. The arc lengths where the pen lifts or lands, in increasing order: the ends of each lift
+// of nonzero length, (k + t_i) L_drawn to (k + t_next) L_drawn, in every period k, kept in
+// [kNearPenChange, L - kNearPenChange].
+struct Changes {
+  RunIn r;
+  double length;
+  int k, periods;
+  uint i, end;  // end: 0 the lift's start is next, 1 its end
+};
+
+Changes start_changes(RunIn r, double length) {
+  double periods = r.offset_count == 0u ? -2.0lf : floor(length / r.example_length);
+  return Changes(r, length, -1, int(periods), 0u, 0u);
+}
+
+// The next change, or a negative number when there is none.
+double next_change(inout Changes c) {
+  for (; c.k <= c.periods; ++c.k, c.i = 0u) {
+    for (; c.i < c.r.offset_count; ++c.i, c.end = 0u) {
+      Offset o = offsets[c.r.first_offset + c.i];
+      double next_t = c.i + 1u < c.r.offset_count ? offsets[c.r.first_offset + c.i + 1u].t
+                                                 : offsets[c.r.first_offset].t + 1.0lf;
+      if (o.pen_up == 0u || !(next_t > o.t)) continue;
+      for (; c.end < 2u; ++c.end) {
+        double s = (double(c.k) + (c.end == 0u ? o.t : next_t)) * c.r.example_length;
+        if (s > 0.0lf && s < c.length && s >= kNearPenChange && s <= c.length - kNearPenChange) {
+          ++c.end;
+          return s;
+        }
+      }
+    }
+  }
+  return -1.0lf;
+}
+
+// 3. and 4.: the even samples k L / n, n = ceil(L / sample_px), merged with the pen changes
+// in increasing order; an even sample within kNearPenChange of a change gives way to it, and
+// arc lengths within kSameArcLength of the last one kept are one.
+struct Merge {
+  double length;
+  int n, k;
+  Changes changes;
+  double previous_change, next_change, last;
+  bool any;
+};
+
+Merge start_merge(RunIn r, double length) {
+  Merge m;
+  m.length = length;
+  m.n = max(1, int(ceil(length / double(r.sample_px) - 1e-9lf)));
+  m.k = 0;
+  m.changes = start_changes(r, length);
+  m.previous_change = -1.0lf;
+  m.next_change = next_change(m.changes);
+  m.any = false;
+  return m;
+}
+
+// The next sample's arc length, or a negative number after the last.
+double next_sample(inout Merge m) {
+  for (;;) {
+    double even = m.k <= m.n ? m.length * double(m.k) / double(m.n) : -1.0lf;
+    bool change_first = m.next_change >= 0.0lf && (even < 0.0lf || m.next_change < even);
+    double s;
+    if (change_first) {
+      s = m.next_change;
+      m.previous_change = s;
+      m.next_change = next_change(m.changes);
+    } else {
+      if (even < 0.0lf) return -1.0lf;
+      ++m.k;
+      bool near = (m.previous_change >= 0.0lf && m.previous_change >= even - kNearPenChange) ||
+                  (m.next_change >= 0.0lf && m.next_change < even + kNearPenChange);
+      if (even > 0.0lf && even < m.length && near) continue;
+      s = even;
+    }
+    if (m.any && s - m.last < kSameArcLength) continue;
+    m.any = true;
+    m.last = s;
+    return s;
+  }
+}
+
+Curve curve_of(RunIn r, uint distinct_count) {
+  return Curve(r.first_point, distinct_count, (r.flags & kClosed) != 0u && distinct_count >= 3u);
+}
+
+#ifdef STEP_COUNT
+void main() {
+  uint run = gl_GlobalInvocationID.x + first;
+  if (run >= run_count) return;
+  RunIn r = runs_in[run];
+  uint n = keep_distinct_points(r);
+  uint count = 0u;
+  double L = n >= 2u ? curve_length(curve_of(r, n)) : 0.0lf;
+  if (n >= 2u) {
+    Merge m = start_merge(r, L);
+    while (next_sample(m) >= 0.0lf) ++count;
+  }
+  states[run] = RunState(L, n, 0u);
+  counts[run] = count;
+}
+#endif
+
+#ifdef STEP_ARGS
+layout(std430, binding = 8) writeonly buffer Draw { uint draw[4]; };  // DrawArraysIndirectCommand
+void main() { draw = uint[4](6u * min(counts[run_count], capacity), 1u, 0u, 0u); }
+#endif
+
+#ifdef STEP_WRITE
+struct Sample {  // gpu/strokes/stroke.hpp SampleRecord
+  vec2 position;
+  float u, width, alpha;
+  uint run, pen_down_after, pad;
+};
+struct Run {  // gpu/strokes/stroke.hpp RunRecord
+  vec4 color_layer;
+  uint first, count, cyclic, pad;
+};
+layout(std430, binding = 0) writeonly buffer Samples { Sample samples[]; };
+layout(std430, binding = 1) writeonly buffer Runs { Run runs[]; };
+// Per sample: its point on the base curve, the base curve's normal there, its arc length.
+struct Base {
+  dvec2 point, normal;
+  double s, pad;
+};
+layout(std430, binding = 9) buffer Bases { Base bases[]; };
+
+// 4. The rubber stamp: the example's offset at arc length s, interpolated linearly at
+// t = (s mod L_drawn) / L_drawn, wrapping from its last offset to its first.
+struct Stamped {
+  double displacement, pressure;
+  bool pen_down;
+};
+
+Stamped rubber_stamp(RunIn r, double s, double run_length) {
+  if (r.offset_count == 0u) return Stamped(0.0lf, 1.0lf, true);
+  double t = s / r.example_length;
+  t -= floor(t);
+  uint count = 0u;  // offsets with t_i <= t (they are sorted)
+  for (uint lo = 0u, hi = r.offset_count; lo < hi;) {
+    uint mid = (lo + hi) / 2u;
+    if (offsets[r.first_offset + mid].t <= t) lo = count = mid + 1u; else hi = mid;
+  }
+  if (count == 0u) t += 1.0lf;  // before the first offset: on the last segment, from the period before
+  uint i = (count + r.offset_count - 1u) % r.offset_count;
+  bool wraps = i + 1u == r.offset_count;
+  Offset here = offsets[r.first_offset + i], next = offsets[r.first_offset + (wraps ? 0u : i + 1u)];
+  double t_next = wraps ? next.t + 1.0lf : next.t;
+  double f = t_next > here.t ? (t - here.t) / (t_next - here.t) : 0.0lf;
+  double scale = min(run_length / r.example_length, 1.0lf);
+  return Stamped(mix(here.displacement, next.displacement, f) * scale, mix(here.pressure, next.pressure, f),
+                 here.pen_up == 0u);
+}
+
+// 5. Width and alpha at arc length s of a run of length L.
+double taper(double dl, double T) {
+  double x = (T - dl) / T;
+  return dl < T ? sqrt(max(0.0lf, 1.0lf - x * x)) : 1.0lf;
+}
+double fade(double dl, double F) {
+  double x = (F - dl) / F, y = max(0.0lf, 1.0lf - x * x);
+  return dl < F ? y * sqrt(y) : 1.0lf;
+}
+double halo_base(double dh, double H) {  // 1 - h^2
+  double h = (H - dh) / H;
+  return dh < H ? max(0.0lf, 1.0lf - h * h) : 1.0lf;
+}
+
+const double kFar = 1e300lf;  // px: no end caused by occlusion
+
+dvec2 shape_at(RunIn r, double s, double L, bool has_ends, double pressure) {
+  double w = double(r.width), a = double(r.alpha);
+  if (has_ends) {
+    double dl = max(0.0lf, min(s, L - s)), dh = kFar;
+    if ((r.flags & kOccludedStart) != 0u) dh = min(dh, s);
+    if ((r.flags & kOccludedEnd) != 0u) dh = min(dh, L - s);
+    double halo = halo_base(dh, double(r.halo)), flare = 1.0lf + double(r.flare) * (1.0lf - 2.0lf * dl / L);
+    w *= taper(dl, double(r.taper)) * flare * sqrt(sqrt(halo));
+    a *= fade(dl, double(r.fade)) * (halo * halo) * (halo * halo) * halo;
+  }
+  if ((r.flags & kPressureWidth) != 0u) w *= pressure;
+  if ((r.flags & kPressureAlpha) != 0u) a *= pressure;
+  if (w < 2.0lf) return dvec2(2.0lf, a * w * w / 4.0lf);  // thin-stroke rule: drawn 2 px wide
+  return dvec2(w, a);
+}
+
+dvec2 left_normal(dvec2 d) { return dvec2(-d.y, d.x); }
+
+// The left unit normal of base segment j -> j + 1 of the run's samples [b, b + count), or
+// (0, 0) when it is degenerate.
+dvec2 own_normal(uint b, uint j) {
+  dvec2 d = bases[b + j + 1u].point - bases[b + j].point;
+  double len = length(d);
+  return len > kDegenerate ? left_normal(d / len) : dvec2(0.0lf);
+}
+
+// 6.'s vertex normals on the base points (cyclic when closed): each segment's normal, a
+// degenerate one the previous valid one's (the first valid one's before any), at a sample the
+// normalized sum of its two segments', a hairpin the previous one's. Written into bases[].normal.
+// False when no segment has a direction (the run then has no samples).
+bool base_normals(uint b, uint count, bool cyclic) {
+  dvec2 first_valid = dvec2(0.0lf), last_valid = dvec2(0.0lf);
+  for (uint j = 0u; j + 1u < count; ++j) {
+    dvec2 n = own_normal(b, j);
+    if (n == dvec2(0.0lf)) continue;
+    if (first_valid == dvec2(0.0lf)) first_valid = n;
+    last_valid = n;
+  }
+  if (first_valid == dvec2(0.0lf)) return false;
+  dvec2 previous = first_valid;  // segment j - 1's normal
+  for (uint j = 0u; j < count; ++j) {
+    dvec2 next = j + 1u < count ? own_normal(b, j) : first_valid;
+    if (j + 1u < count && next == dvec2(0.0lf)) next = previous;
+    bool has_prev = j > 0u || cyclic, has_next = j + 1u < count || cyclic;
+    dvec2 prev = j > 0u ? previous : last_valid;
+    dvec2 sum = (has_prev ? prev : dvec2(0.0lf)) + (has_next ? next : dvec2(0.0lf));
+    double len = length(sum);
+    bases[b + j].normal = len > 1e-9lf ? sum / len : (has_prev ? prev : next);
+    if (j + 1u < count) previous = next;
+  }
+  return true;
+}
+
+// The run's base points at its sample arc lengths, from `b`; their count.
+uint write_bases(RunIn r, Curve c, double length, uint b) {
+  Merge m = start_merge(r, length);
+  Walk w = start_walk(c);
+  uint count = 0u;
+  for (double s = next_sample(m); s >= 0.0lf && b + count < capacity; s = next_sample(m), ++count)
+    bases[b + count] = Base(point_at(w, clamp(s, 0.0lf, length)), dvec2(0.0lf), s, 0.0lf);
+  return count;
+}
+
+void main() {
+  uint run = gl_GlobalInvocationID.x + first;
+  if (run >= run_count) return;
+  RunIn r = runs_in[run];
+  uint b = counts[run], count = min(counts[run + 1u], capacity) - min(b, capacity);
+  RunState state = states[run];
+  Curve c = curve_of(r, state.distinct_count);
+  double L = state.length;
+  bool drawn = count >= 2u && write_bases(r, c, L, b) == count && base_normals(b, count, c.closed);
+  bool whole = true;
+  for (uint j = 0u; j < count; ++j) {
+    uint at = b + j;
+    if (!drawn) {
+      samples[at] = Sample(vec2(0.0), 0.0, 0.0, 0.0, run, 0u, 0u);
+      continue;
+    }
+    Base q = bases[at];
+    Stamped o = rubber_stamp(r, q.s, L);
+    dvec2 shape = shape_at(r, q.s, L, !c.closed, o.pressure);
+    bool down = j + 1u < count && rubber_stamp(r, 0.5lf * (q.s + bases[at + 1u].s), L).pen_down;
+    whole = whole && (down || j + 1u == count);
+    samples[at] = Sample(vec2(q.point + q.normal * o.displacement), float(q.s / double(r.period)), float(shape.x),
+                         float(shape.y), run, down ? 1u : 0u, 0u);
+  }
+  runs[run] = Run(r.color_layer, b, drawn ? count : 0u, c.closed && whole ? 1u : 0u, 0u);
+}
+#endif

@@ -1,0 +1,179 @@
+// The GPU's stroke samples (shaders/strokes/stroke_samples.comp, in double) against the
+// reference's (common/strokes/base_stroke.hpp 1.-5., in double), sample by sample, as the
+// ribbons read them (gpu/strokes/stroke.hpp SampleRecord, in float): on the hard cases of a
+// base stroke and on every visible run of the procedural stroke scenes. Both compute the same
+// formulas in double in the same order, but for a few library calls (std::pow and std::lerp
+// against sqrt and mix) and GLSL's double division, which need not be correctly rounded: they
+// differ by a few units of double rounding, so the counts, pen flags and runs must agree
+// exactly, and each float output within one float rounding. (Where a formula jumps, at a
+// rubber stamp's period, the reference keeps its samples off the jump: common/strokes/stroke.cpp
+// kPastTheRunEnd.)
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+
+#include "common/scene/scene.hpp"
+#include "gpu/strokes/stroke_samples.hpp"
+#include "parity/lines.hpp"
+#include "tests/support/test_scenes.hpp"
+
+namespace plumbago {
+namespace {
+
+// a and b are one float rounding of two doubles a few double roundings apart at most: within
+// one unit in the last place of the larger of them and `scale`, the quantity's own size
+// (alpha's is 1: a factor of (1 - x^2) near x = 1 is 0 in one and 1e-16 in the other).
+bool within_one_ulp(float a, float b, float scale = 0) {
+  float larger = std::max({std::abs(a), std::abs(b), scale});
+  return std::abs(a - b) <= std::nextafter(larger, std::numeric_limits<float>::infinity()) - larger;
+}
+
+struct Tally {
+  size_t samples = 0, runs = 0, differing = 0;
+};
+
+// Every run of `runs`: the GPU's records against the reference's samples.
+Tally compare(const std::vector<StyledRun>& runs) {
+  gpu::StrokeSamples gpu_samples;
+  gpu_samples(runs);
+  std::vector<gpu::SampleRecord> samples = gpu_samples.samples();
+  std::vector<gpu::RunRecord> records = gpu_samples.runs();
+  Tally t;
+  for (size_t r = 0; r < runs.size(); ++r) {
+    const StrokeStyle& style = runs[r].style;
+    BaseStrokeSamples ref = base_stroke_samples(runs[r].run, style);
+    const std::vector<StrokeSample>& q = ref.samples;
+    const gpu::RunRecord& g = records.at(r);
+    EXPECT_EQ(g.count, q.size()) << "run " << r;
+    if (g.count != q.size()) continue;
+    bool whole = std::all_of(q.begin(), q.end() - (q.empty() ? 0 : 1), [](const StrokeSample& x) { return x.pen_down_after; });
+    EXPECT_EQ(g.cyclic != 0, ref.closed && whole) << "run " << r;
+    EXPECT_EQ(g.color_layer, glm::vec4(style.color_r, style.color_g, style.color_b, float(int(style.texture))));
+    t.runs += q.empty() ? 0 : 1;
+    for (size_t j = 0; j < q.size(); ++j) {
+      const gpu::SampleRecord& s = samples.at(g.first + j);
+      glm::vec2 p(q[j].position);
+      float u = float(q[j].s / style.texture_period_px), w = float(q[j].width), a = float(q[j].alpha);
+      bool same = s.position == p && s.u == u && s.width == w && s.alpha == a;
+      t.differing += same ? 0 : 1;
+      EXPECT_TRUE(within_one_ulp(s.position.x, p.x) && within_one_ulp(s.position.y, p.y))
+          << "run " << r << " sample " << j << ": (" << s.position.x << ", " << s.position.y << ") against (" << p.x
+          << ", " << p.y << ")";
+      EXPECT_TRUE(within_one_ulp(s.u, u) && within_one_ulp(s.width, w) && within_one_ulp(s.alpha, a, 1.0f))
+          << "run " << r << " sample " << j;
+      EXPECT_EQ(s.pen_down_after != 0, q[j].pen_down_after) << "run " << r << " sample " << j;
+      EXPECT_EQ(s.run, r);
+    }
+    t.samples += q.size();
+  }
+  return t;
+}
+
+StrokeStyle style(double width) {
+  StrokeStyle s = default_stroke_style();
+  s.width_px = float(width);
+  s.texture_period_px = 48;
+  return s;
+}
+
+std::vector<glm::dvec2> arc(glm::dvec2 center, double radius, int n, double turns) {
+  std::vector<glm::dvec2> p;
+  for (int i = 0; i < n; ++i) {
+    double a = 2 * std::numbers::pi * turns * i / n;
+    p.push_back(center + radius * glm::dvec2(std::cos(a), std::sin(a)));
+  }
+  return p;
+}
+
+// A run through `p` in style `s`.
+struct Cases {
+  std::vector<StyledRun> runs;
+  void add(std::vector<glm::dvec2> p, bool closed, const StrokeStyle& s, bool occluded_start = false,
+           bool occluded_end = false) {
+    StyledRun r;
+    r.run.points = std::move(p);
+    r.run.closed = closed, r.run.occluded_start = occluded_start, r.run.occluded_end = occluded_end;
+    r.style = s;
+    runs.push_back(std::move(r));
+  }
+};
+
+std::vector<StyledRun> hard_cases() {
+  Cases c;
+  StrokeStyle tapered = style(9);
+  tapered.taper_px = 30, tapered.halo_px = 15, tapered.fade_px = 10, tapered.flare = 0.5f;
+  std::vector<glm::dvec2> wave;
+  for (int i = 0; i <= 40; ++i) wave.push_back({20.0 + 8 * i, 300 + 40 * std::sin(i * 0.4)});
+  c.add(wave, false, tapered, true);               // open: taper, fade, flare, halo at its start
+  c.add(wave, false, tapered, true, true);         // haloed at both ends
+  c.add(arc({200, 200}, 60, 36, 1), true, style(6));  // closed, drawn whole
+  StrokeStyle lifted = style(5);
+  lifted.offsets = OffsetExample{70, {{0, 0, 1, false}, {0.4, 2, 0.7, true}, {0.6, -1, 1, false}}};
+  lifted.pressure_alpha = true;
+  c.add(arc({420, 180}, 50, 30, 1), true, lifted);  // closed, split by pen lifts
+  c.add(wave, false, lifted);                       // open, many periods
+  StrokeStyle zigzag = style(1.5);                  // thin: drawn 2 px wide
+  zigzag.sample_px = 2;
+  zigzag.offsets = OffsetExample{5, {{0, 1.5, 1, false}, {0.5, -1.5, 1, false}}};
+  c.add({{30, 500}, {300, 520}, {560, 480}}, false, zigzag);  // offsets faster than the spacing
+  // Pen changes near even samples and ends: lifts over t in (0.3, 0.6) and (0.999, 1) of a 10
+  // px example give changes at 3, 6, 9.99, 10, 13, 16, 19.99 and 20 px. A straight run 21.315 px
+  // long sampled every 3.1 px has even samples 3.045 px apart: the first 0.045 px from the
+  // change at 3, which it gives way to. On one 20.045 px long the change at 20 lies 0.045 px
+  // from the end and gives way to it.
+  StrokeStyle near = style(4);
+  near.sample_px = 3.1f;
+  near.offsets = OffsetExample{10, {{0, 0, 1, false}, {0.3, 0, 1, true}, {0.6, 0, 1, false}, {0.999, 0, 1, true}}};
+  c.add({{100, 50}, {121.315, 50}}, false, near);
+  c.add({{100, 60}, {120.045, 60}}, false, near);
+  StrokeStyle late = style(4);  // the first offset after t = 0: the stretch before it wraps from the last
+  late.offsets = OffsetExample{25, {{0.2, 1.5, 1, false}, {0.7, -1.5, 0.5, false}}};
+  c.add({{100, 120}, {180, 135}, {260, 120}}, false, late);
+  double nan = std::numeric_limits<double>::quiet_NaN();  // dropped, as are repeats within 1e-6 px
+  c.add({{10, 10}, {10, 10}, {nan, 5}, {30, 12}, {30, 12 + 1e-7}, {50, 10}, {50, 10}}, false, style(4));
+  c.add({{60, 60}, {90, 70}, {60, 60}}, true, style(4));               // closed, two distinct points: drawn open
+  c.add({{200, 90}, {230, 95}, {260, 90}, {200, 90}}, true, style(4));  // its last point its first
+  c.add({{70, 70}, {70, 70}}, false, style(4));                         // one distinct point: nothing
+  c.add({{10, 300}, {10.5, 300}, {10, 300}}, false, style(4));          // there and back in one step: nothing
+  c.add(arc({3800, 2900}, 25, 20, 0.7), false, style(7));              // far from the origin
+  return c.runs;
+}
+
+class StrokeSamplesParity : public testing::GlTest {};
+
+TEST_F(StrokeSamplesParity, HardCasesMatchTheReference) {
+  Tally t = compare(hard_cases());
+  EXPECT_GT(t.samples, 300u);
+  std::printf("stroke samples, hard cases: %zu samples in %zu runs, %zu not bit-equal (within one float ulp)\n",
+              t.samples, t.runs, t.differing);
+}
+
+// The procedural stroke scenes' visible runs, in their styles: rubber-stamped and synthesized
+// offsets (the snowman's and the storefront's Markov chains), decals and hatches with their
+// drawn pressure (hatching_lod), plain silhouettes (the torus).
+class StrokeSamplesScenes : public testing::GlTest, public ::testing::WithParamInterface<const char*> {};
+
+TEST_P(StrokeSamplesScenes, EveryVisibleRunMatchesTheReference) {
+  Scene scene = load_scene(std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/" + GetParam());
+  SceneLines found = scene_lines(scene, "reference");
+  std::vector<StyledRun> runs = styled_runs(found.lines, found.visibility, found.scene.strokes, found.scene.seed);
+  ASSERT_FALSE(runs.empty());
+  Tally t = compare(runs);
+  std::printf("stroke samples, %s: %zu samples in %zu runs, %zu not bit-equal (within one float ulp)\n", GetParam(),
+              t.samples, t.runs, t.differing);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, StrokeSamplesScenes,
+                         ::testing::Values("torus_strokes.json", "snowman_strokes.json", "storefront_strokes.json",
+                                           "hatching_lod.json"),
+                         [](const auto& info) {
+                           std::string name = info.param;
+                           return name.substr(0, name.find('.'));
+                         });
+
+}  // namespace
+}  // namespace plumbago
