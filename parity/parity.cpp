@@ -24,7 +24,6 @@ namespace {
 // End to end: at most this share of pixels may differ by more than 2/255 (measured on
 // the built-in scenes and the shared models: see tests/core/end_to_end_test.cpp).
 constexpr double kEndToEndShare = 0.05;
-constexpr float kDepthJump = 0.01f;  // relative linear-depth step that makes a discontinuity
 
 bool contains(const std::vector<std::string>& list, const std::string& name) {
   return std::find(list.begin(), list.end(), name) != list.end();

@@ -82,10 +82,12 @@ void add_gbuffer_buffers(const GBuffer& g, std::map<std::string, Image>& out, co
 std::vector<Output> gbuffer_outputs(const GBufferSlot& g, bool with_angles) {
   const char* interior =
       "raster vs ray on interior pixels; the band along depth discontinuities excluded; where triangles are slivers "
-      "in the window, plus a derived bound (a raster's corners snap by up to 1/32 px)";
+      "in the window, plus a derived bound (a raster's corners snap by up to 1/32 px), none within that of an "
+      "occluding edge in front";
   const char* same =
       "raster vs ray on interior pixels that both backends give the same triangle; where triangles are slivers in the "
-      "window, plus a derived bound (a raster's corners snap by up to 1/32 px)";
+      "window, plus a derived bound (a raster's corners snap by up to 1/32 px), none within that of an occluding edge "
+      "in front";
   const char* angles = "(cos, sin) of each corner's angle; interior pixels on the same triangle";
   std::vector<Output> out = {
       {.handle = g.normal,

@@ -51,6 +51,10 @@ struct WorldObject {
 // `curvature` holds one entry per scene object, or nothing (no texture rotation).
 std::vector<WorldObject> world_geometry(const Scene& scene, const std::vector<Curvature>& curvature = {});
 
+// The relative step of linear view depth between neighbouring pixels that makes a depth
+// discontinuity: the G-buffer's parity leaves out the band along one (parity/parity.cpp).
+constexpr float kDepthJump = 0.01f;
+
 // Unit geometric normal of triangle t, normalize(cross(p1 - p0, p2 - p0)); (0,0,1) for a
 // zero-area triangle, never NaN.
 glm::vec3 face_normal(const WorldObject& obj, size_t t);

@@ -13,10 +13,20 @@
 // neighbour at a pixel center, so each pixel takes the largest bound of the triangles the
 // reference sees at it and its eight neighbours. Well-shaped triangles get bounds far
 // below the tolerances; a 100,000-gon's fan or a fan of edge-on fins gets what it needs.
+//
+// Where the snapped edge is an occluding one, what lies across it is not the same surface: a
+// border, or a silhouette edge (its two faces turn opposite ways in the window), passing
+// within sqrt(2) delta of a pixel center and not behind the surface the ray found there, may
+// give the center to the surface in front of it or behind it, at any depth and with any
+// attributes (the edge of a sliver of a thin sheet over the body behind it: the Ogre's
+// loincloth). No bound holds there: the pixel's bound is infinite, which leaves it out of
+// the comparison, and the count of pixels over the tolerance reports it.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "common/core/stage.hpp"
+#include "common/mesh/mesh_topology.hpp"
 #include "common/scene/gbuffer.hpp"
 #include "common/strokes/strokes.hpp"
 #include "reference/core/stage.hpp"
@@ -78,8 +88,60 @@ double normal_moves(const WorldObject& obj, const glm::uvec3& tri, const GBuffer
   return std::min(2.0, 2 * moved / std::max(double(glm::length(n)), 1e-9));
 }
 
-// The bound image of one attribute: its own triangle's at each covered pixel, then the
-// largest over the 3x3 neighbourhood.
+// Twice the window area of each face of `obj`, positive where it runs counter-clockwise
+// (faces the eye).
+std::vector<double> window_areas(const WorldObject& obj, const WindowProjection& project) {
+  std::vector<double> out;
+  for (const glm::uvec3& t : obj.triangles) {
+    glm::dvec3 w[3];
+    for (int k = 0; k < 3; ++k) w[k] = project(glm::dvec3(obj.positions[t[k]]));
+    out.push_back((w[1].x - w[0].x) * (w[2].y - w[0].y) - (w[1].y - w[0].y) * (w[2].x - w[0].x));
+  }
+  return out;
+}
+
+// Marks the pixels whose centers lie within `reach` of the window segment a -> b (x, y and
+// linear depth) where the segment there is not behind the reference's surface by more than
+// a depth discontinuity (kDepthJump): past that, parity's band along the discontinuity
+// leaves the pixel out already.
+void mark_near_segment(glm::dvec3 a, glm::dvec3 b, double reach, const GBuffer& g, Image& mask) {
+  glm::dvec2 a2(a), ab = glm::dvec2(b) - a2;
+  double ab2 = glm::dot(ab, ab);
+  int x0 = std::max(0, int(std::floor(std::min(a.x, b.x) - reach))),
+      x1 = std::min(mask.width - 1, int(std::max(a.x, b.x) + reach));
+  int y0 = std::max(0, int(std::floor(std::min(a.y, b.y) - reach))),
+      y1 = std::min(mask.height - 1, int(std::max(a.y, b.y) + reach));
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) {
+      glm::dvec2 c(x + 0.5, y + 0.5);
+      double t = ab2 > 0 ? std::clamp(glm::dot(c - a2, ab) / ab2, 0.0, 1.0) : 0.0;
+      if (glm::distance(c, a2 + t * ab) > reach) continue;
+      double depth = 1 / ((1 - t) / a.z + t / b.z);  // 1/d is affine in the window
+      if (g.ids.at(x, y, 0) == 0 || depth <= g.depth.at(x, y) * (1 + kDepthJump)) mask.at(x, y) = 1;
+    }
+}
+
+// 1 at the pixels within sqrt(2) snap of an occluding edge (a border, or an edge whose two
+// faces turn opposite ways in the window) that is not behind the reference's surface there.
+Image near_occluding_edges(const ReferenceFrame& f, const std::vector<WorldObject>& world,
+                           const WindowProjection& project) {
+  const GBuffer& g = f.get(kGBuffer);
+  Image mask(g.ids.width, g.ids.height, 1);
+  for (size_t o = 0; o < world.size(); ++o) {
+    MeshTopology topology = build_topology(*f.ordinary.objects[o].mesh);
+    std::vector<double> area = window_areas(world[o], project);
+    for (const MeshTopology::Edge& e : topology.edges) {
+      bool border = e.face[1] < 0;
+      if (!border && area[size_t(e.face[0])] * area[size_t(e.face[1])] > 0) continue;
+      glm::dvec3 a = project(glm::dvec3(world[o].positions[e.from])), b = project(glm::dvec3(world[o].positions[e.to]));
+      if (a.z > 0 && b.z > 0) mark_near_segment(a, b, std::sqrt(2.0) * kSnapPx, g, mask);
+    }
+  }
+  return mask;
+}
+
+// The bound image of one attribute: its own triangle's at each covered pixel, the largest
+// over the 3x3 neighbourhood; infinite within reach of an occluding edge in front.
 Image gbuffer_bound(const ReferenceFrame& f, AttributeBound moves) {
   const GBuffer& g = f.get(kGBuffer);
   std::vector<WorldObject> world = world_geometry(f.ordinary);
@@ -93,14 +155,17 @@ Image gbuffer_bound(const ReferenceFrame& f, AttributeBound moves) {
       const glm::uvec3& tri = obj.triangles[g.ids.at(x, y, 1)];
       own.at(x, y) = float(moves(obj, tri, g, x, y, sliver_bound(obj, tri, project)));
     }
+  Image occluding = near_occluding_edges(f, world, project);
   Image out(own.width, own.height, 1);
   for (int y = 0; y < own.height; ++y)
-    for (int x = 0; x < own.width; ++x)
+    for (int x = 0; x < own.width; ++x) {
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
           int nx = std::clamp(x + dx, 0, own.width - 1), ny = std::clamp(y + dy, 0, own.height - 1);
           out.at(x, y) = std::max(out.at(x, y), own.at(nx, ny));
         }
+      if (occluding.at(x, y) > 0) out.at(x, y) = std::numeric_limits<float>::infinity();
+    }
   return out;
 }
 

@@ -50,6 +50,30 @@ TEST_F(GBufferParity, StanfordBunny) {
   expect_gbuffer_parity(testing::model_scene("stanford-bunny.obj", 800, 800), "stanford-bunny");
 }
 
+// Views found by a random-view sweep where the edge of a sliver on a silhouette (the Ogre's
+// loincloth over its body; the cow) passed within a subpixel of a pixel center, and the
+// raster and the ray gave the pixel to different layers less than a depth discontinuity
+// apart (up to 0.8 in Gouraud): the derived bound leaves such pixels out
+// (reference/scene/gbuffer_bounds.cpp).
+TEST_F(GBufferParity, ViewsWhereAnOccludingSliverEdgeMeetsAPixelCenter) {
+  struct View {
+    const char* model;
+    const char* direction;
+    const char* fov_deg;
+  };
+  const View views[] = {
+      {"ogre.obj", "-0.7669840247205888, -0.15848876550715807, -0.5742686539818211", "28.09384931571795"},
+      {"ogre.obj", "-0.6186311694192679, 0.46378843142870063, -0.7380658325667606", "39.31145371133501"},
+      {"cow.obj", "-0.5948511731863824, -0.6607856936190832, 0.8114431998509803", "39.79970014027538"}};
+  for (const View& v : views) {
+    PLUMBAGO_REQUIRE_MODEL(v.model);
+    std::string json = std::string(R"({"objects": [{"mesh": ")") + v.model +
+                       R"(", "style": "strokes"}], "camera": {"view_direction": [)" + v.direction +
+                       R"(], "fov_deg": )" + v.fov_deg + R"(}, "resolution": [400, 400], "effects": ["strokes"]})";
+    expect_gbuffer_parity(parse_scene(json, std::string("test:") + v.model, PLUMBAGO_MODELS_DIR), v.model);
+  }
+}
+
 // A polygon of n sides on the unit circle, triangulated as a fan from its first corner, as
 // a mesh reader makes it: slivers a hundredth of a pixel wide.
 Mesh polygon_fan(int n) {

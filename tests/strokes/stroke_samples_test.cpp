@@ -48,9 +48,11 @@ Tally compare(const std::vector<StyledRun>& runs) {
     BaseStrokeSamples ref = base_stroke_samples(runs[r].run, style);
     const std::vector<StrokeSample>& q = ref.samples;
     const gpu::RunRecord& g = records.at(r);
+    EXPECT_LE(double(q.size()), gpu::sample_bound(runs[r])) << "run " << r << ": the buffers' bound is not one";
     EXPECT_EQ(g.count, q.size()) << "run " << r;
     if (g.count != q.size()) continue;
-    bool whole = std::all_of(q.begin(), q.end() - (q.empty() ? 0 : 1), [](const StrokeSample& x) { return x.pen_down_after; });
+    bool whole =
+        std::all_of(q.begin(), q.end() - (q.empty() ? 0 : 1), [](const StrokeSample& x) { return x.pen_down_after; });
     EXPECT_EQ(g.cyclic != 0, ref.closed && whole) << "run " << r;
     EXPECT_EQ(g.color_layer, glm::vec4(style.color_r, style.color_g, style.color_b, float(int(style.texture))));
     t.runs += q.empty() ? 0 : 1;
@@ -108,8 +110,8 @@ std::vector<StyledRun> hard_cases() {
   tapered.taper_px = 30, tapered.halo_px = 15, tapered.fade_px = 10, tapered.flare = 0.5f;
   std::vector<glm::dvec2> wave;
   for (int i = 0; i <= 40; ++i) wave.push_back({20.0 + 8 * i, 300 + 40 * std::sin(i * 0.4)});
-  c.add(wave, false, tapered, true);               // open: taper, fade, flare, halo at its start
-  c.add(wave, false, tapered, true, true);         // haloed at both ends
+  c.add(wave, false, tapered, true);                  // open: taper, fade, flare, halo at its start
+  c.add(wave, false, tapered, true, true);            // haloed at both ends
   c.add(arc({200, 200}, 60, 36, 1), true, style(6));  // closed, drawn whole
   StrokeStyle lifted = style(5);
   lifted.offsets = OffsetExample{70, {{0, 0, 1, false}, {0.4, 2, 0.7, true}, {0.6, -1, 1, false}}};
@@ -135,11 +137,11 @@ std::vector<StyledRun> hard_cases() {
   c.add({{100, 120}, {180, 135}, {260, 120}}, false, late);
   double nan = std::numeric_limits<double>::quiet_NaN();  // dropped, as are repeats within 1e-6 px
   c.add({{10, 10}, {10, 10}, {nan, 5}, {30, 12}, {30, 12 + 1e-7}, {50, 10}, {50, 10}}, false, style(4));
-  c.add({{60, 60}, {90, 70}, {60, 60}}, true, style(4));               // closed, two distinct points: drawn open
+  c.add({{60, 60}, {90, 70}, {60, 60}}, true, style(4));                // closed, two distinct points: drawn open
   c.add({{200, 90}, {230, 95}, {260, 90}, {200, 90}}, true, style(4));  // its last point its first
   c.add({{70, 70}, {70, 70}}, false, style(4));                         // one distinct point: nothing
   c.add({{10, 300}, {10.5, 300}, {10, 300}}, false, style(4));          // there and back in one step: nothing
-  c.add(arc({3800, 2900}, 25, 20, 0.7), false, style(7));              // far from the origin
+  c.add(arc({3800, 2900}, 25, 20, 0.7), false, style(7));               // far from the origin
   return c.runs;
 }
 
