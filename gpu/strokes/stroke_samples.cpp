@@ -86,8 +86,14 @@ Buffer zeros(size_t count) {
   return make_buffer(zero.data(), count * sizeof(uint32_t));
 }
 
-// Every buffer of at least one element: GL refuses a binding of none.
-Buffer upload(const void* data, size_t bytes) { return make_buffer(bytes ? data : nullptr, std::max<size_t>(bytes, 16)); }
+// Every buffer of at least 16 bytes: GL refuses a binding of none. `data` (when given) holds
+// `bytes`.
+Buffer upload(const void* data, size_t bytes) {
+  if (bytes >= 16) return make_buffer(data, bytes);
+  std::vector<unsigned char> padded(16, 0);
+  if (data) std::copy_n(static_cast<const unsigned char*>(data), bytes, padded.begin());
+  return make_buffer(padded.data(), padded.size());
+}
 
 void check_memory(size_t runs, double bound) {
   char what[160];
@@ -107,8 +113,8 @@ double sample_bound(const StyledRun& r) {
   double even = std::floor(length / r.style.sample_px) + 3;  // n + 1 samples, n = ceil(L / sample_px)
   const auto& example = r.style.offsets;
   if (!example) return even;
-  auto lifts = double(std::count_if(example->offsets.begin(), example->offsets.end(),
-                                    [](const StrokeOffset& o) { return o.pen_up; }));
+  auto lifts = double(
+      std::count_if(example->offsets.begin(), example->offsets.end(), [](const StrokeOffset& o) { return o.pen_up; }));
   return even + 2 * lifts * (std::floor(length / example->length_px) + 2);  // two changes a lift a period
 }
 
