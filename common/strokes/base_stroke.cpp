@@ -119,14 +119,16 @@ std::vector<glm::dvec2> points_at(const DenseCurve& c, const std::vector<double>
 }
 
 // 4. The arc lengths in (0, L) where the pen lifts or lands: the ends of each lift of
-// nonzero length, (k + t_i) L_drawn to (k + t_next) L_drawn, in every period k.
+// nonzero length, (k + t_i) L_drawn to (k + t_next) L_drawn, in every period k (an example
+// that does not repeat: k = 0, and a lift from its last offset does not end).
 std::vector<double> pen_changes(const OffsetExample& e, double length) {
   std::vector<double> out;
   const auto& o = e.offsets;
-  double periods = std::floor(length / e.length_px);
-  for (double k = -1; k <= periods; ++k)
+  double first = e.repeats ? -1 : 0, last = e.repeats ? std::floor(length / e.length_px) : 0;
+  double after_last = e.repeats ? o[0].t + 1 : std::numeric_limits<double>::infinity();  // held: no end
+  for (double k = first; k <= last; ++k)
     for (size_t i = 0; i < o.size(); ++i) {
-      double next_t = i + 1 < o.size() ? o[i + 1].t : o[0].t + 1;
+      double next_t = i + 1 < o.size() ? o[i + 1].t : after_last;
       if (!o[i].pen_up || !(next_t > o[i].t)) continue;
       for (double s : {(k + o[i].t) * e.length_px, (k + next_t) * e.length_px})
         if (s > 0 && s < length) out.push_back(s);
@@ -291,17 +293,24 @@ std::vector<glm::dvec2> catmull_rom_resample(const std::vector<glm::dvec2>& poin
 StampedOffset rubber_stamp(const OffsetExample& example, double s, double run_length) {
   const auto& o = example.offsets;
   double t = s / example.length_px;
-  t -= std::floor(t);  // (s mod L_drawn) / L_drawn
+  double scale = std::min(run_length / example.length_px, 1.0);
+  if (example.repeats)
+    t -= std::floor(t);  // (s mod L_drawn) / L_drawn
+  else
+    t = std::clamp(t, 0.0, 1.0);
   // Segment i runs from offset i to the next, the last one to the first of the next period.
   size_t count = size_t(
       std::upper_bound(o.begin(), o.end(), t, [](double x, const StrokeOffset& e) { return x < e.t; }) - o.begin());
+  if (!example.repeats && (count == 0 || count == o.size())) {  // held before the first offset, after the last
+    const StrokeOffset& held = count == 0 ? o.front() : o.back();
+    return {held.displacement_px * scale, held.pressure, count == 0 || !held.pen_up};
+  }
   if (count == 0) t += 1;  // before the first offset: on the last segment, from the period before
   size_t i = (count + o.size() - 1) % o.size();
   bool wraps = i + 1 == o.size();
   const StrokeOffset& next = o[wraps ? 0 : i + 1];
   double t_next = wraps ? next.t + 1 : next.t;
   double f = t_next > o[i].t ? (t - o[i].t) / (t_next - o[i].t) : 0.0;
-  double scale = std::min(run_length / example.length_px, 1.0);
   return {std::lerp(o[i].displacement_px, next.displacement_px, f) * scale, std::lerp(o[i].pressure, next.pressure, f),
           !o[i].pen_up};
 }

@@ -36,6 +36,10 @@
 //    min(L / L_drawn, 1). An offset with its break flag lifts the pen until the next
 //    offset: the ribbon is not drawn there, so it splits into pieces. A lift of zero
 //    length (e.g. a break on an offset at t = 1 when the first is at t = 0) splits nothing.
+//    An example made to span its run (OffsetExample::repeats false: a decal's pressure, a
+//    synthesized example, whose L_drawn is the run's window length while its spline may be
+//    a little longer) does not wrap: t = s / L_drawn is held in [0, 1], the first offset
+//    before it and the last (its lift too) after it.
 //    Samples move along the base curve's normal by the displacement.
 // 5. Width and alpha per sample, dl = min(s, L - s) the distance to the nearer end (a closed
 //    run has no ends: none of these apply):

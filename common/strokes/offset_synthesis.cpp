@@ -316,6 +316,7 @@ OffsetExample OffsetSynthesizer::synthesize_example(double length_px, CounterStr
   auto pressure = [&](size_t k) { return states.empty() ? 1.0 : pressures_[states[k]]; };
   OffsetExample out;
   out.length_px = length;
+  out.repeats = false;  // made for this length
   for (size_t k = 0; k < n && double(k) * step < length * (1 - 1e-12); ++k)
     out.offsets.push_back({double(k) * step / length, value(k), pressure(k), false});
   double at = length / step;

@@ -128,7 +128,8 @@ class OffsetSynthesizer {
   // rubber_stamp then scales by min(L / L_drawn, 1) = 1 for a run of that length),
   // offset k at t = k step / length_px while that is below 1, then one at t = 1
   // interpolated between the last two synthesized (the offsets of
-  // synthesize(max(length_px, 1), seed, name)); pressures from the states; no breaks.
+  // synthesize(max(length_px, 1), seed, name)); pressures from the states; no breaks. It
+  // does not repeat (OffsetExample::repeats false): a run a little longer holds its last offset.
   OffsetExample synthesize_example(double length_px, uint32_t seed, std::string_view name) const;
   // The same from a given stream.
   OffsetExample synthesize_example(double length_px, CounterStream stream) const;

@@ -38,22 +38,18 @@ double pressure_at(const WindowPath& path, double s) {
   return path.pressure[k] + t * (path.pressure[next] - path.pressure[k]);
 }
 
-// px: an example made to span a run is this much longer, so that the rubber stamp's period
-// does not wrap the run's end to its start where the spline's length and the run's agree to
-// rounding (a straight run's).
-constexpr double kPastTheRunEnd = 1e-6;
-
 // A decal's style over one run (common/strokes/decal.hpp 3.): an offsets example of zero
 // displacement carrying the path's pressure at the run's ends and at every path point
-// between. It spans the run (at least 1 px, an example's least length) and kPastTheRunEnd more.
+// between. It spans the run (at least 1 px, an example's least length) and does not repeat.
 StrokeStyle decal_style(const StrokeStyle& decal, const WindowPath& path, const VisibleRun& run) {
   StrokeStyle style = decal;
-  double length = std::max(run.s1 - run.s0, 1.0) + kPastTheRunEnd;
+  double length = std::max(run.s1 - run.s0, 1.0);
   OffsetExample pressure{length, {{0.0, 0.0, pressure_at(path, run.s0), false}}};
   for (size_t k = 0; k < path.arc_px.size(); ++k)
     if (path.arc_px[k] > run.s0 && path.arc_px[k] < run.s1)
       pressure.offsets.push_back({(path.arc_px[k] - run.s0) / length, 0.0, path.pressure[k], false});
   pressure.offsets.push_back({(run.s1 - run.s0) / length, 0.0, pressure_at(path, run.s1), false});
+  pressure.repeats = false;
   style.offsets = pressure;
   style.synthesis = OffsetSynthesis::Stamp;
   return style;
@@ -106,7 +102,7 @@ StrokeStyle RunStyles::of(const WindowPath& path, const VisibleRun& run, uint32_
   if (it == chains_.end())
     it = chains_.emplace(path.kind, drawn.empty() ? OffsetSynthesizer(*style.offsets) : OffsetSynthesizer(drawn)).first;
   CounterStream walk(stream_key({seed_, path.key, ordinal, kOffsetWalk}));
-  style.offsets = it->second.synthesize_example(run.s1 - run.s0 + kPastTheRunEnd, walk);
+  style.offsets = it->second.synthesize_example(run.s1 - run.s0, walk);
   return style;
 }
 

@@ -51,6 +51,9 @@ struct StrokeOffset {
 struct OffsetExample {
   double length_px = 0;
   std::vector<StrokeOffset> offsets;  // t not decreasing, at least one
+  // false: made to span one run (a decal's drawn pressure, a synthesized example): past its
+  // length it holds its last offset instead of starting over (common/strokes/base_stroke.hpp 4.).
+  bool repeats = true;
 };
 
 enum class OffsetSynthesis { Stamp, Markov };

@@ -23,7 +23,8 @@ enum RunFlags : uint32_t {
   kOccludedStart = 2,
   kOccludedEnd = 4,
   kPressureWidth = 8,
-  kPressureAlpha = 16
+  kPressureAlpha = 16,
+  kRepeats = 32
 };  // stroke_samples.comp's
 
 bool finite(glm::dvec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
@@ -44,7 +45,7 @@ double polyline_length(const StrokeRun& run) {
 uint32_t flags(const StyledRun& r) {
   return (r.run.closed ? kClosed : 0u) | (r.run.occluded_start ? kOccludedStart : 0u) |
          (r.run.occluded_end ? kOccludedEnd : 0u) | (r.style.pressure_width ? kPressureWidth : 0u) |
-         (r.style.pressure_alpha ? kPressureAlpha : 0u);
+         (r.style.pressure_alpha ? kPressureAlpha : 0u) | (r.style.offsets && r.style.offsets->repeats ? kRepeats : 0u);
 }
 
 // The tables stroke_samples.comp reads.

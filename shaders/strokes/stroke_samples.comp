@@ -11,13 +11,14 @@ struct RunIn {  // gpu/strokes/stroke_samples.hpp RunInput
   uint first_point, point_count, first_offset, offset_count;
   double example_length;  // the offsets example's L_drawn (no offsets: offset_count 0)
   float width, alpha, taper, fade, halo, flare, sample_px, period;
-  uint flags, pad;  // kClosed | kOccludedStart | kOccludedEnd | kPressureWidth | kPressureAlpha
+  uint flags, pad;  // kClosed | kOccludedStart | kOccludedEnd | kPressureWidth | kPressureAlpha | kRepeats
 };
 struct Offset {  // gpu/strokes/stroke_samples.hpp OffsetInput
   double t, displacement, pressure;
   uint pen_up, pad;
 };
 const uint kClosed = 1u, kOccludedStart = 2u, kOccludedEnd = 4u, kPressureWidth = 8u, kPressureAlpha = 16u;
+const uint kRepeats = 32u;  // the offsets example repeats (common/strokes/stroke_style.hpp OffsetExample::repeats)
 
 layout(std430, binding = 2) readonly buffer RunsIn { RunIn runs_in[]; };
 layout(std430, binding = 3) readonly buffer Points { dvec2 points[]; };
@@ -156,7 +157,8 @@ dvec2 point_at(inout Walk w, double at) {
 }
 
 // 4. The arc lengths where the pen lifts or lands, in increasing order: the ends of each lift
-// of nonzero length, (k + t_i) L_drawn to (k + t_next) L_drawn, in every period k, kept in
+// of nonzero length, (k + t_i) L_drawn to (k + t_next) L_drawn, in every period k (an example
+// that does not repeat: k = 0, and a lift from its last offset does not end), kept in
 // [kNearPenChange, L - kNearPenChange].
 struct Changes {
   RunIn r;
@@ -165,9 +167,12 @@ struct Changes {
   uint i, end;  // end: 0 the lift's start is next, 1 its end
 };
 
+bool repeats(RunIn r) { return (r.flags & kRepeats) != 0u; }
+
 Changes start_changes(RunIn r, double length) {
-  double periods = r.offset_count == 0u ? -2.0lf : floor(length / r.example_length);
-  return Changes(r, length, -1, int(periods), 0u, 0u);
+  if (r.offset_count == 0u) return Changes(r, length, 0, -1, 0u, 0u);
+  if (!repeats(r)) return Changes(r, length, 0, 0, 0u, 0u);
+  return Changes(r, length, -1, int(floor(length / r.example_length)), 0u, 0u);
 }
 
 // The next change, or a negative number when there is none.
@@ -175,10 +180,10 @@ double next_change(inout Changes c) {
   for (; c.k <= c.periods; ++c.k, c.i = 0u) {
     for (; c.i < c.r.offset_count; ++c.i, c.end = 0u) {
       Offset o = offsets[c.r.first_offset + c.i];
-      double next_t = c.i + 1u < c.r.offset_count ? offsets[c.r.first_offset + c.i + 1u].t
-                                                 : offsets[c.r.first_offset].t + 1.0lf;
+      bool last = c.i + 1u == c.r.offset_count;
+      double next_t = !last ? offsets[c.r.first_offset + c.i + 1u].t : offsets[c.r.first_offset].t + 1.0lf;
       if (o.pen_up == 0u || !(next_t > o.t)) continue;
-      for (; c.end < 2u; ++c.end) {
+      for (; c.end < (last && !repeats(c.r) ? 1u : 2u); ++c.end) {  // a held last lift does not end
         double s = (double(c.k) + (c.end == 0u ? o.t : next_t)) * c.r.example_length;
         if (s > 0.0lf && s < c.length && s >= kNearPenChange && s <= c.length - kNearPenChange) {
           ++c.end;
@@ -284,7 +289,8 @@ struct Base {
 layout(std430, binding = 9) buffer Bases { Base bases[]; };
 
 // 4. The rubber stamp: the example's offset at arc length s, interpolated linearly at
-// t = (s mod L_drawn) / L_drawn, wrapping from its last offset to its first.
+// t = (s mod L_drawn) / L_drawn, wrapping from its last offset to its first; an example that
+// does not repeat holds t = s / L_drawn in [0, 1].
 struct Stamped {
   double displacement, pressure;
   bool pen_down;
@@ -292,12 +298,16 @@ struct Stamped {
 
 Stamped rubber_stamp(RunIn r, double s, double run_length) {
   if (r.offset_count == 0u) return Stamped(0.0lf, 1.0lf, true);
-  double t = s / r.example_length;
-  t -= floor(t);
+  double t = s / r.example_length, scale = min(run_length / r.example_length, 1.0lf);
+  t = repeats(r) ? t - floor(t) : clamp(t, 0.0lf, 1.0lf);
   uint count = 0u;  // offsets with t_i <= t (they are sorted)
   for (uint lo = 0u, hi = r.offset_count; lo < hi;) {
     uint mid = (lo + hi) / 2u;
     if (offsets[r.first_offset + mid].t <= t) lo = count = mid + 1u; else hi = mid;
+  }
+  if (!repeats(r) && (count == 0u || count == r.offset_count)) {  // held before the first offset, after the last
+    Offset held = offsets[r.first_offset + (count == 0u ? 0u : r.offset_count - 1u)];
+    return Stamped(held.displacement * scale, held.pressure, count == 0u || held.pen_up == 0u);
   }
   if (count == 0u) t += 1.0lf;  // before the first offset: on the last segment, from the period before
   uint i = (count + r.offset_count - 1u) % r.offset_count;
@@ -305,7 +315,6 @@ Stamped rubber_stamp(RunIn r, double s, double run_length) {
   Offset here = offsets[r.first_offset + i], next = offsets[r.first_offset + (wraps ? 0u : i + 1u)];
   double t_next = wraps ? next.t + 1.0lf : next.t;
   double f = t_next > here.t ? (t - here.t) / (t_next - here.t) : 0.0lf;
-  double scale = min(run_length / r.example_length, 1.0lf);
   return Stamped(mix(here.displacement, next.displacement, f) * scale, mix(here.pressure, next.pressure, f),
                  here.pen_up == 0u);
 }

@@ -368,6 +368,25 @@ TEST(BaseStroke, RubberStampInterpolatesAndRepeatsWithTheExamplesLength) {
   for (size_t j = 0; j + 16 < strip.size(); ++j) EXPECT_NEAR(strip[j].center().y, strip[j + 16].center().y, 1e-4) << j;
 }
 
+// An example made to span its run (a decal's pressure, a synthesized example) does not
+// repeat: its spline may be a little longer than the run it was made for, and the end holds
+// the last offset (its lift too) where a repeating example would start over.
+TEST(BaseStroke, AnExampleMadeForItsRunHoldsItsEnds) {
+  OffsetExample made{40, {{0.25, 2, 0.5, false}, {0.75, -2, 1, false}, {1, 3, 0.8, false}}, false};
+  EXPECT_NEAR(rubber_stamp(made, 40.5, 40.5).displacement_px, 3.0, 1e-12);  // past its end: the last offset
+  EXPECT_NEAR(rubber_stamp(made, 40.5, 40.5).pressure, 0.8, 1e-12);
+  EXPECT_NEAR(rubber_stamp(made, 4, 40.5).displacement_px, 2.0, 1e-12);  // before its first: the first
+  made.repeats = true;
+  // Repeating, it wraps: t = 1.0125, from 3 at t = 1 towards 2 at t = 1.25, 0.05 of the way.
+  EXPECT_NEAR(rubber_stamp(made, 40.5, 40.5).displacement_px, 2.95, 1e-12);
+  // A lift from its last offset lasts to the run's end: one piece, ending where it starts.
+  StrokeStyle st = plain_style();
+  st.offsets = OffsetExample{100, {{0, 0, 1, false}, {0.5, 0, 1, true}}, false};
+  auto pieces = strips(base_stroke(horizontal(140), st));
+  ASSERT_EQ(pieces.size(), 1u);
+  EXPECT_NEAR(pieces[0].back().s(), 50, 1e-4);
+}
+
 // A break lifts the pen from its offset to the next: over t in (0.5, 0.75) of every
 // 40 px period nothing is drawn, and samples sit exactly where the pen lifts and lands.
 TEST(BaseStroke, BreaksSplitTheRibbon) {

@@ -6,8 +6,8 @@
 // against sqrt and mix) and GLSL's double division, which need not be correctly rounded: they
 // differ by a few units of double rounding, so the counts, pen flags and runs must agree
 // exactly, and each float output within one float rounding. (Where a formula jumps, at a
-// rubber stamp's period, the reference keeps its samples off the jump: common/strokes/stroke.cpp
-// kPastTheRunEnd.)
+// rubber stamp's period, a few units of rounding decide the side: an example made for its
+// run, whose end lies at its period, does not repeat, OffsetExample::repeats.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -132,6 +132,9 @@ std::vector<StyledRun> hard_cases() {
   near.offsets = OffsetExample{10, {{0, 0, 1, false}, {0.3, 0, 1, true}, {0.6, 0, 1, false}, {0.999, 0, 1, true}}};
   c.add({{100, 50}, {121.315, 50}}, false, near);
   c.add({{100, 60}, {120.045, 60}}, false, near);
+  StrokeStyle made = style(4);  // an example made for its run, which is longer: held, its last lift too
+  made.offsets = OffsetExample{60, {{0, 1, 1, false}, {0.5, -1, 0.6, false}, {0.8, 2, 1, true}}, false};
+  c.add({{100, 200}, {140, 215}, {175, 200}}, false, made);
   StrokeStyle late = style(4);  // the first offset after t = 0: the stretch before it wraps from the last
   late.offsets = OffsetExample{25, {{0.2, 1.5, 1, false}, {0.7, -1.5, 0.5, false}}};
   c.add({{100, 120}, {180, 135}, {260, 120}}, false, late);
