@@ -13,11 +13,11 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <numbers>
 
 #include "common/strokes/stroke.hpp"
 #include "gpu/gl/program.hpp"
 #include "gpu/strokes/stroke.hpp"
+#include "tests/support/stroke_cases.hpp"
 #include "tests/support/test_scenes.hpp"
 
 namespace plumbago {
@@ -156,12 +156,7 @@ std::vector<Conditioning> conditioning(const std::vector<StrokeSample>& q, bool 
   return out;
 }
 
-StrokeStyle style(double width) {
-  StrokeStyle s = default_stroke_style();
-  s.width_px = float(width);
-  s.texture_period_px = 48;
-  return s;
-}
+StrokeStyle style(double width) { return testing::style_of_width(width); }
 
 RunStroke from_run(const StrokeRun& run, const StrokeStyle& s) { return {s, base_stroke_samples(run, s)}; }
 
@@ -175,14 +170,7 @@ RunStroke from_samples(const std::vector<glm::dvec2>& p, bool closed, double wid
   return out;
 }
 
-std::vector<glm::dvec2> arc(glm::dvec2 center, double radius, int n, double turns) {
-  std::vector<glm::dvec2> p;
-  for (int i = 0; i < n; ++i) {
-    double a = 2 * std::numbers::pi * turns * i / n;
-    p.push_back(center + radius * glm::dvec2(std::cos(a), std::sin(a)));
-  }
-  return p;
-}
+using testing::arc;
 
 std::vector<RunStroke> hard_cases() {
   std::vector<RunStroke> out;

@@ -14,11 +14,11 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <numbers>
 
 #include "common/scene/scene.hpp"
 #include "gpu/strokes/stroke_samples.hpp"
 #include "parity/lines.hpp"
+#include "tests/support/stroke_cases.hpp"
 #include "tests/support/test_scenes.hpp"
 
 namespace plumbago {
@@ -75,21 +75,9 @@ Tally compare(const std::vector<StyledRun>& runs) {
   return t;
 }
 
-StrokeStyle style(double width) {
-  StrokeStyle s = default_stroke_style();
-  s.width_px = float(width);
-  s.texture_period_px = 48;
-  return s;
-}
+StrokeStyle style(double width) { return testing::style_of_width(width); }
 
-std::vector<glm::dvec2> arc(glm::dvec2 center, double radius, int n, double turns) {
-  std::vector<glm::dvec2> p;
-  for (int i = 0; i < n; ++i) {
-    double a = 2 * std::numbers::pi * turns * i / n;
-    p.push_back(center + radius * glm::dvec2(std::cos(a), std::sin(a)));
-  }
-  return p;
-}
+using testing::arc;
 
 // A run through `p` in style `s`.
 struct Cases {
