@@ -535,28 +535,41 @@ std::vector<Light> default_lights(const Camera& c) {
   return {{glm::normalize(back + 0.6f * up - 0.5f * right), 1.0f}};
 }
 
-PixelRect covered_rect(const Scene& scene, int width, int height, float margin) {
-  const PixelRect window{0, 0, width, height};
+WindowBounds window_bounds(const Scene& scene, int width, int height) {
   glm::mat4 to_clip = scene.camera.projection(float(width) / float(height)) * scene.camera.view();
-  glm::vec2 lo(INFINITY), hi(-INFINITY);
+  WindowBounds b;
   for (const SceneObject& o : scene.objects) {
     glm::mat4 object_to_clip = to_clip * o.transform;
     for (const glm::vec3& v : o.mesh->positions) {  // a triangle's projection lies within its corners'
       glm::vec4 clip = object_to_clip * glm::vec4(v, 1.0f);
-      if (!(clip.w > 0.0f)) return window;  // behind the eye: the projection does not bound it
+      if (!(clip.w > 0.0f)) return {.behind_eye = true};  // behind the eye: the projection does not bound it
       glm::vec2 pixel = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(width, height);
-      lo = glm::min(lo, pixel);
-      hi = glm::max(hi, pixel);
+      b.lo = glm::min(b.lo, pixel);
+      b.hi = glm::max(b.hi, pixel);
     }
   }
+  return b;
+}
+
+PixelRect covered_rect(const WindowBounds& bounds, int width, int height, float margin) {
+  if (bounds.behind_eye) return {0, 0, width, height};
+  glm::vec2 lo = bounds.lo, hi = bounds.hi;
   if (!(lo.x <= hi.x && lo.y <= hi.y)) return {};  // no object
   glm::ivec2 a = glm::ivec2(glm::floor(glm::clamp(lo - margin, glm::vec2(0), glm::vec2(width, height))));
   glm::ivec2 b = glm::ivec2(glm::ceil(glm::clamp(hi + margin, glm::vec2(0), glm::vec2(width, height))));
   return {a.x, a.y, b.x, b.y};
 }
 
+PixelRect covered_rect(const Scene& scene, int width, int height, float margin) {
+  return covered_rect(window_bounds(scene, width, height), width, height, margin);
+}
+
 PixelRect filter_rect(const Scene& scene, int radius) {
   return covered_rect(scene, scene.width, scene.height, float(radius + 1));
+}
+
+PixelRect filter_rect(const WindowBounds& bounds, const Scene& scene, int radius) {
+  return covered_rect(bounds, scene.width, scene.height, float(radius + 1));
 }
 
 void scene_bounds(const Scene& scene, glm::vec3& center, float& radius) {

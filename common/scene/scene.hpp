@@ -2,6 +2,7 @@
 // The file format is documented in docs/scene-format.md and scenes/scene.schema.json.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
@@ -117,11 +118,21 @@ void match_effects_to_styles(Scene& scene);
 // vertex lies behind the eye. Outside it the sketch's maps hold their background values and the
 // composite draws nothing, so the GPU skips it (a bound, not a stage: no formula changes).
 PixelRect covered_rect(const Scene& scene, int width, int height, float margin);
+// covered_rect's work before its margin, for a frame to do once where several passes ask:
+// the window rectangle of the projected vertices at a size.
+struct WindowBounds {
+  glm::vec2 lo{INFINITY}, hi{-INFINITY};  // empty: no object
+  bool behind_eye = false;                // a vertex lies behind the eye: the whole window
+};
+WindowBounds window_bounds(const Scene& scene, int width, int height);
+PixelRect covered_rect(const WindowBounds& bounds, int width, int height, float margin);
 // Where a window-space filter of the given pixel radius over the G-buffer can differ from
 // its value on the background: covered_rect at the scene's size grown by the radius and a
 // pixel to spare. The GPU runs such passes only there (edge detection and the sketchy
 // maps: radius 1; the pencil interior: 0) and clears the rest to the background value.
 PixelRect filter_rect(const Scene& scene, int radius);
+// The same from the scene's window_bounds at its size.
+PixelRect filter_rect(const WindowBounds& bounds, const Scene& scene, int radius);
 
 // The lights of a scene file without "lights": one over the camera's left shoulder.
 std::vector<Light> default_lights(const Camera& camera);

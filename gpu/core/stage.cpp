@@ -31,6 +31,11 @@ PixelRect bounding(const PixelRect& a, const PixelRect& b) {
 GpuFrame::GpuFrame(const Scene& s, const Preprocessed& p, std::vector<std::string> st)
     : FrameData(p), scene(s), ordinary(ordinary_objects(s)), sketchy(sketchy_objects(s)), stages(std::move(st)) {}
 
+PixelRect GpuFrame::filter_rect(int radius) const {
+  if (!ordinary_bounds_) ordinary_bounds_ = window_bounds(ordinary, ordinary.width, ordinary.height);
+  return plumbago::filter_rect(*ordinary_bounds_, ordinary, radius);
+}
+
 bool GpuFrame::ran(const std::string& stage) const {
   find_stage(stage);  // an unknown name is a mistake, not a stage that did not run
   return contains(stages, stage);

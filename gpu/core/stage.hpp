@@ -15,6 +15,7 @@
 #include <any>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -49,6 +50,9 @@ class GpuFrame : public FrameData {
   StageConfig config() const { return {scene.params, scene.effects}; }
   // Whether `stage` runs in this frame; throws std::logic_error for a name no stage has.
   bool ran(const std::string& stage) const;
+  // filter_rect(ordinary, radius) (common/scene/scene.hpp), its vertices projected once: the
+  // renderer's scene and camera do not change between its frames.
+  PixelRect filter_rect(int radius) const;
 
   // An output's render target, made on first use at the window's size in the declared
   // format; an output drawn over another (Output::draws_over) is that one's target where
@@ -91,6 +95,7 @@ class GpuFrame : public FrameData {
   GBufferChannels gbuffer_channels(const std::string& stage) const;
 
  private:
+  mutable std::optional<WindowBounds> ordinary_bounds_;  // filter_rect's, made on first use
   std::map<std::string, Texture> textures_;
   std::map<std::string, std::any> shared_;
   std::map<std::string, GBufferChannels> gbuffer_reads_;

@@ -82,7 +82,7 @@ class ComposeStagePass : public GpuPass {
   // Where D_c or D_i can differ from 0: around the contours' reach, or the objects.
   PixelRect inside(const GpuFrame& f) const {
     if (f.dump) return {0, 0, f.scene.width, f.scene.height};
-    return f.ran("multi_contour") ? contour_rect(f.ordinary, f.get(kOffsetGrids)) : filter_rect(f.ordinary, 0);
+    return f.ran("multi_contour") ? contour_rect(f.ordinary, f.get(kOffsetGrids)) : f.filter_rect(0);
   }
   ComposePass pass_;
   Texture paper_color_;

@@ -41,7 +41,7 @@ namespace {
 class EdgeAndLightPass : public GpuPass {
  public:
   explicit EdgeAndLightPass(GpuFrame& f) {
-    f.read_region(kGBuffer, filter_rect(f.ordinary, 2));  // the filter runs within 1 pixel and reads 1 more
+    f.read_region(kGBuffer, f.filter_rect(2));  // the filter runs within 1 pixel and reads 1 more
     if (f.ran("multi_contour")) {
       marks_ = make_contour_block_marks(f.scene.width, f.scene.height);
       f.put(kContourBlockMarks, marks_);
@@ -51,7 +51,7 @@ class EdgeAndLightPass : public GpuPass {
     pass_.run(
         f.get(kGBuffer), f.params<EdgeDetectParams>(), view_space_lights(f.scene), f.params<ContourLightParams>(),
         {f.put(kLitContourDarkness), f.dump ? &f.put(kContourDarkness) : nullptr, marks_.id() ? &marks_ : nullptr},
-        filter_rect(f.ordinary, 1));
+        f.filter_rect(1));
   }
 
  private:

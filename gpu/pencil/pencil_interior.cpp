@@ -46,14 +46,14 @@ class InteriorPass : public GpuPass {
       : stack_(upload_texture_3d(f.get(kPencilStack), GL_R32F)),
         paper_normal_(f.get(maybe(kPaperNormal)) ? upload_texture(f.get(kPaperNormal), GL_RGBA32F)
                                                  : make_texture(1, 1, GL_RGBA32F)) {
-    f.read_region(kGBuffer, filter_rect(f.ordinary, 0));
+    f.read_region(kGBuffer, f.filter_rect(0));
   }
   void run(GpuFrame& f) override {
     std::vector<Light> lights = view_space_lights(f.scene);
     pass_.run(
         {f.get(kGBuffer), f.get(kTriangleAngles), lights, stack_, paper_normal_, interior_options(f.scene.effects)},
         f.params<InteriorParams>(), f.params<PaperParams>().mu_p,
-        {f.put(kInteriorDarkness), f.dump ? &f.put(kIntensity) : nullptr}, filter_rect(f.ordinary, 0));
+        {f.put(kInteriorDarkness), f.dump ? &f.put(kIntensity) : nullptr}, f.filter_rect(0));
   }
 
  private:

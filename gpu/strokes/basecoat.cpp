@@ -21,7 +21,7 @@ class BaseCoatPass : public GpuPass {
     first_ = make_buffer(shades.first_triangle.data(), shades.first_triangle.size() * sizeof(uint32_t));
     texture_ = upload_texture(basecoat_texture(p), GL_RGBA32F);
     set_sampling(texture_, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
-    f.read_region(kGBuffer, filter_rect(f.ordinary, 0));
+    f.read_region(kGBuffer, f.filter_rect(0));
   }
   void run(GpuFrame& f) override {
     const GBufferTargets& g = f.get(kGBuffer);
@@ -29,7 +29,7 @@ class BaseCoatPass : public GpuPass {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, first_.id());
     // Only the objects' rectangle runs the shader; outside it the coat is transparent.
     pass_.draw_inside(program_, {{"ids", &g.ids}, {"bary", &g.bary}, {"coat", &texture_}}, {&f.put(kCoat)},
-                      filter_rect(f.ordinary, 0), {glm::vec4(0.0f)});
+                      f.filter_rect(0), {glm::vec4(0.0f)});
   }
 
  private:

@@ -38,7 +38,7 @@ class StrokePaperPass : public GpuPass {
                        {"coat", coat ? coat : &none_},
                        {"sprite_depth", sprite ? sprite : &none_},
                        {"paper_height", &height_}},
-                      {&target}, filter_rect(f.ordinary, 0), {});
+                      {&target}, f.filter_rect(0), {});
   }
 
  private:
