@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/core/passes.hpp"
+#include "common/pencil/compose.hpp"
 #include "gpu/core/limits.hpp"
 #include "gpu/core/pipeline.hpp"
 #include "gpu/core/stage.hpp"
@@ -41,7 +42,7 @@ BenchResult new_result(const Scene& scene, const std::string& backend) {
 // The buffers of the untimed extra frame, the final image included as "compose.color".
 std::map<std::string, Image> kept_buffers(Frame f) {
   std::map<std::string, Image> out = std::move(f.buffers);
-  out["compose.color"] = std::move(f.color);
+  out[kComposeColor.name] = std::move(f.color);
   return out;
 }
 

@@ -322,7 +322,7 @@ PLUMBAGO_REFERENCE_STAGE(sketchy_composite, [](ReferenceFrame& f) {
 
 // The sprite's depth is read from nearest texels: at a texel-edge tie the backends' sample
 // positions, an ulp apart, can pick neighbors (sprite_depth_tie_bound above).
-PLUMBAGO_REFERENCE_BOUND(sketchy_composite_depth, "sketchy_composite.depth", [](const ReferenceFrame& f) {
+PLUMBAGO_REFERENCE_BOUND(sketchy_composite_depth, kSketchDepth.name, [](const ReferenceFrame& f) {
   SketchyMaps maps;
   SketchyInputs in = composite_inputs(f, maps);
   auto p = f.params<SketchyParams>();

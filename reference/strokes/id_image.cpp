@@ -102,7 +102,7 @@ PLUMBAGO_REFERENCE_STAGE(id_image, [](ReferenceFrame& f) {
 });
 
 // Where the rounding of a rasterizer decides (ambiguous above), the backends may keep either key.
-PLUMBAGO_REFERENCE_BOUND(id_image_ids, "id_image.ids", [](const ReferenceFrame& f) {
+PLUMBAGO_REFERENCE_BOUND(id_image_ids, kIds.name, [](const ReferenceFrame& f) {
   Image bound = f.get(kAmbiguousIds);
   for (float& b : bound.data) b *= 65536.0f;
   return bound;

@@ -72,7 +72,7 @@ PLUMBAGO_REFERENCE_STAGE(stroke, [](ReferenceFrame& f) {
 // pixels a ribbon's edge passes within a subpixel of (the 1-px band at ribbon edges),
 // rounding decides whether the fragment is drawn at all: anything goes there, and the note
 // counts them.
-PLUMBAGO_REFERENCE_BOUND(stroke_color, "stroke.color", [](const ReferenceFrame& f) {
+PLUMBAGO_REFERENCE_BOUND(stroke_color, kStrokeColor.name, [](const ReferenceFrame& f) {
   Image bound = f.get(kStrokeFragments);
   const Image& edges = f.get(kRibbonEdges);
   for (size_t i = 0; i < bound.data.size(); ++i)

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "bench/paper_claims.hpp"
+#include "common/pencil/compose.hpp"
 #include "tests/support/cli_run.hpp"
 
 namespace plumbago {
@@ -136,11 +137,11 @@ TEST_F(BenchCmd, AgainstItsOwnSavedFrameIsZeroAndAgainstAnotherSettingIsNot) {
   ASSERT_TRUE(fs::exists(path("saved/gpu/compose.color.exr")));
   CliRun same = run(base + "--against " + path("saved/gpu"));
   ASSERT_EQ(same.code, 0) << same.err;
-  auto e = nlohmann::json::parse(same.out)["results"][0]["errors"]["compose.color"];
+  auto e = nlohmann::json::parse(same.out)["results"][0]["errors"][kComposeColor.name];
   EXPECT_EQ(e.at("max_abs").get<double>(), 0.0) << "the same scene rendered twice differs";
   CliRun other = run(base + "--set contour.copies=1 --against " + path("saved/gpu"));
   ASSERT_EQ(other.code, 0) << other.err;
-  auto o = nlohmann::json::parse(other.out)["results"][0]["errors"]["compose.color"];
+  auto o = nlohmann::json::parse(other.out)["results"][0]["errors"][kComposeColor.name];
   EXPECT_GT(o.at("rmse").get<double>(), 0.0);
   EXPECT_LE(o.at("mean_abs").get<double>(), o.at("rmse").get<double>());
   EXPECT_LE(o.at("rmse").get<double>(), o.at("max_abs").get<double>());
