@@ -169,6 +169,15 @@ Buffer make_buffer(const void* data, size_t bytes) {
   return Buffer(id);
 }
 
+Buffer make_zeroed_buffer(size_t count) {
+  Buffer b = make_buffer(nullptr, count * sizeof(uint32_t));
+  const uint32_t zero = 0;
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, b.id());  // not glClearNamedBufferData: OSMesa has no such entry
+  glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  return b;
+}
+
 VertexArray make_vertex_array() {
   GLuint id = 0;
   glGenVertexArrays(1, &id);

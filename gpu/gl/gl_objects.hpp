@@ -84,6 +84,8 @@ ImageU32 download_texture_u32(const Texture& tex, int channels);
 std::vector<float> read_table(const Texture& table, int channels, size_t records);
 
 Buffer make_buffer(const void* data, size_t bytes);
+// A buffer of `count` uint32 zeros, cleared on the GPU.
+Buffer make_zeroed_buffer(size_t count);
 // Reads `bytes` of a buffer from `offset` back into `out`.
 void read_buffer(const Buffer& buffer, void* out, size_t bytes, size_t offset = 0);
 // Every byte read back from GPU memory so far (download_texture*, read_buffer): what a frame

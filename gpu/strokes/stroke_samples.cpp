@@ -82,11 +82,6 @@ struct RunState {
   uint32_t distinct_count, pad;
 };
 
-Buffer zeros(size_t count) {
-  std::vector<uint32_t> zero(count, 0u);
-  return make_buffer(zero.data(), count * sizeof(uint32_t));
-}
-
 // Every buffer of at least 16 bytes: GL refuses a binding of none. `data` (when given) holds
 // `bytes`.
 Buffer upload(const void* data, size_t bytes) {
@@ -130,7 +125,7 @@ void StrokeSamples::operator()(const std::vector<StyledRun>& runs) {
   runs_in_ = upload(in.runs_in.data(), in.runs_in.size() * sizeof(RunInput));
   points_ = upload(in.points.data(), in.points.size() * sizeof(glm::dvec2));
   offsets_ = upload(in.offsets.data(), in.offsets.size() * sizeof(OffsetInput));
-  counts_ = zeros(runs.size() + 1);
+  counts_ = make_zeroed_buffer(runs.size() + 1);
   distinct_ = upload(nullptr, in.points.size() * sizeof(glm::dvec2));
   states_ = upload(nullptr, runs.size() * sizeof(RunState));
   bases_ = upload(nullptr, size_t(capacity_) * sizeof(BaseRecord));

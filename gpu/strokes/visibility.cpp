@@ -89,15 +89,6 @@ struct PathTable {
   double bound = 0;  // at least the first round's samples
 };
 
-Buffer zeros(size_t count) {
-  Buffer b = make_buffer(nullptr, count * sizeof(uint32_t));
-  const uint32_t zero = 0;
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, b.id());  // not glClearNamedBufferData: OSMesa has no such entry
-  glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  return b;
-}
-
 uint32_t read_uint(const Buffer& b, size_t at) {
   uint32_t v = 0;
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -140,9 +131,9 @@ class VisibilityPass : public GpuPass {
     const size_t n = std::max<size_t>(capacity, 1), args = size_t(table.entries) + 1;
     Buffer paths = make_buffer(table.paths.data(), table.paths.size() * sizeof(PathRow));
     Buffer points = make_buffer(table.points.data(), table.points.size() * sizeof(PointRow));
-    Buffer entries = zeros(args + 6);  // the counts, their total, then two dispatches' groups
+    Buffer entries = make_zeroed_buffer(args + 6);  // the counts, their total, then two dispatches' groups
     Buffer tested = make_buffer(nullptr, n * sizeof(TestedRow)), changes = make_buffer(nullptr, n * sizeof(glm::vec2));
-    Buffer change_marks = zeros(n + 1), run_marks = zeros(2 * n + 1),
+    Buffer change_marks = make_zeroed_buffer(n + 1), run_marks = make_zeroed_buffer(2 * n + 1),
            runs = make_buffer(nullptr, 2 * n * sizeof(RunRow));
     set_uniforms(f, lines, table, capacity);
     const std::initializer_list<const Buffer*> all = {&paths,        &points,    &entries, &tested,
