@@ -86,8 +86,9 @@ Visibility visible_runs(const WindowLines& lines, const StrokesParams& p, const 
 
 // At least as many first-round samples as either backend takes of path p: per segment
 // within the window's 4 px margin, the step's multiples along that stretch, one more where
-// float arc lengths of neighbouring segments overlap, and its two edge samples; per path its
-// end, s = 0 and a segment the GPU's float clip keeps where the double one does not. Both
+// the arc lengths of neighbouring segments overlap (the backends round a segment's end each
+// their own way), and its two edge samples; per path its end, s = 0 and a segment the GPU's
+// clip keeps where the reference's does not. Both
 // backends size their memory by it; a line far off the window costs nothing off it.
 double first_round_bound(const WindowPath& p, double step, double width, double height);
 
@@ -95,7 +96,7 @@ double first_round_bound(const WindowPath& p, double step, double width, double 
 VisibleRun run_along(const WindowPath& path, uint32_t i, double s0, double s1, bool closed, bool occluded_start,
                      bool occluded_end);
 
-// A run as the GPU lists it, ends in float and flags as in run_tables: an end that is not
+// A run as the GPU lists it, ends and flags as in run_tables: an end that is not
 // occluded is its path's own end (0 or the length), taken exactly.
 VisibleRun run_from_row(const WindowPath& path, uint32_t i, double s0, double s1, uint32_t flags);
 
@@ -121,7 +122,7 @@ struct VisibilityStage {
                          .texel = Texel::Unorm8,
                          .doc = "1 where a first-round sample is visible: one texel per sample, 1024 a row",
                          .tolerance_why = "fed the same ID image and paths: the same integer test, at positions "
-                                          "the GPU interpolates in float"},
+                                          "both take in double and round to float"},
                         {.handle = kRunPaths,
                          .channels = 2,
                          .doc = "per visible run: (path + 1, closed + 2 occluded start + 4 occluded end)",

@@ -47,25 +47,23 @@ namespace {
 
 // shaders/strokes/visibility.comp's Path, Point, Tested and Run (std430).
 struct PathRow {
-  uint32_t first_point, points, first_entry, kind, key, byte_window;
-  float length_px;
-  uint32_t sampled;
+  uint32_t first_point, points, first_entry, kind, key, byte_window, sampled, unused;
+  double length_px;
 };
 struct PointRow {
-  glm::vec2 window;
-  float s;
-  uint32_t unused;
-  glm::uvec2 faces, unused2;
+  glm::dvec2 window;
+  double s;
+  glm::uvec2 faces;
 };
 struct TestedRow {
-  float s;
+  double s, change;
   uint32_t flags, path;
-  float change;
 };
 struct RunRow {
   uint32_t path, flags;
-  float s0, s1;
+  double s0, s1;
 };
+static_assert(sizeof(PathRow) == 40 && sizeof(PointRow) == 32 && sizeof(TestedRow) == 24 && sizeof(RunRow) == 24);
 
 // The paths as the shaders read them; the entries are each path's segments and its end.
 struct PathTable {
@@ -75,11 +73,10 @@ struct PathTable {
       if (n == 0) throw std::logic_error("visibility: a window path has no points");  // window_lines makes none
       VisibilitySample first = sample_at(p, 0);  // its kind and (silhouettes) byte window
       paths.push_back({uint32_t(points.size()), n, entries, first.kind | (p.closed ? 16u : 0u), first.key,
-                       first.byte_window, float(p.length_px), 0});
+                       first.byte_window, 0, 0, p.length_px});
       entries += (p.closed ? n : n - 1) + 1;
       for (uint32_t k = 0; k < n; ++k)
-        points.push_back({glm::vec2(p.window[k]), float(p.arc_px[k]), 0,
-                          k < p.front_faces.size() ? p.front_faces[k] : glm::uvec2(0), glm::uvec2(0)});
+        points.push_back({p.window[k], p.arc_px[k], k < p.front_faces.size() ? p.front_faces[k] : glm::uvec2(0)});
       bound += first_round_bound(p, step, lines.width, lines.height);
     }
   }
@@ -132,7 +129,7 @@ class VisibilityPass : public GpuPass {
     Buffer paths = make_buffer(table.paths.data(), table.paths.size() * sizeof(PathRow));
     Buffer points = make_buffer(table.points.data(), table.points.size() * sizeof(PointRow));
     Buffer entries = make_zeroed_buffer(args + 6);  // the counts, their total, then two dispatches' groups
-    Buffer tested = make_buffer(nullptr, n * sizeof(TestedRow)), changes = make_buffer(nullptr, n * sizeof(glm::vec2));
+    Buffer tested = make_buffer(nullptr, n * sizeof(TestedRow)), changes = make_buffer(nullptr, n * sizeof(glm::dvec2));
     Buffer change_marks = make_zeroed_buffer(n + 1), run_marks = make_zeroed_buffer(2 * n + 1),
            runs = make_buffer(nullptr, 2 * n * sizeof(RunRow));
     set_uniforms(f, lines, table, capacity);
@@ -201,9 +198,9 @@ class VisibilityPass : public GpuPass {
       glProgramUniform1ui(p->id(), p->uniform("capacity"), capacity);
       glProgramUniform1ui(p->id(), p->uniform("path_count"), GLuint(table.paths.size()));
       glProgramUniform1ui(p->id(), p->uniform("entry_count"), table.entries);
-      glProgramUniform1f(p->id(), p->uniform("step_px"), f.params<StrokesParams>().vis_step_px);
-      glProgramUniform1f(p->id(), p->uniform("width"), float(lines.width));
-      glProgramUniform1f(p->id(), p->uniform("height"), float(lines.height));
+      glProgramUniform1d(p->id(), p->uniform("step_px"), f.params<StrokesParams>().vis_step_px);
+      glProgramUniform1d(p->id(), p->uniform("width"), lines.width);
+      glProgramUniform1d(p->id(), p->uniform("height"), lines.height);
     }
   }
 
@@ -215,7 +212,7 @@ class VisibilityPass : public GpuPass {
                   "the visibility samples of %zu lines on the GPU (at most %.0f, every "
                   "strokes.vis_step_px %g)",
                   lines.paths.size(), bound, step);
-    check_memory_budget(what, bound * double(sizeof(TestedRow) + 4 + 8 + 8 + 2 * sizeof(RunRow)));
+    check_memory_budget(what, bound * double(sizeof(TestedRow) + 4 + sizeof(glm::dvec2) + 8 + 2 * sizeof(RunRow)));
     if (bound > double(std::numeric_limits<uint32_t>::max() / 2 - 1))
       throw std::length_error(std::string(what) + ": more than 2^31 samples");
   }

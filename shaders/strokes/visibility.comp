@@ -66,30 +66,32 @@ void main() {
 }
 #else
 
+// Positions and arc lengths are in double, as the reference takes them; a sample's window
+// position is rounded to float for the test only, as common/strokes/visibility.cpp sample_at
+// rounds it, so both backends test the same pixels.
 struct Path {
   uint first_point, points, first_entry;
   uint kind;  // SampleKind; bit 4: closed
   uint key, byte_window;
-  float length_px;
   uint sampled;  // STEP_COUNT: 1 where a segment took a sample
+  uint unused;
+  double length_px;
 };
 struct Point {
-  vec2 window;
-  float s;  // window arc length from the path's start
-  uint unused;
+  dvec2 window;
+  double s;     // window arc length from the path's start
   uvec2 faces;  // of the segment from this point (common/strokes/strokes.hpp WindowPath::front_faces)
-  uvec2 unused2;
 };
 struct Tested {
-  float s;
-  uint flags;  // 1: visible; 2: the next sample along the path disagrees; 4: ... and is visible
+  double s;
+  double change;  // where that change is located
+  uint flags;     // 1: visible; 2: the next sample along the path disagrees; 4: ... and is visible
   uint path;
-  float change;  // where that change is located
 };
 struct Run {
   uint path;
   uint flags;  // 1: the whole closed path; 2: occluded at its start; 4: at its end
-  float s0, s1;
+  double s0, s1;
 };
 
 layout(std430, binding = 0) buffer Paths { Path paths[]; };
@@ -98,7 +100,7 @@ layout(std430, binding = 2) buffer Entries { uint entries[]; };  // counts, then
 layout(std430, binding = 3) buffer Samples { Tested tested[]; };
 layout(std430, binding = 4) buffer ChangeMarks { uint change_marks[]; };  // per sample, then prefix sums
 layout(std430, binding = 5) buffer RunMarks { uint run_marks[]; };        // 2 per sample, then prefix sums
-layout(std430, binding = 6) buffer Changes { vec2 changes[]; };           // (located s, turns visible)
+layout(std430, binding = 6) buffer Changes { dvec2 changes[]; };          // (located s, turns visible)
 layout(std430, binding = 7) writeonly buffer Runs { Run runs[]; };
 
 uniform uint path_count, entry_count;
@@ -107,10 +109,10 @@ uniform uint capacity;  // samples the buffers hold: the CPU's bound
 // The first round's samples: the prefix sum after the last entry. entries[] holds after it
 // the indirect dispatches over the samples (entry_count + 1) and their run slots (+ 4).
 uint sample_total() { return entries[entry_count]; }
-uniform float step_px, width, height;
+uniform double step_px, width, height;
 
-const float kMargin = 4.0;     // px around the window where samples are taken (the test reaches 2)
-const float kLocatedPx = 1.0;  // Kalnins et al. 2002, §4.1: a change is located within 1 px
+const double kMargin = 4.0lf;     // px around the window where samples are taken (the test reaches 2)
+const double kLocatedPx = 1.0lf;  // Kalnins et al. 2002, §4.1: a change is located within 1 px
 
 bool is_closed(Path p) { return (p.kind & 16u) != 0u; }
 uint segments(Path p) { return is_closed(p) ? p.points : p.points - 1u; }
@@ -132,15 +134,15 @@ uint entry_end(uint p) { return p + 1u < path_count ? paths[p + 1u].first_entry 
 uvec2 sample_range(uint p) { return uvec2(entries[paths[p].first_entry], entries[entry_end(p)]); }
 
 // common/strokes/strokes.cpp clip_to_window with kMargin.
-bool clip_to_window(vec2 a, vec2 b, out float t0, out float t1) {
-  vec2 d = b - a, lo = vec2(-kMargin), hi = vec2(width + kMargin, height + kMargin);
-  t0 = 0.0, t1 = 1.0;
+bool clip_to_window(dvec2 a, dvec2 b, out double t0, out double t1) {
+  dvec2 d = b - a, lo = dvec2(-kMargin), hi = dvec2(width + kMargin, height + kMargin);
+  t0 = 0.0lf, t1 = 1.0lf;
   for (int c = 0; c < 2; ++c) {
-    if (d[c] == 0.0) {
+    if (d[c] == 0.0lf) {
       if (a[c] < lo[c] || a[c] > hi[c]) return false;
       continue;
     }
-    float u = (lo[c] - a[c]) / d[c], v = (hi[c] - a[c]) / d[c];
+    double u = (lo[c] - a[c]) / d[c], v = (hi[c] - a[c]) / d[c];
     t0 = max(t0, min(u, v)), t1 = min(t1, max(u, v));
   }
   return t0 <= t1;
@@ -149,57 +151,59 @@ bool clip_to_window(vec2 a, vec2 b, out float t0, out float t1) {
 // Segment k's first-round samples: where it enters the margin, the multiples of the step
 // from there up to where it leaves (one at the segment's end belongs to the next), and that.
 struct Stretch {
-  float u, v;  // in arc length
+  double u, v;  // in arc length
   uint first_multiple, multiples;
   bool enters, leaves;
 };
 
 bool stretch_of(Path p, uint k, out Stretch st) {
   Point a = point(p, k), b = point(p, k + 1u);
-  float length = distance(a.window, b.window), t0, t1;
+  double length = distance(a.window, b.window), t0, t1;
   if (!clip_to_window(a.window, b.window, t0, t1)) return false;
-  st.enters = t0 > 0.0, st.leaves = t1 < 1.0;
+  st.enters = t0 > 0.0lf, st.leaves = t1 < 1.0lf;
   // A segment that does not leave ends where the next one starts, at the next point's arc
-  // length (a closed path's last one at its length): a.s + length rounds elsewhere in float,
+  // length (a closed path's last one at its length): a.s + length may round elsewhere,
   // and a multiple of the step between the two would go to neither segment, or to both.
-  float end = k + 1u < p.points ? b.s : p.length_px;
+  double end = k + 1u < p.points ? b.s : p.length_px;
   st.u = a.s + t0 * length, st.v = st.leaves ? a.s + t1 * length : end;
-  float lo = st.enters ? floor(st.u / step_px) + 1.0 : ceil(st.u / step_px);
-  float hi = ceil(min(st.v, p.length_px) / step_px) - 1.0;  // the last multiple below v and the length
-  st.first_multiple = uint(max(lo, 0.0));
+  double lo = st.enters ? floor(st.u / step_px) + 1.0lf : ceil(st.u / step_px);
+  double hi = ceil(min(st.v, p.length_px) / step_px) - 1.0lf;  // the last multiple below v and the length
+  st.first_multiple = uint(max(lo, 0.0lf));
   st.multiples = hi >= lo ? uint(hi - lo) + 1u : 0u;
   return true;
 }
 
 uint count_of(Stretch st) { return st.multiples + (st.enters ? 1u : 0u) + (st.leaves ? 1u : 0u); }
 
+// A closed path's arc length s in [0, L): s is below 2 L here (a change's bisection reaches
+// past the seam by less than L), where this is fmod's exact result.
+double wrapped(Path p, double s) { return is_closed(p) && s >= p.length_px && p.length_px > 0.0lf ? s - p.length_px : s; }
+
 // The sample of path p at arc length s on its segment k, t along it.
-Sample sample_on(Path p, uint k, float t, float s) {
+Sample sample_on(Path p, uint k, double t, double s) {
   Point a = point(p, k), b = point(p, k + 1u);
   Sample v;
-  v.window = mix(a.window, b.window, t);
+  v.window = vec2(a.window + t * (b.window - a.window));
   v.kind = p.kind & 15u;
   v.key = p.key;
   v.faces[0] = a.faces.x, v.faces[1] = a.faces.y;
-  if (v.kind == 2u) v.faces[0] = t < 0.5 ? a.faces.x : a.faces.y, v.faces[1] = 0u;  // the nearer end's face
+  if (v.kind == 2u) v.faces[0] = t < 0.5lf ? a.faces.x : a.faces.y, v.faces[1] = 0u;  // the nearer end's face
   v.byte_value = 0u;
-  if (v.kind == 1u && p.length_px > 0.0) {
-    float wrapped = is_closed(p) ? mod(s, p.length_px) : s;
-    v.byte_value = uint(clamp(floor(255.0 * wrapped / p.length_px), 0.0, 255.0));
-  }
+  if (v.kind == 1u && p.length_px > 0.0lf)
+    v.byte_value = uint(clamp(floor(255.0lf * wrapped(p, s) / p.length_px), 0.0lf, 255.0lf));
   v.byte_window = p.byte_window;
   return v;
 }
 
 // Where along segment k arc length s lies.
-float along(Path p, uint k, float s) {
-  float s0 = point(p, k).s, s1 = k + 1u < p.points ? point(p, k + 1u).s : p.length_px;
-  return s1 > s0 ? clamp((s - s0) / (s1 - s0), 0.0, 1.0) : 0.0;
+double along(Path p, uint k, double s) {
+  double s0 = point(p, k).s, s1 = k + 1u < p.points ? point(p, k + 1u).s : p.length_px;
+  return s1 > s0 ? clamp((s - s0) / (s1 - s0), 0.0lf, 1.0lf) : 0.0lf;
 }
 
 // common/strokes/visibility.cpp point_at: the segment holding arc length s (a closed path wraps).
-bool visible_at(Path p, float s) {
-  if (is_closed(p) && p.length_px > 0.0) s = mod(s, p.length_px);
+bool visible_at(Path p, double s) {
+  s = wrapped(p, s);
   uint lo = 0u, hi = p.points;
   while (hi - lo > 1u) {
     uint mid = (lo + hi) / 2u;
@@ -211,11 +215,11 @@ bool visible_at(Path p, float s) {
 
 // An open path's end is sampled after its segments' samples; a path none of whose segments
 // took one gets s = 0, and its end only where it has a length.
-bool has_end_sample(Path p) { return !is_closed(p) && (p.sampled != 0u || p.length_px > 0.0); }
+bool has_end_sample(Path p) { return !is_closed(p) && (p.sampled != 0u || p.length_px > 0.0lf); }
 
-void put(uint at, uint path, Path p, uint k, float s) {
+void put(uint at, uint path, Path p, uint k, double s) {
   if (at >= capacity) return;  // past the CPU's bound: the CPU refuses the frame
-  tested[at] = Tested(s, sample_visible(sample_on(p, k, along(p, k, s), s)) ? 1u : 0u, path, 0.0);
+  tested[at] = Tested(s, 0.0lf, sample_visible(sample_on(p, k, along(p, k, s), s)) ? 1u : 0u, path);
 }
 
 #if defined(STEP_CHANGES)  // Kalnins et al. 2002, §4.1: bisected until located within 1 px
@@ -227,19 +231,19 @@ void at_sample(uint i) {
   bool changes = next != ~0u && (tested[next].flags & 1u) != (a.flags & 1u);
   change_marks[i] = changes ? 1u : 0u;
   if (!changes) return;
-  float s0 = a.s, s1 = tested[next].s + (next < i ? p.length_px : 0.0);
+  double s0 = a.s, s1 = tested[next].s + (next < i ? p.length_px : 0.0lf);
   bool v0 = (a.flags & 1u) != 0u;
   while (s1 - s0 > kLocatedPx) {
-    float mid = (s0 + s1) / 2.0;
+    double mid = (s0 + s1) / 2.0lf;
     if (visible_at(p, mid) == v0) s0 = mid; else s1 = mid;
   }
   tested[i].flags = a.flags | 2u | (v0 ? 0u : 4u);
-  tested[i].change = (s0 + s1) / 2.0;
+  tested[i].change = (s0 + s1) / 2.0lf;
 }
 #elif defined(STEP_MARKS)
 void at_sample(uint i) {
   Tested a = tested[i];
-  if ((a.flags & 2u) != 0u) changes[change_marks[i]] = vec2(a.change, (a.flags & 4u) != 0u ? 1.0 : 0.0);
+  if ((a.flags & 2u) != 0u) changes[change_marks[i]] = dvec2(a.change, (a.flags & 4u) != 0u ? 1.0lf : 0.0lf);
   uvec2 range = sample_range(a.path);
   bool unchanged = change_marks[range.x] == change_marks[range.y];
   bool head = i == range.x && (a.flags & 1u) != 0u && (!is_closed(paths[a.path]) || unchanged);
@@ -253,7 +257,7 @@ void at_slot(uint i) {  // slot i % 2 of sample i / 2
   Path p = paths[path];
   uvec2 range = sample_range(path);
   uint c_first = change_marks[range.x], c_end = change_marks[range.y];
-  Run r = Run(path, 0u, 0.0, p.length_px);
+  Run r = Run(path, 0u, 0.0lf, p.length_px);
   if (i % 2u == 0u && is_closed(p)) {
     r.flags = 1u;  // visible all around
   } else if (i % 2u == 0u) {  // an open path visible from its start
@@ -286,14 +290,14 @@ void main() {
   uint path = path_of_entry(i), k = i - paths[path].first_entry, at = entries[i];
   Path p = paths[path];
   if (k == segments(p)) {  // the end entry
-    if (p.sampled == 0u) put(at++, path, p, 0u, 0.0);
+    if (p.sampled == 0u) put(at++, path, p, 0u, 0.0lf);
     if (has_end_sample(p)) put(at, path, p, p.points - 2u, p.length_px);
     return;
   }
   Stretch st;
   if (!stretch_of(p, k, st)) return;
   if (st.enters) put(at++, path, p, k, st.u);
-  for (uint m = 0u; m < st.multiples; ++m) put(at++, path, p, k, float(st.first_multiple + m) * step_px);
+  for (uint m = 0u; m < st.multiples; ++m) put(at++, path, p, k, double(st.first_multiple + m) * step_px);
   if (st.leaves) put(at, path, p, k, st.v);
 #elif defined(STEP_ARGS)  // one invocation: the dispatches over the samples and over their run slots
   if (gl_GlobalInvocationID.x != 0u) return;
