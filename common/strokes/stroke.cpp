@@ -113,15 +113,23 @@ std::vector<uint32_t> run_ordinals(const std::vector<VisibleRun>& runs) {
   return out;
 }
 
+std::vector<StrokeStyle> run_styles(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
+                                    uint32_t seed) {
+  std::vector<StrokeStyle> out;
+  RunStyles of_run(styles, seed, lines.decal_styles);
+  std::vector<uint32_t> ordinals = run_ordinals(visibility.runs);
+  for (size_t i = 0; i < visibility.runs.size(); ++i)
+    out.push_back(of_run.of(lines.paths[visibility.runs[i].path], visibility.runs[i], ordinals[i]));
+  return out;
+}
+
 std::vector<StyledRun> styled_runs(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
                                    uint32_t seed) {
   std::vector<StyledRun> out;
-  RunStyles run_styles(styles, seed, lines.decal_styles);
-  std::vector<uint32_t> ordinals = run_ordinals(visibility.runs);
+  std::vector<StrokeStyle> of_run = run_styles(lines, visibility, styles, seed);
   for (size_t i = 0; i < visibility.runs.size(); ++i) {
     const VisibleRun& run = visibility.runs[i];
-    out.push_back({{run.window, run.closed, run.occluded_start, run.occluded_end},
-                   run_styles.of(lines.paths[run.path], run, ordinals[i])});
+    out.push_back({{run.window, run.closed, run.occluded_start, run.occluded_end}, std::move(of_run[i])});
   }
   return out;
 }

@@ -63,6 +63,10 @@ class RunStyles {
 // Each run's place among its path's runs, in visibility.runs' order.
 std::vector<uint32_t> run_ordinals(const std::vector<VisibleRun>& runs);
 
+// Every visible run's style (RunStyles::of), in drawing order (visibility.runs' order).
+std::vector<StrokeStyle> run_styles(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
+                                    uint32_t seed);
+
 // One visible run as a base stroke takes it (its window polyline and ends) and the style it
 // is drawn in (RunStyles::of).
 struct StyledRun {

@@ -268,10 +268,11 @@ VisibleRun run_along(const WindowPath& p, uint32_t i, double s0, double s1, bool
   return run;
 }
 
-VisibleRun run_from_row(const WindowPath& path, uint32_t i, double s0, double s1, uint32_t flags) {
+VisibleRun run_from_row(const WindowPath& path, uint32_t i, double s0, double s1, uint32_t flags, bool with_window) {
   const bool closed = flags & 1u, occluded_start = flags & 2u, occluded_end = flags & 4u;
-  return run_along(path, i, occluded_start ? s0 : 0.0, occluded_end ? s1 : path.length_px, closed, occluded_start,
-                   occluded_end);
+  s0 = occluded_start ? s0 : 0.0, s1 = occluded_end ? s1 : path.length_px;
+  if (!with_window) return {i, s0, s1, closed, occluded_start, occluded_end, {}};
+  return run_along(path, i, s0, s1, closed, occluded_start, occluded_end);
 }
 
 Visibility visible_runs(const WindowLines& lines, const StrokesParams& p, const SampleTest& test) {

@@ -70,7 +70,9 @@ struct VisibleRun {
   double s0, s1;                      // s1 > s0; a closed path's run may pass its seam (s1 beyond its length)
   bool closed;                        // the whole closed path
   bool occluded_start, occluded_end;  // the end is where the path goes out of sight
-  std::vector<glm::dvec2> window;     // the path's window polyline from s0 to s1
+  // The path's window polyline from s0 to s1; empty in the GPU's frame, which makes it on the
+  // GPU (gpu/strokes/stroke_samples.hpp).
+  std::vector<glm::dvec2> window;
 };
 
 using SampleTest = std::function<std::vector<uint8_t>(const std::vector<VisibilitySample>&)>;
@@ -97,8 +99,10 @@ VisibleRun run_along(const WindowPath& path, uint32_t i, double s0, double s1, b
                      bool occluded_end);
 
 // A run as the GPU lists it, ends and flags as in run_tables: an end that is not
-// occluded is its path's own end (0 or the length), taken exactly.
-VisibleRun run_from_row(const WindowPath& path, uint32_t i, double s0, double s1, uint32_t flags);
+// occluded is its path's own end (0 or the length), taken exactly. Its window polyline is
+// made where `with_window` (the GPU's frame makes its own: gpu/strokes/stroke_samples.hpp).
+VisibleRun run_from_row(const WindowPath& path, uint32_t i, double s0, double s1, uint32_t flags,
+                        bool with_window = true);
 
 // The flags as the stage's output image: one texel per sample, row after row of 1024.
 Image flags_image(const std::vector<uint8_t>& flags);

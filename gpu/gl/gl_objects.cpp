@@ -4,6 +4,7 @@
 #include <atomic>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 // Written against GL 4.3 bind-to-edit entry points, not 4.5 direct state access: Mesa's
 // libOSMesa exports no DSA functions, and the OSMesa build links them statically.
@@ -161,6 +162,13 @@ Texture upload_texture_3d(const std::vector<Image>& layers, GLenum internal_form
 }
 
 Buffer make_buffer(const void* data, size_t bytes) {
+  constexpr size_t kLeast = 16;
+  std::vector<unsigned char> padded;
+  if (bytes < kLeast) {
+    padded.assign(kLeast, 0);
+    if (data) std::copy_n(static_cast<const unsigned char*>(data), bytes, padded.begin());
+    data = padded.data(), bytes = kLeast;
+  }
   GLuint id = 0;
   glGenBuffers(1, &id);
   glBindBuffer(GL_ARRAY_BUFFER, id);

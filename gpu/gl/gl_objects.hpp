@@ -83,6 +83,8 @@ ImageU32 download_texture_u32(const Texture& tex, int channels);
 // floats each, read back in record order: the rows they take, a partial one whole.
 std::vector<float> read_table(const Texture& table, int channels, size_t records);
 
+// A buffer of `bytes` from `data` (or uninitialized where null), of at least 16 bytes: GL
+// refuses a buffer of none, and a binding of one.
 Buffer make_buffer(const void* data, size_t bytes);
 // A buffer of `count` uint32 zeros, cleared on the GPU.
 Buffer make_zeroed_buffer(size_t count);

@@ -1,8 +1,11 @@
 // The stroke raster on the GPU (Kalnins et al. 2002, §4.1), the twin of reference/strokes/stroke.cpp: the
-// runs' samples made on the GPU (gpu/strokes/stroke_samples.hpp), their ribbons expanded in the vertex
+// runs' polylines and samples made on the GPU from the runs the visibility steps left there
+// (gpu/strokes/stroke_samples.hpp, gpu/strokes/window_paths.hpp), their ribbons expanded in the vertex
 // shader (shaders/strokes/common_ribbon.glsl) and drawn in one indirect call, blended premultiplied
 // "over" onto the page.
 #include "gpu/strokes/stroke.hpp"
+
+#include <optional>
 
 #include "common/strokes/stroke_paper.hpp"
 #include "gpu/core/stage.hpp"
@@ -24,7 +27,12 @@ class StrokePass : public GpuPass {
   }
 
   void run(GpuFrame& f) override {
-    samples_(styled_runs(f.get(kWindowLines), f.get(kVisibleRuns), f.scene.strokes, f.scene.seed));
+    const WindowLines& lines = f.get(kWindowLines);
+    const Visibility& visibility = f.get(kVisibleRuns);
+    const RunTables* tables = f.get(maybe(kRunTables));
+    std::optional<UploadedRuns> uploaded;  // where visibility ran elsewhere
+    if (!tables) tables = &uploaded.emplace(lines, visibility).tables();
+    samples_(lines, visibility, run_styles(lines, visibility, f.scene.strokes, f.scene.seed), *tables);
     Texture& target = f.put(kStrokeColor);
     if (drawn_over(find_output(kStrokeColor.name), f.stages).empty()) copy_page(f.get(kPage), target);
     if (!samples_.draw()) return;

@@ -16,6 +16,7 @@
 #include "common/util/memory_budget.hpp"
 #include "gpu/core/stage.hpp"
 #include "gpu/gl/scan.hpp"
+#include "gpu/strokes/window_paths.hpp"
 
 namespace plumbago::gpu {
 
@@ -45,46 +46,19 @@ std::vector<uint8_t> SampleTest::operator()(const Texture& ids, const std::vecto
 
 namespace {
 
-// shaders/strokes/visibility.comp's Path, Point, Tested and Run (std430).
-struct PathRow {
-  uint32_t first_point, points, first_entry, kind, key, byte_window, sampled, unused;
-  double length_px;
-};
-struct PointRow {
-  glm::dvec2 window;
-  double s;
-  glm::uvec2 faces;
-};
+// shaders/strokes/visibility.comp's Tested (std430).
 struct TestedRow {
   double s, change;
   uint32_t flags, path;
 };
-struct RunRow {
-  uint32_t path, flags;
-  double s0, s1;
-};
-static_assert(sizeof(PathRow) == 40 && sizeof(PointRow) == 32 && sizeof(TestedRow) == 24 && sizeof(RunRow) == 24);
+static_assert(sizeof(TestedRow) == 24);
 
-// The paths as the shaders read them; the entries are each path's segments and its end.
-struct PathTable {
-  PathTable(const WindowLines& lines, double step) {
-    for (const WindowPath& p : lines.paths) {
-      uint32_t n = uint32_t(p.window.size());
-      if (n == 0) throw std::logic_error("visibility: a window path has no points");  // window_lines makes none
-      VisibilitySample first = sample_at(p, 0);  // its kind and (silhouettes) byte window
-      paths.push_back({uint32_t(points.size()), n, entries, first.kind | (p.closed ? 16u : 0u), first.key,
-                       first.byte_window, 0, 0, p.length_px});
-      entries += (p.closed ? n : n - 1) + 1;
-      for (uint32_t k = 0; k < n; ++k)
-        points.push_back({p.window[k], p.arc_px[k], k < p.front_faces.size() ? p.front_faces[k] : glm::uvec2(0)});
-      bound += first_round_bound(p, step, lines.width, lines.height);
-    }
-  }
-  std::vector<PathRow> paths;
-  std::vector<PointRow> points;
-  uint32_t entries = 0;
-  double bound = 0;  // at least the first round's samples
-};
+// At least the first round's samples of `lines` (first_round_bound).
+double first_round_samples(const WindowLines& lines, double step) {
+  double bound = 0;
+  for (const WindowPath& p : lines.paths) bound += first_round_bound(p, step, lines.width, lines.height);
+  return bound;
+}
 
 uint32_t read_uint(const Buffer& b, size_t at) {
   uint32_t v = 0;
@@ -102,12 +76,14 @@ class VisibilityPass : public GpuPass {
         changes_(step("STEP_CHANGES")),
         args_(step("STEP_ARGS")),
         marks_(step("STEP_MARKS")),
-        runs_(step("STEP_RUNS")) {}
+        list_runs_(step("STEP_RUNS")) {}
 
   void run(GpuFrame& f) override {
     const WindowLines& lines = f.get(kWindowLines);
     Visibility v;
+    tables_ = {};
     if (!lines.paths.empty()) v = visibility(f, lines);
+    f.put(kRunTables, tables_);
     if (f.dump) {
       auto [paths, ends] = run_tables(v.runs);
       dumped_ = {{kFlags.name, flags_image(v.flags)}, {kRunPaths.name, paths}, {kRunEnds.name, ends}};
@@ -122,19 +98,21 @@ class VisibilityPass : public GpuPass {
  private:
   Visibility visibility(GpuFrame& f, const WindowLines& lines) {
     const auto p = f.params<StrokesParams>();
-    PathTable table(lines, p.vis_step_px);
-    check_memory(lines, p.vis_step_px, table.bound);
-    const auto capacity = uint32_t(table.bound);
+    PathTable table(lines);
+    const double bound = first_round_samples(lines, p.vis_step_px);
+    check_memory(lines, p.vis_step_px, bound);
+    const auto capacity = uint32_t(bound);
     const size_t n = std::max<size_t>(capacity, 1), args = size_t(table.entries) + 1;
-    Buffer paths = make_buffer(table.paths.data(), table.paths.size() * sizeof(PathRow));
-    Buffer points = make_buffer(table.points.data(), table.points.size() * sizeof(PointRow));
+    paths_ = make_buffer(table.paths.data(), table.paths.size() * sizeof(PathRow));
+    points_ = make_buffer(table.points.data(), table.points.size() * sizeof(PointRow));
     Buffer entries = make_zeroed_buffer(args + 6);  // the counts, their total, then two dispatches' groups
     Buffer tested = make_buffer(nullptr, n * sizeof(TestedRow)), changes = make_buffer(nullptr, n * sizeof(glm::dvec2));
     Buffer change_marks = make_zeroed_buffer(n + 1), run_marks = make_zeroed_buffer(2 * n + 1),
            runs = make_buffer(nullptr, 2 * n * sizeof(RunRow));
+    run_rows_ = std::move(runs);
     set_uniforms(f, lines, table, capacity);
-    const std::initializer_list<const Buffer*> all = {&paths,        &points,    &entries, &tested,
-                                                      &change_marks, &run_marks, &changes, &runs};
+    const std::initializer_list<const Buffer*> all = {&paths_,       &points_,   &entries, &tested,
+                                                      &change_marks, &run_marks, &changes, &run_rows_};
     bind(all);
     bind_textures(samples_, {{"ids", &f.get(kIds)}});
     bind_textures(changes_, {{"ids", &f.get(kIds)}});
@@ -156,8 +134,10 @@ class VisibilityPass : public GpuPass {
     scan_(run_marks, 2 * n + 1);
     bind(all);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries.id());
-    over_samples(runs_, args + 3);
-    return read_runs(f, lines, {entries, args - 1}, {run_marks, 2 * n}, runs, tested, capacity);
+    over_samples(list_runs_, args + 3);
+    Visibility v = read_runs(f, lines, {entries, args - 1}, {run_marks, 2 * n}, run_rows_, tested, capacity);
+    tables_ = {&paths_, &points_, &run_rows_, uint32_t(v.runs.size())};
+    return v;
   }
 
   // A step over the samples (or their run slots), with the groups the GPU wrote at uint `at`.
@@ -184,7 +164,8 @@ class VisibilityPass : public GpuPass {
                              std::to_string(capacity));
     std::vector<RunRow> rows(read_uint(run_count.buffer, run_count.at));
     read_buffer(runs, rows.data(), rows.size() * sizeof(RunRow));
-    for (const RunRow& r : rows) v.runs.push_back(run_from_row(lines.paths[r.path], r.path, r.s0, r.s1, r.flags));
+    for (const RunRow& r : rows)
+      v.runs.push_back(run_from_row(lines.paths[r.path], r.path, r.s0, r.s1, r.flags, false));
     if (f.dump) {
       std::vector<TestedRow> t(v.samples);
       read_buffer(tested, t.data(), t.size() * sizeof(TestedRow));
@@ -194,7 +175,7 @@ class VisibilityPass : public GpuPass {
   }
 
   void set_uniforms(GpuFrame& f, const WindowLines& lines, const PathTable& table, uint32_t capacity) {
-    for (const Program* p : {&count_, &ends_, &samples_, &args_, &changes_, &marks_, &runs_}) {
+    for (const Program* p : {&count_, &ends_, &samples_, &args_, &changes_, &marks_, &list_runs_}) {
       glProgramUniform1ui(p->id(), p->uniform("capacity"), capacity);
       glProgramUniform1ui(p->id(), p->uniform("path_count"), GLuint(table.paths.size()));
       glProgramUniform1ui(p->id(), p->uniform("entry_count"), table.entries);
@@ -224,7 +205,9 @@ class VisibilityPass : public GpuPass {
 
   static void barrier() { glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); }
 
-  Program count_, ends_, samples_, changes_, args_, marks_, runs_;
+  Program count_, ends_, samples_, changes_, args_, marks_, list_runs_;
+  Buffer paths_, points_, run_rows_;  // what the stroke pass reads (kRunTables), kept until the next frame
+  RunTables tables_;
   ExclusiveScan scan_;
   std::map<std::string, Image> dumped_;
 };

@@ -66,36 +66,15 @@ void main() {
 }
 #else
 
-// Positions and arc lengths are in double, as the reference takes them; a sample's window
-// position is rounded to float for the test only, as common/strokes/visibility.cpp sample_at
-// rounds it, so both backends test the same pixels.
-struct Path {
-  uint first_point, points, first_entry;
-  uint kind;  // SampleKind; bit 4: closed
-  uint key, byte_window;
-  uint sampled;  // STEP_COUNT: 1 where a segment took a sample
-  uint unused;
-  double length_px;
-};
-struct Point {
-  dvec2 window;
-  double s;     // window arc length from the path's start
-  uvec2 faces;  // of the segment from this point (common/strokes/strokes.hpp WindowPath::front_faces)
-};
 struct Tested {
   double s;
   double change;  // where that change is located
   uint flags;     // 1: visible; 2: the next sample along the path disagrees; 4: ... and is visible
   uint path;
 };
-struct Run {
-  uint path;
-  uint flags;  // 1: the whole closed path; 2: occluded at its start; 4: at its end
-  double s0, s1;
-};
-
-layout(std430, binding = 0) buffer Paths { Path paths[]; };
-layout(std430, binding = 1) readonly buffer Points { Point points[]; };
+#define PATHS_BINDING 0
+#define POINTS_BINDING 1
+#include "strokes/window_paths.glsl"
 layout(std430, binding = 2) buffer Entries { uint entries[]; };  // counts, then their prefix sums
 layout(std430, binding = 3) buffer Samples { Tested tested[]; };
 layout(std430, binding = 4) buffer ChangeMarks { uint change_marks[]; };  // per sample, then prefix sums
@@ -114,9 +93,7 @@ uniform double step_px, width, height;
 const double kMargin = 4.0lf;     // px around the window where samples are taken (the test reaches 2)
 const double kLocatedPx = 1.0lf;  // Kalnins et al. 2002, §4.1: a change is located within 1 px
 
-bool is_closed(Path p) { return (p.kind & 16u) != 0u; }
 uint segments(Path p) { return is_closed(p) ? p.points : p.points - 1u; }
-Point point(Path p, uint k) { return points[p.first_point + k % p.points]; }
 
 // The last path whose first entry is at most e.
 uint path_of_entry(uint e) {
@@ -175,11 +152,8 @@ bool stretch_of(Path p, uint k, out Stretch st) {
 
 uint count_of(Stretch st) { return st.multiples + (st.enters ? 1u : 0u) + (st.leaves ? 1u : 0u); }
 
-// A closed path's arc length s in [0, L): s is below 2 L here (a change's bisection reaches
-// past the seam by less than L), where this is fmod's exact result.
-double wrapped(Path p, double s) { return is_closed(p) && s >= p.length_px && p.length_px > 0.0lf ? s - p.length_px : s; }
-
-// The sample of path p at arc length s on its segment k, t along it.
+// The sample of path p at arc length s on its segment k, t along it: its window position
+// rounded to float for the test only, as common/strokes/visibility.cpp sample_at rounds it.
 Sample sample_on(Path p, uint k, double t, double s) {
   Point a = point(p, k), b = point(p, k + 1u);
   Sample v;
@@ -195,21 +169,10 @@ Sample sample_on(Path p, uint k, double t, double s) {
   return v;
 }
 
-// Where along segment k arc length s lies.
-double along(Path p, uint k, double s) {
-  double s0 = point(p, k).s, s1 = k + 1u < p.points ? point(p, k + 1u).s : p.length_px;
-  return s1 > s0 ? clamp((s - s0) / (s1 - s0), 0.0lf, 1.0lf) : 0.0lf;
-}
-
-// common/strokes/visibility.cpp point_at: the segment holding arc length s (a closed path wraps).
+// The sample at arc length s, wrapped (common/strokes/visibility.cpp sample_at), tested.
 bool visible_at(Path p, double s) {
   s = wrapped(p, s);
-  uint lo = 0u, hi = p.points;
-  while (hi - lo > 1u) {
-    uint mid = (lo + hi) / 2u;
-    if (point(p, mid).s <= s) lo = mid; else hi = mid;
-  }
-  uint k = is_closed(p) ? lo : min(lo, p.points - 2u);
+  uint k = segment_at(p, s);
   return sample_visible(sample_on(p, k, along(p, k, s), s));
 }
 

@@ -37,9 +37,7 @@ struct Tally {
 };
 
 // Every run of `runs`: the GPU's records against the reference's samples.
-Tally compare(const std::vector<StyledRun>& runs) {
-  gpu::StrokeSamples gpu_samples;
-  gpu_samples(runs);
+Tally compare(const std::vector<StyledRun>& runs, const gpu::StrokeSamples& gpu_samples) {
   std::vector<gpu::SampleRecord> samples = gpu_samples.samples();
   std::vector<gpu::RunRecord> records = gpu_samples.runs();
   Tally t;
@@ -73,6 +71,24 @@ Tally compare(const std::vector<StyledRun>& runs) {
     t.samples += q.size();
   }
   return t;
+}
+
+// The runs given by their polylines.
+Tally compare(const std::vector<StyledRun>& runs) {
+  gpu::StrokeSamples gpu_samples;
+  gpu_samples(runs);
+  return compare(runs, gpu_samples);
+}
+
+// The visible runs of `found` as a frame gives them: their paths and runs on the GPU, each
+// run's polyline made there (against the reference's run_along).
+Tally compare_from_tables(const SceneLines& found) {
+  const WindowLines& lines = found.lines;
+  const Visibility& v = found.visibility;
+  gpu::UploadedRuns tables(lines, v);
+  gpu::StrokeSamples gpu_samples;
+  gpu_samples(lines, v, run_styles(lines, v, found.scene.strokes, found.scene.seed), tables.tables());
+  return compare(styled_runs(lines, v, found.scene.strokes, found.scene.seed), gpu_samples);
 }
 
 StrokeStyle style(double width) { return testing::style_of_width(width); }
@@ -145,7 +161,8 @@ TEST_F(StrokeSamplesParity, HardCasesMatchTheReference) {
               t.samples, t.runs, t.differing);
 }
 
-// The procedural stroke scenes' visible runs, in their styles: rubber-stamped and synthesized
+// The procedural stroke scenes' visible runs, in their styles, as a frame gives them (their
+// polylines made on the GPU from their paths): rubber-stamped and synthesized
 // offsets (the snowman's and the storefront's Markov chains), decals and hatches with their
 // drawn pressure (hatching_lod), plain silhouettes (the torus).
 class StrokeSamplesScenes : public testing::GlTest, public ::testing::WithParamInterface<const char*> {};
@@ -153,11 +170,17 @@ class StrokeSamplesScenes : public testing::GlTest, public ::testing::WithParamI
 TEST_P(StrokeSamplesScenes, EveryVisibleRunMatchesTheReference) {
   Scene scene = load_scene(std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/" + GetParam());
   SceneLines found = scene_lines(scene, "reference");
-  std::vector<StyledRun> runs = styled_runs(found.lines, found.visibility, found.scene.strokes, found.scene.seed);
-  ASSERT_FALSE(runs.empty());
-  Tally t = compare(runs);
-  std::printf("stroke samples, %s: %zu samples in %zu runs, %zu not bit-equal (within one float ulp)\n", GetParam(),
-              t.samples, t.runs, t.differing);
+  ASSERT_FALSE(found.visibility.runs.empty());
+  size_t past_seam = 0, whole_loops = 0;  // the hard polylines: a closed path's run over its seam, or all of it
+  for (const VisibleRun& r : found.visibility.runs) {
+    past_seam += r.s1 > found.lines.paths[r.path].length_px;
+    whole_loops += r.closed;
+  }
+  Tally t = compare_from_tables(found);
+  std::printf(
+      "stroke samples, %s: %zu samples in %zu runs (%zu past a seam, %zu whole loops), %zu not bit-equal "
+      "(within one float ulp)\n",
+      GetParam(), t.samples, t.runs, past_seam, whole_loops, t.differing);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, StrokeSamplesScenes,

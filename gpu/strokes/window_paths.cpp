@@ -1,0 +1,33 @@
+// The window paths and runs on the GPU: see gpu/strokes/window_paths.hpp.
+#include "gpu/strokes/window_paths.hpp"
+
+#include <stdexcept>
+
+namespace plumbago::gpu {
+
+PathTable::PathTable(const WindowLines& lines) {
+  for (const WindowPath& p : lines.paths) {
+    auto n = uint32_t(p.window.size());
+    if (n == 0) throw std::logic_error("visibility: a window path has no points");  // window_lines makes none
+    VisibilitySample first = sample_at(p, 0);  // its kind and (silhouettes) byte window
+    paths.push_back({uint32_t(points.size()), n, entries, first.kind | (p.closed ? 16u : 0u), first.key,
+                     first.byte_window, 0, 0, p.length_px});
+    entries += (p.closed ? n : n - 1) + 1;
+    for (uint32_t k = 0; k < n; ++k)
+      points.push_back({p.window[k], p.arc_px[k], k < p.front_faces.size() ? p.front_faces[k] : glm::uvec2(0)});
+  }
+}
+
+UploadedRuns::UploadedRuns(const WindowLines& lines, const Visibility& visibility) {
+  PathTable table(lines);
+  std::vector<RunRow> rows;
+  for (const VisibleRun& r : visibility.runs)
+    rows.push_back(
+        {r.path, uint32_t(r.closed) | uint32_t(r.occluded_start) << 1 | uint32_t(r.occluded_end) << 2, r.s0, r.s1});
+  paths_ = make_buffer(table.paths.data(), table.paths.size() * sizeof(PathRow));
+  points_ = make_buffer(table.points.data(), table.points.size() * sizeof(PointRow));
+  runs_ = make_buffer(rows.data(), rows.size() * sizeof(RunRow));
+  tables_ = {&paths_, &points_, &runs_, uint32_t(rows.size())};
+}
+
+}  // namespace plumbago::gpu

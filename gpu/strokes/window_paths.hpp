@@ -1,0 +1,61 @@
+// The window paths and visible runs as the GPU's stroke steps read them: the rows of
+// shaders/strokes/window_paths.glsl (std430). The visibility pass uploads the paths and lists
+// the runs on the GPU (gpu/strokes/visibility.cpp) and shares them with the stroke pass, which
+// makes each run's window polyline there (gpu/strokes/stroke_samples.hpp); where the runs were
+// found elsewhere (parity feeds the reference's), UploadedRuns puts them up.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "common/core/handle.hpp"
+#include "common/strokes/visibility.hpp"
+#include "gpu/gl/gl_objects.hpp"
+
+namespace plumbago::gpu {
+
+struct PathRow {
+  uint32_t first_point, points, first_entry, kind, key, byte_window, sampled, unused;
+  double length_px;
+};
+struct PointRow {
+  glm::dvec2 window;
+  double s;
+  glm::uvec2 faces;
+};
+struct RunRow {
+  uint32_t path, flags;  // common/strokes/visibility.hpp run_tables' flags
+  double s0, s1;
+};
+static_assert(sizeof(PathRow) == 40 && sizeof(PointRow) == 32 && sizeof(RunRow) == 24,
+              "std430 layouts of window_paths.glsl");
+
+// The paths of `lines` as rows; each path's entries (visibility.comp) are its segments and its end.
+struct PathTable {
+  explicit PathTable(const WindowLines& lines);
+  std::vector<PathRow> paths;
+  std::vector<PointRow> points;
+  uint32_t entries = 0;
+};
+
+// The runs of a frame on the GPU: the paths' rows and points, and `count` run rows.
+struct RunTables {
+  const Buffer *paths = nullptr, *points = nullptr, *runs = nullptr;
+  uint32_t count = 0;
+};
+inline constexpr Shared<RunTables> kRunTables{"visibility.run_tables"};
+
+// The runs of `visibility` over `lines`, put up as the visibility pass leaves them.
+class UploadedRuns {
+ public:
+  UploadedRuns(const WindowLines& lines, const Visibility& visibility);
+  const RunTables& tables() const { return tables_; }
+
+ private:
+  Buffer paths_, points_, runs_;
+  RunTables tables_;
+};
+
+}  // namespace plumbago::gpu
