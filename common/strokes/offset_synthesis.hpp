@@ -145,6 +145,13 @@ class OffsetSynthesizer {
   // P_ij (0 for a forbidden or dropped transition); only when is_markov().
   double probability(size_t i, size_t j) const;
   const OffsetSynthesisOptions& options() const { return options_; }
+  // The chain as walk() reads it (the GPU's copy: gpu/strokes/run_styles.hpp): each example's
+  // first state, each state's natural successor (the rubber-stamp fallback) and, when
+  // is_markov(), row i's allowed targets and their cumulative weights.
+  const std::vector<size_t>& starts() const { return starts_; }
+  const std::vector<size_t>& successors() const { return successor_; }
+  const std::vector<uint32_t>& targets(size_t i) const { return rows_.at(i).to; }
+  const std::vector<double>& cumulative(size_t i) const { return rows_.at(i).cdf; }
 
  private:
   struct Row {

@@ -14,22 +14,6 @@ namespace plumbago {
 
 namespace {
 
-const StrokeStyle& style_of(LineKind kind, const StrokeStyles& styles) {
-  switch (kind) {
-    case LineKind::Crease:
-      return styles.crease;
-    case LineKind::Border:
-      return styles.border;
-    case LineKind::Silhouette:
-      break;
-    case LineKind::Decal:
-      break;  // its own style: RunStyles::of
-    case LineKind::Hatching:
-      break;
-  }
-  return styles.silhouette;
-}
-
 // The drawn pressure of a decal path at window arc length s (linear between its points).
 double pressure_at(const WindowPath& path, double s) {
   size_t k = segment_at(path, s), next = std::min(k + 1, path.window.size() - 1);
@@ -78,9 +62,40 @@ void check_stroke_memory(const WindowLines& lines, const Visibility& visibility,
   check_memory_budget(what, samples * double(sizeof(StrokeSample) + 6 * (sizeof(RibbonVertex) + sizeof(StrokeVertex))));
 }
 
-enum RunStream : uint32_t { kStampStart = 1, kOffsetWalk = 2 };  // what a run's stream draws
-
 }  // namespace
+
+const StrokeStyle& line_style(LineKind kind, const StrokeStyles& styles) {
+  switch (kind) {
+    case LineKind::Crease:
+      return styles.crease;
+    case LineKind::Border:
+      return styles.border;
+    case LineKind::Silhouette:
+      break;
+    case LineKind::Decal:
+      break;  // its own style: RunStyles::of
+    case LineKind::Hatching:
+      break;
+  }
+  return styles.silhouette;
+}
+
+const std::vector<OffsetExample>& drawn_examples(LineKind kind, const StrokeStyles& styles) {
+  return kind == LineKind::Silhouette ? styles.silhouette_examples : styles.crease_examples;
+}
+
+RunOffsets run_offsets(LineKind kind, const StrokeStyles& styles) {
+  const StrokeStyle& style = line_style(kind, styles);
+  const bool drawn = !drawn_examples(kind, styles).empty();
+  if (!drawn && !style.offsets) return RunOffsets::None;
+  if (style.synthesis == OffsetSynthesis::Markov) return RunOffsets::Synthesized;
+  return drawn ? RunOffsets::Drawn : RunOffsets::Own;
+}
+
+OffsetSynthesizer offset_chain(LineKind kind, const StrokeStyles& styles) {
+  const std::vector<OffsetExample>& drawn = drawn_examples(kind, styles);
+  return drawn.empty() ? OffsetSynthesizer(*line_style(kind, styles).offsets) : OffsetSynthesizer(drawn);
+}
 
 StrokeStyle RunStyles::of(const WindowPath& path, const VisibleRun& run, uint32_t ordinal) {
   if (path.kind == LineKind::Decal) return decal_style(decals_.at(path.decal), path, run);
@@ -90,17 +105,22 @@ StrokeStyle RunStyles::of(const WindowPath& path, const VisibleRun& run, uint32_
     style.width_px = float(style.width_px * path.width_scale);
     return style;
   }
-  StrokeStyle style = style_of(path.kind, styles_);
-  const std::vector<OffsetExample>& drawn =
-      path.kind == LineKind::Silhouette ? styles_.silhouette_examples : styles_.crease_examples;
-  if (!drawn.empty()) {  // the stamp: in turn along the path, from the one the path's key picks
-    double start = CounterStream(stream_key({seed_, path.key, kStampStart})).uniform();
-    style.offsets = drawn[(size_t(start * double(drawn.size())) + ordinal) % drawn.size()];
+  StrokeStyle style = line_style(path.kind, styles_);
+  const std::vector<OffsetExample>& drawn = drawn_examples(path.kind, styles_);
+  switch (run_offsets(path.kind, styles_)) {
+    case RunOffsets::None:
+    case RunOffsets::Own:
+      return style;
+    case RunOffsets::Drawn: {  // the stamp: in turn along the path, from the one the path's key picks
+      double start = CounterStream(stream_key({seed_, path.key, kStampStart})).uniform();
+      style.offsets = drawn[(size_t(start * double(drawn.size())) + ordinal) % drawn.size()];
+      return style;
+    }
+    case RunOffsets::Synthesized:
+      break;
   }
-  if (style.synthesis != OffsetSynthesis::Markov || !style.offsets) return style;
   auto it = chains_.find(path.kind);
-  if (it == chains_.end())
-    it = chains_.emplace(path.kind, drawn.empty() ? OffsetSynthesizer(*style.offsets) : OffsetSynthesizer(drawn)).first;
+  if (it == chains_.end()) it = chains_.emplace(path.kind, offset_chain(path.kind, styles_)).first;
   CounterStream walk(stream_key({seed_, path.key, ordinal, kOffsetWalk}));
   style.offsets = it->second.synthesize_example(run.s1 - run.s0, walk);
   return style;

@@ -9,10 +9,10 @@
 // premultiplied "over", ribbon after ribbon in path order (creases and borders, then
 // silhouettes, then decals and hatches, Kalnins et al. 2002, §3, §6), triangle after triangle. Both
 // backends make the same samples in double (common/strokes/base_stroke.hpp 1.-5.; the GPU in a
-// compute shader, gpu/strokes/stroke_samples.hpp) from the same runs and styles
-// (styled_runs); the reference makes their triangles in double (6.) and draws them with its
-// scalar rasterizer; the GPU expands them in its vertex shader, in float, and draws them in
-// one indirect call.
+// compute shader, gpu/strokes/stroke_samples.hpp) from the same runs and styles (styled_runs;
+// the GPU gives each run its polyline and style itself, by the same rules, from the scene's
+// styles put up once: gpu/strokes/run_styles.hpp); the reference makes their triangles in double (6.) and draws them
+// with its scalar rasterizer; the GPU expands them in its vertex shader, in float, and draws them in one indirect call.
 #pragma once
 
 #include <map>
@@ -46,6 +46,20 @@ struct StrokeVertex {
 // What is random is drawn from counter-based streams keyed by the scene seed, the path's
 // key and the run's ordinal along its path (common/util/random.hpp): a run keeps its
 // style when other paths come or go, and each run's numbers can be drawn on their own.
+// How the runs of a creases', borders' or silhouettes' line kind get their offsets
+// (RunStyles::of): none; the style's own example; the scene's drawn examples for the kind
+// (StrokeStyles), rubber-stamped in turn along a path from one its key picks; or an example
+// synthesized for each run by the Markov chain of the drawn examples, else of the style's own.
+enum class RunOffsets { None, Own, Drawn, Synthesized };
+RunOffsets run_offsets(LineKind kind, const StrokeStyles& styles);
+const StrokeStyle& line_style(LineKind kind, const StrokeStyles& styles);
+const std::vector<OffsetExample>& drawn_examples(LineKind kind, const StrokeStyles& styles);
+// The Markov chain of a kind whose runs' offsets are Synthesized.
+OffsetSynthesizer offset_chain(LineKind kind, const StrokeStyles& styles);
+// The keys of a run's counter-based streams: which drawn example a path starts its stamps
+// with, and the Markov walk of its run `ordinal` (common/util/random.hpp stream_key).
+enum RunStream : uint32_t { kStampStart = 1, kOffsetWalk = 2 };
+
 class RunStyles {
  public:
   RunStyles(const StrokeStyles& styles, uint32_t seed, const std::vector<StrokeStyle>& decals)

@@ -1,6 +1,7 @@
 // The stroke raster on the GPU (Kalnins et al. 2002, §4.1), the twin of reference/strokes/stroke.cpp: the
-// runs' polylines and samples made on the GPU from the runs the visibility steps left there
-// (gpu/strokes/stroke_samples.hpp, gpu/strokes/window_paths.hpp), their ribbons expanded in the vertex
+// runs' polylines, styles and samples made on the GPU from the runs the visibility steps left
+// there (gpu/strokes/stroke_samples.hpp, gpu/strokes/window_paths.hpp, gpu/strokes/run_styles.hpp),
+// their ribbons expanded in the vertex
 // shader (shaders/strokes/common_ribbon.glsl) and drawn in one indirect call, blended premultiplied
 // "over" onto the page.
 #include "gpu/strokes/stroke.hpp"
@@ -32,7 +33,9 @@ class StrokePass : public GpuPass {
     const RunTables* tables = f.get(maybe(kRunTables));
     std::optional<UploadedRuns> uploaded;  // where visibility ran elsewhere
     if (!tables) tables = &uploaded.emplace(lines, visibility).tables();
-    samples_(lines, visibility, run_styles(lines, visibility, f.scene.strokes, f.scene.seed), *tables);
+    if (!styles_ || styles_->decal_count() != lines.decal_styles.size())
+      styles_.emplace(f.scene.strokes, lines.decal_styles);  // the scene's: made once
+    samples_(lines, visibility, *tables, *styles_, f.scene.seed);
     Texture& target = f.put(kStrokeColor);
     if (drawn_over(find_output(kStrokeColor.name), f.stages).empty()) copy_page(f.get(kPage), target);
     if (!samples_.draw()) return;
@@ -61,6 +64,7 @@ class StrokePass : public GpuPass {
                        page.height, 1);
   }
 
+  std::optional<RunStyleTables> styles_;
   StrokeSamples samples_;
   Program program_;
   Texture textures_, height_;

@@ -1,12 +1,13 @@
 // Stroke samples on the GPU (Kalnins et al. 2002, §4.1, §4.3): the twin of
 // common/strokes/base_stroke.hpp 1.-5., in double, one invocation per visible run
 // (shaders/strokes/stroke_samples.comp). A frame's runs are the visibility steps', on the GPU
-// (gpu/strokes/window_paths.hpp): the GPU makes each run's window polyline from its path
-// there; tests may give the polylines instead. The runs' styles go up (made on the CPU per
-// run, with their synthesized offsets: common/strokes/stroke.hpp RunStyles). The GPU keeps each
-// run's distinct points, counts its samples, places them by a prefix sum and writes them, with
-// each run's record, where shaders/strokes/common_ribbon.glsl reads them, and the indirect
-// draw of their ribbons. Nothing is read back.
+// (gpu/strokes/window_paths.hpp): step 0 (shaders/strokes/run_inputs.comp) gives each its
+// window polyline and its style, with its offsets stamped or synthesized, from the scene's
+// style tables (gpu/strokes/run_styles.hpp); tests may give the polylines and styles instead.
+// The GPU then keeps each run's distinct points, counts its samples, places them by a prefix
+// sum and writes them, with each run's record, where shaders/strokes/common_ribbon.glsl reads
+// them, and the indirect draw of their ribbons. Nothing is read back; the CPU sizes the
+// buffers from the runs' ends.
 #pragma once
 
 #include <cstdint>
@@ -15,30 +16,19 @@
 #include "common/strokes/stroke.hpp"
 #include "gpu/gl/program.hpp"
 #include "gpu/gl/scan.hpp"
+#include "gpu/strokes/run_styles.hpp"
 #include "gpu/strokes/stroke.hpp"
 #include "gpu/strokes/window_paths.hpp"
 
 namespace plumbago::gpu {
 
-// One run as stroke_samples.comp reads it (std430).
-struct RunInput {
-  glm::vec4 color_layer;
-  uint32_t first_point, point_count, first_offset, offset_count;
-  double example_length;
-  float width, alpha, taper, fade, halo, flare, sample_px, period;
-  uint32_t flags, pad = 0;
-};
-struct OffsetInput {
-  double t, displacement, pressure;
-  uint32_t pen_up, pad = 0;
-};
-static_assert(sizeof(RunInput) == 80 && sizeof(OffsetInput) == 32, "std430 layouts of stroke_samples.comp");
-
-// At least the samples base_stroke_samples makes of a run whose polyline is `length` px long
-// in `style` (its spline is at most 11/3 as long: each span's Bézier control polygon is, as
-// |v_i| <= 1), pen changes included.
-double sample_bound(double length, const StrokeStyle& style);
+// At least the samples base_stroke_samples makes of a run whose polyline is `length` px long,
+// resampled every `sample_px`, stamped with an example `example_length` px long with `lifts`
+// pen lifts (its spline is at most 11/3 as long: each span's Bézier control polygon is, as
+// |v_i| <= 1), pen changes included; and of a run in its style.
+double sample_bound(double length, double sample_px, double example_length, double lifts);
 double sample_bound(const StyledRun& r);
+double pen_lifts(const OffsetExample& e);
 
 class StrokeSamples {
  public:
@@ -46,10 +36,10 @@ class StrokeSamples {
   // Computes the samples of `runs`, through their polylines; the buffers hold them until the
   // next call.
   void operator()(const std::vector<StyledRun>& runs);
-  // The same of the runs of `visibility` over `lines`, as `tables` holds them on the GPU, in
-  // `styles` (one a run): their polylines made on the GPU.
-  void operator()(const WindowLines& lines, const Visibility& visibility, const std::vector<StrokeStyle>& styles,
-                  const RunTables& tables);
+  // The same of the runs of `visibility` over `lines`, as `tables` holds them on the GPU:
+  // their polylines and styles made on the GPU (`styles`; `seed`, the scene's).
+  void operator()(const WindowLines& lines, const Visibility& visibility, const RunTables& tables,
+                  const RunStyleTables& styles, uint32_t seed);
   // The samples and runs to SSBO bindings 0 and 1, as common_ribbon.glsl reads them.
   void bind() const;
   // The ribbons' draw (DrawArraysIndirectCommand, GL_TRIANGLES); none without runs.
@@ -60,10 +50,10 @@ class StrokeSamples {
 
  private:
   struct Inputs;
-  void run(const Inputs& in, const RunTables* tables);
-  void make_polylines(const RunTables& tables);
+  void run(const Inputs& in, const RunTables* tables, const RunStyleTables* styles);
+  void make_inputs(const RunTables& tables, const RunStyleTables& styles);
 
-  Program polyline_count_, polyline_write_, count_, write_, args_;
+  Program inputs_count_, inputs_write_, count_, write_, args_;
   ExclusiveScan scan_;
   Buffer runs_in_, points_, offsets_, counts_, distinct_, states_, bases_, samples_, runs_out_, draw_;
   uint32_t runs_ = 0, capacity_ = 0;

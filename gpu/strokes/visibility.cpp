@@ -179,9 +179,9 @@ class VisibilityPass : public GpuPass {
       glProgramUniform1ui(p->id(), p->uniform("capacity"), capacity);
       glProgramUniform1ui(p->id(), p->uniform("path_count"), GLuint(table.paths.size()));
       glProgramUniform1ui(p->id(), p->uniform("entry_count"), table.entries);
-      glProgramUniform1d(p->id(), p->uniform("step_px"), f.params<StrokesParams>().vis_step_px);
-      glProgramUniform1d(p->id(), p->uniform("width"), lines.width);
-      glProgramUniform1d(p->id(), p->uniform("height"), lines.height);
+      glProgramUniform1f(p->id(), p->uniform("step_px"), f.params<StrokesParams>().vis_step_px);
+      glProgramUniform1f(p->id(), p->uniform("width"), float(lines.width));
+      glProgramUniform1f(p->id(), p->uniform("height"), float(lines.height));
     }
   }
 

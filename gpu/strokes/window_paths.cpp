@@ -5,16 +5,32 @@
 
 namespace plumbago::gpu {
 
+uint32_t PathTable::style_of(const WindowPath& p) {
+  switch (p.kind) {
+    case LineKind::Crease:
+      return 0;
+    case LineKind::Border:
+      return 1;
+    case LineKind::Silhouette:
+      return 2;
+    case LineKind::Decal:
+    case LineKind::Hatching:
+      break;
+  }
+  return 3 + p.decal;
+}
+
 PathTable::PathTable(const WindowLines& lines) {
   for (const WindowPath& p : lines.paths) {
     auto n = uint32_t(p.window.size());
     if (n == 0) throw std::logic_error("visibility: a window path has no points");  // window_lines makes none
     VisibilitySample first = sample_at(p, 0);  // its kind and (silhouettes) byte window
     paths.push_back({uint32_t(points.size()), n, entries, first.kind | (p.closed ? 16u : 0u), first.key,
-                     first.byte_window, 0, 0, p.length_px});
+                     first.byte_window, 0, style_of(p), p.length_px, p.alpha_scale, p.width_scale});
     entries += (p.closed ? n : n - 1) + 1;
     for (uint32_t k = 0; k < n; ++k)
-      points.push_back({p.window[k], p.arc_px[k], k < p.front_faces.size() ? p.front_faces[k] : glm::uvec2(0)});
+      points.push_back({p.window[k], p.arc_px[k], k < p.front_faces.size() ? p.front_faces[k] : glm::uvec2(0),
+                        k < p.pressure.size() ? p.pressure[k] : 1.0});
   }
 }
 

@@ -17,24 +17,28 @@
 namespace plumbago::gpu {
 
 struct PathRow {
-  uint32_t first_point, points, first_entry, kind, key, byte_window, sampled, unused;
-  double length_px;
+  uint32_t first_point, points, first_entry, kind, key, byte_window, sampled, style;
+  double length_px, alpha_scale, width_scale;
 };
 struct PointRow {
   glm::dvec2 window;
   double s;
   glm::uvec2 faces;
+  double pressure, pad = 0;
 };
 struct RunRow {
   uint32_t path, flags;  // common/strokes/visibility.hpp run_tables' flags
   double s0, s1;
 };
-static_assert(sizeof(PathRow) == 40 && sizeof(PointRow) == 32 && sizeof(RunRow) == 24,
+static_assert(sizeof(PathRow) == 56 && sizeof(PointRow) == 48 && sizeof(RunRow) == 24,
               "std430 layouts of window_paths.glsl");
 
 // The paths of `lines` as rows; each path's entries (visibility.comp) are its segments and its end.
+// A path's style: its line kind's (crease 0, border 1, silhouette 2), or its decal's, 3 + d
+// (gpu/strokes/run_styles.hpp).
 struct PathTable {
   explicit PathTable(const WindowLines& lines);
+  static uint32_t style_of(const WindowPath& p);
   std::vector<PathRow> paths;
   std::vector<PointRow> points;
   uint32_t entries = 0;

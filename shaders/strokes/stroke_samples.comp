@@ -6,22 +6,10 @@
 // reads them; STEP_ARGS writes the indirect draw of their ribbons (six vertices a sample).
 layout(local_size_x = 64) in;
 
-struct RunIn {  // gpu/strokes/stroke_samples.hpp RunInput
-  vec4 color_layer;
-  uint first_point, point_count, first_offset, offset_count;
-  double example_length;  // the offsets example's L_drawn (no offsets: offset_count 0)
-  float width, alpha, taper, fade, halo, flare, sample_px, period;
-  uint flags, pad;  // kClosed | kOccludedStart | kOccludedEnd | kPressureWidth | kPressureAlpha | kRepeats
-};
-struct Offset {  // gpu/strokes/stroke_samples.hpp OffsetInput
-  double t, displacement, pressure;
-  uint pen_up, pad;
-};
-const uint kClosed = 1u, kOccludedStart = 2u, kOccludedEnd = 4u, kPressureWidth = 8u, kPressureAlpha = 16u;
-const uint kRepeats = 32u;  // the offsets example repeats (common/strokes/stroke_style.hpp OffsetExample::repeats)
+#include "strokes/stroke_runs.glsl"
 
-layout(std430, binding = 2) buffer RunsIn { RunIn runs_in[]; };  // STEP_POLYLINE_WRITE places the points
-layout(std430, binding = 3) buffer Points { dvec2 points[]; };
+layout(std430, binding = 2) readonly buffer RunsIn { RunIn runs_in[]; };
+layout(std430, binding = 3) readonly buffer Points { dvec2 points[]; };
 layout(std430, binding = 4) readonly buffer Offsets { Offset offsets[]; };
 // Per run: its sample count, then (scanned) its first sample; the total at [run_count].
 layout(std430, binding = 5) buffer Counts { uint counts[]; };
@@ -41,53 +29,6 @@ const double kDegenerate = 1e-9lf;
 const int kMinPieces = 4, kMaxPieces = 4096;
 
 bool finite(dvec2 p) { return !any(isnan(p)) && !any(isinf(p)); }
-
-#if defined(STEP_POLYLINE_COUNT) || defined(STEP_POLYLINE_WRITE)
-// 0. A visible run's window polyline (common/strokes/visibility.cpp run_along), from the paths
-// and runs the visibility steps left on the GPU (gpu/strokes/window_paths.hpp): a closed run,
-// its whole path; else the point at s0, the path's points strictly between s0 and s1 (a
-// closed path's once more past its seam), and the point at s1. COUNT writes each run's count
-// to counts[]; after their prefix sum, WRITE writes the points from there and the run's
-// first_point and point_count.
-#define PATHS_BINDING 10
-#define POINTS_BINDING 11
-#include "strokes/window_paths.glsl"
-layout(std430, binding = 12) readonly buffer RunRows { Run run_rows[]; };
-
-uint polyline_point(uint at, uint n, dvec2 p) {
-#if defined(STEP_POLYLINE_WRITE)
-  points[at + n] = p;
-#endif
-  return n + 1u;
-}
-
-uint run_polyline(Run r, uint at) {
-  Path p = paths[r.path];
-  uint n = 0u;
-  if ((r.flags & 1u) != 0u) {
-    for (uint k = 0u; k < p.points; ++k) n = polyline_point(at, n, point(p, k).window);
-    return n;
-  }
-  n = polyline_point(at, n, window_at(p, r.s0));
-  for (uint lap = 0u; lap < (is_closed(p) ? 2u : 1u); ++lap)
-    for (uint k = 0u; k < p.points; ++k) {
-      double s = point(p, k).s + double(lap) * p.length_px;
-      if (s > r.s0 && s < r.s1) n = polyline_point(at, n, point(p, k).window);
-    }
-  return polyline_point(at, n, window_at(p, r.s1));
-}
-
-void main() {
-  uint run = gl_GlobalInvocationID.x + first;
-  if (run >= run_count) return;
-#if defined(STEP_POLYLINE_COUNT)
-  counts[run] = run_polyline(run_rows[run], 0u);
-#else
-  runs_in[run].first_point = counts[run];
-  runs_in[run].point_count = run_polyline(run_rows[run], counts[run]);
-#endif
-}
-#endif
 
 // 1. The run's finite points, repeats merged, a closed run's last point equal to its first
 // dropped: kept in `distinct` at its first_point.

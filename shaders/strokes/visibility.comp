@@ -88,7 +88,7 @@ uniform uint capacity;  // samples the buffers hold: the CPU's bound
 // The first round's samples: the prefix sum after the last entry. entries[] holds after it
 // the indirect dispatches over the samples (entry_count + 1) and their run slots (+ 4).
 uint sample_total() { return entries[entry_count]; }
-uniform double step_px, width, height;
+uniform float step_px, width, height;  // the parameter (a float) and the window's size: exact as doubles
 
 const double kMargin = 4.0lf;     // px around the window where samples are taken (the test reaches 2)
 const double kLocatedPx = 1.0lf;  // Kalnins et al. 2002, §4.1: a change is located within 1 px
@@ -112,7 +112,7 @@ uvec2 sample_range(uint p) { return uvec2(entries[paths[p].first_entry], entries
 
 // common/strokes/strokes.cpp clip_to_window with kMargin.
 bool clip_to_window(dvec2 a, dvec2 b, out double t0, out double t1) {
-  dvec2 d = b - a, lo = dvec2(-kMargin), hi = dvec2(width + kMargin, height + kMargin);
+  dvec2 d = b - a, lo = dvec2(-kMargin), hi = dvec2(double(width) + kMargin, double(height) + kMargin);
   t0 = 0.0lf, t1 = 1.0lf;
   for (int c = 0; c < 2; ++c) {
     if (d[c] == 0.0lf) {
@@ -143,8 +143,8 @@ bool stretch_of(Path p, uint k, out Stretch st) {
   // and a multiple of the step between the two would go to neither segment, or to both.
   double end = k + 1u < p.points ? b.s : p.length_px;
   st.u = a.s + t0 * length, st.v = st.leaves ? a.s + t1 * length : end;
-  double lo = st.enters ? floor(st.u / step_px) + 1.0lf : ceil(st.u / step_px);
-  double hi = ceil(min(st.v, p.length_px) / step_px) - 1.0lf;  // the last multiple below v and the length
+  double step = double(step_px), lo = st.enters ? floor(st.u / step) + 1.0lf : ceil(st.u / step);
+  double hi = ceil(min(st.v, p.length_px) / step) - 1.0lf;  // the last multiple below v and the length
   st.first_multiple = uint(max(lo, 0.0lf));
   st.multiples = hi >= lo ? uint(hi - lo) + 1u : 0u;
   return true;
@@ -260,7 +260,7 @@ void main() {
   Stretch st;
   if (!stretch_of(p, k, st)) return;
   if (st.enters) put(at++, path, p, k, st.u);
-  for (uint m = 0u; m < st.multiples; ++m) put(at++, path, p, k, double(st.first_multiple + m) * step_px);
+  for (uint m = 0u; m < st.multiples; ++m) put(at++, path, p, k, double(st.first_multiple + m) * double(step_px));
   if (st.leaves) put(at, path, p, k, st.v);
 #elif defined(STEP_ARGS)  // one invocation: the dispatches over the samples and over their run slots
   if (gl_GlobalInvocationID.x != 0u) return;

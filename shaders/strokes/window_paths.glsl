@@ -7,13 +7,15 @@ struct Path {
   uint kind;  // SampleKind; bit 4: closed
   uint key, byte_window;
   uint sampled;  // visibility.comp STEP_COUNT: 1 where a segment took a sample
-  uint unused;
+  uint style;    // its runs' style (run_inputs.comp): crease 0, border 1, silhouette 2, decal d 3 + d
   double length_px;
+  double alpha_scale, width_scale;  // a hatch's level-of-detail factors this frame (else 1)
 };
 struct Point {
   dvec2 window;
-  double s;     // window arc length from the path's start
-  uvec2 faces;  // of the segment from this point (common/strokes/strokes.hpp WindowPath::front_faces)
+  double s;         // window arc length from the path's start
+  uvec2 faces;      // of the segment from this point (common/strokes/strokes.hpp WindowPath::front_faces)
+  double pressure;  // a decal's or hatch's drawn pressure (else 1)
 };
 struct Run {
   uint path;

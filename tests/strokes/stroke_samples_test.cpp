@@ -14,7 +14,9 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <set>
 
+#include "common/scene/animation.hpp"
 #include "common/scene/scene.hpp"
 #include "gpu/strokes/stroke_samples.hpp"
 #include "parity/lines.hpp"
@@ -81,13 +83,14 @@ Tally compare(const std::vector<StyledRun>& runs) {
 }
 
 // The visible runs of `found` as a frame gives them: their paths and runs on the GPU, each
-// run's polyline made there (against the reference's run_along).
+// run's polyline and style made there (against the reference's run_along and RunStyles).
 Tally compare_from_tables(const SceneLines& found) {
   const WindowLines& lines = found.lines;
   const Visibility& v = found.visibility;
   gpu::UploadedRuns tables(lines, v);
+  gpu::RunStyleTables styles(found.scene.strokes, lines.decal_styles);
   gpu::StrokeSamples gpu_samples;
-  gpu_samples(lines, v, run_styles(lines, v, found.scene.strokes, found.scene.seed), tables.tables());
+  gpu_samples(lines, v, tables.tables(), styles, found.scene.seed);
   return compare(styled_runs(lines, v, found.scene.strokes, found.scene.seed), gpu_samples);
 }
 
@@ -181,6 +184,53 @@ TEST_P(StrokeSamplesScenes, EveryVisibleRunMatchesTheReference) {
       "stroke samples, %s: %zu samples in %zu runs (%zu past a seam, %zu whole loops), %zu not bit-equal "
       "(within one float ulp)\n",
       GetParam(), t.samples, t.runs, past_seam, whole_loops, t.differing);
+}
+
+// Every way a line kind's runs get their offsets (common/strokes/stroke.hpp RunOffsets) made on
+// the GPU: the storefront's two drawn crease examples stamped in turn (Drawn) and synthesized
+// (its own), the snowman's silhouette example stamped (Own) and synthesized, a plain style
+// (None); the hatches' and decals' pressure comes with hatching_lod above.
+TEST_F(StrokeSamplesParity, EachWayOfMakingOffsetsMatchesTheReference) {
+  std::set<RunOffsets> ways;
+  for (auto synthesis : {OffsetSynthesis::Stamp, OffsetSynthesis::Markov}) {
+    for (const char* name : {"storefront_strokes.json", "snowman_strokes.json"}) {
+      Scene scene = load_scene(std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/" + name);
+      for (StrokeStyle* style : {&scene.strokes.crease, &scene.strokes.border, &scene.strokes.silhouette})
+        style->synthesis = synthesis;
+      for (LineKind kind : {LineKind::Crease, LineKind::Border, LineKind::Silhouette})
+        ways.insert(run_offsets(kind, scene.strokes));
+      Tally t = compare_from_tables(scene_lines(scene, "reference"));
+      std::printf("stroke samples, %s, %s: %zu samples in %zu runs, %zu not bit-equal\n", name,
+                  synthesis == OffsetSynthesis::Stamp ? "stamped" : "synthesized", t.samples, t.runs, t.differing);
+      EXPECT_GT(t.runs, 10u);
+    }
+  }
+  EXPECT_EQ(ways.size(), 4u);
+}
+
+// Hatches made on the GPU as the dolly of hatching_lod passes their levels of detail (their
+// alpha and width scaled), with a drawn pressure that varies along each and drives both: the
+// pressure at a run's ends comes from between two drawn points.
+TEST_F(StrokeSamplesParity, HatchesThroughTheirLevelsOfDetailMatchTheReference) {
+  Scene study = load_scene(std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/hatching_lod.json");
+  for (StrokeFile& file : study.stroke_files)
+    for (DrawnStroke& stroke : file.strokes) {
+      for (size_t k = 0; k < stroke.points.size(); ++k) stroke.points[k].pressure = 0.2 + 0.08 * double(k * 37 % 11);
+      if (stroke.style) stroke.style->pressure_width = stroke.style->pressure_alpha = true;
+    }
+  size_t scaled = 0, cut = 0;  // paths at a level between two, runs ending inside a path
+  for (int frame : {0, 15, 30, 45, 59}) {
+    SceneLines found = scene_lines(scene_at_frame(study, frame), "reference");
+    for (const WindowPath& p : found.lines.paths) scaled += p.kind == LineKind::Hatching && p.width_scale != 1.0;
+    for (const VisibleRun& r : found.visibility.runs)
+      cut += found.lines.paths[r.path].kind == LineKind::Hatching && (r.occluded_start || r.occluded_end);
+    Tally t = compare_from_tables(found);
+    std::printf("stroke samples, hatching_lod frame %d: %zu samples in %zu runs, %zu not bit-equal\n", frame, t.samples,
+                t.runs, t.differing);
+  }
+  std::printf("%zu hatch paths scaled by their level of detail, %zu hatch runs cut by occlusion\n", scaled, cut);
+  EXPECT_GT(scaled, 0u);
+  EXPECT_GT(cut, 0u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, StrokeSamplesScenes,
