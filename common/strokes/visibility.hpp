@@ -89,15 +89,10 @@ Visibility visible_runs(const WindowLines& lines, const StrokesParams& p, const 
 // At least as many first-round samples as either backend takes of path p: per segment
 // within the window's 4 px margin, the step's multiples along that stretch, one more where
 // the arc lengths of neighbouring segments overlap (the backends round a segment's end each
-// their own way), and its two edge samples unless both its ends are clear of the margin's
-// edges; per path its end, s = 0 and a segment the GPU's clip keeps where the reference's
-// does not. Both
+// their own way), and its two edge samples; per path its end, s = 0 and a segment the GPU's
+// clip keeps where the reference's does not. Both
 // backends size their memory by it; a line far off the window costs nothing off it.
 double first_round_bound(const WindowPath& p, double step, double width, double height);
-
-// The length of path p within the window's 4 px margin, where its samples are: its visible
-// runs lie there, so they are at most this long together.
-double length_in_margin(const WindowPath& p, double width, double height);
 
 // The run of path i (index `i` in WindowLines::paths) from s0 to s1, with its window polyline.
 VisibleRun run_along(const WindowPath& path, uint32_t i, double s0, double s1, bool closed, bool occluded_start,
@@ -145,8 +140,7 @@ struct VisibilityStage {
                         {.handle = kVisibleRuns,
                          .channels = 0,
                          .texel = Texel::Host,
-                         .doc = "the visible runs of every path, ends bisected to 1 px (CPU; the GPU keeps its own, "
-                                "which a dump reads back)"}},
+                         .doc = "the visible runs of every path, ends bisected to 1 px (CPU)"}},
             .effects = {"strokes"}};
   }
 };

@@ -4,15 +4,13 @@
 // test them against the ID image, bisect each change to 1 px in one invocation and list the
 // runs, placing everything by prefix sums. The buffers hold a bound on the samples the CPU
 // takes from the paths; the steps over samples are dispatched indirectly, so the count
-// stays on the GPU, and so do the runs, for the stroke pass (gpu/strokes/window_paths.hpp):
-// a frame reads nothing back (Kalnins et al. read the whole ID image back every frame); a
-// dump reads the runs and flags.
+// stays on the GPU. Read back at the end: the totals and the runs' ends (Kalnins et al. read
+// the whole ID image back every frame).
 #include "gpu/strokes/visibility.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <numeric>
 #include <stdexcept>
 
 #include "common/util/memory_budget.hpp"
@@ -55,11 +53,18 @@ struct TestedRow {
 };
 static_assert(sizeof(TestedRow) == 24);
 
-// At least the first round's samples of each path of `lines` (first_round_bound).
-std::vector<double> first_round_samples(const WindowLines& lines, double step) {
-  std::vector<double> bounds;
-  for (const WindowPath& p : lines.paths) bounds.push_back(first_round_bound(p, step, lines.width, lines.height));
-  return bounds;
+// At least the first round's samples of `lines` (first_round_bound).
+double first_round_samples(const WindowLines& lines, double step) {
+  double bound = 0;
+  for (const WindowPath& p : lines.paths) bound += first_round_bound(p, step, lines.width, lines.height);
+  return bound;
+}
+
+uint32_t read_uint(const Buffer& b, size_t at) {
+  uint32_t v = 0;
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  read_buffer(b, &v, sizeof v, at * sizeof(uint32_t));
+  return v;
 }
 
 class VisibilityPass : public GpuPass {
@@ -73,19 +78,16 @@ class VisibilityPass : public GpuPass {
         marks_(step("STEP_MARKS")),
         list_runs_(step("STEP_RUNS")) {}
 
-  // The runs stay on the GPU (kRunTables) for the stroke pass; only a dump reads them back.
   void run(GpuFrame& f) override {
     const WindowLines& lines = f.get(kWindowLines);
+    Visibility v;
     tables_ = {};
-    if (!lines.paths.empty()) list_runs(f, lines);
+    if (!lines.paths.empty()) v = visibility(f, lines);
     f.put(kRunTables, tables_);
-    if (!f.dump) return;
-    Visibility v = read_runs(tables_, lines);
-    std::vector<TestedRow> tested(tables_.runs ? v.samples : 0);
-    if (!tested.empty()) read_buffer(tested_, tested.data(), tested.size() * sizeof(TestedRow));
-    for (const TestedRow& row : tested) v.flags.push_back(row.flags & 1u);
-    auto [paths, ends] = run_tables(v.runs);
-    dumped_ = {{kFlags.name, flags_image(v.flags)}, {kRunPaths.name, paths}, {kRunEnds.name, ends}};
+    if (f.dump) {
+      auto [paths, ends] = run_tables(v.runs);
+      dumped_ = {{kFlags.name, flags_image(v.flags)}, {kRunPaths.name, paths}, {kRunEnds.name, ends}};
+    }
     f.put(kVisibleRuns, std::move(v));
   }
 
@@ -94,25 +96,23 @@ class VisibilityPass : public GpuPass {
   }
 
  private:
-  void list_runs(GpuFrame& f, const WindowLines& lines) {
+  Visibility visibility(GpuFrame& f, const WindowLines& lines) {
     const auto p = f.params<StrokesParams>();
     PathTable table(lines);
-    std::vector<double> path_samples = first_round_samples(lines, p.vis_step_px);
-    const double bound = std::accumulate(path_samples.begin(), path_samples.end(), 0.0);
+    const double bound = first_round_samples(lines, p.vis_step_px);
     check_memory(lines, p.vis_step_px, bound);
     const auto capacity = uint32_t(bound);
     const size_t n = std::max<size_t>(capacity, 1), args = size_t(table.entries) + 1;
     paths_ = make_buffer(table.paths.data(), table.paths.size() * sizeof(PathRow));
     points_ = make_buffer(table.points.data(), table.points.size() * sizeof(PointRow));
-    entries_ = make_zeroed_buffer(args + 6);  // the counts, their total, then two dispatches' groups
-    tested_ = make_buffer(nullptr, n * sizeof(TestedRow));
-    Buffer changes = make_buffer(nullptr, n * sizeof(glm::dvec2));
-    Buffer change_marks = make_zeroed_buffer(n + 1);
-    run_marks_ = make_zeroed_buffer(2 * n + 1);
-    run_rows_ = make_buffer(nullptr, 2 * n * sizeof(RunRow));
+    Buffer entries = make_zeroed_buffer(args + 6);  // the counts, their total, then two dispatches' groups
+    Buffer tested = make_buffer(nullptr, n * sizeof(TestedRow)), changes = make_buffer(nullptr, n * sizeof(glm::dvec2));
+    Buffer change_marks = make_zeroed_buffer(n + 1), run_marks = make_zeroed_buffer(2 * n + 1),
+           runs = make_buffer(nullptr, 2 * n * sizeof(RunRow));
+    run_rows_ = std::move(runs);
     set_uniforms(f, lines, table, capacity);
-    const std::initializer_list<const Buffer*> all = {&paths_,       &points_,    &entries_, &tested_,
-                                                      &change_marks, &run_marks_, &changes,  &run_rows_};
+    const std::initializer_list<const Buffer*> all = {&paths_,       &points_,   &entries, &tested,
+                                                      &change_marks, &run_marks, &changes, &run_rows_};
     bind(all);
     bind_textures(samples_, {{"ids", &f.get(kIds)}});
     bind_textures(changes_, {{"ids", &f.get(kIds)}});
@@ -120,29 +120,24 @@ class VisibilityPass : public GpuPass {
     barrier();
     dispatch_in_chunks(ends_, table.paths.size(), "first");
     barrier();
-    scan_(entries_, args);
+    scan_(entries, args);
     bind(all);
     dispatch_in_chunks(samples_, table.entries, "first");
     glUseProgram(args_.id());
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries_.id());
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries.id());
     over_samples(changes_, args);
     scan_(change_marks, n + 1);
     bind(all);
     over_samples(marks_, args);
-    scan_(run_marks_, 2 * n + 1);
+    scan_(run_marks, 2 * n + 1);
     bind(all);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries_.id());
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries.id());
     over_samples(list_runs_, args + 3);
-    tables_.paths = &paths_, tables_.points = &points_, tables_.runs = &run_rows_;
-    tables_.listed = {&run_marks_, uint32_t(2 * n)}, tables_.samples = {&entries_, uint32_t(args - 1)};
-    tables_.bound = uint32_t(2 * n);
-    for (size_t i = 0; i < lines.paths.size(); ++i) {  // window_paths.hpp RunTables
-      tables_.path_runs.push_back(std::floor(path_samples[i] / 2) + 1);
-      tables_.path_lengths.push_back(length_in_margin(lines.paths[i], lines.width, lines.height) +
-                                     tables_.path_runs.back());
-    }
+    Visibility v = read_runs(f, lines, {entries, args - 1}, {run_marks, 2 * n}, run_rows_, tested, capacity);
+    tables_ = {&paths_, &points_, &run_rows_, uint32_t(v.runs.size())};
+    return v;
   }
 
   // A step over the samples (or their run slots), with the groups the GPU wrote at uint `at`.
@@ -150,6 +145,33 @@ class VisibilityPass : public GpuPass {
     glUseProgram(p.id());
     glDispatchComputeIndirect(GLintptr(at * sizeof(uint32_t)));
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+
+  struct Total {
+    const Buffer& buffer;
+    size_t at;
+  };
+
+  // One readback after the frame's visibility work: the totals, then the runs (and, for a
+  // dump, the flags).
+  Visibility read_runs(const GpuFrame& f, const WindowLines& lines, Total samples, Total run_count, const Buffer& runs,
+                       const Buffer& tested, uint32_t capacity) {
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    Visibility v;
+    v.samples = read_uint(samples.buffer, samples.at);
+    if (v.samples > capacity)
+      throw std::logic_error("visibility: " + std::to_string(v.samples) + " samples over the bound of " +
+                             std::to_string(capacity));
+    std::vector<RunRow> rows(read_uint(run_count.buffer, run_count.at));
+    read_buffer(runs, rows.data(), rows.size() * sizeof(RunRow));
+    for (const RunRow& r : rows)
+      v.runs.push_back(run_from_row(lines.paths[r.path], r.path, r.s0, r.s1, r.flags, false));
+    if (f.dump) {
+      std::vector<TestedRow> t(v.samples);
+      read_buffer(tested, t.data(), t.size() * sizeof(TestedRow));
+      for (const TestedRow& row : t) v.flags.push_back(row.flags & 1u);
+    }
+    return v;
   }
 
   void set_uniforms(GpuFrame& f, const WindowLines& lines, const PathTable& table, uint32_t capacity) {
@@ -184,8 +206,7 @@ class VisibilityPass : public GpuPass {
   static void barrier() { glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); }
 
   Program count_, ends_, samples_, changes_, args_, marks_, list_runs_;
-  // What the stroke pass reads (kRunTables) and a dump reads back, kept until the next frame.
-  Buffer paths_, points_, run_rows_, entries_, run_marks_, tested_;
+  Buffer paths_, points_, run_rows_;  // what the stroke pass reads (kRunTables), kept until the next frame
   RunTables tables_;
   ExclusiveScan scan_;
   std::map<std::string, Image> dumped_;

@@ -7,9 +7,6 @@
 layout(local_size_x = 64) in;
 
 #include "strokes/stroke_runs.glsl"
-#if !defined(STEP_ARGS)
-layout(std430, binding = 10) readonly buffer RunArgs { uint run_args[4]; };  // the dispatch over the runs, their count
-#endif
 
 layout(std430, binding = 2) readonly buffer RunsIn { RunIn runs_in[]; };
 layout(std430, binding = 3) readonly buffer Points { dvec2 points[]; };
@@ -25,7 +22,7 @@ struct RunState {  // gpu/strokes/stroke_samples.cpp RunState
 };
 layout(std430, binding = 7) buffer RunStates { RunState states[]; };
 
-uniform uint run_count, capacity;  // run_count: the rows of counts[] less one
+uniform uint run_count, first, capacity;
 
 const double kSamePoint = 1e-6lf, kPiecesPerPx = 4.0lf, kSameArcLength = 1e-9lf, kNearPenChange = 0.05lf;
 const double kDegenerate = 1e-9lf;
@@ -239,7 +236,9 @@ Curve curve_of(RunIn r, uint distinct_count) {
 }
 
 #ifdef STEP_COUNT
-void at_run(uint run) {
+void main() {
+  uint run = gl_GlobalInvocationID.x + first;
+  if (run >= run_count) return;
   RunIn r = runs_in[run];
   uint n = keep_distinct_points(r);
   uint count = 0u;
@@ -387,7 +386,9 @@ uint write_bases(RunIn r, Curve c, double length, uint b) {
   return count;
 }
 
-void at_run(uint run) {
+void main() {
+  uint run = gl_GlobalInvocationID.x + first;
+  if (run >= run_count) return;
   RunIn r = runs_in[run];
   uint b = counts[run], count = min(counts[run + 1u], capacity) - min(b, capacity);
   RunState state = states[run];
@@ -410,13 +411,5 @@ void at_run(uint run) {
                          float(shape.y), run, down ? 1u : 0u, 0u);
   }
   runs[run] = Run(r.color_layer, b, drawn ? count : 0u, c.closed && whole ? 1u : 0u, 0u);
-}
-#endif
-
-#if !defined(STEP_ARGS)
-// Each invocation every (groups x 64)th of the runs listed: the dispatch is indirect, as
-// many groups as they need (65535 at most), their count on the GPU.
-void main() {
-  for (uint run = gl_GlobalInvocationID.x; run < run_args[3]; run += gl_NumWorkGroups.x * 64u) at_run(run);
 }
 #endif

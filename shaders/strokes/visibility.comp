@@ -181,7 +181,7 @@ bool visible_at(Path p, double s) {
 bool has_end_sample(Path p) { return !is_closed(p) && (p.sampled != 0u || p.length_px > 0.0lf); }
 
 void put(uint at, uint path, Path p, uint k, double s) {
-  if (at >= capacity) return;  // past the CPU's bound, which it never is (first_round_bound)
+  if (at >= capacity) return;  // past the CPU's bound: the CPU refuses the frame
   tested[at] = Tested(s, 0.0lf, sample_visible(sample_on(p, k, along(p, k, s), s)) ? 1u : 0u, path);
 }
 
