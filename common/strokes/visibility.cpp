@@ -241,12 +241,18 @@ bool sample_visible(const ImageU32& keys, const VisibilitySample& s) {
 }
 
 double first_round_bound(const WindowPath& p, double step, double width, double height) {
+  // Clear of the margin's edges by more than rounding moves a point: no edge sample.
+  auto clear = [&](glm::dvec2 q) {
+    const double in = kWindowMargin - 1e-3;
+    return q.x > -in && q.y > -in && q.x < width + in && q.y < height + in;
+  };
   double bound = 3;
   size_t n = p.window.size(), segments = p.closed ? n : n - 1;
   for (size_t k = 0; k < segments; ++k) {
     glm::dvec2 a = p.window[k], b = p.window[(k + 1) % n];
     double t0, t1;
-    if (clip_to_window(a, b, width, height, kWindowMargin, t0, t1)) bound += (t1 - t0) * glm::distance(a, b) / step + 4;
+    if (clip_to_window(a, b, width, height, kWindowMargin, t0, t1))
+      bound += (t1 - t0) * glm::distance(a, b) / step + (clear(a) && clear(b) ? 2 : 4);
   }
   return bound;
 }

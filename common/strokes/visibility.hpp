@@ -89,8 +89,9 @@ Visibility visible_runs(const WindowLines& lines, const StrokesParams& p, const 
 // At least as many first-round samples as either backend takes of path p: per segment
 // within the window's 4 px margin, the step's multiples along that stretch, one more where
 // the arc lengths of neighbouring segments overlap (the backends round a segment's end each
-// their own way), and its two edge samples; per path its end, s = 0 and a segment the GPU's
-// clip keeps where the reference's does not. Both
+// their own way), and its two edge samples unless both its ends are clear of the margin's
+// edges; per path its end, s = 0 and a segment the GPU's clip keeps where the reference's
+// does not. Both
 // backends size their memory by it; a line far off the window costs nothing off it.
 double first_round_bound(const WindowPath& p, double step, double width, double height);
 
