@@ -13,10 +13,7 @@ namespace {
 
 StyleRow style_row(const StrokeStyle& s, StyleOffsets offsets) {
   StyleRow row{};
-  row.color_layer = glm::vec4(s.color_r, s.color_g, s.color_b, float(int(s.texture)));
-  row.width = s.width_px, row.alpha = s.alpha, row.taper = s.taper_px, row.fade = s.fade_px, row.halo = s.halo_px;
-  row.flare = s.flare, row.sample_px = s.sample_px, row.period = s.texture_period_px;
-  row.flags = (s.pressure_width ? kPressureWidth : 0u) | (s.pressure_alpha ? kPressureAlpha : 0u);
+  put_style(s, row);
   row.offsets = offsets;
   return row;
 }
@@ -38,7 +35,7 @@ RunStyleTables::RunStyleTables(const StrokeStyles& styles, const std::vector<Str
 void RunStyleTables::add_example(const OffsetExample& e) {
   examples_.push_back({e.length_px, uint32_t(offsets_.size()), uint32_t(e.offsets.size()), e.repeats ? 1u : 0u});
   lifts_.push_back(pen_lifts(e));
-  for (const StrokeOffset& o : e.offsets) offsets_.push_back({o.t, o.displacement_px, o.pressure, o.pen_up ? 1u : 0u});
+  for (const StrokeOffset& o : e.offsets) offsets_.push_back(offset_input(o));
 }
 
 void RunStyleTables::add_line_style(LineKind kind, const StrokeStyles& styles) {

@@ -39,6 +39,19 @@ enum RunFlags : uint32_t {
   kRepeats = 32
 };  // stroke_runs.glsl's
 
+// A style's fields as RunInput and StyleRow hold them (flags: its pressure's), and an
+// offset as the shaders read it.
+template <class Row>
+void put_style(const StrokeStyle& s, Row& row) {
+  row.color_layer = glm::vec4(s.color_r, s.color_g, s.color_b, float(int(s.texture)));
+  row.width = s.width_px, row.alpha = s.alpha, row.taper = s.taper_px, row.fade = s.fade_px, row.halo = s.halo_px;
+  row.flare = s.flare, row.sample_px = s.sample_px, row.period = s.texture_period_px;
+  row.flags = (s.pressure_width ? kPressureWidth : 0u) | (s.pressure_alpha ? kPressureAlpha : 0u);
+}
+inline OffsetInput offset_input(const StrokeOffset& o) {
+  return {o.t, o.displacement_px, o.pressure, o.pen_up ? 1u : 0u};
+}
+
 // The tables of run_inputs.comp (std430).
 struct StyleRow {
   glm::vec4 color_layer;

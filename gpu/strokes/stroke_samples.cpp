@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -33,10 +34,10 @@ double polyline_length(const StrokeRun& run) {
   return run.closed && first ? length + glm::distance(*last, *first) : length;
 }
 
-uint32_t flags(const StrokeRun& r, const StrokeStyle& s) {
+// A run's own flags (its style's are put_style's).
+uint32_t flags(const StrokeRun& r, const std::optional<OffsetExample>& example) {
   return (r.closed ? kClosed : 0u) | (r.occluded_start ? kOccludedStart : 0u) | (r.occluded_end ? kOccludedEnd : 0u) |
-         (s.pressure_width ? kPressureWidth : 0u) | (s.pressure_alpha ? kPressureAlpha : 0u) |
-         (s.offsets && s.offsets->repeats ? kRepeats : 0u);
+         (example && example->repeats ? kRepeats : 0u);
 }
 
 }  // namespace
@@ -81,13 +82,14 @@ struct StrokeSamples::Inputs {
  private:
   void add(const StrokeRun& run, const StrokeStyle& s, double length) {
     const auto& example = s.offsets;
-    runs_in.push_back({glm::vec4(s.color_r, s.color_g, s.color_b, float(int(s.texture))), 0, 0,
-                       uint32_t(offsets.size()), uint32_t(example ? example->offsets.size() : 0),
-                       example ? example->length_px : 0.0, s.width_px, s.alpha, s.taper_px, s.fade_px, s.halo_px,
-                       s.flare, s.sample_px, s.texture_period_px, flags(run, s)});
+    RunInput in{};
+    put_style(s, in);
+    in.flags |= flags(run, example);
+    in.first_offset = uint32_t(offsets.size()), in.offset_count = uint32_t(example ? example->offsets.size() : 0);
+    in.example_length = example ? example->length_px : 0.0;
+    runs_in.push_back(in);
     if (example)
-      for (const StrokeOffset& o : example->offsets)
-        offsets.push_back({o.t, o.displacement_px, o.pressure, o.pen_up ? 1u : 0u});
+      for (const StrokeOffset& o : example->offsets) offsets.push_back(offset_input(o));
     bound += sample_bound(length, s.sample_px, example ? example->length_px : 0.0, example ? pen_lifts(*example) : 0.0);
   }
 };

@@ -8,6 +8,9 @@
 // exactly, and each float output within one float rounding. (Where a formula jumps, at a
 // rubber stamp's period, a few units of rounding decide the side: an example made for its
 // run, whose end lies at its period, does not repeat, OffsetExample::repeats.)
+// Through a frame's way, the runs' polylines and styles are made on the GPU too
+// (shaders/strokes/run_inputs.comp) from the run tables of gpu/strokes/window_paths.hpp and the
+// style tables of gpu/strokes/run_styles.hpp, against the reference's run_along and RunStyles.
 #include <gtest/gtest.h>
 
 #include <algorithm>
