@@ -3,15 +3,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "common/strokes/decal.hpp"
 #include "common/strokes/id_image.hpp"
-#include "common/strokes/silhouette_paths.hpp"
 #include "common/strokes/stroke.hpp"
 #include "gpu/core/pipeline.hpp"
-#include "gpu/gl/context.hpp"
-#include "gpu/strokes/decal.hpp"
 #include "reference/core/pipeline.hpp"
-#include "reference/strokes/decal.hpp"
 
 namespace plumbago {
 namespace {
@@ -30,21 +25,6 @@ Scene lines_scene(const Scene& scene) {
 Frame strokes_frame(const Scene& scene, const std::string& backend) {
   FrameOptions keep{true};
   return backend == "reference" ? reference::render(scene, keep) : gpu::Renderer(scene).render(keep);
-}
-
-// The decals' surface points, projected as the backend's frames project them.
-DecalSurface decal_surface(const Scene& scene, const std::string& backend) {
-  if (!has_decals(scene)) return {};
-  if (backend == "reference") return reference::project_decals_by_rays(scene);
-  gpu::Context::get();  // before any GL call
-  return gpu::project_decals_through_gbuffer(scene);
-}
-
-// The silhouettes a GPU frame chained itself, from its tables (common/strokes/silhouette_paths.hpp).
-std::vector<ChainPath> frame_silhouettes(const Scene& scene, const LineMeshes& meshes, const Frame& frame,
-                                         bool normalized) {
-  auto table = [&](const Buffer& b) { return frame.buffers.at(b.name).data; };
-  return chain_paths(scene, meshes, table(kSilhouettePaths), table(kSilhouetteCrossings), normalized);
 }
 
 // The runs a GPU frame listed (its visibility.run_paths and run_ends tables, whose rows end
@@ -67,14 +47,9 @@ Visibility frame_visibility(const Frame& frame, const WindowLines& lines) {
 SceneLines scene_lines(const Scene& scene, const std::string& backend) {
   SceneLines out{lines_scene(scene)};
   auto p = out.scene.params.get<StrokesParams>();
-  DecalSurface decals = decal_surface(out.scene, backend);
   out.frame = strokes_frame(out.scene, backend);
-  std::shared_ptr<const LineMeshes> meshes = line_meshes(out.scene, p, LineObjects::Strokes);
-  std::vector<ChainPath> gpu_silhouettes;
-  if (backend != "reference")
-    gpu_silhouettes = frame_silhouettes(out.scene, *meshes, out.frame, p.silhouette_normalized);
-  out.lines = window_lines(out.scene, p, LineObjects::Strokes, meshes.get(), &decals,
-                           backend != "reference" ? &gpu_silhouettes : nullptr);
+  if (!out.frame.lines) throw std::logic_error("the " + backend + " strokes frame kept no lines");
+  out.lines = *out.frame.lines;  // the lines the frame made and tested
   out.keys = keys_from_channels(out.frame.buffers.at(kIds.name));
   if (backend != "reference") {
     out.visibility = frame_visibility(out.frame, out.lines);

@@ -6,12 +6,15 @@
 #include <chrono>
 #include <ctime>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "common/util/image.hpp"
 
 namespace plumbago {
+
+struct WindowLines;  // common/strokes/strokes.hpp
 
 struct PassTime {
   std::string name;
@@ -22,6 +25,9 @@ struct Frame {
   Image color;                           // RGB, row 0 = bottom
   std::vector<PassTime> ran;             // every pass that ran, in order
   std::map<std::string, Image> buffers;  // intermediate buffers when asked for
+  // With the buffers, a strokes frame's lines in the window as its ID image and visibility
+  // took them (common/strokes/strokes.hpp); none without strokes.
+  std::shared_ptr<const WindowLines> lines;
   // What the frame drew, by name: the visible strokes per line kind ("strokes.crease", ...),
   // the paths and samples, the hatching groups' scale and level (common/strokes/stroke.hpp
   // stroke_counts), the silhouette segments and chains (common/strokes/silhouette_chains.hpp

@@ -441,13 +441,9 @@ FaceSilhouette FeatureLineMesh::face_silhouette(const std::vector<double>& value
   return face_segment(impl_->g, values, eye_object, f);
 }
 
-SurfacePoint FeatureLineMesh::crossing(glm::dvec3 eye_object, bool normalized, uint32_t f, int slot) const {
-  const Geometry& g = impl_->g;
-  auto [ka, kb] = slot_corners(g, f, slot);
-  double ga = silhouette_test(impl_->normals[3 * f + uint32_t(ka)], g.corner(f, ka), eye_object, normalized);
-  double gb = silhouette_test(impl_->normals[3 * f + uint32_t(kb)], g.corner(f, kb), eye_object, normalized);
-  double t = ga / (ga - gb);
-  return point_on_edge(g, f, ka, kb, std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.5);
+SurfacePoint FeatureLineMesh::slot_point(uint32_t f, int slot, double t) const {
+  auto [ka, kb] = slot_corners(impl_->g, f, slot);
+  return point_on_edge(impl_->g, f, ka, kb, t);
 }
 
 std::vector<FaceSilhouette> FeatureLineMesh::face_silhouettes(const std::vector<double>& values,

@@ -142,10 +142,9 @@ class FeatureLineMesh {
   // g per face corner (silhouette_function below) for an eye in object space.
   std::vector<double> silhouette_values(glm::dvec3 eye_object, bool normalized) const;
   FaceSilhouette face_silhouette(const std::vector<double>& values, glm::dvec3 eye_object, uint32_t f) const;
-  // The crossing of g = 0 on face f's slot (the crossing rule above) with g of the slot's two
-  // corners only, for a backend that found the segment itself: where double precision sees
-  // one sign at both corners, the nearer end (t clamped to [0, 1]).
-  SurfacePoint crossing(glm::dvec3 eye_object, bool normalized, uint32_t f, int slot) const;
+  // The point at t on face f's slot, p = a + (b - a) t with a -> b the edge's own way (the
+  // crossing rule above): where a backend that found the segment itself placed its crossing.
+  SurfacePoint slot_point(uint32_t f, int slot, double t) const;
   // Every face's segment, in parallel; `lines` chains them all.
   std::vector<FaceSilhouette> face_silhouettes(const std::vector<double>& values, glm::dvec3 eye_object) const;
   // The chains of the faces whose segment exists, as paths of crossings ordered by their start

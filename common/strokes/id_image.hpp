@@ -34,7 +34,8 @@
 // llvmpipe: bench/results).
 //
 // The silhouettes: the reference chains them in double (common/strokes/strokes.hpp); the GPU
-// reads its own chains (common/strokes/silhouette_paths.hpp), which follow the same rule.
+// reads its own chains (common/strokes/silhouette_paths.hpp), which follow the same rule, and
+// places and projects their points in double itself (gpu/strokes/silhouette_points.hpp).
 //
 // Output: the key as two channels, (key >> 16, key & 0xffff), each exact as a float.
 #pragma once

@@ -16,8 +16,8 @@
 //   - points, 2 records rows (an open chain of one segment has two): row q, point q of
 //     the paths in order: (x, y, s), its window position and arc length (px);
 //   - crossings, as many rows: (record + 1, slot), the face it lies on (the member whose
-//     entry it is, the last member for an exit) and the slot of that face. What the CPU
-//     reads back to make window paths (8 bytes a point).
+//     entry it is, the last member for an exit) and the slot of that face: where the GPU
+//     places each point in double (gpu/strokes/silhouette_points.hpp).
 // Unused rows are 0. The GPU counts and places them with prefix sums over the records
 // (gpu/strokes/silhouette_paths.cpp), the reference in one loop in record order
 // (reference/strokes/silhouette_paths.cpp). Fed the same chains, both give the same tables:
@@ -40,12 +40,21 @@ inline constexpr Buffer kSilhouetteCrossings{"silhouette_paths.crossings"};
 constexpr size_t silhouette_path_rows(size_t records) { return records + 1; }
 constexpr size_t silhouette_point_rows(size_t records) { return 2 * records; }
 
-// The paths of the tables' first rows: `paths` (4 channels) from row 0 and `crossings` (2),
-// as many as the counts say. Each point's surface point is the
-// crossing on its face's slot in double (FeatureLineMesh::crossing), from `meshes` and this
-// frame's eye: the tables say where the chains run, the reference's formula where they cross.
+// A path point where a backend placed it (the GPU: gpu/strokes/silhouette_points.hpp): the
+// window position and linear view depth of the crossing on its face's slot, p = a + (b - a) t
+// (Kalnins et al. 2002, §4.5, common/strokes/feature_lines.hpp), in double. The GPU's
+// layout (std430).
+struct SilhouettePoint {
+  double x, y, depth, t;
+  uint32_t record, slot;
+};
+static_assert(sizeof(SilhouettePoint) == 40);
+
+// The paths of the tables' rows `paths` (4 channels, from row 0, as many as its counts say),
+// their points `points` in order: each point's surface point is the one at t on its face's
+// slot, its window position and depth the backend's.
 std::vector<ChainPath> chain_paths(const Scene& scene, const LineMeshes& meshes, const std::vector<float>& paths,
-                                   const std::vector<float>& crossings, bool normalized);
+                                   const std::vector<SilhouettePoint>& points);
 
 struct SilhouettePathsStage {
   using Params = TypeList<>;  // reads strokes.keep_back_facing, which the ID image declares

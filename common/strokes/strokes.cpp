@@ -64,8 +64,10 @@ class PathBuilder {
   // `key`: a silhouette's start record (assign_keys adds the base); 0 for the others. A
   // silhouette keeps its first piece only, the one its chain's key names: its segments lie in
   // front of the near plane, but a backend's float chain may hold a point that double
-  // precision puts just behind it.
-  void add(const FeaturePath& path, LineKind kind, uint32_t object, const EdgeFaces* edges, uint32_t key = 0) {
+  // precision puts just behind it. `projected`: the points' (x, y, d) where the backend
+  // projected them (ChainPath::window), else none.
+  void add(const FeaturePath& path, LineKind kind, uint32_t object, const EdgeFaces* edges, uint32_t key = 0,
+           const std::vector<glm::dvec3>* projected = nullptr) {
     const SceneObject& o = scene_.objects[object];
     glm::dmat4 m(o.transform);
     WindowPath piece = empty(path, kind, object, key);
@@ -76,7 +78,7 @@ class PathBuilder {
     };
     for (size_t i = 0; i < n; ++i) {
       glm::dvec3 w = glm::dvec3(m * glm::dvec4(path.points[i].position, 1.0));
-      glm::dvec3 win = project_(w);
+      glm::dvec3 win = projected ? projected->at(i) : project_(w);
       if (win.z < double(scene_.camera.near)) {
         whole = false;
         keep();
@@ -314,7 +316,8 @@ WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects
     if (!silhouettes) add_window_silhouettes(scene, project, i, *mesh, p, own);
   }
   for (const ChainPath& c : silhouettes ? *silhouettes : own)
-    builder.add(c.path, LineKind::Silhouette, c.object, nullptr, c.start_record);
+    builder.add(c.path, LineKind::Silhouette, c.object, nullptr, c.start_record,
+                c.window.empty() ? nullptr : &c.window);
   assign_keys(out);
   if (!decals) return out;
   out.hatching = hatch_states(scene, *decals, scene.params.get<HatchingParams>());

@@ -130,10 +130,12 @@ uint32_t vertex_of(const Mesh& mesh, const SurfacePoint& p);
 bool faces_eye(const Mesh& mesh, const glm::dmat4& object_to_world, uint32_t f, glm::dvec3 eye);
 
 // One silhouette path as window_lines takes it: its object, its start record (its key, less
-// the base) and its points on the surface.
+// the base), its points on the surface and, where the backend projected them itself, their
+// window positions and linear view depths (x, y, d); else window_lines projects them.
 struct ChainPath {
   uint32_t object, start_record;
   FeaturePath path;
+  std::vector<glm::dvec3> window = {};
 };
 
 // `prepared` (from line_meshes with the same scene, parameters and `which`) or none;
@@ -153,6 +155,11 @@ WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects
 bool clip_to_window(glm::dvec2 a, glm::dvec2 b, double width, double height, double margin, double& t0, double& t1);
 
 // The window position and linear depth of a world point (docs/conventions.md), in double.
+// A copy of a frame's lines, for Frame::lines; none where the frame has none.
+inline std::shared_ptr<const WindowLines> kept_lines(const WindowLines* lines) {
+  return lines ? std::make_shared<const WindowLines>(*lines) : nullptr;
+}
+
 struct WindowProjection {
   WindowProjection(const Camera& camera, int width, int height);
   glm::dvec3 operator()(glm::dvec3 world) const;  // (x, y, d)

@@ -3,15 +3,17 @@
 // the fragment's depth. The faces are the G-buffer's, copied in one full-window pass
 // (shaders/strokes/id_gbuffer.frag); the sketchy objects' are pulled from their meshes,
 // uploaded once (shaders/strokes/id_faces.vert): no CPU loop over faces per frame. The
-// silhouettes are the GPU's own (silhouette_paths), read back for now (their paths' rows
-// only) and made window paths on the CPU with the creases; the lines' quads come from the
-// CPU (id_line_triangles).
+// silhouettes are the GPU's own (silhouette_paths), their points placed and projected in
+// double on the GPU (gpu/strokes/silhouette_points.hpp), read back for now (their paths'
+// rows and points only) and made window paths on the CPU with the creases; the lines'
+// quads come from the CPU (id_line_triangles).
 #include "common/strokes/id_image.hpp"
 
 #include "common/strokes/silhouette_paths.hpp"
 #include "gpu/core/stage.hpp"
 #include "gpu/scene/mesh_buffers.hpp"
 #include "gpu/strokes/decal.hpp"
+#include "gpu/strokes/silhouette_points.hpp"
 
 namespace plumbago::gpu {
 
@@ -25,7 +27,8 @@ class IdImagePass : public GpuPass {
         faces_program_("strokes/id_faces.vert", "strokes/id_image.frag", "#define FACES\n"),
         fbo_(make_framebuffer()),
         empty_(make_vertex_array()),
-        depth_(make_renderbuffer(f.scene.width, f.scene.height, GL_DEPTH_COMPONENT32F)) {
+        depth_(make_renderbuffer(f.scene.width, f.scene.height, GL_DEPTH_COMPONENT32F)),
+        silhouettes_(f.scene, f.get(kLineMeshes)) {
     // The decals' surface points, projected once for the renderer's frames (Kalnins et al.
     // 2002, §3).
     if (has_decals(f.scene)) decals_ = project_decals_through_gbuffer(f.scene);
@@ -40,7 +43,8 @@ class IdImagePass : public GpuPass {
 
   void run(GpuFrame& f) override {
     auto p = f.params<StrokesParams>();
-    std::vector<ChainPath> silhouettes = read_silhouettes(f, p);
+    std::vector<ChainPath> silhouettes = silhouettes_(f.scene, f.get(kLineMeshes), f.get(kSilhouettePaths),
+                                                      f.get(kSilhouetteCrossings), p.silhouette_normalized);
     f.put(kWindowLines, window_lines(f.scene, p, LineObjects::Strokes, &f.get(kLineMeshes),
                                      has_decals(f.scene) ? &decals_ : nullptr, &silhouettes));
     std::vector<IdVertex> lines = id_line_triangles(f.scene, f.get(kWindowLines), p);
@@ -65,16 +69,6 @@ class IdImagePass : public GpuPass {
   }
 
  private:
-  // The silhouette paths this frame's tables hold (common/strokes/silhouette_paths.hpp): the
-  // counts, then the rows they use.
-  static std::vector<ChainPath> read_silhouettes(const GpuFrame& f, const StrokesParams& p) {
-    const Texture& paths = f.get(kSilhouettePaths);
-    std::vector<float> counts = read_table(paths, 4, 1);
-    const auto path_count = size_t(counts[0]), point_count = size_t(counts[1]);
-    return chain_paths(f.scene, f.get(kLineMeshes), read_table(paths, 4, path_count + 1),
-                       read_table(f.get(kSilhouetteCrossings), 2, point_count), p.silhouette_normalized);
-  }
-
   // Rule 1: the G-buffer's faces,
   void draw_gbuffer_faces(const GpuFrame& f) {
     const GBufferTargets& g = f.get(kGBuffer);
@@ -117,6 +111,7 @@ class IdImagePass : public GpuPass {
   Framebuffer fbo_;
   VertexArray empty_;
   Renderbuffer depth_;
+  SilhouettePoints silhouettes_;
   DecalSurface decals_;
   std::vector<uint32_t> first_key_;  // per object, its first face key less one
   std::vector<MeshBuffers> sketchy_;

@@ -1,0 +1,94 @@
+// Silhouette path points on the GPU: see gpu/strokes/silhouette_points.hpp.
+#include "gpu/strokes/silhouette_points.hpp"
+
+#include "common/util/memory_budget.hpp"
+#include "gpu/core/stage.hpp"
+
+namespace plumbago::gpu {
+
+namespace {
+
+// shaders/strokes/silhouette_points.comp's Object (std430).
+struct ObjectRow {
+  glm::dmat4 model;
+  glm::dvec4 eye;
+  uint32_t first_record, first_vertex, pad[6];
+};
+static_assert(sizeof(ObjectRow) == 192);
+
+Program step(const char* name) {
+  return Program::compute("strokes/silhouette_points.comp", table_prelude() + "#define " + name + "\n");
+}
+
+}  // namespace
+
+SilhouettePoints::SilhouettePoints(const Scene& scene, const LineMeshes& meshes)
+    : args_(step("STEP_ARGS")), points_(step("STEP_POINTS")) {
+  const std::vector<uint32_t> first = first_faces(scene);
+  const size_t records = first.back();
+  check_memory_budget("the silhouette points of " + std::to_string(records) + " faces on the GPU",
+                      double(records) * double(sizeof(glm::uvec4) + 9 * sizeof(double) + 2 * sizeof(SilhouettePoint)));
+  std::vector<glm::vec4> positions;
+  std::vector<glm::uvec4> faces(records, glm::uvec4(0));
+  std::vector<double> normals(9 * records, 0.0);
+  for (uint32_t o = 0; o < scene.objects.size(); ++o) {
+    first_vertex_.push_back(uint32_t(positions.size()));
+    const FeatureLineMesh* lines = line_mesh(meshes, o);
+    if (!lines) continue;
+    const Mesh& mesh = *scene.objects[o].mesh;
+    for (glm::vec3 p : mesh.positions) positions.emplace_back(p, 1.0f);
+    for (uint32_t f = 0; f < mesh.triangles.size(); ++f) {
+      faces[first[o] + f] = glm::uvec4(mesh.triangles[f], lines->reversed_slots(f));
+      for (int k = 0; k < 3; ++k)
+        for (int c = 0; c < 3; ++c)
+          normals[9 * (first[o] + f) + 3 * size_t(k) + size_t(c)] = lines->corner_normals()[3 * f + k][c];
+    }
+  }
+  positions_ = make_buffer(positions.data(), positions.size() * sizeof(glm::vec4));
+  faces_ = make_buffer(faces.data(), faces.size() * sizeof(glm::uvec4));
+  normals_ = make_buffer(normals.data(), normals.size() * sizeof(double));
+  args_buffer_ = make_buffer(nullptr, sizeof(glm::uvec4));
+  rows_ = make_buffer(nullptr, silhouette_point_rows(records) * sizeof(SilhouettePoint));
+}
+
+std::vector<ChainPath> SilhouettePoints::operator()(const Scene& scene, const LineMeshes& meshes, const Texture& paths,
+                                                    const Texture& crossings, bool normalized) {
+  const std::vector<uint32_t> first = first_faces(scene);
+  std::vector<ObjectRow> objects;
+  for (uint32_t o = 0; o < scene.objects.size(); ++o) {
+    if (!line_mesh(meshes, o)) continue;
+    glm::dmat4 model(scene.objects[o].transform);
+    objects.push_back({model,
+                       glm::dvec4(eye_in_object_space(model, glm::dvec3(scene.camera.eye)), 1.0),
+                       first[o],
+                       first_vertex_[o],
+                       {}});
+  }
+  const WindowProjection project(scene.camera, scene.width, scene.height);
+  const glm::dmat4 frame[2] = {project.clip, project.view};
+  Buffer object_rows = make_buffer(objects.data(), objects.size() * sizeof(ObjectRow));
+  Buffer frame_rows = make_buffer(frame, sizeof frame);
+  for (const Program* p : {&args_, &points_}) bind_textures(*p, {{"paths", &paths}, {"crossings", &crossings}});
+  glProgramUniform1i(points_.id(), points_.uniform("normalized"), normalized);
+  glProgramUniform1ui(points_.id(), points_.uniform("object_count"), GLuint(objects.size()));
+  glProgramUniform1f(points_.id(), points_.uniform("width"), float(scene.width));
+  glProgramUniform1f(points_.id(), points_.uniform("height"), float(scene.height));
+  const Buffer* bound[] = {&args_buffer_, &object_rows, &positions_, &faces_, &normals_, &rows_, &frame_rows};
+  for (GLuint b = 0; b < 7; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
+  glUseProgram(args_.id());
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  glUseProgram(points_.id());
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, args_buffer_.id());
+  glDispatchComputeIndirect(0);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  // One readback: the counts, the paths' rows, then their points.
+  const std::vector<float> counts = read_table(paths, 4, 1);
+  const auto path_count = size_t(counts[0]), point_count = size_t(counts[1]);
+  std::vector<SilhouettePoint> rows(point_count);
+  read_buffer(rows_, rows.data(), rows.size() * sizeof(SilhouettePoint));
+  return chain_paths(scene, meshes, read_table(paths, 4, path_count + 1), rows);
+}
+
+}  // namespace plumbago::gpu

@@ -1,0 +1,33 @@
+// Silhouette path points on the GPU (Kalnins et al. 2002, §4.5): each point the silhouette
+// paths list (common/strokes/silhouette_paths.hpp) placed where g = 0 on its face's slot, in
+// double, and projected to the window (shaders/strokes/silhouette_points.comp), one
+// invocation per point by an indirect dispatch. The reference's formula is
+// common/strokes/feature_lines.cpp edge_crossing, its projection WindowProjection
+// (common/strokes/strokes.hpp). The ID image reads the paths back with their points
+// (common/strokes/silhouette_paths.hpp chain_paths) to make its window paths.
+#pragma once
+
+#include <vector>
+
+#include "common/strokes/silhouette_paths.hpp"
+#include "gpu/gl/gl_objects.hpp"
+#include "gpu/gl/program.hpp"
+
+namespace plumbago::gpu {
+
+class SilhouettePoints {
+ public:
+  // Uploads the stroke objects' faces, slot directions and crease-aware normals (double)
+  // once; `meshes` from line_meshes for `scene`'s stroke objects.
+  SilhouettePoints(const Scene& scene, const LineMeshes& meshes);
+  // This frame's silhouette paths from the silhouette_paths tables `paths` and `crossings`.
+  std::vector<ChainPath> operator()(const Scene& scene, const LineMeshes& meshes, const Texture& paths,
+                                    const Texture& crossings, bool normalized);
+
+ private:
+  Program args_, points_;
+  std::vector<uint32_t> first_vertex_;  // per scene object, in positions_
+  Buffer positions_, faces_, normals_, args_buffer_, rows_;
+};
+
+}  // namespace plumbago::gpu
