@@ -82,6 +82,22 @@ Program Program::compute(const std::string& compute, const std::string& prelude)
   return p;
 }
 
+Program Program::with_geometry(const std::string& vertex, const std::string& geometry, const std::string& fragment,
+                               const std::string& prelude) {
+  std::vector<GLuint> shaders;
+  try {
+    shaders.push_back(compile(GL_VERTEX_SHADER, vertex, prelude));
+    shaders.push_back(compile(GL_GEOMETRY_SHADER, geometry, prelude));
+    shaders.push_back(compile(GL_FRAGMENT_SHADER, fragment, prelude));
+  } catch (...) {
+    for (GLuint s : shaders) glDeleteShader(s);
+    throw;
+  }
+  Program p;
+  p.link({shaders[0], shaders[1], shaders[2]}, vertex + " + " + geometry + " + " + fragment);
+  return p;
+}
+
 void Program::link(std::initializer_list<GLuint> shaders, const std::string& what) {
   GLuint p = glCreateProgram();
   for (GLuint s : shaders) glAttachShader(p, s);

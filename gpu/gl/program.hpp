@@ -72,6 +72,9 @@ class Program {
   Program(const std::string& vertex, const std::string& fragment, const std::string& prelude = "");
   // A compute program from shaders/<compute>, the same way.
   static Program compute(const std::string& compute, const std::string& prelude = "");
+  // A program with a geometry shader between the two, the same way.
+  static Program with_geometry(const std::string& vertex, const std::string& geometry, const std::string& fragment,
+                               const std::string& prelude = "");
   GLuint id() const { return name_.id(); }
   GLint uniform(const char* name) const { return glGetUniformLocation(id(), name); }
 

@@ -5,14 +5,18 @@
 // uploaded once (shaders/strokes/id_faces.vert): no CPU loop over faces per frame. The
 // silhouettes are the GPU's own (silhouette_paths), their points placed and projected in
 // double on the GPU (gpu/strokes/silhouette_points.hpp), read back for now (their paths'
-// rows and points only) and made window paths on the CPU with the creases; the lines'
-// quads come from the CPU (id_line_triangles).
+// rows and points only) and made window paths on the CPU with the creases. The window paths
+// go up once as the frame's path table (gpu/strokes/window_paths.hpp), from which the GPU
+// expands the lines' quads (gpu/strokes/id_lines.hpp) and the visibility steps sample.
 #include "common/strokes/id_image.hpp"
+
+#include <optional>
 
 #include "common/strokes/silhouette_paths.hpp"
 #include "gpu/core/stage.hpp"
 #include "gpu/scene/mesh_buffers.hpp"
 #include "gpu/strokes/decal.hpp"
+#include "gpu/strokes/id_lines.hpp"
 #include "gpu/strokes/silhouette_points.hpp"
 
 namespace plumbago::gpu {
@@ -22,8 +26,7 @@ namespace {
 class IdImagePass : public GpuPass {
  public:
   explicit IdImagePass(GpuFrame& f)
-      : program_("strokes/id_image.vert", "strokes/id_image.frag"),
-        gbuffer_program_("util/fullscreen.vert", "strokes/id_gbuffer.frag"),
+      : gbuffer_program_("util/fullscreen.vert", "strokes/id_gbuffer.frag"),
         faces_program_("strokes/id_faces.vert", "strokes/id_image.frag", "#define FACES\n"),
         fbo_(make_framebuffer()),
         empty_(make_vertex_array()),
@@ -47,7 +50,8 @@ class IdImagePass : public GpuPass {
                                                       f.get(kSilhouetteCrossings), p.silhouette_normalized);
     f.put(kWindowLines, window_lines(f.scene, p, LineObjects::Strokes, &f.get(kLineMeshes),
                                      has_decals(f.scene) ? &decals_ : nullptr, &silhouettes));
-    std::vector<IdVertex> lines = id_line_triangles(f.scene, f.get(kWindowLines), p);
+    table_.emplace(f.get(kWindowLines));
+    f.put(kPathTable, *table_);
     Texture& target = f.put(kIds);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target.id(), 0);
@@ -62,7 +66,7 @@ class IdImagePass : public GpuPass {
     glBindVertexArray(empty_.id());
     draw_gbuffer_faces(f);
     draw_sketchy_faces(f);
-    if (!lines.empty()) draw_lines(lines, target);
+    lines_(*table_, p, target.width, target.height, f.scene.camera.near);
     glDepthFunc(GL_LESS);
     glDisable(GL_DEPTH_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -98,20 +102,13 @@ class IdImagePass : public GpuPass {
     glDisable(GL_CLIP_DISTANCE0);
   }
 
-  // Rules 2 and 3: the lines' quads, in window space.
-  void draw_lines(const std::vector<IdVertex>& triangles, const Texture& target) {
-    Buffer vertices = make_buffer(triangles.data(), triangles.size() * sizeof(IdVertex));
-    glUseProgram(program_.id());
-    glProgramUniform2f(program_.id(), program_.uniform("window_size"), float(target.width), float(target.height));
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, vertices.id());
-    glDrawArrays(GL_TRIANGLES, 0, GLsizei(triangles.size()));
-  }
-
-  Program program_, gbuffer_program_, faces_program_;
+  Program gbuffer_program_, faces_program_;
   Framebuffer fbo_;
   VertexArray empty_;
   Renderbuffer depth_;
   SilhouettePoints silhouettes_;
+  IdLines lines_;                       // rules 2 and 3
+  std::optional<UploadedPaths> table_;  // this frame's, kept until the next
   DecalSurface decals_;
   std::vector<uint32_t> first_key_;  // per object, its first face key less one
   std::vector<MeshBuffers> sketchy_;

@@ -1,5 +1,6 @@
 // Visibility of stroke samples on the GPU (Kalnins et al. 2002, §4.6, §4.1), the twin of
-// common/strokes/visibility.cpp: the paths go up as a table, then compute shaders
+// common/strokes/visibility.cpp: from the frame's path table, which the ID image put up
+// (gpu/strokes/window_paths.hpp; parity feeds make their own), compute shaders
 // (shaders/strokes/visibility.comp) take the first round of samples segment by segment,
 // test them against the ID image, bisect each change to 1 px in one invocation and list the
 // runs, placing everything by prefix sums. The buffers hold a bound on the samples the CPU
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include "common/util/memory_budget.hpp"
@@ -98,31 +100,30 @@ class VisibilityPass : public GpuPass {
  private:
   Visibility visibility(GpuFrame& f, const WindowLines& lines) {
     const auto p = f.params<StrokesParams>();
-    PathTable table(lines);
+    const UploadedPaths* table = f.get(maybe(kPathTable));  // the ID image's, or (parity) one of its own
+    if (!table) table = &own_.emplace(lines);
     const double bound = first_round_samples(lines, p.vis_step_px);
     check_memory(lines, p.vis_step_px, bound);
     const auto capacity = uint32_t(bound);
-    const size_t n = std::max<size_t>(capacity, 1), args = size_t(table.entries) + 1;
-    paths_ = make_buffer(table.paths.data(), table.paths.size() * sizeof(PathRow));
-    points_ = make_buffer(table.points.data(), table.points.size() * sizeof(PointRow));
+    const size_t n = std::max<size_t>(capacity, 1), args = size_t(table->entries) + 1;
     Buffer entries = make_zeroed_buffer(args + 6);  // the counts, their total, then two dispatches' groups
     Buffer tested = make_buffer(nullptr, n * sizeof(TestedRow)), changes = make_buffer(nullptr, n * sizeof(glm::dvec2));
     Buffer change_marks = make_zeroed_buffer(n + 1), run_marks = make_zeroed_buffer(2 * n + 1),
            runs = make_buffer(nullptr, 2 * n * sizeof(RunRow));
     run_rows_ = std::move(runs);
-    set_uniforms(f, lines, table, capacity);
-    const std::initializer_list<const Buffer*> all = {&paths_,       &points_,   &entries, &tested,
-                                                      &change_marks, &run_marks, &changes, &run_rows_};
+    set_uniforms(f, lines, *table, capacity);
+    const std::initializer_list<const Buffer*> all = {&table->paths, &table->points, &entries, &tested,
+                                                      &change_marks, &run_marks,     &changes, &run_rows_};
     bind(all);
     bind_textures(samples_, {{"ids", &f.get(kIds)}});
     bind_textures(changes_, {{"ids", &f.get(kIds)}});
-    dispatch_in_chunks(count_, table.entries, "first");
+    dispatch_in_chunks(count_, table->entries, "first");
     barrier();
-    dispatch_in_chunks(ends_, table.paths.size(), "first");
+    dispatch_in_chunks(ends_, table->count, "first");
     barrier();
     scan_(entries, args);
     bind(all);
-    dispatch_in_chunks(samples_, table.entries, "first");
+    dispatch_in_chunks(samples_, table->entries, "first");
     glUseProgram(args_.id());
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
@@ -136,7 +137,7 @@ class VisibilityPass : public GpuPass {
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries.id());
     over_samples(list_runs_, args + 3);
     Visibility v = read_runs(f, lines, {entries, args - 1}, {run_marks, 2 * n}, run_rows_, tested, capacity);
-    tables_ = {&paths_, &points_, &run_rows_, uint32_t(v.runs.size())};
+    tables_ = {&table->paths, &table->points, &run_rows_, uint32_t(v.runs.size())};
     return v;
   }
 
@@ -174,10 +175,10 @@ class VisibilityPass : public GpuPass {
     return v;
   }
 
-  void set_uniforms(GpuFrame& f, const WindowLines& lines, const PathTable& table, uint32_t capacity) {
+  void set_uniforms(GpuFrame& f, const WindowLines& lines, const UploadedPaths& table, uint32_t capacity) {
     for (const Program* p : {&count_, &ends_, &samples_, &args_, &changes_, &marks_, &list_runs_}) {
       glProgramUniform1ui(p->id(), p->uniform("capacity"), capacity);
-      glProgramUniform1ui(p->id(), p->uniform("path_count"), GLuint(table.paths.size()));
+      glProgramUniform1ui(p->id(), p->uniform("path_count"), table.count);
       glProgramUniform1ui(p->id(), p->uniform("entry_count"), table.entries);
       glProgramUniform1f(p->id(), p->uniform("step_px"), f.params<StrokesParams>().vis_step_px);
       glProgramUniform1f(p->id(), p->uniform("width"), float(lines.width));
@@ -206,7 +207,8 @@ class VisibilityPass : public GpuPass {
   static void barrier() { glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); }
 
   Program count_, ends_, samples_, changes_, args_, marks_, list_runs_;
-  Buffer paths_, points_, run_rows_;  // what the stroke pass reads (kRunTables), kept until the next frame
+  std::optional<UploadedPaths> own_;  // where no ID image pass made the table (parity)
+  Buffer run_rows_;                   // what the stroke pass reads (kRunTables), kept until the next frame
   RunTables tables_;
   ExclusiveScan scan_;
   std::map<std::string, Image> dumped_;

@@ -25,25 +25,31 @@ PathTable::PathTable(const WindowLines& lines) {
     auto n = uint32_t(p.window.size());
     if (n == 0) throw std::logic_error("visibility: a window path has no points");  // window_lines makes none
     VisibilitySample first = sample_at(p, 0);  // its kind and (silhouettes) byte window
-    paths.push_back({uint32_t(points.size()), n, entries, first.kind | (p.closed ? 16u : 0u), first.key,
-                     first.byte_window, 0, style_of(p), p.length_px, p.alpha_scale, p.width_scale});
+    const bool in_ids =
+        p.kind == LineKind::Crease || p.kind == LineKind::Border || (p.kind == LineKind::Silhouette && p.front_facing);
+    paths.push_back({uint32_t(points.size()), n, entries, first.kind | (p.closed ? 16u : 0u) | (in_ids ? 32u : 0u),
+                     first.key, first.byte_window, 0, style_of(p), p.length_px, p.alpha_scale, p.width_scale});
     entries += (p.closed ? n : n - 1) + 1;
     for (uint32_t k = 0; k < n; ++k)
       points.push_back({p.window[k], p.arc_px[k], k < p.front_faces.size() ? p.front_faces[k] : glm::uvec2(0),
-                        k < p.pressure.size() ? p.pressure[k] : 1.0});
+                        k < p.pressure.size() ? p.pressure[k] : 1.0, p.depth[k]});
   }
 }
 
-UploadedRuns::UploadedRuns(const WindowLines& lines, const Visibility& visibility) {
+UploadedPaths::UploadedPaths(const WindowLines& lines) {
   PathTable table(lines);
+  paths = make_buffer(table.paths.data(), table.paths.size() * sizeof(PathRow));
+  points = make_buffer(table.points.data(), table.points.size() * sizeof(PointRow));
+  count = uint32_t(table.paths.size()), entries = table.entries;
+}
+
+UploadedRuns::UploadedRuns(const WindowLines& lines, const Visibility& visibility) : paths_(lines) {
   std::vector<RunRow> rows;
   for (const VisibleRun& r : visibility.runs)
     rows.push_back(
         {r.path, uint32_t(r.closed) | uint32_t(r.occluded_start) << 1 | uint32_t(r.occluded_end) << 2, r.s0, r.s1});
-  paths_ = make_buffer(table.paths.data(), table.paths.size() * sizeof(PathRow));
-  points_ = make_buffer(table.points.data(), table.points.size() * sizeof(PointRow));
   runs_ = make_buffer(rows.data(), rows.size() * sizeof(RunRow));
-  tables_ = {&paths_, &points_, &runs_, uint32_t(rows.size())};
+  tables_ = {&paths_.paths, &paths_.points, &runs_, uint32_t(rows.size())};
 }
 
 }  // namespace plumbago::gpu

@@ -1,6 +1,7 @@
 // The window paths and visible runs as the GPU's stroke steps read them: the rows of
-// shaders/strokes/window_paths.glsl (std430). The visibility pass uploads the paths and lists
-// the runs on the GPU (gpu/strokes/visibility.cpp) and shares them with the stroke pass, which
+// shaders/strokes/window_paths.glsl (std430). The ID image pass uploads the paths and draws its
+// lines from them (gpu/strokes/id_lines.hpp); the visibility pass samples them and lists the
+// runs on the GPU (gpu/strokes/visibility.cpp) and shares them with the stroke pass, which
 // makes each run's window polyline there (gpu/strokes/stroke_samples.hpp); where the runs were
 // found elsewhere (parity feeds the reference's), UploadedRuns puts them up.
 #pragma once
@@ -24,7 +25,7 @@ struct PointRow {
   glm::dvec2 window;
   double s;
   glm::uvec2 faces;
-  double pressure, pad = 0;
+  double pressure, depth;
 };
 struct RunRow {
   uint32_t path, flags;  // common/strokes/visibility.hpp run_tables' flags
@@ -34,6 +35,8 @@ static_assert(sizeof(PathRow) == 56 && sizeof(PointRow) == 48 && sizeof(RunRow) 
               "std430 layouts of window_paths.glsl");
 
 // The paths of `lines` as rows; each path's entries (visibility.comp) are its segments and its end.
+// A path's kind: its sample kind (common/strokes/visibility.hpp), + 16 closed, + 32 drawn in
+// the ID image (common/strokes/id_image.hpp: creases, borders and front-facing silhouettes).
 // A path's style: its line kind's (crease 0, border 1, silhouette 2), or its decal's, 3 + d
 // (gpu/strokes/run_styles.hpp).
 struct PathTable {
@@ -43,6 +46,15 @@ struct PathTable {
   std::vector<PointRow> points;
   uint32_t entries = 0;
 };
+
+// A frame's path table on the GPU, put up once: the ID image draws its lines from it
+// (gpu/strokes/id_lines.hpp), the visibility steps sample it, the stroke steps follow it.
+struct UploadedPaths {
+  explicit UploadedPaths(const WindowLines& lines);
+  Buffer paths, points;
+  uint32_t count = 0, entries = 0;
+};
+inline constexpr Shared<UploadedPaths> kPathTable{"id_image.path_table"};
 
 // The runs of a frame on the GPU: the paths' rows and points, and `count` run rows.
 struct RunTables {
@@ -58,7 +70,8 @@ class UploadedRuns {
   const RunTables& tables() const { return tables_; }
 
  private:
-  Buffer paths_, points_, runs_;
+  UploadedPaths paths_;
+  Buffer runs_;
   RunTables tables_;
 };
 

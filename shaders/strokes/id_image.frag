@@ -1,6 +1,6 @@
 #version 450 core
 // The ID image's key as two 16-bit halves (common/strokes/id_image.hpp), at depth z = near / d:
-// a line's z comes affinely interpolated (shaders/strokes/id_image.vert), a face's from its
+// a line's z comes affinely interpolated (shaders/strokes/id_lines.vert), a face's from its
 // perspective-correct d (FACES, shaders/strokes/id_faces.vert).
 #ifdef FACES
 in float d;

@@ -6,10 +6,11 @@
 // the projection that of common/strokes/strokes.hpp WindowProjection.
 //   STEP_ARGS:   one invocation: the groups of STEP_POINTS from the paths' point count;
 //   STEP_POINTS: per point, its crossing and window position.
+const uint kPointsGroup = 64u;  // STEP_POINTS' workgroup
 #if defined(STEP_ARGS)
 layout(local_size_x = 1) in;
 #else
-layout(local_size_x = 64) in;
+layout(local_size_x = kPointsGroup) in;
 #endif
 
 #include "util/common_table.glsl"
@@ -24,12 +25,11 @@ const uint kMaxGroups = 65535u;  // per dimension (GL_MAX_COMPUTE_WORK_GROUP_COU
 
 void main() {
   uint points = uint(texelFetch(paths, table_texel(0u), 0).y);
-  uint groups = (points + gl_WorkGroupSize.x - 1u) / gl_WorkGroupSize.x;  // STEP_POINTS' size
+  uint groups = (points + kPointsGroup - 1u) / kPointsGroup;
   uint rows = (groups + kMaxGroups - 1u) / kMaxGroups;
   args = uvec4(rows == 0u ? 0u : (groups + rows - 1u) / rows, rows, 1u, points);
 }
 #elif defined(STEP_POINTS)
-const uint kPointsGroup = 64u;
 
 struct Object {  // gpu/strokes/silhouette_points.cpp ObjectRow
   dmat4 model;

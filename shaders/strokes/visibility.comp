@@ -93,37 +93,11 @@ uniform float step_px, width, height;  // the parameter (a float) and the window
 const double kMargin = 4.0lf;     // px around the window where samples are taken (the test reaches 2)
 const double kLocatedPx = 1.0lf;  // Kalnins et al. 2002, §4.1: a change is located within 1 px
 
-uint segments(Path p) { return is_closed(p) ? p.points : p.points - 1u; }
-
-// The last path whose first entry is at most e.
-uint path_of_entry(uint e) {
-  uint lo = 0u, hi = path_count;
-  while (hi - lo > 1u) {
-    uint mid = (lo + hi) / 2u;
-    if (paths[mid].first_entry <= e) lo = mid; else hi = mid;
-  }
-  return lo;
-}
 
 uint entry_end(uint p) { return p + 1u < path_count ? paths[p + 1u].first_entry : entry_count; }
 
 // Path p's first sample and the one after its last.
 uvec2 sample_range(uint p) { return uvec2(entries[paths[p].first_entry], entries[entry_end(p)]); }
-
-// common/strokes/strokes.cpp clip_to_window with kMargin.
-bool clip_to_window(dvec2 a, dvec2 b, out double t0, out double t1) {
-  dvec2 d = b - a, lo = dvec2(-kMargin), hi = dvec2(double(width) + kMargin, double(height) + kMargin);
-  t0 = 0.0lf, t1 = 1.0lf;
-  for (int c = 0; c < 2; ++c) {
-    if (d[c] == 0.0lf) {
-      if (a[c] < lo[c] || a[c] > hi[c]) return false;
-      continue;
-    }
-    double u = (lo[c] - a[c]) / d[c], v = (hi[c] - a[c]) / d[c];
-    t0 = max(t0, min(u, v)), t1 = min(t1, max(u, v));
-  }
-  return t0 <= t1;
-}
 
 // Segment k's first-round samples: where it enters the margin, the multiples of the step
 // from there up to where it leaves (one at the segment's end belongs to the next), and that.
@@ -136,7 +110,7 @@ struct Stretch {
 bool stretch_of(Path p, uint k, out Stretch st) {
   Point a = point(p, k), b = point(p, k + 1u);
   double length = distance(a.window, b.window), t0, t1;
-  if (!clip_to_window(a.window, b.window, t0, t1)) return false;
+  if (!clip_to_window(a.window, b.window, dvec2(width, height), kMargin, t0, t1)) return false;
   st.enters = t0 > 0.0lf, st.leaves = t1 < 1.0lf;
   // A segment that does not leave ends where the next one starts, at the next point's arc
   // length (a closed path's last one at its length): a.s + length may round elsewhere,
@@ -239,7 +213,7 @@ void main() {
   uint i = first + gl_GlobalInvocationID.x;
 #if defined(STEP_COUNT)
   if (i >= entry_count) return;
-  uint path = path_of_entry(i), k = i - paths[path].first_entry;
+  uint path = path_of_entry(i, path_count), k = i - paths[path].first_entry;
   Stretch st;
   uint n = k < segments(paths[path]) && stretch_of(paths[path], k, st) ? count_of(st) : 0u;
   entries[i] = n;
@@ -250,7 +224,7 @@ void main() {
   entries[entry_end(i) - 1u] = (has_end_sample(p) ? 1u : 0u) + (p.sampled == 0u ? 1u : 0u);
 #elif defined(STEP_SAMPLES)
   if (i >= entry_count) return;
-  uint path = path_of_entry(i), k = i - paths[path].first_entry, at = entries[i];
+  uint path = path_of_entry(i, path_count), k = i - paths[path].first_entry, at = entries[i];
   Path p = paths[path];
   if (k == segments(p)) {  // the end entry
     if (p.sampled == 0u) put(at++, path, p, 0u, 0.0lf);

@@ -4,7 +4,7 @@
 // reference (common/strokes/visibility.cpp) takes them.
 struct Path {
   uint first_point, points, first_entry;
-  uint kind;  // SampleKind; bit 4: closed
+  uint kind;  // SampleKind; bit 4: closed; bit 5: drawn in the ID image (common/strokes/id_image.hpp)
   uint key, byte_window;
   uint sampled;  // visibility.comp STEP_COUNT: 1 where a segment took a sample
   uint style;    // its runs' style (run_inputs.comp): crease 0, border 1, silhouette 2, decal d 3 + d
@@ -16,6 +16,7 @@ struct Point {
   double s;         // window arc length from the path's start
   uvec2 faces;      // of the segment from this point (common/strokes/strokes.hpp WindowPath::front_faces)
   double pressure;  // a decal's or hatch's drawn pressure (else 1)
+  double depth;     // linear view depth
 };
 struct Run {
   uint path;
@@ -26,8 +27,22 @@ struct Run {
 layout(std430, binding = PATHS_BINDING) buffer Paths { Path paths[]; };
 layout(std430, binding = POINTS_BINDING) readonly buffer PathPoints { Point path_points[]; };
 
-bool is_closed(Path p) { return (p.kind & 16u) != 0u; }
+const uint kPathClosed = 16u, kPathInIds = 32u;  // Path.kind's flags
+
+bool is_closed(Path p) { return (p.kind & kPathClosed) != 0u; }
+uint segments(Path p) { return is_closed(p) ? p.points : p.points - 1u; }
 Point point(Path p, uint k) { return path_points[p.first_point + k % p.points]; }
+
+// The last of the first `path_count` paths whose first entry is at most e: the path of entry e
+// (its segments, then its end: gpu/strokes/window_paths.hpp PathTable).
+uint path_of_entry(uint e, uint path_count) {
+  uint lo = 0u, hi = path_count;
+  while (hi - lo > 1u) {
+    uint mid = (lo + hi) / 2u;
+    if (paths[mid].first_entry <= e) lo = mid; else hi = mid;
+  }
+  return lo;
+}
 
 // A closed path's arc length s in [0, L): s is below 2 L here (a change's bisection and a run
 // reach past the seam by less than L), where this is fmod's exact result.
@@ -53,4 +68,20 @@ dvec2 window_at(Path p, double s) {
   uint k = segment_at(p, s);
   dvec2 a = point(p, k).window, b = point(p, k + 1u).window;
   return a + along(p, k, s) * (b - a);
+}
+
+// common/strokes/strokes.cpp clip_to_window: the part [t0, t1] of segment a -> b within
+// `margin` px of a window of `size`.
+bool clip_to_window(dvec2 a, dvec2 b, dvec2 size, double margin, out double t0, out double t1) {
+  dvec2 d = b - a, lo = dvec2(-margin), hi = size + margin;
+  t0 = 0.0lf, t1 = 1.0lf;
+  for (int c = 0; c < 2; ++c) {
+    if (d[c] == 0.0lf) {
+      if (a[c] < lo[c] || a[c] > hi[c]) return false;
+      continue;
+    }
+    double u = (lo[c] - a[c]) / d[c], v = (hi[c] - a[c]) / d[c];
+    t0 = max(t0, min(u, v)), t1 = min(t1, max(u, v));
+  }
+  return t0 <= t1;
 }

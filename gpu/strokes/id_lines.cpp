@@ -1,0 +1,60 @@
+// The ID image's lines on the GPU: see gpu/strokes/id_lines.hpp.
+#include "gpu/strokes/id_lines.hpp"
+
+namespace plumbago::gpu {
+
+namespace {
+
+Program step(const char* name) {
+  return Program::compute("strokes/id_lines.comp", std::string("#define ") + name + "\n");
+}
+
+}  // namespace
+
+IdLines::IdLines()
+    : count_(step("STEP_COUNT")),
+      args_(step("STEP_ARGS")),
+      draw_(Program::with_geometry("strokes/id_lines.vert", "strokes/id_lines.geom", "strokes/id_image.frag")),
+      empty_(make_vertex_array()) {}
+
+void IdLines::operator()(const UploadedPaths& table, const StrokesParams& p, int width, int height, float near) {
+  if (table.count == 0) return;
+  const size_t slots = size_t(table.entries) + 1 + 4;  // the counts, their total, the draw's command
+  if (slots > capacity_) pieces_ = make_buffer(nullptr, slots * sizeof(uint32_t)), capacity_ = slots;
+  const GLuint zero = 0;
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, pieces_.id());
+  glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  for (const Program* program : {&count_, &args_, &draw_}) {
+    GLuint id = program->id();
+    glProgramUniform1ui(id, program->uniform("path_count"), table.count);
+    glProgramUniform1ui(id, program->uniform("entry_count"), table.entries);
+    glProgramUniform1f(id, program->uniform("width"), float(width));
+    glProgramUniform1f(id, program->uniform("height"), float(height));
+    glProgramUniform1f(id, program->uniform("near"), near);
+    glProgramUniform1f(id, program->uniform("crease_px"), p.id_crease_px);
+    glProgramUniform1f(id, program->uniform("crease_bias"), p.id_crease_depth_bias);
+    glProgramUniform1f(id, program->uniform("silhouette_px"), p.id_silhouette_px);
+    glProgramUniform1f(id, program->uniform("silhouette_bias"), p.id_depth_bias);
+  }
+  auto bind = [&] {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, table.paths.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, table.points.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, pieces_.id());
+  };
+  bind();
+  dispatch_in_chunks(count_, table.entries, "first");
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  scan_(pieces_, size_t(table.entries) + 1);
+  bind();
+  glUseProgram(args_.id());
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  glUseProgram(draw_.id());
+  glProgramUniform2f(draw_.id(), draw_.uniform("window_size"), float(width), float(height));
+  glBindVertexArray(empty_.id());
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, pieces_.id());
+  glDrawArraysIndirect(GL_POINTS, reinterpret_cast<const void*>((size_t(table.entries) + 1) * sizeof(uint32_t)));
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+}
+
+}  // namespace plumbago::gpu
