@@ -27,41 +27,19 @@ Frame strokes_frame(const Scene& scene, const std::string& backend) {
   return backend == "reference" ? reference::render(scene, keep) : gpu::Renderer(scene).render(keep);
 }
 
-// The runs a GPU frame listed (its visibility.run_paths and run_ends tables, whose rows end
-// at the first path 0), along `lines`, the paths that frame tested.
-Visibility frame_visibility(const Frame& frame, const WindowLines& lines) {
-  const Image &paths = frame.buffers.at(kRunPaths.name), &ends = frame.buffers.at(kRunEnds.name);
-  Visibility v;
-  for (size_t k = 0; k < paths.pixels() && paths.data[2 * k] > 0; ++k) {
-    auto path = uint32_t(paths.data[2 * k]) - 1, flags = uint32_t(paths.data[2 * k + 1]);
-    if (path >= lines.paths.size())
-      throw std::logic_error("the GPU frame's run " + std::to_string(k) + " is on path " + std::to_string(path) +
-                             " of " + std::to_string(lines.paths.size()));
-    v.runs.push_back(run_from_row(lines.paths[path], path, ends.data[2 * k], ends.data[2 * k + 1], flags));
-  }
-  return v;
-}
-
 }  // namespace
 
 SceneLines scene_lines(const Scene& scene, const std::string& backend) {
   SceneLines out{lines_scene(scene)};
-  auto p = out.scene.params.get<StrokesParams>();
   out.frame = strokes_frame(out.scene, backend);
-  if (!out.frame.lines) throw std::logic_error("the " + backend + " strokes frame kept no lines");
-  out.lines = *out.frame.lines;  // the lines the frame made and tested
+  if (!out.frame.lines || !out.frame.visibility)
+    throw std::logic_error("the " + backend + " strokes frame kept no lines or runs");
+  out.lines = *out.frame.lines;  // the lines the frame made and tested, and the runs it found
+  out.visibility = *out.frame.visibility;
   out.keys = keys_from_channels(out.frame.buffers.at(kIds.name));
-  if (backend != "reference") {
-    out.visibility = frame_visibility(out.frame, out.lines);
-    return out;
-  }
-  const ImageU32& keys = out.keys;  // the reference's runs in double, as its frame made them
-  auto test = [&keys](const std::vector<VisibilitySample>& batch) {
-    std::vector<uint8_t> flags;
-    for (const VisibilitySample& s : batch) flags.push_back(sample_visible(keys, s));
-    return flags;
-  };
-  out.visibility = visible_runs(out.lines, p, test);
+  for (VisibleRun& r : out.visibility.runs)  // the GPU frame's: their polylines were made on the GPU
+    if (r.window.empty())
+      r = run_along(out.lines.paths.at(r.path), r.path, r.s0, r.s1, r.closed, r.occluded_start, r.occluded_end);
   return out;
 }
 

@@ -23,9 +23,8 @@ struct SceneLines {
 
 // The lines of every object but the sketchy ones, and the decals of the scene's stroke
 // files projected by `backend` ("gpu" or "reference"), their visibility from its ID image.
-// The silhouettes and the visible runs are the backend's own: the GPU's chains and runs
-// (its frame's silhouette_paths and visibility tables, its ends in float), the reference's
-// chained and bisected in double.
+// The lines and the visible runs are the backend's frame's own: the GPU's chains, points and
+// runs, made on the GPU in double; the reference's chained and bisected in double.
 SceneLines scene_lines(const Scene& scene, const std::string& backend);
 
 // Per point of `path`: whether it shows (front-facing, and its sample passes the ID image).

@@ -15,6 +15,7 @@
 namespace plumbago {
 
 struct WindowLines;  // common/strokes/strokes.hpp
+struct Visibility;   // common/strokes/visibility.hpp
 
 struct PassTime {
   std::string name;
@@ -26,8 +27,11 @@ struct Frame {
   std::vector<PassTime> ran;             // every pass that ran, in order
   std::map<std::string, Image> buffers;  // intermediate buffers when asked for
   // With the buffers, a strokes frame's lines in the window as its ID image and visibility
-  // took them (common/strokes/strokes.hpp); none without strokes.
+  // took them (common/strokes/strokes.hpp), and what its visibility found: the first round's
+  // sample count and flags, the visible runs (the GPU's without their polylines, which it
+  // makes on the GPU). None without strokes.
   std::shared_ptr<const WindowLines> lines;
+  std::shared_ptr<const Visibility> visibility;
   // What the frame drew, by name: the visible strokes per line kind ("strokes.crease", ...),
   // the paths and samples, the hatching groups' scale and level (common/strokes/stroke.hpp
   // stroke_counts), the silhouette segments and chains (common/strokes/silhouette_chains.hpp
@@ -39,6 +43,12 @@ struct Frame {
   double host_ms = 0;
   size_t readback_bytes = 0;
 };
+
+// A copy of a frame's data for Frame::lines and Frame::visibility; none where it has none.
+template <class T>
+std::shared_ptr<const T> kept(const T* value) {
+  return value ? std::make_shared<const T>(*value) : nullptr;
+}
 
 struct FrameOptions {
   bool keep_buffers = false;  // fill Frame::buffers (for --dump-stages and compare)

@@ -155,11 +155,6 @@ WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects
 bool clip_to_window(glm::dvec2 a, glm::dvec2 b, double width, double height, double margin, double& t0, double& t1);
 
 // The window position and linear depth of a world point (docs/conventions.md), in double.
-// A copy of a frame's lines, for Frame::lines; none where the frame has none.
-inline std::shared_ptr<const WindowLines> kept_lines(const WindowLines* lines) {
-  return lines ? std::make_shared<const WindowLines>(*lines) : nullptr;
-}
-
 struct WindowProjection {
   WindowProjection(const Camera& camera, int width, int height);
   glm::dvec3 operator()(glm::dvec3 world) const;  // (x, y, d)

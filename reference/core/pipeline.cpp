@@ -28,7 +28,10 @@ Frame render(const Scene& scene, const FrameOptions& options) {
   ReferenceFrame f = run_stages(scene, frame.ran);
   std::string color = frame_color_buffer(f.stages);  // none without effects: the blank page
   frame.color = color.empty() ? Image(scene.width, scene.height, 3, 1.0f) : f.images.at(color);
-  if (options.keep_buffers) frame.buffers = dump(f), frame.lines = kept_lines(f.get(maybe(kWindowLines)));
+  if (options.keep_buffers) {
+    frame.buffers = dump(f);
+    frame.lines = kept(f.get(maybe(kWindowLines))), frame.visibility = kept(f.get(maybe(kVisibleRuns)));
+  }
   frame.counts = stroke_counts(f.get(maybe(kWindowLines)), f.get(maybe(kVisibleRuns)));
   frame.counts.merge(silhouette_counts(f.get(maybe(kSegmentFacing)), f.get(maybe(kChains))));
   return frame;
