@@ -45,9 +45,8 @@ class SilhouetteChainsPass : public GpuPass {
   }
 
   void run(GpuFrame& f) override {
+    // Every record's rows are written each frame (the link step zeroes those of no member).
     const Texture &chains = table_target(f, records_, kChains), &arcs = table_target(f, records_, kChainArcs);
-    const float zero[4] = {0, 0, 0, 0};
-    for (const Texture* t : {&chains, &arcs}) glClearTexImage(t->id(), 0, GL_RGBA, GL_FLOAT, zero);
     const GLuint none = 0;
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, count_.id());
     glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &none);

@@ -35,9 +35,10 @@ class SilhouettePathsPass : public GpuPass {
     const Texture* tables[] = {&table_target(f, silhouette_path_rows(records_), kSilhouettePaths),
                                &table_target(f, silhouette_point_rows(records_), kSilhouettePoints),
                                &table_target(f, silhouette_point_rows(records_), kSilhouetteCrossings)};
+    // The frame reads the rows within the counts only; a dump shows the rest as 0.
     const float zero[4] = {0, 0, 0, 0};
     for (GLuint unit = 0; unit < 3; ++unit) {
-      glClearTexImage(tables[unit]->id(), 0, GL_RGBA, GL_FLOAT, zero);
+      if (f.dump) glClearTexImage(tables[unit]->id(), 0, GL_RGBA, GL_FLOAT, zero);
       glBindImageTexture(unit, tables[unit]->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, tables[unit]->internal_format);
     }
     bind(f);

@@ -40,15 +40,18 @@ class SilhouetteSegmentsPass : public GpuPass {
         objects_.push_back(upload(f.scene, *lines, o, first[o]));
   }
 
+  // Every face record of a stroke object is written each frame (0 where no segment); the
+  // others' stay 0 from the one clear when the tables are made.
   void run(GpuFrame& f) override {
     const Texture* tables[] = {&table_target(f, records_, kSegmentEnds), &table_target(f, records_, kSegmentFacing),
                                &table_target(f, records_, kSegmentSlots)};
     const float zero[4] = {0, 0, 0, 0};
     glUseProgram(program_.id());
     for (GLuint unit = 0; unit < 3; ++unit) {
-      glClearTexImage(tables[unit]->id(), 0, GL_RGBA, GL_FLOAT, zero);
+      if (!cleared_) glClearTexImage(tables[unit]->id(), 0, GL_RGBA, GL_FLOAT, zero);
       glBindImageTexture(unit, tables[unit]->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, tables[unit]->internal_format);
     }
+    cleared_ = true;
     set_frame_uniforms(f);
     for (const ObjectBuffers& o : objects_) dispatch(f, o);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
@@ -77,6 +80,7 @@ class SilhouetteSegmentsPass : public GpuPass {
   }
 
   Program program_;
+  bool cleared_ = false;
   uint32_t records_ = 0;
   std::vector<ObjectBuffers> objects_;
 };

@@ -98,7 +98,12 @@ uint member() {
 void main() {
 #if defined(STEP_LINK)  // every record, in chunks: links, the members, and the loop search's start
   uint i = first_record + gl_GlobalInvocationID.x;
-  if (i >= records || facing_of(i) == 0.0) return;
+  if (i >= records) return;
+  if (facing_of(i) == 0.0) {  // no member: its rows 0 (STEP_WRITE writes the members')
+    imageStore(chains, table_texel(i), vec4(0.0));
+    imageStore(arcs, table_texel(i), vec4(0.0));
+    return;
+  }
   uint next = linked(i, 1);
   links[i] = uvec4(next, linked(i, 0), 0u, 0u);
   members[atomicAdd(count, 1u)] = i;

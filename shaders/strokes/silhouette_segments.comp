@@ -42,9 +42,18 @@ vec3 edge_crossing(vec3 c[3], float g[3], uint reversed, int k) {
   return c[ka] + (c[kb] - c[ka]) * (g[ka] / (g[ka] - g[kb]));
 }
 
+// Face f's rows: every face's are written each frame, 0 where it holds no segment.
+void put(uint f, vec4 window_ends, float front, vec2 slot_pair) {
+  ivec2 texel = table_texel(first_record + f);
+  imageStore(ends, texel, window_ends);
+  imageStore(facing, texel, vec4(front));
+  imageStore(slots, texel, vec4(slot_pair, 0.0, 0.0));
+}
+
 void main() {
   uint f = first_face + gl_GlobalInvocationID.x;
   if (f >= face_count) return;
+  put(f, vec4(0.0), 0.0, vec2(0.0));
   uvec4 face = faces[f];
   vec3 c[3];
   float g[3];
@@ -68,8 +77,5 @@ void main() {
   bool front = dot(gradient, eye - 0.5 * (a + b)) >= 0.0;
   vec3 wa = project(a), wb = project(b);
   if (wa.z < near || wb.z < near) return;
-  ivec2 texel = table_texel(first_record + f);
-  imageStore(ends, texel, vec4(wa.xy, wb.xy));
-  imageStore(facing, texel, vec4(front ? 1.0 : -1.0));
-  imageStore(slots, texel, vec4(entry, exit, 0.0, 0.0));
+  put(f, vec4(wa.xy, wb.xy), front ? 1.0 : -1.0, vec2(entry, exit));
 }
