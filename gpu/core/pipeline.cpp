@@ -107,12 +107,11 @@ Frame Renderer::render(const FrameOptions& options) {
   frame.color = color.empty() ? Image(scene.width, scene.height, 3, 1.0f)
                               : download_texture(state_->frame.texture_named(color), 3);
   frame.ran.push_back({"readback", readback.ms()});
-  if (options.keep_buffers)
-    if (options.keep_buffers) {
-      frame.buffers = state_->dump();
-      frame.lines = kept(state_->frame.data.find(kWindowLines));
-      frame.visibility = kept(state_->frame.data.find(kVisibleRuns));
-    }
+  if (options.keep_buffers) {
+    frame.buffers = state_->dump();
+    frame.lines = kept(state_->frame.data.find(kWindowLines));
+    frame.visibility = kept(state_->frame.data.find(kVisibleRuns));
+  }
   frame.counts = stroke_counts(state_->frame.data.find(kWindowLines), state_->frame.data.find(kVisibleRuns));
   std::optional<Image> facing = state_->download(kSegmentFacing, 1), chains = state_->download(kChains, 4);
   frame.counts.merge(silhouette_counts(facing ? &*facing : nullptr, chains ? &*chains : nullptr));
