@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "common/mesh/procedural.hpp"
 #include "common/strokes/silhouette_paths.hpp"
 #include "common/strokes/strokes.hpp"
@@ -20,12 +22,24 @@ namespace {
 const std::vector<std::string> kPathResults = {kSilhouettePaths.name, kSilhouettePoints.name,
                                                kSilhouetteCrossings.name};
 
+// Two objects, the second turned, scaled and moved (the GPU's points go through each one's
+// own transform and eye), with g = n·(eye - x) unnormalized.
+Scene turned_unnormalized() {
+  Scene s = testing::drawn_with_strokes(testing::square_and_torus("continuous"));
+  glm::mat4& m = s.objects.back().transform;
+  m = glm::rotate(glm::translate(m, glm::vec3(0.2f, -0.1f, 0.3f)), 0.7f, glm::vec3(0.3f, 1.0f, 0.2f));
+  m = glm::scale(m, glm::vec3(1.3f, 0.8f, 1.1f));
+  s.params.set("strokes.silhouette_normalized", 0.0);
+  return s;
+}
+
 std::vector<std::pair<std::string, Scene>> scenes() {
   return {{"torus", testing::drawn_with_strokes(testing::builtin_at("torus", 320, 240))},
           {"sphere", testing::drawn_with_strokes(testing::builtin_at("sphere", 320, 240))},
           {"cad", testing::drawn_with_strokes(testing::builtin_at("cad", 320, 240))},
           {"two objects", testing::drawn_with_strokes(testing::square_and_torus("continuous"))},
-          {"fine torus", testing::one_stroke_object(make_procedural("torus", 3.0f), glm::vec3(0.3f, 2.5f, 1.2f))}};
+          {"fine torus", testing::one_stroke_object(make_procedural("torus", 3.0f), glm::vec3(0.3f, 2.5f, 1.2f))},
+          {"turned, g unnormalized", turned_unnormalized()}};
 }
 
 // The tables' counts agree with their rows: each path's points follow the one before's, its
