@@ -5,7 +5,8 @@
 // that backend's own (the GPU's chained by the GPU, parity/lines.hpp). It prints how many
 // paths there are, how many show (a visible run or more), and the visible runs drawn.
 //   .json: every path, {"paths": [{"kind", "object", "closed", "points" (world),
-//          "screen" (pixels, origin bottom-left), "visible" (per point)}]};
+//          "screen" (pixels, origin bottom-left), "visible" (per point); a hatch's also
+//          "group" and "hatching", its group's kind: "structured" or "free"}]};
 //          With --truth also, per path, its window arc length at each point ("arc_px"),
 //          the visible runs the strokes would draw ("runs": [[s0, s1], ...], arc px), and
 //          what rays say ("truth": an Embree ray to the path every 0.5 px of arc,
@@ -42,16 +43,21 @@ struct LinesOptions {
 constexpr double kTruthStepPx = 0.5;
 
 // `origin`: the scene's (p.world is relative to it); the file has world space.
-nlohmann::json path_json(const WindowPath& p, const ImageU32& keys, glm::dvec3 origin) {
+nlohmann::json path_json(const WindowLines& lines, const WindowPath& p, const ImageU32& keys, glm::dvec3 origin) {
   nlohmann::json points = nlohmann::json::array(), screen = nlohmann::json::array();
   for (size_t k = 0; k < p.window.size(); ++k) {
     glm::dvec3 world = glm::dvec3(p.world[k]) + origin;
     points.push_back({world.x, world.y, world.z});
     screen.push_back({p.window[k].x, p.window[k].y});
   }
-  return {{"kind", line_kind_name(p.kind)},    {"object", p.object}, {"closed", p.closed},
-          {"front_facing", p.front_facing},    {"points", points},   {"screen", screen},
-          {"visible", points_visible(p, keys)}};
+  nlohmann::json j{{"kind", line_kind_name(p.kind)},    {"object", p.object}, {"closed", p.closed},
+                   {"front_facing", p.front_facing},    {"points", points},   {"screen", screen},
+                   {"visible", points_visible(p, keys)}};
+  if (p.kind == LineKind::Hatching) {  // its group (common/strokes/hatching.hpp) and the group's kind
+    const HatchGroupState& g = lines.hatching.at(size_t(p.hatch_group));
+    j["group"] = g.number, j["hatching"] = g.free ? "free" : "structured";
+  }
+  return j;
 }
 
 // The outline of each strip of a ribbon (its triangles in GL strip order, R0 L0 R1 L1 ...):
@@ -160,7 +166,7 @@ void run(const LinesOptions& o) {
     text = svg(scene, lines, visibility);
   } else {
     nlohmann::json paths = nlohmann::json::array();
-    for (const WindowPath& path : lines.paths) paths.push_back(path_json(path, found.keys, scene.origin));
+    for (const WindowPath& path : lines.paths) paths.push_back(path_json(lines, path, found.keys, scene.origin));
     nlohmann::json j{{"paths", paths}};
     if (o.truth) {
       add_truth(scene, lines, visibility, j["paths"]);

@@ -103,7 +103,7 @@ class PathBuilder {
   // near plane.
   // `object`: a hatch's group's object (points elsewhere count as missed), else kMissed.
   void add_decal(const ProjectedDecal& decal, uint32_t index, const HatchWeight& weight, uint32_t object) {
-    WindowPath start = decal_piece(kMissed, index, decal.hatch.group >= 0, weight), piece = start;
+    WindowPath start = decal_piece(kMissed, index, decal.hatch.group, weight), piece = start;
     auto restart = [&](uint32_t object) {
       flush_decal(piece);
       piece = start;
@@ -143,8 +143,9 @@ class PathBuilder {
     return keys;
   }
 
-  static WindowPath decal_piece(uint32_t object, uint32_t index, bool hatch, const HatchWeight& weight) {
-    return {hatch ? LineKind::Hatching : LineKind::Decal,
+  // `group`: a hatch's group, -1 for a decal.
+  static WindowPath decal_piece(uint32_t object, uint32_t index, int group, const HatchWeight& weight) {
+    return {group >= 0 ? LineKind::Hatching : LineKind::Decal,
             object,
             false,
             true,
@@ -159,7 +160,8 @@ class PathBuilder {
             {},
             index,
             weight.alpha,
-            weight.width};
+            weight.width,
+            group};
   }
 
   // A decal's or hatch's segments test the faces of their ends.

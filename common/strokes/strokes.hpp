@@ -92,6 +92,7 @@ struct WindowPath {
   std::vector<double> pressure;
   uint32_t decal = 0;
   double alpha_scale = 1, width_scale = 1;
+  int hatch_group = -1;  // a hatch's group: its index in WindowLines::hatching
 };
 
 struct WindowLines {

@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
+#include <set>
+
 #include <nlohmann/json.hpp>
 
 #include "tests/support/cli_run.hpp"
@@ -70,6 +73,31 @@ TEST_F(LinesCommand, DecalsAreLinesToo) {
   }
   ASSERT_EQ(run("lines " + tmp_.path("cube.json") + " -o " + tmp_.path("l.svg")).code, 0);
   EXPECT_NE(testing::slurp(tmp_.path("l.svg")).find("class=\"decal\""), std::string::npos);
+}
+
+// Each hatch says its group and the group's kind (Kalnins et al. 2002, §6): three strokes of a
+// structured group and one of a free group, drawn on the cube's front face.
+TEST_F(LinesCommand, HatchesNameTheirGroupAndItsKind) {
+  tmp_.write("cube.strokes.json", R"({"camera": {"eye": [2.2, 1.7, 2.6], "target": [0, 0, 0], "up": [0, 1, 0],
+    "fov_deg": 35, "near": 1, "far": 10}, "resolution": [200, 160],
+    "strokes": [{"role": "hatching", "group": 0, "points": [[95, 45, 1], [105, 55, 1]]},
+                {"role": "hatching", "group": 0, "points": [[95, 50, 1], [105, 60, 1]]},
+                {"role": "hatching", "group": 0, "points": [[95, 55, 1], [105, 65, 1]]},
+                {"role": "hatching", "group": 1, "free": true, "points": [[98, 40, 1], [110, 44, 1]]}]})");
+  std::string scene(kCube);
+  tmp_.write("cube.json", scene.insert(scene.rfind('}'), R"(, "stroke_files": ["cube.strokes.json"])"));
+  for (const char* backend : {"gpu", "reference"}) {
+    testing::CliRun r = run("lines " + tmp_.path("cube.json") + " --backend " + backend + " -o " + tmp_.path("l.json"));
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::map<std::string, std::set<int>> groups;  // kind -> groups
+    const auto j = nlohmann::json::parse(testing::slurp(tmp_.path("l.json")));
+    for (const auto& path : j["paths"]) {
+      EXPECT_EQ(path.contains("hatching"), path["kind"] == "hatching") << path["kind"];
+      if (path["kind"] == "hatching") groups[path["hatching"]].insert(path["group"].get<int>());
+    }
+    EXPECT_EQ(groups["structured"], std::set<int>{0}) << backend;
+    EXPECT_EQ(groups["free"], std::set<int>{1}) << backend;
+  }
 }
 
 TEST_F(LinesCommand, RefusesAnUnknownStyleAndWritesNothing) {
