@@ -93,7 +93,6 @@ uniform float step_px, width, height;  // the parameter (a float) and the window
 const double kMargin = 4.0lf;     // px around the window where samples are taken (the test reaches 2)
 const double kLocatedPx = 1.0lf;  // Kalnins et al. 2002, §4.1: a change is located within 1 px
 
-
 uint entry_end(uint p) { return p + 1u < path_count ? paths[p + 1u].first_entry : entry_count; }
 
 // Path p's first sample and the one after its last.
