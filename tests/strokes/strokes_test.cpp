@@ -88,6 +88,21 @@ TEST_F(StrokeParityNear, LinesLeavingTheWindow) {
   expect_stroke_parity(s, "leaving the window");
 }
 
+// strokes.keep_back_facing keeps the back-facing silhouettes as paths: both backends test
+// their samples and draw their runs alike. (The ID image leaves them out, rule 3 of
+// common/strokes/id_image.hpp; on a closed mesh the surface in front hides them anyway, so
+// drawing them there changes no pixel of this view.)
+TEST_F(StrokeParityNear, BackFacingSilhouettesKept) {
+  Scene s = testing::one_stroke_object(make_procedural("torus", 3.0f), glm::vec3(0.3f, 2.5f, 1.2f));
+  s.params.set("strokes.keep_back_facing", 1.0);
+  size_t back = 0;
+  for (const WindowPath& p : window_lines(s, s.params.get<StrokesParams>()).paths)
+    back += p.kind == LineKind::Silhouette && !p.front_facing;
+  std::printf("fine torus: %zu back-facing silhouette paths kept\n", back);
+  ASSERT_GT(back, 0u);
+  expect_stroke_parity(s, "back-facing kept");
+}
+
 // `plumbago lines --backend gpu` lists the runs the GPU frame found, on the paths it tested:
 // the same runs as the reference's bisection in double finds on those paths from that
 // frame's ID image, ends and polylines within double rounding (both locate each change in
