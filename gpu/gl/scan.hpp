@@ -1,8 +1,10 @@
 // Exclusive prefix sums of a uint buffer on the GPU, in three dispatches (reduce each tile, scan
 // the tiles' sums in one workgroup, then each tile with its offset; shaders/util/scan.comp).
+// The count may stay on the GPU: the dispatches then go over it indirectly.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 #include "gpu/gl/gl_objects.hpp"
 #include "gpu/gl/program.hpp"
@@ -15,10 +17,17 @@ class ExclusiveScan {
   // Replaces values[0..n) by the sum of those before each: with a 0 appended to n values,
   // values[n] becomes their total.
   void operator()(const Buffer& values, size_t n);
+  // The same over values[0..n], n = scale * counts[at] as the GPU holds it (at most
+  // capacity - 1): values[n] is set to 0 first, so that it becomes the total. The values
+  // past n are left as they are.
+  void operator()(const Buffer& values, size_t capacity, const Buffer& counts, size_t at, uint32_t scale);
 
  private:
-  Program reduce_, tiles_, down_;
-  Buffer tile_sums_;
+  void reserve_tiles(size_t n);
+  void run();
+
+  Program size_, reduce_, tiles_, down_;
+  Buffer tile_sums_, size_buffer_;
   size_t tile_capacity_ = 0;
 };
 

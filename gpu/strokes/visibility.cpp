@@ -4,9 +4,10 @@
 // (shaders/strokes/visibility.comp) take the first round of samples segment by segment,
 // test them against the ID image, bisect each change to 1 px in one invocation and list the
 // runs, placing everything by prefix sums. The buffers hold a bound on the samples the CPU
-// takes from the paths; the steps over samples are dispatched indirectly, so the count
-// stays on the GPU. Read back at the end: the totals and the runs' ends (Kalnins et al. read
-// the whole ID image back every frame).
+// takes from the paths, kept across frames; the steps over samples, and the prefix sums
+// over their marks, go over the samples the GPU took, so the count stays on the GPU. Read
+// back at the end: the totals and the runs' ends (Kalnins et al. read the whole ID image
+// back every frame).
 #include "gpu/strokes/visibility.hpp"
 
 #include <cmath>
@@ -75,7 +76,7 @@ class VisibilityPass : public GpuPass {
       : count_(step("STEP_COUNT")),
         ends_(step("STEP_ENDS")),
         samples_(step("STEP_SAMPLES")),
-        changes_(step("STEP_CHANGES")),
+        changes_step_(step("STEP_CHANGES")),
         args_(step("STEP_ARGS")),
         marks_(step("STEP_MARKS")),
         list_runs_(step("STEP_RUNS")) {}
@@ -107,16 +108,13 @@ class VisibilityPass : public GpuPass {
     const auto capacity = uint32_t(bound);
     const size_t n = std::max<size_t>(capacity, 1), args = size_t(table->entries) + 1;
     Buffer entries = make_zeroed_buffer(args + 6);  // the counts, their total, then two dispatches' groups
-    Buffer tested = make_buffer(nullptr, n * sizeof(TestedRow)), changes = make_buffer(nullptr, n * sizeof(glm::dvec2));
-    Buffer change_marks = make_zeroed_buffer(n + 1), run_marks = make_zeroed_buffer(2 * n + 1),
-           runs = make_buffer(nullptr, 2 * n * sizeof(RunRow));
-    run_rows_ = std::move(runs);
+    reserve(n);
     set_uniforms(f, lines, *table, capacity);
-    const std::initializer_list<const Buffer*> all = {&table->paths, &table->points, &entries, &tested,
-                                                      &change_marks, &run_marks,     &changes, &run_rows_};
+    const std::initializer_list<const Buffer*> all = {&table->paths,  &table->points, &entries,  &tested_,
+                                                      &change_marks_, &run_marks_,    &changes_, &run_rows_};
     bind(all);
     bind_textures(samples_, {{"ids", &f.get(kIds)}});
-    bind_textures(changes_, {{"ids", &f.get(kIds)}});
+    bind_textures(changes_step_, {{"ids", &f.get(kIds)}});
     dispatch_in_chunks(count_, table->entries, "first");
     barrier();
     dispatch_in_chunks(ends_, table->count, "first");
@@ -128,15 +126,16 @@ class VisibilityPass : public GpuPass {
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries.id());
-    over_samples(changes_, args);
-    scan_(change_marks, n + 1);
+    over_samples(changes_step_, args);
+    scan_(change_marks_, n + 1, entries, args - 1, 1);  // over the samples the GPU took
     bind(all);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries.id());
     over_samples(marks_, args);
-    scan_(run_marks, 2 * n + 1);
+    scan_(run_marks_, 2 * n + 1, entries, args - 1, 2);
     bind(all);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries.id());
     over_samples(list_runs_, args + 3);
-    Visibility v = read_runs(f, lines, {entries, args - 1}, {run_marks, 2 * n}, run_rows_, tested, capacity);
+    Visibility v = read_runs(f, lines, {entries, args - 1}, run_marks_, run_rows_, tested_, capacity);
     tables_ = {&table->paths, &table->points, &run_rows_, uint32_t(v.runs.size())};
     return v;
   }
@@ -155,15 +154,15 @@ class VisibilityPass : public GpuPass {
 
   // One readback after the frame's visibility work: the totals, then the runs (and, for a
   // dump, the flags).
-  Visibility read_runs(const GpuFrame& f, const WindowLines& lines, Total samples, Total run_count, const Buffer& runs,
-                       const Buffer& tested, uint32_t capacity) {
+  Visibility read_runs(const GpuFrame& f, const WindowLines& lines, Total samples, const Buffer& run_marks,
+                       const Buffer& runs, const Buffer& tested, uint32_t capacity) {
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     Visibility v;
     v.samples = read_uint(samples.buffer, samples.at);
     if (v.samples > capacity)
       throw std::logic_error("visibility: " + std::to_string(v.samples) + " samples over the bound of " +
                              std::to_string(capacity));
-    std::vector<RunRow> rows(read_uint(run_count.buffer, run_count.at));
+    std::vector<RunRow> rows(read_uint(run_marks, 2 * size_t(v.samples)));  // the run slots' total
     read_buffer(runs, rows.data(), rows.size() * sizeof(RunRow));
     for (const RunRow& r : rows)
       v.runs.push_back(run_from_row(lines.paths[r.path], r.path, r.s0, r.s1, r.flags, false));
@@ -176,7 +175,7 @@ class VisibilityPass : public GpuPass {
   }
 
   void set_uniforms(GpuFrame& f, const WindowLines& lines, const UploadedPaths& table, uint32_t capacity) {
-    for (const Program* p : {&count_, &ends_, &samples_, &args_, &changes_, &marks_, &list_runs_}) {
+    for (const Program* p : {&count_, &ends_, &samples_, &args_, &changes_step_, &marks_, &list_runs_}) {
       glProgramUniform1ui(p->id(), p->uniform("capacity"), capacity);
       glProgramUniform1ui(p->id(), p->uniform("path_count"), table.count);
       glProgramUniform1ui(p->id(), p->uniform("entry_count"), table.entries);
@@ -199,6 +198,19 @@ class VisibilityPass : public GpuPass {
       throw std::length_error(std::string(what) + ": more than 2^31 samples");
   }
 
+  // Buffers for n samples, kept across frames and made anew where short (at the bound that
+  // check_memory took): the steps write every slot up to the samples the GPU took, and the
+  // scans zero the total's, so nothing is cleared.
+  void reserve(size_t n) {
+    if (n <= held_) return;
+    held_ = n;
+    tested_ = make_buffer(nullptr, held_ * sizeof(TestedRow));
+    changes_ = make_buffer(nullptr, held_ * sizeof(glm::dvec2));
+    change_marks_ = make_buffer(nullptr, (held_ + 1) * sizeof(uint32_t));
+    run_marks_ = make_buffer(nullptr, (2 * held_ + 1) * sizeof(uint32_t));
+    run_rows_ = make_buffer(nullptr, 2 * held_ * sizeof(RunRow));
+  }
+
   static void bind(std::initializer_list<const Buffer*> buffers) {
     GLuint binding = 0;
     for (const Buffer* b : buffers) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding++, b->id());
@@ -206,9 +218,11 @@ class VisibilityPass : public GpuPass {
 
   static void barrier() { glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); }
 
-  Program count_, ends_, samples_, changes_, args_, marks_, list_runs_;
+  Program count_, ends_, samples_, changes_step_, args_, marks_, list_runs_;
   std::optional<UploadedPaths> own_;  // where no ID image pass made the table (parity)
-  Buffer run_rows_;                   // what the stroke pass reads (kRunTables), kept until the next frame
+  size_t held_ = 0;                   // samples the buffers below hold
+  Buffer tested_, changes_, change_marks_, run_marks_;
+  Buffer run_rows_;  // what the stroke pass reads (kRunTables), kept until the next frame
   RunTables tables_;
   ExclusiveScan scan_;
   std::map<std::string, Image> dumped_;

@@ -1,5 +1,6 @@
 #version 450 core
 // Exclusive prefix sums of a uint buffer (gpu/gl/scan.hpp), one program per step:
+//   STEP_SIZE:   one invocation: the count from a buffer on the GPU, the tiles' dispatch;
 //   STEP_REDUCE: per tile of 2048 values, their sum;
 //   STEP_TILES:  one workgroup: the tiles' sums made the sums of the tiles before each;
 //   STEP_DOWN:   per tile, each value replaced by the sum of all values before it.
@@ -9,7 +10,10 @@ const uint kPerInvocation = 8u, kTile = 2048u;
 
 layout(std430, binding = 0) buffer Values { uint values[]; };
 layout(std430, binding = 1) buffer TileSums { uint tile_sums[]; };
-uniform uint count, tiles;
+// The dispatch over the tiles (x, 1, 1), then the values' count: the CPU's, or STEP_SIZE's.
+layout(std430, binding = 2) buffer Size { uvec4 size; };
+#define tiles size.x
+#define count size.w
 
 shared uint partial[gl_WorkGroupSize.x];
 
@@ -36,6 +40,16 @@ uint invocation_sum() {
   return sum;
 }
 
+#if defined(STEP_SIZE)
+layout(std430, binding = 3) readonly buffer Counts { uint counts[]; };
+uniform uint count_at, scale, capacity;
+
+void main() {
+  uint n = min(scale * counts[count_at], capacity - 1u);
+  values[n] = 0u;  // the total's slot
+  size = uvec4((n + kTile) / kTile, 1u, 1u, n + 1u);
+}
+#else
 void main() {
   uint total;
 #if defined(STEP_REDUCE)
@@ -60,3 +74,4 @@ void main() {
   }
 #endif
 }
+#endif

@@ -1,8 +1,10 @@
 // Exclusive prefix sums on the GPU (gpu/gl/scan.hpp) against std::exclusive_scan, across the
 // sizes where its steps change: one partial tile, whole tiles, and more tiles than the
-// one-workgroup step has invocations (each then sums a run of them).
+// one-workgroup step has invocations (each then sums a run of them); and with the count left
+// on the GPU.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <numeric>
 #include <random>
 #include <vector>
@@ -28,6 +30,32 @@ TEST_F(Scan, GivesTheSumsBeforeEachValueAndTheTotalAfterThem) {
     scan(buffer, n + 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     std::vector<uint32_t> got(n + 1);
+    read_buffer(buffer, got.data(), got.size() * sizeof(uint32_t));
+    EXPECT_EQ(got, expected);
+  }
+}
+
+// The count read on the GPU, scaled: what lies at and past it (1 and 9 here) must become the
+// total and stay; a count over the capacity is cut to it.
+TEST_F(Scan, ScansTheCountTheGpuHolds) {
+  ExclusiveScan scan;
+  std::mt19937 random(11);
+  const size_t capacity = 700'001;
+  for (uint32_t count : {0u, 1u, 1024u, 1025u, 350'000u, 400'000u}) {
+    SCOPED_TRACE(count);
+    const size_t n = std::min<size_t>(2 * size_t(count), capacity - 1);
+    std::vector<uint32_t> values(capacity, 9);
+    for (size_t k = 0; k < n; ++k) values[k] = random() % 4;
+    values[n] = 1;
+    std::vector<uint32_t> expected = values;
+    expected[n] = 0;
+    std::exclusive_scan(expected.begin(), expected.begin() + std::ptrdiff_t(n) + 1, expected.begin(), 0u);
+    const uint32_t counts[3] = {5, count, 6};
+    Buffer buffer = make_buffer(values.data(), values.size() * sizeof(uint32_t));
+    Buffer held = make_buffer(counts, sizeof counts);
+    scan(buffer, capacity, held, 1, 2);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<uint32_t> got(capacity);
     read_buffer(buffer, got.data(), got.size() * sizeof(uint32_t));
     EXPECT_EQ(got, expected);
   }
