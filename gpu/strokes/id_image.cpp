@@ -31,7 +31,7 @@ class IdImagePass : public GpuPass {
         fbo_(make_framebuffer()),
         empty_(make_vertex_array()),
         depth_(make_renderbuffer(f.scene.width, f.scene.height, GL_DEPTH_COMPONENT32F)),
-        silhouettes_(f.scene, f.get(kLineMeshes)) {
+        silhouettes_(f.scene, f.get(kLineMeshes), stroke_meshes(f)) {
     // The decals' surface points, projected once for the renderer's frames (Kalnins et al.
     // 2002, §3).
     if (has_decals(f.scene)) decals_ = project_decals_through_gbuffer(f.scene);
@@ -73,6 +73,12 @@ class IdImagePass : public GpuPass {
   }
 
  private:
+  // The silhouette segments' meshes, or (the segments computed elsewhere: parity) its own.
+  const StrokeMeshes& stroke_meshes(GpuFrame& f) {
+    if (const StrokeMeshes* shared = f.get(maybe(kStrokeMeshes))) return *shared;
+    return own_meshes_.emplace(f.scene, f.get(kLineMeshes));
+  }
+
   // Rule 1: the G-buffer's faces,
   void draw_gbuffer_faces(const GpuFrame& f) {
     const GBufferTargets& g = f.get(kGBuffer);
@@ -106,6 +112,7 @@ class IdImagePass : public GpuPass {
   Framebuffer fbo_;
   VertexArray empty_;
   Renderbuffer depth_;
+  std::optional<StrokeMeshes> own_meshes_;
   SilhouettePoints silhouettes_;
   IdLines lines_;                       // rules 2 and 3
   std::optional<UploadedPaths> table_;  // this frame's, kept until the next

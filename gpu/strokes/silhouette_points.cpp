@@ -22,30 +22,21 @@ Program step(const char* name) {
 
 }  // namespace
 
-SilhouettePoints::SilhouettePoints(const Scene& scene, const LineMeshes& meshes)
-    : args_(step("STEP_ARGS")), points_(step("STEP_POINTS")) {
+SilhouettePoints::SilhouettePoints(const Scene& scene, const LineMeshes& meshes, const StrokeMeshes& shared)
+    : args_(step("STEP_ARGS")), points_(step("STEP_POINTS")), meshes_(shared) {
   const std::vector<uint32_t> first = first_faces(scene);
   const size_t records = first.back();
   check_memory_budget("the silhouette points of " + std::to_string(records) + " faces on the GPU",
-                      double(records) * double(sizeof(glm::uvec4) + 9 * sizeof(double) + 2 * sizeof(SilhouettePoint)));
-  std::vector<glm::vec4> positions;
-  std::vector<glm::uvec4> faces(records, glm::uvec4(0));
-  std::vector<double> normals(9 * records, 0.0);
+                      double(records) * double(9 * sizeof(double) + 2 * sizeof(SilhouettePoint)));
+  std::vector<double> normals(std::max<size_t>(9 * records, 1), 0.0);
   for (uint32_t o = 0; o < scene.objects.size(); ++o) {
-    first_vertex_.push_back(uint32_t(positions.size()));
     const FeatureLineMesh* lines = line_mesh(meshes, o);
     if (!lines) continue;
-    const Mesh& mesh = *scene.objects[o].mesh;
-    for (glm::vec3 p : mesh.positions) positions.emplace_back(p, 1.0f);
-    for (uint32_t f = 0; f < mesh.triangles.size(); ++f) {
-      faces[first[o] + f] = glm::uvec4(mesh.triangles[f], lines->reversed_slots(f));
+    for (uint32_t f = 0; f < scene.objects[o].mesh->triangles.size(); ++f)
       for (int k = 0; k < 3; ++k)
         for (int c = 0; c < 3; ++c)
           normals[9 * (first[o] + f) + 3 * size_t(k) + size_t(c)] = lines->corner_normals()[3 * f + k][c];
-    }
   }
-  positions_ = make_buffer(positions.data(), positions.size() * sizeof(glm::vec4));
-  faces_ = make_buffer(faces.data(), faces.size() * sizeof(glm::uvec4));
   normals_ = make_buffer(normals.data(), normals.size() * sizeof(double));
   args_buffer_ = make_buffer(nullptr, sizeof(glm::uvec4));
   rows_ = make_buffer(nullptr, silhouette_point_rows(records) * sizeof(SilhouettePoint));
@@ -61,7 +52,7 @@ std::vector<ChainPath> SilhouettePoints::operator()(const Scene& scene, const Li
     objects.push_back({model,
                        glm::dvec4(eye_in_object_space(model, glm::dvec3(scene.camera.eye)), 1.0),
                        first[o],
-                       first_vertex_[o],
+                       meshes_.first_vertex[o],
                        {}});
   }
   const WindowProjection project(scene.camera, scene.width, scene.height);
@@ -73,7 +64,8 @@ std::vector<ChainPath> SilhouettePoints::operator()(const Scene& scene, const Li
   glProgramUniform1ui(points_.id(), points_.uniform("object_count"), GLuint(objects.size()));
   glProgramUniform1f(points_.id(), points_.uniform("width"), float(scene.width));
   glProgramUniform1f(points_.id(), points_.uniform("height"), float(scene.height));
-  const Buffer* bound[] = {&args_buffer_, &object_rows, &positions_, &faces_, &normals_, &rows_, &frame_rows};
+  const Buffer* bound[] = {&args_buffer_, &object_rows, &meshes_.positions, &meshes_.faces,
+                           &normals_,     &rows_,       &frame_rows};
   for (GLuint b = 0; b < 7; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
   glUseProgram(args_.id());
   glDispatchCompute(1, 1, 1);

@@ -12,22 +12,24 @@
 #include "common/strokes/silhouette_paths.hpp"
 #include "gpu/gl/gl_objects.hpp"
 #include "gpu/gl/program.hpp"
+#include "gpu/strokes/stroke_meshes.hpp"
 
 namespace plumbago::gpu {
 
 class SilhouettePoints {
  public:
-  // Uploads the stroke objects' faces, slot directions and crease-aware normals (double)
-  // once; `meshes` from line_meshes for `scene`'s stroke objects.
-  SilhouettePoints(const Scene& scene, const LineMeshes& meshes);
+  // Reads `shared` (made for `scene` and `meshes`, kept as long as this) and uploads the
+  // crease-aware corner normals (double) once; `meshes` from line_meshes for `scene`'s
+  // stroke objects.
+  SilhouettePoints(const Scene& scene, const LineMeshes& meshes, const StrokeMeshes& shared);
   // This frame's silhouette paths from the silhouette_paths tables `paths` and `crossings`.
   std::vector<ChainPath> operator()(const Scene& scene, const LineMeshes& meshes, const Texture& paths,
                                     const Texture& crossings, bool normalized);
 
  private:
   Program args_, points_;
-  std::vector<uint32_t> first_vertex_;  // per scene object, in positions_
-  Buffer positions_, faces_, normals_, args_buffer_, rows_;
+  const StrokeMeshes& meshes_;
+  Buffer normals_, args_buffer_, rows_;
 };
 
 }  // namespace plumbago::gpu

@@ -1,7 +1,8 @@
 // Silhouette segments on the GPU (Kalnins et al. 2002, §4.5), the twin of
 // reference/strokes/silhouette_segments.cpp: one invocation per face of each stroke object
-// (shaders/strokes/silhouette_segments.comp), from its corners, crease-aware corner normals
-// and slot orientations, uploaded once. Nothing is read back.
+// (shaders/strokes/silhouette_segments.comp), from its corners and slot orientations
+// (gpu/strokes/stroke_meshes.hpp, shared with the silhouette points) and its crease-aware
+// corner normals, uploaded once. Nothing is read back.
 #include "common/strokes/silhouette_segments.hpp"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -9,35 +10,35 @@
 #include "common/strokes/strokes.hpp"
 #include "gpu/core/stage.hpp"
 #include "gpu/scene/mesh_buffers.hpp"
+#include "gpu/strokes/stroke_meshes.hpp"
 
 namespace plumbago::gpu {
 
 namespace {
 
-// A stroke object's mesh with its slot orientations and crease-aware corner normals.
-struct ObjectBuffers {
-  MeshBuffers mesh;
-  uint32_t first_record;
-  Buffer normals;
-};
-
-ObjectBuffers upload(const Scene& scene, const FeatureLineMesh& lines, uint32_t object, uint32_t first_record) {
-  std::vector<glm::vec4> normals;
-  for (glm::dvec3 n : lines.corner_normals()) normals.emplace_back(glm::vec3(n), 0.0f);
-  if (normals.empty()) normals.emplace_back(0.0f);
-  return {upload_mesh(scene, object, [&](uint32_t f) { return lines.reversed_slots(f); }), first_record,
-          make_buffer(normals.data(), normals.size() * sizeof(glm::vec4))};
+// The crease-aware corner normals of every face record, 3 a record (0 for an object without
+// strokes), in float.
+Buffer corner_normals(const Scene& scene, const LineMeshes& meshes) {
+  const std::vector<uint32_t> first = first_faces(scene);
+  std::vector<glm::vec4> normals(std::max<size_t>(3 * size_t(first.back()), 1), glm::vec4(0.0f));
+  for (uint32_t o = 0; o < scene.objects.size(); ++o)
+    if (const FeatureLineMesh* lines = line_mesh(meshes, o))
+      for (size_t c = 0; c < lines->corner_normals().size(); ++c)
+        normals[3 * size_t(first[o]) + c] = glm::vec4(glm::vec3(lines->corner_normals()[c]), 0.0f);
+  return make_buffer(normals.data(), normals.size() * sizeof(glm::vec4));
 }
 
 class SilhouetteSegmentsPass : public GpuPass {
  public:
   explicit SilhouetteSegmentsPass(GpuFrame& f)
-      : program_(Program::compute("strokes/silhouette_segments.comp", table_prelude())) {
-    std::vector<uint32_t> first = first_faces(f.scene);
-    records_ = first.back();
+      : program_(Program::compute("strokes/silhouette_segments.comp", table_prelude())),
+        meshes_(f.scene, f.get(kLineMeshes)),
+        normals_(corner_normals(f.scene, f.get(kLineMeshes))),
+        first_record_(first_faces(f.scene)) {
+    records_ = first_record_.back();
     for (uint32_t o = 0; o < f.scene.objects.size(); ++o)
-      if (const FeatureLineMesh* lines = line_mesh(f.get(kLineMeshes), o))
-        objects_.push_back(upload(f.scene, *lines, o, first[o]));
+      if (line_mesh(f.get(kLineMeshes), o)) objects_.push_back(o);
+    f.put(kStrokeMeshes, meshes_);  // the silhouette points' too (gpu/strokes/id_image.cpp)
   }
 
   // Every face record of a stroke object is written each frame (0 where no segment); the
@@ -53,7 +54,10 @@ class SilhouetteSegmentsPass : public GpuPass {
     }
     cleared_ = true;
     set_frame_uniforms(f);
-    for (const ObjectBuffers& o : objects_) dispatch(f, o);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, meshes_.positions.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, meshes_.faces.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, normals_.id());
+    for (uint32_t o : objects_) dispatch(f, o);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
   }
 
@@ -65,24 +69,25 @@ class SilhouetteSegmentsPass : public GpuPass {
     glProgramUniform2f(p, program_.uniform("window_size"), float(f.scene.width), float(f.scene.height));
   }
 
-  void dispatch(const GpuFrame& f, const ObjectBuffers& o) {
-    const uint32_t object = o.mesh.object;
+  void dispatch(const GpuFrame& f, uint32_t object) {
     glm::vec3 eye(eye_in_object_space(glm::dmat4(f.scene.objects[object].transform), glm::dvec3(f.scene.camera.eye)));
     GLuint p = program_.id();
+    const auto faces = uint32_t(f.scene.objects[object].mesh->triangles.size());
     object_uniforms(program_, f.scene, object);
     glProgramUniform3fv(p, program_.uniform("eye"), 1, glm::value_ptr(eye));
-    glProgramUniform1ui(p, program_.uniform("face_count"), o.mesh.faces);
-    glProgramUniform1ui(p, program_.uniform("first_record"), o.first_record);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, o.mesh.positions.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, o.mesh.corners.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, o.normals.id());
-    dispatch_in_chunks(program_, o.mesh.faces, "first_face");
+    glProgramUniform1ui(p, program_.uniform("face_count"), faces);
+    glProgramUniform1ui(p, program_.uniform("first_record"), first_record_[object]);
+    glProgramUniform1ui(p, program_.uniform("first_vertex"), meshes_.first_vertex[object]);
+    dispatch_in_chunks(program_, faces, "first_face");
   }
 
   Program program_;
+  StrokeMeshes meshes_;
+  Buffer normals_;
+  std::vector<uint32_t> first_record_;  // first_faces
   bool cleared_ = false;
   uint32_t records_ = 0;
-  std::vector<ObjectBuffers> objects_;
+  std::vector<uint32_t> objects_;  // the stroke objects
 };
 
 }  // namespace

@@ -7,10 +7,12 @@ layout(local_size_x = 64) in;
 #include "util/common_table.glsl"
 #include "util/window_projection.glsl"
 
+// gpu/strokes/stroke_meshes.hpp: every stroke object's positions; per face record, its
+// corners' vertices (its object's numbering), bit k of w: the edge in slot k runs from
+// corner k + 1 to corner k.
 layout(std430, binding = 0) readonly buffer Positions { vec4 positions[]; };
-// The corners' vertices; bit k of w: the edge in slot k runs from corner k + 1 to corner k.
 layout(std430, binding = 1) readonly buffer Faces { uvec4 faces[]; };
-layout(std430, binding = 2) readonly buffer Normals { vec4 normals[]; };  // per corner 3 f + k, crease-aware
+layout(std430, binding = 2) readonly buffer Normals { vec4 normals[]; };  // per corner 3 r + k, crease-aware
 layout(rgba32f, binding = 0) writeonly uniform image2D ends;
 layout(r32f, binding = 1) writeonly uniform image2D facing;
 layout(rg32f, binding = 2) writeonly uniform image2D slots;
@@ -18,7 +20,7 @@ layout(rg32f, binding = 2) writeonly uniform image2D slots;
 uniform vec3 eye;         // object space
 uniform bool normalized;  // g = n·normalize(eye - x); false: n·(eye - x)
 uniform float near;
-uniform uint face_count, first_face, first_record;  // first_face: of this dispatch
+uniform uint face_count, first_face, first_record, first_vertex;  // first_face: of this dispatch
 
 const float kZeroG = -1e-8;  // g = 0 exactly is taken as -1e-8
 
@@ -54,12 +56,13 @@ void main() {
   uint f = first_face + gl_GlobalInvocationID.x;
   if (f >= face_count) return;
   put(f, vec4(0.0), 0.0, vec2(0.0));
-  uvec4 face = faces[f];
+  uint record = first_record + f;
+  uvec4 face = faces[record];
   vec3 c[3];
   float g[3];
   for (int k = 0; k < 3; ++k) {
-    c[k] = positions[face[k]].xyz;
-    g[k] = silhouette_test(normals[3u * f + uint(k)].xyz, c[k]);
+    c[k] = positions[first_vertex + face[k]].xyz;
+    g[k] = silhouette_test(normals[3u * record + uint(k)].xyz, c[k]);
   }
   int found_slots[2];
   int found = 0;
