@@ -14,12 +14,12 @@ namespace plumbago::gpu {
 class ExclusiveScan {
  public:
   ExclusiveScan();
-  // Replaces values[0..n) by the sum of those before each: with a 0 appended to n values,
+  // Replaces values[0..n) by the sum of those before each: with a slot appended to n values,
   // values[n] becomes their total.
   void operator()(const Buffer& values, size_t n);
   // The same over values[0..n], n = scale * counts[at] as the GPU holds it (at most
-  // capacity - 1): values[n] is set to 0 first, so that it becomes the total. The values
-  // past n are left as they are.
+  // capacity - 1): values[n], whatever it held, becomes the total of those before it. The
+  // values past n are left as they are.
   void operator()(const Buffer& values, size_t capacity, const Buffer& counts, size_t at, uint32_t scale);
 
  private:

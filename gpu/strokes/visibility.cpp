@@ -199,8 +199,8 @@ class VisibilityPass : public GpuPass {
   }
 
   // Buffers for n samples, kept across frames and made anew where short (at the bound that
-  // check_memory took): the steps write every slot up to the samples the GPU took, and the
-  // scans zero the total's, so nothing is cleared.
+  // check_memory took). Nothing is cleared: the steps write every slot below the samples the
+  // GPU took, and a prefix sum reads only the values before each slot.
   void reserve(size_t n) {
     if (n <= held_) return;
     held_ = n;

@@ -46,7 +46,6 @@ uniform uint count_at, scale, capacity;
 
 void main() {
   uint n = min(scale * counts[count_at], capacity - 1u);
-  values[n] = 0u;  // the total's slot
   size = uvec4((n + kTile) / kTile, 1u, 1u, n + 1u);
 }
 #else

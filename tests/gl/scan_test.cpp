@@ -35,8 +35,8 @@ TEST_F(Scan, GivesTheSumsBeforeEachValueAndTheTotalAfterThem) {
   }
 }
 
-// The count read on the GPU, scaled: what lies at and past it (1 and 9 here) must become the
-// total and stay; a count over the capacity is cut to it.
+// The count read on the GPU, scaled: the total's slot (1 here) becomes the total whatever it
+// held, what lies past it (9) stays; a count over the capacity is cut to it.
 TEST_F(Scan, ScansTheCountTheGpuHolds) {
   ExclusiveScan scan;
   std::mt19937 random(11);
@@ -48,7 +48,6 @@ TEST_F(Scan, ScansTheCountTheGpuHolds) {
     for (size_t k = 0; k < n; ++k) values[k] = random() % 4;
     values[n] = 1;
     std::vector<uint32_t> expected = values;
-    expected[n] = 0;
     std::exclusive_scan(expected.begin(), expected.begin() + std::ptrdiff_t(n) + 1, expected.begin(), 0u);
     const uint32_t counts[3] = {5, count, 6};
     Buffer buffer = make_buffer(values.data(), values.size() * sizeof(uint32_t));

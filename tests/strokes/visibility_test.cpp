@@ -135,17 +135,24 @@ WindowLines hard_paths() {
   return lines;
 }
 
-// The GPU's visibility pass alone, fed `lines` and an ID image.
-Visibility gpu_visibility(const Scene& scene, const WindowLines& lines, const ImageU32& keys) {
+// The GPU's visibility pass alone, one pass fed `before` and then `lines`, frame after frame,
+// with an ID image: what it found of `lines`.
+Visibility gpu_visibility(const Scene& scene, const WindowLines& lines, const ImageU32& keys,
+                          const std::vector<WindowLines>& before = {}) {
   gpu::GpuFrame f(scene, Preprocessed{}, {"visibility"});
   f.dump = true;
-  f.put(kWindowLines, lines);
   f.put(kIds, gpu::upload_texture(key_channels(keys), GL_RG32UI));
   const gpu::GpuPassDef* def = nullptr;
   for (const gpu::GpuPassDef& d : gpu::registered_passes())
     if (d.stages == std::vector<std::string>{"visibility"}) def = &d;
   if (!def) throw std::logic_error("no GPU pass computes visibility alone");
+  f.put(kWindowLines, lines);
   std::unique_ptr<gpu::GpuPass> pass = gpu::make_checked(*def, f);
+  for (const WindowLines& frame : before) {
+    f.put(kWindowLines, frame);
+    gpu::run_checked(*def, *pass, f);
+  }
+  f.put(kWindowLines, lines);
   gpu::run_checked(*def, *pass, f);
   return f.get(kVisibleRuns);
 }
@@ -158,9 +165,11 @@ ImageU32 face_on_the_left() {
   return keys;
 }
 
-// The GPU pass's visibility of `lines` against the reference's, fed `keys`: the same samples
-// and flags, the same runs at the same ends (both take them in double the same way).
-Visibility expect_reference_runs(const WindowLines& lines, const ImageU32& keys) {
+// The GPU pass's visibility of `lines` against the reference's, fed `keys` (after the frames
+// `before`): the same samples and flags, the same runs at the same ends (both take them in
+// double the same way).
+Visibility expect_reference_runs(const WindowLines& lines, const ImageU32& keys,
+                                 const std::vector<WindowLines>& before = {}) {
   Scene scene = testing::builtin_at("torus", lines.width, lines.height);
   auto test = [&](const std::vector<VisibilitySample>& batch) {
     std::vector<uint8_t> flags;
@@ -168,7 +177,7 @@ Visibility expect_reference_runs(const WindowLines& lines, const ImageU32& keys)
     return flags;
   };
   Visibility want = visible_runs(lines, scene.params.get<StrokesParams>(), test);
-  Visibility got = gpu_visibility(scene, lines, keys);
+  Visibility got = gpu_visibility(scene, lines, keys, before);
   EXPECT_EQ(got.samples, want.samples);
   EXPECT_EQ(got.flags, want.flags);
   EXPECT_EQ(got.runs.size(), want.runs.size());
@@ -187,6 +196,18 @@ Visibility expect_reference_runs(const WindowLines& lines, const ImageU32& keys)
 
 TEST_F(VisibilityBackends, TheGpuPassListsTheReferenceRunsOnHardPaths) {
   EXPECT_GE(expect_reference_runs(hard_paths(), face_on_the_left()).runs.size(), 9u);
+}
+
+// The pass keeps its sample buffers across frames, made anew only where a frame's bound
+// grows, and clears none: frames of other runs, then of more samples, then this one's.
+TEST_F(VisibilityBackends, TheGpuPassForgetsTheFrameBeforeItsBuffers) {
+  WindowLines more = hard_paths(), shifted = hard_paths();
+  for (int copy = 0; copy < 4; ++copy)
+    for (const WindowPath& p : hard_paths().paths) more.paths.push_back(p);
+  for (WindowPath& p : shifted.paths)
+    for (glm::dvec2& w : p.window) w.x += 7.0;  // other changes, other runs
+  const ImageU32 keys = face_on_the_left();
+  EXPECT_GE(expect_reference_runs(hard_paths(), keys, {shifted, more}).runs.size(), 9u);
 }
 
 // Nearly vertical creases along window x = 33, where the test turns: every sample within a
