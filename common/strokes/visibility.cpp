@@ -257,6 +257,17 @@ double first_round_bound(const WindowPath& p, double step, double width, double 
   return bound;
 }
 
+double length_in_margin(const WindowPath& p, double width, double height) {
+  double length = 0;
+  size_t n = p.window.size(), segments = p.closed ? n : n - 1;
+  for (size_t k = 0; k < segments; ++k) {
+    glm::dvec2 a = p.window[k], b = p.window[(k + 1) % n];
+    double t0, t1;
+    if (clip_to_window(a, b, width, height, kWindowMargin, t0, t1)) length += (t1 - t0) * glm::distance(a, b);
+  }
+  return length;
+}
+
 VisibleRun run_along(const WindowPath& p, uint32_t i, double s0, double s1, bool closed, bool occluded_start,
                      bool occluded_end) {
   VisibleRun run{i, s0, s1, closed, occluded_start, occluded_end, {}};

@@ -95,6 +95,10 @@ Visibility visible_runs(const WindowLines& lines, const StrokesParams& p, const 
 // backends size their memory by it; a line far off the window costs nothing off it.
 double first_round_bound(const WindowPath& p, double step, double width, double height);
 
+// The length of path p within the window's 4 px margin, where its samples are: its visible
+// runs lie there, so they are at most this long together.
+double length_in_margin(const WindowPath& p, double width, double height);
+
 // The run of path i (index `i` in WindowLines::paths) from s0 to s1, with its window polyline.
 VisibleRun run_along(const WindowPath& path, uint32_t i, double s0, double s1, bool closed, bool occluded_start,
                      bool occluded_end);
@@ -141,7 +145,8 @@ struct VisibilityStage {
                         {.handle = kVisibleRuns,
                          .channels = 0,
                          .texel = Texel::Host,
-                         .doc = "the visible runs of every path, ends bisected to 1 px (CPU)"}},
+                         .doc = "the visible runs of every path, ends bisected to 1 px (CPU; the GPU keeps its own, "
+                                "which a dump reads back)"}},
             .effects = {"strokes"}};
   }
 };

@@ -13,6 +13,7 @@
 #include "gpu/core/stage.hpp"
 #include "gpu/gl/context.hpp"
 #include "gpu/gl/timer.hpp"
+#include "gpu/strokes/window_paths.hpp"
 
 namespace plumbago::gpu {
 
@@ -112,7 +113,12 @@ Frame Renderer::render(const FrameOptions& options) {
     frame.lines = kept(state_->frame.data.find(kWindowLines));
     frame.visibility = kept(state_->frame.data.find(kVisibleRuns));
   }
-  frame.counts = stroke_counts(state_->frame.data.find(kWindowLines), state_->frame.data.find(kVisibleRuns));
+  const WindowLines* lines = state_->frame.data.find(kWindowLines);
+  const Visibility* runs = state_->frame.data.find(kVisibleRuns);  // a dump's
+  const RunTables* tables = state_->frame.get(maybe(kRunTables));
+  std::optional<Visibility> read;  // else read back, after the frame, from where its passes left them
+  if (!runs && tables && lines) runs = &read.emplace(read_runs(*tables, *lines));
+  frame.counts = stroke_counts(lines, runs);
   std::optional<Image> facing = state_->download(kSegmentFacing, 1), chains = state_->download(kChains, 4);
   frame.counts.merge(silhouette_counts(facing ? &*facing : nullptr, chains ? &*chains : nullptr));
   Context::get().check_errors("reading back the frame");

@@ -86,6 +86,17 @@ std::vector<float> read_table(const Texture& table, int channels, size_t records
 // A buffer of `bytes` from `data` (or uninitialized where null), of at least 16 bytes: GL
 // refuses a buffer of none, and a binding of one.
 Buffer make_buffer(const void* data, size_t bytes);
+// A buffer kept across frames and made anew only to hold more (a renderer's bounds repeat
+// from frame to frame); one made from data holds it for one use.
+struct ScratchBuffer {
+  Buffer buffer;
+  size_t bytes = 0;
+  void reserve(size_t n) {
+    if (!buffer.id() || n > bytes) buffer = make_buffer(nullptr, n), bytes = n;
+  }
+  GLuint id() const { return buffer.id(); }
+  operator const Buffer&() const { return buffer; }
+};
 // A buffer of `count` uint32 zeros, cleared on the GPU.
 Buffer make_zeroed_buffer(size_t count);
 // Reads `bytes` of a buffer from `offset` back into `out`.

@@ -30,6 +30,17 @@ RunStyleTables::RunStyleTables(const StrokeStyles& styles, const std::vector<Str
   examples_buffer_ = make_buffer(examples_.data(), examples_.size() * sizeof(ExampleRow));
   states_buffer_ = make_buffer(states_.data(), states_.size() * sizeof(StateRow));
   targets_buffer_ = make_buffer(targets_.data(), targets_.size() * sizeof(TargetRow));
+  offsets_buffer_ = make_buffer(offsets_.data(), offsets_.size() * sizeof(OffsetInput));
+}
+
+void RunStyleTables::copy_offsets(const Buffer& to) const {
+  if (offsets_.empty()) return;
+  glBindBuffer(GL_COPY_READ_BUFFER, offsets_buffer_.id());
+  glBindBuffer(GL_COPY_WRITE_BUFFER, to.id());  // not glCopyNamedBufferSubData: OSMesa has no such entry
+  glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0,
+                      GLsizeiptr(offsets_.size() * sizeof(OffsetInput)));
+  glBindBuffer(GL_COPY_READ_BUFFER, 0);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
 }
 
 void RunStyleTables::add_example(const OffsetExample& e) {
@@ -64,17 +75,17 @@ void RunStyleTables::add_line_style(LineKind kind, const StrokeStyles& styles) {
   rows_.push_back(row);
 }
 
-double RunStyleTables::sample_bound(uint32_t style, double length) const {
+double RunStyleTables::sample_bound(uint32_t style, double length, double runs) const {
   const StyleRow& row = rows_.at(style);
-  double most = gpu::sample_bound(length, row.sample_px, 0, 0);  // no example, or one made for the run
+  double most = gpu::sample_bound(length, runs, row.sample_px, 0, 0);  // no example, or one made for the run
   for (uint32_t k = row.first_example; k < row.first_example + row.example_count; ++k)
-    most = std::max(most, gpu::sample_bound(length, row.sample_px, examples_[k].length, lifts_[k]));
+    most = std::max(most, gpu::sample_bound(length, runs, row.sample_px, examples_[k].length, lifts_[k]));
   return most;
 }
 
-double RunStyleTables::synthesized_offsets(uint32_t style, double length) const {
-  const StyleRow& row = rows_.at(style);
-  return row.offsets == kSynthesizedOffsets ? std::max(length, 1.0) / row.step + 3 : 0.0;
+double RunStyleTables::synthesized_offsets(uint32_t style, double length, double runs) const {
+  const StyleRow& row = rows_.at(style);  // per run: max(l, 1) / step + 3 at most, max(l, 1) <= l + 1
+  return row.offsets == kSynthesizedOffsets ? (length + runs) / row.step + 3 * runs : 0.0;
 }
 
 void RunStyleTables::bind() const {

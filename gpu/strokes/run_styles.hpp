@@ -85,14 +85,15 @@ class RunStyleTables {
   RunStyleTables(const StrokeStyles& styles, const std::vector<StrokeStyle>& decal_styles);
 
   size_t decal_count() const { return decal_count_; }
-  // The examples' own offsets, which the frame's offsets buffer starts with.
+  // The examples' own offsets, which the frame's offsets buffer starts with: how many, and
+  // copied there on the GPU.
   uint32_t own_offsets() const { return uint32_t(offsets_.size()); }
-  const std::vector<OffsetInput>& offsets() const { return offsets_; }
-  // At least the samples of a run `length` px long in style `style` (its examples' pen lifts
-  // included), and the offsets it makes itself (a synthesized example's; a decal's are
-  // bounded by its path's points).
-  double sample_bound(uint32_t style, double length) const;
-  double synthesized_offsets(uint32_t style, double length) const;
+  void copy_offsets(const Buffer& to) const;
+  // At least the samples of `runs` runs `length` px long together in style `style` (its
+  // examples' pen lifts included), and the offsets they make themselves (a synthesized
+  // example's; a decal's are bounded by its path's points).
+  double sample_bound(uint32_t style, double length, double runs) const;
+  double synthesized_offsets(uint32_t style, double length, double runs) const;
   bool decal(uint32_t style) const { return rows_.at(style).offsets == kDecalPressure; }
   // The tables to SSBO bindings 3-6 of run_inputs.comp.
   void bind() const;
@@ -108,7 +109,7 @@ class RunStyleTables {
   std::vector<StateRow> states_;
   std::vector<TargetRow> targets_;
   std::vector<OffsetInput> offsets_;
-  Buffer styles_buffer_, examples_buffer_, states_buffer_, targets_buffer_;
+  Buffer styles_buffer_, examples_buffer_, states_buffer_, targets_buffer_, offsets_buffer_;
 };
 
 }  // namespace plumbago::gpu

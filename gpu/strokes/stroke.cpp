@@ -29,13 +29,12 @@ class StrokePass : public GpuPass {
 
   void run(GpuFrame& f) override {
     const WindowLines& lines = f.get(kWindowLines);
-    const Visibility& visibility = f.get(kVisibleRuns);
     const RunTables* tables = f.get(maybe(kRunTables));
     std::optional<UploadedRuns> uploaded;  // where visibility ran elsewhere
-    if (!tables) tables = &uploaded.emplace(lines, visibility).tables();
+    if (!tables) tables = &uploaded.emplace(lines, f.get(kVisibleRuns)).tables();
     if (!styles_ || styles_->decal_count() != lines.decal_styles.size())
       styles_.emplace(f.scene.strokes, lines.decal_styles);  // the scene's: made once
-    samples_(lines, visibility, *tables, *styles_, f.scene.seed);
+    samples_(lines, *tables, *styles_, f.scene.seed);
     Texture& target = f.put(kStrokeColor);
     if (drawn_over(find_output(kStrokeColor.name), f.stages).empty()) copy_page(f.get(kPage), target);
     if (!samples_.draw()) return;

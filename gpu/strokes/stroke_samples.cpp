@@ -52,31 +52,32 @@ struct StrokeSamples::Inputs {
       runs_in.back().first_point = uint32_t(points.size()), runs_in.back().point_count = uint32_t(r.run.points.size());
       points.insert(points.end(), r.run.points.begin(), r.run.points.end());
     }
-    point_bound = double(points.size()), this->runs = runs.size();
+    point_bound = double(points.size()), this->runs = runs.size(), offset_rows = offsets.size();
   }
-  // The polyline of a run along path p has at most its points and the two ends, and the runs
-  // of a path do not overlap: each path point lies in one at most; so has a decal's pressure
-  // example.
-  Inputs(const WindowLines& lines, const Visibility& visibility, const RunStyleTables& styles)
-      : offsets(styles.offsets()), runs(visibility.runs.size()) {
-    std::vector<bool> has_run(lines.paths.size(), false);
-    double made = 0;  // offsets the runs make
-    for (const VisibleRun& r : visibility.runs) {
-      const WindowPath& path = lines.paths.at(r.path);
+  // From the paths alone, the most runs each may have and their most length together (a
+  // path's runs do not overlap); each path point lies in one run at most, to which a run's
+  // polyline adds its two ends, as does a decal's pressure example.
+  Inputs(const WindowLines& lines, const RunTables& tables, const RunStyleTables& styles)
+      : offset_rows(styles.own_offsets()) {
+    double made = 0, rows = 0;  // offsets the runs make; most runs
+    for (size_t i = 0; i < lines.paths.size(); ++i) {
+      const double r = tables.path_runs.at(i);
+      if (r == 0) continue;
+      rows += r;
+      const WindowPath& path = lines.paths[i];
       const uint32_t style = PathTable::style_of(path);
-      const double length = r.closed ? path.length_px : r.s1 - r.s0,
-                   points = has_run[r.path] ? 2.0 : 2.0 + double(path.window.size());
-      bound += styles.sample_bound(style, length);
+      const double points = double(path.window.size()) + 2 * r, length = tables.path_lengths.at(i);
+      bound += styles.sample_bound(style, length, r);
       point_bound += points;
-      made += styles.decal(style) ? points : styles.synthesized_offsets(style, length);
-      has_run[r.path] = true;
+      made += styles.decal(style) ? points : styles.synthesized_offsets(style, length, r);
     }
-    offsets.resize(offsets.size() + size_t(made));
+    offset_rows += size_t(made);  // the examples' own copied on the GPU, the rest made there
+    runs = std::min(size_t(tables.bound), size_t(std::ceil(rows)));
   }
-  std::vector<RunInput> runs_in;   // given
-  std::vector<glm::dvec2> points;  // given
-  std::vector<OffsetInput> offsets;
-  size_t runs = 0;
+  std::vector<RunInput> runs_in;     // given
+  std::vector<glm::dvec2> points;    // given
+  std::vector<OffsetInput> offsets;  // given
+  size_t runs = 0, offset_rows = 0;
   double bound = 0, point_bound = 0;
 
  private:
@@ -90,7 +91,8 @@ struct StrokeSamples::Inputs {
     runs_in.push_back(in);
     if (example)
       for (const StrokeOffset& o : example->offsets) offsets.push_back(offset_input(o));
-    bound += sample_bound(length, s.sample_px, example ? example->length_px : 0.0, example ? pen_lifts(*example) : 0.0);
+    bound +=
+        sample_bound(length, 1, s.sample_px, example ? example->length_px : 0.0, example ? pen_lifts(*example) : 0.0);
   }
 };
 
@@ -121,23 +123,24 @@ double pen_lifts(const OffsetExample& e) {
   return double(std::count_if(e.offsets.begin(), e.offsets.end(), [](const StrokeOffset& o) { return o.pen_up; }));
 }
 
-double sample_bound(double polyline_length, double sample_px, double example_length, double lifts) {
+double sample_bound(double polyline_length, double runs, double sample_px, double example_length, double lifts) {
   // |v_i| <= 1 gives tangents of at most the chord d (3 d at an open end's parabolic slope), so
   // each span's control polygon, which its curve and the dense polyline do not exceed, is at
   // most d + 2 (|m0| + |m1|) / 3 <= 11 d / 3; a little more for rounding.
-  double length = polyline_length * (11.0 / 3.0) * (1 + 1e-9) + 1e-6;
-  double even = std::floor(length / sample_px) + 3;  // n + 1 samples, n = ceil(L / sample_px)
+  double length = polyline_length * (11.0 / 3.0) * (1 + 1e-9) + 1e-6 * runs;
+  double even = std::floor(length / sample_px) + 3 * runs;  // n + 1 samples a run, n = ceil(L / sample_px)
   if (lifts == 0) return even;
-  return even + 2 * lifts * (std::floor(length / example_length) + 2);  // two changes a lift a period
+  return even + 2 * lifts * (std::floor(length / example_length) + 2 * runs);  // two changes a lift a period
 }
 
 double sample_bound(const StyledRun& r) {
   const auto& e = r.style.offsets;
-  return sample_bound(polyline_length(r.run), r.style.sample_px, e ? e->length_px : 0.0, e ? pen_lifts(*e) : 0.0);
+  return sample_bound(polyline_length(r.run), 1, r.style.sample_px, e ? e->length_px : 0.0, e ? pen_lifts(*e) : 0.0);
 }
 
 StrokeSamples::StrokeSamples()
-    : inputs_count_(step("run_inputs", "STEP_COUNT")),
+    : inputs_args_(step("run_inputs", "STEP_ARGS")),
+      inputs_count_(step("run_inputs", "STEP_COUNT")),
       inputs_write_(step("run_inputs", "STEP_WRITE")),
       count_(step("stroke_samples", "STEP_COUNT")),
       write_(step("stroke_samples", "STEP_WRITE")),
@@ -145,15 +148,14 @@ StrokeSamples::StrokeSamples()
 
 void StrokeSamples::operator()(const std::vector<StyledRun>& runs) { run(Inputs(runs), nullptr, nullptr); }
 
-void StrokeSamples::operator()(const WindowLines& lines, const Visibility& visibility, const RunTables& tables,
-                               const RunStyleTables& styles, uint32_t seed) {
-  if (tables.count != visibility.runs.size())
-    throw std::logic_error("stroke samples: the GPU lists " + std::to_string(tables.count) + " runs, not " +
-                           std::to_string(visibility.runs.size()));
-  glProgramUniform1ui(inputs_write_.id(), inputs_write_.uniform("seed"), seed);
-  glProgramUniform1ui(inputs_write_.id(), inputs_write_.uniform("own_offsets"), styles.own_offsets());
-  glProgramUniform1ui(inputs_count_.id(), inputs_count_.uniform("seed"), seed);
-  run(Inputs(lines, visibility, styles), &tables, &styles);
+void StrokeSamples::operator()(const WindowLines& lines, const RunTables& tables, const RunStyleTables& styles,
+                               uint32_t seed) {
+  for (const Program* p : {&inputs_args_, &inputs_count_, &inputs_write_}) {
+    glProgramUniform1ui(p->id(), p->uniform("seed"), seed);
+    glProgramUniform1ui(p->id(), p->uniform("own_offsets"), styles.own_offsets());
+    glProgramUniform1ui(p->id(), p->uniform("listed_at"), tables.listed.at);
+  }
+  run(Inputs(lines, tables, styles), &tables, &styles);
 }
 
 void StrokeSamples::run(const Inputs& in, const RunTables* tables, const RunStyleTables* styles) {
@@ -162,32 +164,36 @@ void StrokeSamples::run(const Inputs& in, const RunTables* tables, const RunStyl
   check_memory(runs_, in.bound, in.point_bound);
   capacity_ = uint32_t(std::max(in.bound, 1.0));
   const auto points = size_t(in.point_bound);
-  runs_in_ = make_buffer(tables ? nullptr : in.runs_in.data(), runs_ * sizeof(RunInput));
-  points_ = make_buffer(tables ? nullptr : in.points.data(), points * sizeof(glm::dvec2));
-  offsets_ = make_buffer(in.offsets.data(), in.offsets.size() * sizeof(OffsetInput));
-  counts_ = make_zeroed_buffer(runs_ + 1);
-  distinct_ = make_buffer(nullptr, points * sizeof(glm::dvec2));
-  states_ = make_buffer(nullptr, runs_ * sizeof(RunState));
-  bases_ = make_buffer(nullptr, size_t(capacity_) * sizeof(BaseRecord));
-  samples_ = make_buffer(nullptr, size_t(capacity_) * sizeof(SampleRecord));
-  runs_out_ = make_buffer(nullptr, runs_ * sizeof(RunRecord));
-  draw_ = make_buffer(nullptr, 4 * sizeof(uint32_t));
-  for (const Program* p : {&inputs_count_, &inputs_write_, &count_, &write_, &args_}) {
+  if (tables) {  // made on the GPU
+    runs_in_.reserve(runs_ * sizeof(RunInput)), points_.reserve(points * sizeof(glm::dvec2));
+    offsets_.reserve(in.offset_rows * sizeof(OffsetInput));
+  } else {
+    runs_in_ = {make_buffer(in.runs_in.data(), runs_ * sizeof(RunInput)), 0};
+    points_ = {make_buffer(in.points.data(), points * sizeof(glm::dvec2)), 0};
+    offsets_ = {make_buffer(in.offsets.data(), in.offset_rows * sizeof(OffsetInput)), 0};
+  }
+  counts_.reserve((size_t(runs_) + 1) * sizeof(uint32_t));
+  distinct_.reserve(points * sizeof(glm::dvec2)), states_.reserve(runs_ * sizeof(RunState));
+  bases_.reserve(size_t(capacity_) * sizeof(BaseRecord)), samples_.reserve(size_t(capacity_) * sizeof(SampleRecord));
+  runs_out_.reserve(runs_ * sizeof(RunRecord)), draw_.reserve(4 * sizeof(uint32_t));
+  const uint32_t given[4] = {std::clamp((runs_ + 63) / 64, 1u, 65535u), 1, 1, runs_};  // the GPU's: run_inputs.comp
+  run_args_ = make_buffer(tables ? nullptr : given, sizeof given);
+  for (const Program* p : {&inputs_args_, &inputs_count_, &inputs_write_, &count_, &write_, &args_}) {
     glProgramUniform1ui(p->id(), p->uniform("run_count"), runs_);
     glProgramUniform1ui(p->id(), p->uniform("capacity"), capacity_);
   }
   auto bind_all = [&] {
-    const Buffer* at[] = {&samples_, &runs_out_, &runs_in_, &points_, &offsets_,
-                          &counts_,  &distinct_, &states_,  &draw_,   &bases_};
-    for (GLuint k = 0; k < 10; ++k) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k, at[k]->id());
+    const Buffer* at[] = {&samples_.buffer, &runs_out_.buffer, &runs_in_.buffer,  &points_.buffer,
+                          &offsets_.buffer, &counts_.buffer,   &distinct_.buffer, &states_.buffer,
+                          &draw_.buffer,    &bases_.buffer,    &run_args_};
+    for (GLuint k = 0; k < 11; ++k) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k, at[k]->id());
   };
   if (tables) make_inputs(*tables, *styles);
   bind_all();
-  dispatch_in_chunks(count_, runs_, "first");
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  scan_(counts_, size_t(runs_) + 1);
+  over_runs(count_);
+  scan_(counts_, size_t(runs_) + 1, run_args_, 3, 1);  // over the runs listed
   bind_all();
-  dispatch_in_chunks(write_, runs_, "first");
+  over_runs(write_);
   glUseProgram(args_.id());
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -196,21 +202,34 @@ void StrokeSamples::run(const Inputs& in, const RunTables* tables, const RunStyl
 // 0. Each run's polyline and style (run_inputs.comp): its points and the offsets it makes
 // counted, placed by prefix sums, written into points_, offsets_ and runs_in_.
 void StrokeSamples::make_inputs(const RunTables& tables, const RunStyleTables& styles) {
-  Buffer point_counts = make_zeroed_buffer(size_t(runs_) + 1), offset_counts = make_zeroed_buffer(size_t(runs_) + 1);
+  styles.copy_offsets(offsets_);
+  point_counts_.reserve((size_t(runs_) + 1) * sizeof(uint32_t));
+  offset_counts_.reserve((size_t(runs_) + 1) * sizeof(uint32_t));
   auto bind_all = [&] {
     const Buffer* at[] = {tables.paths, tables.points, tables.runs};
     for (GLuint k = 0; k < 3; ++k) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k, at[k]->id());
     styles.bind();
-    const Buffer* out[] = {&point_counts, &offset_counts, &runs_in_, &points_, &offsets_};
-    for (GLuint k = 0; k < 5; ++k) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7 + k, out[k]->id());
+    const Buffer* out[] = {&point_counts_.buffer, &offset_counts_.buffer, &runs_in_.buffer, &points_.buffer,
+                           &offsets_.buffer,      tables.listed.buffer,   &run_args_};
+    for (GLuint k = 0; k < 7; ++k) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7 + k, out[k]->id());
   };
   bind_all();
-  dispatch_in_chunks(inputs_count_, runs_, "first");
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  scan_(point_counts, size_t(runs_) + 1);
-  scan_(offset_counts, size_t(runs_) + 1);
+  glUseProgram(inputs_args_.id());
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  over_runs(inputs_count_);
+  scan_(point_counts_, size_t(runs_) + 1, run_args_, 3, 1);
+  scan_(offset_counts_, size_t(runs_) + 1, run_args_, 3, 1);
   bind_all();
-  dispatch_in_chunks(inputs_write_, runs_, "first");
+  over_runs(inputs_write_);
+}
+
+// A step over the runs listed, dispatched as run_args_ says.
+void StrokeSamples::over_runs(const Program& step) const {
+  glUseProgram(step.id());
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, run_args_.id());
+  glDispatchComputeIndirect(0);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 

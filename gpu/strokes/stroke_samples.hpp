@@ -6,8 +6,9 @@
 // style tables (gpu/strokes/run_styles.hpp); tests may give the polylines and styles instead.
 // The GPU then keeps each run's distinct points, counts its samples, places them by a prefix
 // sum and writes them, with each run's record, where shaders/strokes/common_ribbon.glsl reads
-// them, and the indirect draw of their ribbons. Nothing is read back; the CPU sizes the
-// buffers from the runs' ends.
+// them, and the indirect draw of their ribbons. Every step goes over the runs the GPU
+// listed, by indirect dispatches and prefix sums over their count: nothing is read back, and
+// the CPU sizes the buffers from the paths alone (gpu/strokes/window_paths.hpp RunTables).
 #pragma once
 
 #include <cstdint>
@@ -22,11 +23,11 @@
 
 namespace plumbago::gpu {
 
-// At least the samples base_stroke_samples makes of a run whose polyline is `length` px long,
-// resampled every `sample_px`, stamped with an example `example_length` px long with `lifts`
-// pen lifts (its spline is at most 11/3 as long: each span's Bézier control polygon is, as
-// |v_i| <= 1), pen changes included; and of a run in its style.
-double sample_bound(double length, double sample_px, double example_length, double lifts);
+// At least the samples base_stroke_samples makes of `runs` runs whose polylines are `length`
+// px long together, resampled every `sample_px`, stamped with an example `example_length` px
+// long with `lifts` pen lifts (a spline is at most 11/3 as long as its polyline: each span's
+// Bézier control polygon is, as |v_i| <= 1), pen changes included; and of a run in its style.
+double sample_bound(double length, double runs, double sample_px, double example_length, double lifts);
 double sample_bound(const StyledRun& r);
 double pen_lifts(const OffsetExample& e);
 
@@ -36,15 +37,16 @@ class StrokeSamples {
   // Computes the samples of `runs`, through their polylines; the buffers hold them until the
   // next call.
   void operator()(const std::vector<StyledRun>& runs);
-  // The same of the runs of `visibility` over `lines`, as `tables` holds them on the GPU:
-  // their polylines and styles made on the GPU (`styles`; `seed`, the scene's).
-  void operator()(const WindowLines& lines, const Visibility& visibility, const RunTables& tables,
-                  const RunStyleTables& styles, uint32_t seed);
+  // The same of the runs over `lines` that `tables` holds on the GPU, however many it lists:
+  // their polylines and styles made on the GPU (`styles`; `seed`, the scene's), the buffers
+  // sized from the paths.
+  void operator()(const WindowLines& lines, const RunTables& tables, const RunStyleTables& styles, uint32_t seed);
   // The samples and runs to SSBO bindings 0 and 1, as common_ribbon.glsl reads them.
   void bind() const;
   // The ribbons' draw (DrawArraysIndirectCommand, GL_TRIANGLES); none without runs.
-  const Buffer* draw() const { return runs_ == 0 ? nullptr : &draw_; }
-  // Read back, for tests: every sample slot (a run's from its record's `first`), every run's record.
+  const Buffer* draw() const { return runs_ == 0 ? nullptr : &draw_.buffer; }
+  // Read back, for tests: every sample slot (a run's from its record's `first`), every run
+  // row's record (the runs listed first; the rows the bound adds after them are not written).
   std::vector<SampleRecord> samples() const;
   std::vector<RunRecord> runs() const;
 
@@ -52,10 +54,15 @@ class StrokeSamples {
   struct Inputs;
   void run(const Inputs& in, const RunTables* tables, const RunStyleTables* styles);
   void make_inputs(const RunTables& tables, const RunStyleTables& styles);
+  void over_runs(const Program& step) const;
 
-  Program inputs_count_, inputs_write_, count_, write_, args_;
+  Program inputs_args_, inputs_count_, inputs_write_, count_, write_, args_;
   ExclusiveScan scan_;
-  Buffer runs_in_, points_, offsets_, counts_, distinct_, states_, bases_, samples_, runs_out_, draw_;
+  // Kept across frames: the steps write every row of the runs listed, and the prefix sums
+  // read only the rows before each.
+  ScratchBuffer runs_in_, points_, offsets_, distinct_, states_, bases_, samples_, runs_out_, draw_;
+  ScratchBuffer counts_, point_counts_, offset_counts_;
+  Buffer run_args_;
   uint32_t runs_ = 0, capacity_ = 0;
 };
 

@@ -5,14 +5,16 @@
 // test them against the ID image, bisect each change to 1 px in one invocation and list the
 // runs, placing everything by prefix sums. The buffers hold a bound on the samples the CPU
 // takes from the paths, kept across frames; the steps over samples, and the prefix sums
-// over their marks, go over the samples the GPU took, so the count stays on the GPU. Read
-// back at the end: the totals and the runs' ends (Kalnins et al. read the whole ID image
-// back every frame).
+// over their marks, go over the samples the GPU took, so the count stays on the GPU, and so
+// do the runs, for the stroke pass (gpu/strokes/window_paths.hpp): a frame reads nothing
+// back (Kalnins et al. read the whole ID image back every frame); a dump reads the runs and
+// flags.
 #include "gpu/strokes/visibility.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 
@@ -56,18 +58,11 @@ struct TestedRow {
 };
 static_assert(sizeof(TestedRow) == 24);
 
-// At least the first round's samples of `lines` (first_round_bound).
-double first_round_samples(const WindowLines& lines, double step) {
-  double bound = 0;
-  for (const WindowPath& p : lines.paths) bound += first_round_bound(p, step, lines.width, lines.height);
-  return bound;
-}
-
-uint32_t read_uint(const Buffer& b, size_t at) {
-  uint32_t v = 0;
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  read_buffer(b, &v, sizeof v, at * sizeof(uint32_t));
-  return v;
+// At least the first round's samples of each path of `lines` (first_round_bound).
+std::vector<double> first_round_samples(const WindowLines& lines, double step) {
+  std::vector<double> bounds;
+  for (const WindowPath& p : lines.paths) bounds.push_back(first_round_bound(p, step, lines.width, lines.height));
+  return bounds;
 }
 
 class VisibilityPass : public GpuPass {
@@ -81,16 +76,19 @@ class VisibilityPass : public GpuPass {
         marks_(step("STEP_MARKS")),
         list_runs_(step("STEP_RUNS")) {}
 
+  // The runs stay on the GPU (kRunTables) for the stroke pass; only a dump reads them back.
   void run(GpuFrame& f) override {
     const WindowLines& lines = f.get(kWindowLines);
-    Visibility v;
     tables_ = {};
-    if (!lines.paths.empty()) v = visibility(f, lines);
+    if (!lines.paths.empty()) list_runs(f, lines);
     f.put(kRunTables, tables_);
-    if (f.dump) {
-      auto [paths, ends] = run_tables(v.runs);
-      dumped_ = {{kFlags.name, flags_image(v.flags)}, {kRunPaths.name, paths}, {kRunEnds.name, ends}};
-    }
+    if (!f.dump) return;
+    Visibility v = read_runs(tables_, lines);
+    std::vector<TestedRow> tested(tables_.runs ? v.samples : 0);
+    if (!tested.empty()) read_buffer(tested_, tested.data(), tested.size() * sizeof(TestedRow));
+    for (const TestedRow& row : tested) v.flags.push_back(row.flags & 1u);
+    auto [paths, ends] = run_tables(v.runs);
+    dumped_ = {{kFlags.name, flags_image(v.flags)}, {kRunPaths.name, paths}, {kRunEnds.name, ends}};
     f.put(kVisibleRuns, std::move(v));
   }
 
@@ -99,18 +97,20 @@ class VisibilityPass : public GpuPass {
   }
 
  private:
-  Visibility visibility(GpuFrame& f, const WindowLines& lines) {
+  void list_runs(GpuFrame& f, const WindowLines& lines) {
     const auto p = f.params<StrokesParams>();
     const UploadedPaths* table = f.get(maybe(kPathTable));  // the ID image's, or (parity) one of its own
     if (!table) table = &own_.emplace(lines);
-    const double bound = first_round_samples(lines, p.vis_step_px);
+    std::vector<double> path_samples = first_round_samples(lines, p.vis_step_px);
+    const double bound = std::accumulate(path_samples.begin(), path_samples.end(), 0.0);
     check_memory(lines, p.vis_step_px, bound);
     const auto capacity = uint32_t(bound);
     const size_t n = std::max<size_t>(capacity, 1), args = size_t(table->entries) + 1;
-    Buffer entries = make_zeroed_buffer(args + 6);  // the counts, their total, then two dispatches' groups
+    // The counts, their total, two dispatches' groups, then the runs listed.
+    entries_ = make_zeroed_buffer(args + 7);
     reserve(n);
     set_uniforms(f, lines, *table, capacity);
-    const std::initializer_list<const Buffer*> all = {&table->paths,  &table->points, &entries,  &tested_,
+    const std::initializer_list<const Buffer*> all = {&table->paths,  &table->points, &entries_, &tested_,
                                                       &change_marks_, &run_marks_,    &changes_, &run_rows_};
     bind(all);
     bind_textures(samples_, {{"ids", &f.get(kIds)}});
@@ -119,25 +119,30 @@ class VisibilityPass : public GpuPass {
     barrier();
     dispatch_in_chunks(ends_, table->count, "first");
     barrier();
-    scan_(entries, args);
+    scan_(entries_, args);
     bind(all);
     dispatch_in_chunks(samples_, table->entries, "first");
     glUseProgram(args_.id());
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries.id());
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries_.id());
     over_samples(changes_step_, args);
-    scan_(change_marks_, n + 1, entries, args - 1, 1);  // over the samples the GPU took
+    scan_(change_marks_, n + 1, entries_, args - 1, 1);  // over the samples the GPU took
     bind(all);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries.id());
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries_.id());
     over_samples(marks_, args);
-    scan_(run_marks_, 2 * n + 1, entries, args - 1, 2);
+    scan_(run_marks_, 2 * n + 1, entries_, args - 1, 2);
     bind(all);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries.id());
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries_.id());
     over_samples(list_runs_, args + 3);
-    Visibility v = read_runs(f, lines, {entries, args - 1}, run_marks_, run_rows_, tested_, capacity);
-    tables_ = {&table->paths, &table->points, &run_rows_, uint32_t(v.runs.size())};
-    return v;
+    tables_.paths = &table->paths, tables_.points = &table->points, tables_.runs = &run_rows_;
+    tables_.listed = {&entries_, uint32_t(args + 6)}, tables_.samples = {&entries_, uint32_t(args - 1)};
+    tables_.bound = uint32_t(2 * n);
+    for (size_t i = 0; i < lines.paths.size(); ++i) {  // window_paths.hpp RunTables
+      tables_.path_runs.push_back(std::floor(path_samples[i] / 2) + 1);
+      tables_.path_lengths.push_back(length_in_margin(lines.paths[i], lines.width, lines.height) +
+                                     tables_.path_runs.back());
+    }
   }
 
   // A step over the samples (or their run slots), with the groups the GPU wrote at uint `at`.
@@ -145,33 +150,6 @@ class VisibilityPass : public GpuPass {
     glUseProgram(p.id());
     glDispatchComputeIndirect(GLintptr(at * sizeof(uint32_t)));
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  }
-
-  struct Total {
-    const Buffer& buffer;
-    size_t at;
-  };
-
-  // One readback after the frame's visibility work: the totals, then the runs (and, for a
-  // dump, the flags).
-  Visibility read_runs(const GpuFrame& f, const WindowLines& lines, Total samples, const Buffer& run_marks,
-                       const Buffer& runs, const Buffer& tested, uint32_t capacity) {
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    Visibility v;
-    v.samples = read_uint(samples.buffer, samples.at);
-    if (v.samples > capacity)
-      throw std::logic_error("visibility: " + std::to_string(v.samples) + " samples over the bound of " +
-                             std::to_string(capacity));
-    std::vector<RunRow> rows(read_uint(run_marks, 2 * size_t(v.samples)));  // the run slots' total
-    read_buffer(runs, rows.data(), rows.size() * sizeof(RunRow));
-    for (const RunRow& r : rows)
-      v.runs.push_back(run_from_row(lines.paths[r.path], r.path, r.s0, r.s1, r.flags, false));
-    if (f.dump) {
-      std::vector<TestedRow> t(v.samples);
-      read_buffer(tested, t.data(), t.size() * sizeof(TestedRow));
-      for (const TestedRow& row : t) v.flags.push_back(row.flags & 1u);
-    }
-    return v;
   }
 
   void set_uniforms(GpuFrame& f, const WindowLines& lines, const UploadedPaths& table, uint32_t capacity) {
@@ -222,7 +200,8 @@ class VisibilityPass : public GpuPass {
   std::optional<UploadedPaths> own_;  // where no ID image pass made the table (parity)
   size_t held_ = 0;                   // samples the buffers below hold
   Buffer tested_, changes_, change_marks_, run_marks_;
-  Buffer run_rows_;  // what the stroke pass reads (kRunTables), kept until the next frame
+  // What the stroke pass reads (kRunTables) and a dump reads back, kept until the next frame.
+  Buffer run_rows_, entries_;
   RunTables tables_;
   ExclusiveScan scan_;
   std::map<std::string, Image> dumped_;

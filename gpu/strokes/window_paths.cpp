@@ -2,6 +2,7 @@
 #include "gpu/strokes/window_paths.hpp"
 
 #include <stdexcept>
+#include <string>
 
 namespace plumbago::gpu {
 
@@ -36,6 +37,26 @@ PathTable::PathTable(const WindowLines& lines) {
   }
 }
 
+uint32_t GpuCount::read() const {
+  uint32_t v = 0;
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  read_buffer(*buffer, &v, sizeof v, size_t(at) * sizeof(uint32_t));
+  return v;
+}
+
+Visibility read_runs(const RunTables& tables, const WindowLines& lines) {
+  Visibility v;
+  if (!tables.runs) return v;
+  v.samples = tables.samples.read();
+  std::vector<RunRow> rows(tables.listed.read());
+  if (rows.size() > tables.bound)
+    throw std::logic_error("visibility: " + std::to_string(rows.size()) + " runs over the bound of " +
+                           std::to_string(tables.bound));
+  if (!rows.empty()) read_buffer(*tables.runs, rows.data(), rows.size() * sizeof(RunRow));
+  for (const RunRow& r : rows) v.runs.push_back(run_from_row(lines.paths[r.path], r.path, r.s0, r.s1, r.flags, false));
+  return v;
+}
+
 UploadedPaths::UploadedPaths(const WindowLines& lines) {
   PathTable table(lines);
   paths = make_buffer(table.paths.data(), table.paths.size() * sizeof(PathRow));
@@ -45,11 +66,19 @@ UploadedPaths::UploadedPaths(const WindowLines& lines) {
 
 UploadedRuns::UploadedRuns(const WindowLines& lines, const Visibility& visibility) : paths_(lines) {
   std::vector<RunRow> rows;
-  for (const VisibleRun& r : visibility.runs)
+  tables_.path_runs.assign(lines.paths.size(), 0.0);
+  tables_.path_lengths.assign(lines.paths.size(), 0.0);
+  for (const VisibleRun& r : visibility.runs) {
     rows.push_back(
         {r.path, uint32_t(r.closed) | uint32_t(r.occluded_start) << 1 | uint32_t(r.occluded_end) << 2, r.s0, r.s1});
+    tables_.path_runs.at(r.path) += 1;
+    tables_.path_lengths.at(r.path) += r.closed ? lines.paths[r.path].length_px : r.s1 - r.s0;
+  }
+  const uint32_t counts[2] = {uint32_t(rows.size()), uint32_t(visibility.samples)};
   runs_ = make_buffer(rows.data(), rows.size() * sizeof(RunRow));
-  tables_ = {&paths_.paths, &paths_.points, &runs_, uint32_t(rows.size())};
+  counts_ = make_buffer(counts, sizeof counts);
+  tables_.paths = &paths_.paths, tables_.points = &paths_.points, tables_.runs = &runs_;
+  tables_.listed = {&counts_, 0}, tables_.samples = {&counts_, 1}, tables_.bound = counts[0];
 }
 
 }  // namespace plumbago::gpu

@@ -56,12 +56,31 @@ struct UploadedPaths {
 };
 inline constexpr Shared<UploadedPaths> kPathTable{"id_image.path_table"};
 
-// The runs of a frame on the GPU: the paths' rows and points, and `count` run rows.
+// A GPU count: the uint at `at` of `buffer`.
+struct GpuCount {
+  const Buffer* buffer = nullptr;
+  uint32_t at = 0;
+  uint32_t read() const;
+};
+
+// The runs of a frame on the GPU: the paths' rows and points, the run rows, how many are
+// listed and how many first-round visibility samples found them, both on the GPU. What the
+// CPU knows: the most runs the rows hold, and per path the most runs it may have (from its
+// first-round samples' bound S: a run holds a visible sample and a hidden one parts two
+// runs, so ceil(S / 2) at most) and their most length together (its length within the
+// window's margin, common/strokes/visibility.hpp length_in_margin, and 1 px a run).
 struct RunTables {
   const Buffer *paths = nullptr, *points = nullptr, *runs = nullptr;
-  uint32_t count = 0;
+  GpuCount listed, samples;
+  uint32_t bound = 0;
+  std::vector<double> path_runs, path_lengths;  // per path: most runs, and their most length together
 };
 inline constexpr Shared<RunTables> kRunTables{"visibility.run_tables"};
+
+// The runs read back (a frame never does: for dumps, a frame's counts and tests), as
+// run_from_row makes them, without their polylines; `samples` as listed. Throws
+// std::logic_error where the GPU counted more than the rows hold.
+Visibility read_runs(const RunTables& tables, const WindowLines& lines);
 
 // The runs of `visibility` over `lines`, put up as the visibility pass leaves them.
 class UploadedRuns {
@@ -71,7 +90,7 @@ class UploadedRuns {
 
  private:
   UploadedPaths paths_;
-  Buffer runs_;
+  Buffer runs_, counts_;
   RunTables tables_;
 };
 

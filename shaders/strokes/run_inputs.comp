@@ -4,9 +4,12 @@
 // steps left on the GPU (gpu/strokes/window_paths.hpp) and the scene's styles, examples and
 // Markov chains, put up once (gpu/strokes/run_styles.hpp). What it computes is
 // common/strokes/visibility.cpp run_along and common/strokes/stroke.cpp RunStyles::of.
+//   STEP_ARGS:  one invocation: the dispatch over the runs listed, and their count;
 //   STEP_COUNT: per run, its polyline's points and the offsets it makes (a synthesized
 //               example's, a decal's pressure), into two tables prefix-summed after it;
 //   STEP_WRITE: per run, its points, its offsets after the examples' own, and its RunIn.
+// The rows past the runs listed are neither visited nor read: the prefix sums go over the
+// runs listed (gpu/gl/scan.hpp).
 layout(local_size_x = 64) in;
 
 #include "strokes/stroke_runs.glsl"
@@ -45,14 +48,17 @@ layout(std430, binding = 3) readonly buffer Styles { Style styles[]; };
 layout(std430, binding = 4) readonly buffer Examples { Example examples[]; };
 layout(std430, binding = 5) readonly buffer States { State states[]; };
 layout(std430, binding = 6) readonly buffer Targets { Target targets[]; };
-// Per run, then (scanned) its first: points and offsets; the totals at [run_count].
+// Per run listed, then (scanned) its first: points and offsets; the totals after them.
 layout(std430, binding = 7) buffer PointCounts { uint point_counts[]; };
 layout(std430, binding = 8) buffer OffsetCounts { uint offset_counts[]; };
 layout(std430, binding = 9) writeonly buffer RunsIn { RunIn runs_in[]; };
 layout(std430, binding = 10) writeonly buffer Points { dvec2 points[]; };
 layout(std430, binding = 11) writeonly buffer Offsets { Offset offsets[]; };  // after the examples' own
+layout(std430, binding = 12) readonly buffer Listed { uint listed[]; };        // the runs listed, at listed_at
+layout(std430, binding = 13) buffer RunArgs { uint run_args[4]; };  // (groups, 1, 1) over the runs, their count
 
-uniform uint run_count, first, seed;
+uniform uint run_count, seed;  // run_count: the rows' bound
+uniform uint listed_at;
 uniform uint own_offsets;  // the examples' offsets, at the start of offsets[]
 
 // common/util/random.hpp hash32, stream_key and CounterStream.
@@ -226,9 +232,13 @@ RunIn run_input(Style st, Run r, Path p, uint run, uint points_at, uint point_co
 }
 #endif
 
+#if defined(STEP_ARGS)
 void main() {
-  uint run = gl_GlobalInvocationID.x + first;
-  if (run >= run_count) return;
+  uint n = min(listed[listed_at], run_count);
+  run_args = uint[4](clamp((n + 63u) / 64u, 1u, 65535u), 1u, 1u, n);
+}
+#else
+void at_run(uint run) {
   Run r = run_rows[run];
   Path p = paths[r.path];
   Style st = styles[p.style];
@@ -241,3 +251,9 @@ void main() {
   runs_in[run] = run_input(st, r, p, run, point_counts[run], n);
 #endif
 }
+
+// Each invocation every (groups x 64)th run listed.
+void main() {
+  for (uint run = gl_GlobalInvocationID.x; run < run_args[3]; run += gl_NumWorkGroups.x * 64u) at_run(run);
+}
+#endif

@@ -7,11 +7,12 @@
 layout(local_size_x = 64) in;
 
 #include "strokes/stroke_runs.glsl"
+layout(std430, binding = 10) readonly buffer RunArgs { uint run_args[4]; };  // the dispatch over the runs, their count
 
 layout(std430, binding = 2) readonly buffer RunsIn { RunIn runs_in[]; };
 layout(std430, binding = 3) readonly buffer Points { dvec2 points[]; };
 layout(std430, binding = 4) readonly buffer Offsets { Offset offsets[]; };
-// Per run: its sample count, then (scanned) its first sample; the total at [run_count].
+// Per run listed: its sample count, then (scanned) its first sample; the total after them.
 layout(std430, binding = 5) buffer Counts { uint counts[]; };
 // Each run's distinct points, at its first_point.
 layout(std430, binding = 6) buffer Distinct { dvec2 distinct[]; };
@@ -22,7 +23,7 @@ struct RunState {  // gpu/strokes/stroke_samples.cpp RunState
 };
 layout(std430, binding = 7) buffer RunStates { RunState states[]; };
 
-uniform uint run_count, first, capacity;
+uniform uint run_count, capacity;  // run_count: the rows of counts[] less one
 
 const double kSamePoint = 1e-6lf, kPiecesPerPx = 4.0lf, kSameArcLength = 1e-9lf, kNearPenChange = 0.05lf;
 const double kDegenerate = 1e-9lf;
@@ -236,9 +237,7 @@ Curve curve_of(RunIn r, uint distinct_count) {
 }
 
 #ifdef STEP_COUNT
-void main() {
-  uint run = gl_GlobalInvocationID.x + first;
-  if (run >= run_count) return;
+void at_run(uint run) {
   RunIn r = runs_in[run];
   uint n = keep_distinct_points(r);
   uint count = 0u;
@@ -254,7 +253,7 @@ void main() {
 
 #ifdef STEP_ARGS
 layout(std430, binding = 8) writeonly buffer Draw { uint draw[4]; };  // DrawArraysIndirectCommand
-void main() { draw = uint[4](6u * min(counts[run_count], capacity), 1u, 0u, 0u); }
+void main() { draw = uint[4](6u * min(counts[run_args[3]], capacity), 1u, 0u, 0u); }
 #endif
 
 #ifdef STEP_WRITE
@@ -386,9 +385,7 @@ uint write_bases(RunIn r, Curve c, double length, uint b) {
   return count;
 }
 
-void main() {
-  uint run = gl_GlobalInvocationID.x + first;
-  if (run >= run_count) return;
+void at_run(uint run) {
   RunIn r = runs_in[run];
   uint b = counts[run], count = min(counts[run + 1u], capacity) - min(b, capacity);
   RunState state = states[run];
@@ -411,5 +408,13 @@ void main() {
                          float(shape.y), run, down ? 1u : 0u, 0u);
   }
   runs[run] = Run(r.color_layer, b, drawn ? count : 0u, c.closed && whole ? 1u : 0u, 0u);
+}
+#endif
+
+#if !defined(STEP_ARGS)
+// Each invocation every (groups x 64)th of the runs listed: the dispatch is indirect, as
+// many groups as they need (65535 at most), their count on the GPU.
+void main() {
+  for (uint run = gl_GlobalInvocationID.x; run < run_args[3]; run += gl_NumWorkGroups.x * 64u) at_run(run);
 }
 #endif

@@ -86,7 +86,8 @@ uniform uint path_count, entry_count;
 uniform uint capacity;  // samples the buffers hold: the CPU's bound
 
 // The first round's samples: the prefix sum after the last entry. entries[] holds after it
-// the indirect dispatches over the samples (entry_count + 1) and their run slots (+ 4).
+// the indirect dispatches over the samples (entry_count + 1) and their run slots (+ 4), then
+// how many runs STEP_RUNS listed (+ 7), where the stroke steps read it.
 uint sample_total() { return entries[entry_count]; }
 uniform float step_px, width, height;  // the parameter (a float) and the window's size: exact as doubles
 
@@ -154,7 +155,7 @@ bool visible_at(Path p, double s) {
 bool has_end_sample(Path p) { return !is_closed(p) && (p.sampled != 0u || p.length_px > 0.0lf); }
 
 void put(uint at, uint path, Path p, uint k, double s) {
-  if (at >= capacity) return;  // past the CPU's bound: the CPU refuses the frame
+  if (at >= capacity) return;  // past the CPU's bound, which it never is (first_round_bound)
   tested[at] = Tested(s, 0.0lf, sample_visible(sample_on(p, k, along(p, k, s), s)) ? 1u : 0u, path);
 }
 
@@ -241,9 +242,10 @@ void main() {
   for (uint k = 1u; k <= 6u; ++k) entries[entry_count + k] = 1u;  // (x, 1, 1) twice
   entries[entry_count + 1u] = clamp((n + 63u) / 64u, 1u, 65535u);
   entries[entry_count + 4u] = clamp((2u * n + 63u) / 64u, 1u, 65535u);
-#elif defined(STEP_RUNS)  // each invocation every (groups x 64)th slot
-  for (uint j = gl_GlobalInvocationID.x; j < 2u * min(sample_total(), capacity); j += gl_NumWorkGroups.x * 64u)
-    at_slot(j);
+#elif defined(STEP_RUNS)  // each invocation every (groups x 64)th slot; the first also the runs' count
+  uint slots = 2u * min(sample_total(), capacity);
+  if (gl_GlobalInvocationID.x == 0u) entries[entry_count + 7u] = run_marks[slots];
+  for (uint j = gl_GlobalInvocationID.x; j < slots; j += gl_NumWorkGroups.x * 64u) at_slot(j);
 #else  // STEP_CHANGES, STEP_MARKS: each invocation every (groups x 64)th sample
   for (uint j = gl_GlobalInvocationID.x; j < min(sample_total(), capacity); j += gl_NumWorkGroups.x * 64u)
     at_sample(j);
