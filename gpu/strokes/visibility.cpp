@@ -110,8 +110,9 @@ class VisibilityPass : public GpuPass {
     entries_ = make_zeroed_buffer(args + 7);
     reserve(n);
     set_uniforms(f, lines, *table, capacity);
-    const std::initializer_list<const Buffer*> all = {&table->paths,  &table->points, &entries_, &tested_,
-                                                      &change_marks_, &run_marks_,    &changes_, &run_rows_};
+    const std::initializer_list<const Buffer*> all = {&table->paths,    &table->points,        &entries_,
+                                                      &tested_.buffer,  &change_marks_.buffer, &run_marks_.buffer,
+                                                      &changes_.buffer, &run_rows_.buffer};
     bind(all);
     bind_textures(samples_, {{"ids", &f.get(kIds)}});
     bind_textures(changes_step_, {{"ids", &f.get(kIds)}});
@@ -135,7 +136,7 @@ class VisibilityPass : public GpuPass {
     bind(all);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries_.id());
     over_samples(list_runs_, args + 3);
-    tables_.paths = &table->paths, tables_.points = &table->points, tables_.runs = &run_rows_;
+    tables_.paths = &table->paths, tables_.points = &table->points, tables_.runs = &run_rows_.buffer;
     tables_.listed = {&entries_, uint32_t(args + 6)}, tables_.samples = {&entries_, uint32_t(args - 1)};
     tables_.bound = uint32_t(2 * n);
     for (size_t i = 0; i < lines.paths.size(); ++i) {  // window_paths.hpp RunTables
@@ -180,13 +181,9 @@ class VisibilityPass : public GpuPass {
   // check_memory took). Nothing is cleared: the steps write every slot below the samples the
   // GPU took, and a prefix sum reads only the values before each slot.
   void reserve(size_t n) {
-    if (n <= held_) return;
-    held_ = n;
-    tested_ = make_buffer(nullptr, held_ * sizeof(TestedRow));
-    changes_ = make_buffer(nullptr, held_ * sizeof(glm::dvec2));
-    change_marks_ = make_buffer(nullptr, (held_ + 1) * sizeof(uint32_t));
-    run_marks_ = make_buffer(nullptr, (2 * held_ + 1) * sizeof(uint32_t));
-    run_rows_ = make_buffer(nullptr, 2 * held_ * sizeof(RunRow));
+    tested_.reserve(n * sizeof(TestedRow)), changes_.reserve(n * sizeof(glm::dvec2));
+    change_marks_.reserve((n + 1) * sizeof(uint32_t)), run_marks_.reserve((2 * n + 1) * sizeof(uint32_t));
+    run_rows_.reserve(2 * n * sizeof(RunRow));
   }
 
   static void bind(std::initializer_list<const Buffer*> buffers) {
@@ -198,10 +195,10 @@ class VisibilityPass : public GpuPass {
 
   Program count_, ends_, samples_, changes_step_, args_, marks_, list_runs_;
   std::optional<UploadedPaths> own_;  // where no ID image pass made the table (parity)
-  size_t held_ = 0;                   // samples the buffers below hold
-  Buffer tested_, changes_, change_marks_, run_marks_;
+  ScratchBuffer tested_, changes_, change_marks_, run_marks_;
   // What the stroke pass reads (kRunTables) and a dump reads back, kept until the next frame.
-  Buffer run_rows_, entries_;
+  ScratchBuffer run_rows_;
+  Buffer entries_;
   RunTables tables_;
   ExclusiveScan scan_;
   std::map<std::string, Image> dumped_;

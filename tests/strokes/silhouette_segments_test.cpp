@@ -11,6 +11,7 @@
 #include "common/strokes/silhouette_segments.hpp"
 #include "common/strokes/strokes.hpp"
 #include "gpu/core/stage.hpp"
+#include "gpu/strokes/stroke_meshes.hpp"
 #include "parity/parity.hpp"
 #include "tests/support/parity_checks.hpp"
 #include "tests/support/test_scenes.hpp"
@@ -30,6 +31,37 @@ size_t segments_in(const Image& facing) {
 }
 
 class SilhouetteSegments : public testing::GlTest {};
+
+// The meshes both silhouette steps read (gpu/strokes/stroke_meshes.hpp): a stroke object, one
+// in pencil between (no rows of its own but zeros), another stroke object; each face record
+// its object's own vertex numbers and slot orientations, each object's positions after the
+// last one's.
+TEST_F(SilhouetteSegments, StrokeMeshesHoldEveryStrokeObjectByRecord) {
+  Scene s = testing::drawn_with_strokes(testing::builtin_at("cad", 160, 120));
+  s.objects.push_back(s.objects[0]);
+  s.objects.push_back(s.objects[0]);
+  s.objects[1].style = Style::Pencil;
+  std::shared_ptr<const LineMeshes> meshes = line_meshes(s, s.params.get<StrokesParams>(), LineObjects::Strokes);
+  gpu::StrokeMeshes shared(s, *meshes);
+  const Mesh& mesh = *s.objects[0].mesh;
+  const size_t faces = mesh.triangles.size(), vertices = mesh.positions.size();
+  ASSERT_EQ(shared.first_vertex, (std::vector<uint32_t>{0, uint32_t(vertices), uint32_t(vertices)}));
+  std::vector<glm::uvec4> corners(3 * faces);
+  std::vector<glm::vec4> positions(2 * vertices);
+  gpu::read_buffer(shared.faces, corners.data(), corners.size() * sizeof(glm::uvec4));
+  gpu::read_buffer(shared.positions, positions.data(), positions.size() * sizeof(glm::vec4));
+  const FeatureLineMesh& lines = *line_mesh(*meshes, 0);
+  for (size_t f = 0; f < faces; ++f) {
+    const glm::uvec4 own(mesh.triangles[f], lines.reversed_slots(uint32_t(f)));
+    EXPECT_EQ(corners[f], own) << f;
+    EXPECT_EQ(corners[faces + f], glm::uvec4(0)) << f;
+    EXPECT_EQ(corners[2 * faces + f], own) << f;
+  }
+  for (size_t v = 0; v < vertices; ++v) {
+    EXPECT_EQ(positions[v], glm::vec4(mesh.positions[v], 1.0f)) << v;
+    EXPECT_EQ(positions[vertices + v], glm::vec4(mesh.positions[v], 1.0f)) << v;
+  }
+}
 
 TEST_F(SilhouetteSegments, BuiltinsAgreeInBothReadingsOfG) {
   for (const char* name : {"torus", "sphere", "cad"})
