@@ -107,7 +107,7 @@ void preprocessing_bar(const Session& session) {
 
 }  // namespace
 
-void Panels::draw(Session& session, Inspection& inspection, glm::ivec2 framebuffer, float width) {
+void Panels::draw(Session& session, Inspection& inspection, Drawing& drawing, glm::ivec2 framebuffer, float width) {
   ImGui::SetNextWindowPos(ImVec2(float(framebuffer.x) - width, 0), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(width, float(framebuffer.y)), ImGuiCond_Always);
   const ImGuiWindowFlags pinned = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
@@ -117,6 +117,7 @@ void Panels::draw(Session& session, Inspection& inspection, glm::ivec2 framebuff
   if (session.preprocessing()) preprocessing_bar(session);
   if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) scene_section(session);
   if (ImGui::CollapsingHeader("Camera")) camera_section(session);
+  if (ImGui::CollapsingHeader("Draw on the model")) draw_section(session, drawing);
   if (ImGui::CollapsingHeader("Stage view", ImGuiTreeNodeFlags_DefaultOpen)) stage_section(session, inspection);
   if (ImGui::CollapsingHeader("Check against the reference", ImGuiTreeNodeFlags_DefaultOpen))
     reference_section(session, inspection);
@@ -251,6 +252,72 @@ void Panels::save_section(Session& session) {
   if (ImGui::Button("Screenshot (P)")) screenshot_wanted = true;
   tooltip("What the window shows, panel included");
   ImGui::TextWrapped("%s", status_.c_str());
+}
+
+// Kalnins et al. 2002's tool: what a left drag draws (a decal or hatch in a style, a crease
+// or silhouette example), undo and redo, the strokes drawn, and their files saved.
+void Panels::draw_section(Session& session, Drawing& drawing) {
+  ImGui::Checkbox("left drag draws", &drawing_on);
+  tooltip("Left drag over the frame draws a stroke in place of orbiting; it lands on release");
+  int role = int(draw_settings.role);
+  if (combo("stroke", role, stroke_role_names())) draw_settings.role = StrokeRole(role);
+  tooltip(
+      "decal: fixed on the surface where drawn; crease, silhouette: an offsets example that restyles those "
+      "lines; hatching: a stroke of a hatching group, its level of detail this view's");
+  const bool on_surface = draw_settings.role == StrokeRole::Decal || draw_settings.role == StrokeRole::Hatching;
+  ImGui::BeginDisabled(!on_surface);
+  ImGui::InputText("style", &draw_settings.style);
+  tooltip("A preset (" + [] {
+    std::string names;
+    for (const std::string& n : stroke_style_names()) names += (names.empty() ? "" : ", ") + n;
+    return names;
+  }() + ") or a style file");
+  ImGui::EndDisabled();
+  ImGui::BeginDisabled(draw_settings.role != StrokeRole::Hatching);
+  ImGui::InputInt("group", &draw_settings.group);
+  draw_settings.group = std::clamp(draw_settings.group, 0, kMaxHatchingGroup);
+  ImGui::Checkbox("free group", &draw_settings.free);
+  ImGui::EndDisabled();
+  bool changed = false;
+  if (ImGui::Button("Undo")) changed = drawing.undo();
+  tooltip("Ctrl+Z");
+  ImGui::SameLine();
+  if (ImGui::Button("Redo")) changed = drawing.redo();
+  tooltip("Ctrl+Y");
+  if (changed) session.set_drawn(drawing.files());
+  drawn_list(session, drawing);
+  ImGui::InputText("##strokes", &strokes_path_);
+  ImGui::SameLine();
+  if (ImGui::Button("Save strokes")) {
+    try {
+      drawing.save(strokes_path_, session.scene().origin);
+      session.set_drawn(drawing.files());
+      draw_status = "wrote " + strokes_path_ + " (a file a view drawn in); Save scene lists them";
+    } catch (const std::exception& e) {
+      draw_status = e.what();
+    }
+  }
+  ImGui::TextWrapped("%s", draw_status.c_str());
+}
+
+// The strokes drawn, in order, each with a button that erases it.
+void Panels::drawn_list(Session& session, Drawing& drawing) {
+  for (size_t i = 0; i < drawing.size(); ++i) {
+    const DrawnStroke& s = drawing.stroke(i);
+    ImGui::PushID(int(i));
+    if (ImGui::SmallButton("x")) {
+      drawing.erase(i);
+      session.set_drawn(drawing.files());
+      ImGui::PopID();
+      return;
+    }
+    ImGui::SameLine();
+    ImGui::Text("%zu: %s%s, %zu points%s", i, stroke_role_names()[size_t(s.role)].c_str(),
+                s.role == StrokeRole::Hatching ? (" group " + std::to_string(s.group)).c_str() : "", s.points.size(),
+                s.style_name.empty() ? "" : (", " + s.style_name).c_str());
+    ImGui::PopID();
+  }
+  if (drawing.size() > 0 && !drawing.saved()) ImGui::TextDisabled("not saved");
 }
 
 }  // namespace plumbago

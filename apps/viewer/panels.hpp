@@ -7,6 +7,7 @@
 #include <map>
 #include <string>
 
+#include "apps/viewer/drawing.hpp"
 #include "apps/viewer/inspection.hpp"
 #include "apps/viewer/session.hpp"
 #include "apps/viewer/timing.hpp"
@@ -16,12 +17,17 @@ namespace plumbago {
 class Panels {
  public:
   // Draws the panel in the framebuffer's right `width` pixels.
-  void draw(Session& session, Inspection& inspection, glm::ivec2 framebuffer, float width);
+  void draw(Session& session, Inspection& inspection, Drawing& drawing, glm::ivec2 framebuffer, float width);
 
   Timing timing;
   bool continuous = false;         // render every frame (for timing), not only after a change
   bool screenshot_wanted = false;  // the viewer writes `screenshot_path` after drawing
   std::string screenshot_path = "plumbago-view.png";
+  // Drawing on the model (apps/viewer/drawing.hpp): whether a left drag draws, what it
+  // draws, and what the last stroke came to.
+  bool drawing_on = false;
+  DrawRequest draw_settings;
+  std::string draw_status;
 
  private:
   void scene_section(Session& session);
@@ -30,12 +36,15 @@ class Panels {
   // `slow`: preprocessing reads the parameter.
   void param_row(Session& session, const ParamSpec& spec, bool slow);
   void save_section(Session& session);
+  void draw_section(Session& session, Drawing& drawing);
+  void drawn_list(Session& session, Drawing& drawing);
   static void stage_section(Session& session, Inspection& inspection);
   static void reference_section(const Session& session, Inspection& inspection);
   // Values being dragged of parameters that preprocessing reads: applied on release,
   // so a drag does not remake the textures at every step.
   std::map<std::string, double> pending_;
   std::string scene_path_ = "plumbago-view.json", image_path_ = "plumbago-frame.png";
+  std::string strokes_path_ = "plumbago-drawn.strokes.json";
   std::string status_;
 };
 

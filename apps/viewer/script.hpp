@@ -10,6 +10,15 @@
 //   {"save": "scene.json"}                save the scene
 //   {"screenshot": "shot.png"}            what the window shows, after the changes drew
 //   {"reload": true}                      wait until an edited scene or mesh file reloaded
+//   {"draw": {"kind": "decal", "style": "ink", "points": [[x, y], ...], "pressure": [...]}}
+//                                         draw a stroke on the model (apps/viewer/drawing.hpp):
+//                                         kind decal, crease, silhouette or hatching (with
+//                                         "group": G and "free": true|false); points in the
+//                                         frame's pixels, origin bottom-left; pressure
+//                                         optional, one a point, in [0, 1]
+//   {"undo": ""}, {"redo": ""}            the last stroke drawn, taken back or again
+//   {"save_strokes": "strokes.json"}      write the drawn strokes' stroke files (then "save"
+//                                         lists them in the scene)
 //
 // Everything that can be checked before the window opens is (the names of parameters
 // and effects, the values' types and ranges); a malformed script is refused naming the
@@ -19,6 +28,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
+
+#include "apps/viewer/drawing.hpp"
 
 namespace plumbago {
 
@@ -30,6 +41,8 @@ struct ScriptAction {
 
 // A "set" action's value for `key` as ParamSet stores it; throws ParamError as --set does.
 double param_value(const std::string& key, const nlohmann::json& value);
+// A "draw" action's stroke; throws std::invalid_argument naming what is wrong.
+DrawRequest draw_request(const nlohmann::json& arg);
 
 class Script {
  public:

@@ -20,7 +20,10 @@ OrbitCamera scene_orbit(const Scene& scene) {
 }  // namespace
 
 Session::Session(Window& window, Scene scene)
-    : window_(window), scene_(std::move(scene)), orbit_(scene_orbit(scene_)) {}
+    : window_(window),
+      scene_(std::move(scene)),
+      own_stroke_files_(scene_.stroke_files.size()),
+      orbit_(scene_orbit(scene_)) {}
 
 Session::~Session() {
   try {
@@ -41,6 +44,8 @@ void Session::replace(Scene scene, bool keep_camera) {
   scene.width = scene_.width;
   scene.height = scene_.height;
   scene_ = std::move(scene);
+  own_stroke_files_ = scene_.stroke_files.size();
+  show_drawn();
   if (!keep_camera) orbit_ = scene_orbit(scene_);
   camera_moved();
   restart();
@@ -63,6 +68,18 @@ void Session::set_style(size_t object, Style style) {
   scene_.objects.at(object).style = style;
   match_effects_to_styles(scene_);
   restart();
+}
+
+void Session::set_drawn(std::vector<StrokeFile> files) {
+  drawn_ = std::move(files);
+  show_drawn();
+  stale_ = true;
+}
+
+void Session::show_drawn() {
+  scene_.stroke_files.resize(own_stroke_files_);
+  scene_.stroke_files.insert(scene_.stroke_files.end(), drawn_.begin(), drawn_.end());
+  set_drawn_examples(scene_);
 }
 
 void Session::keep_buffers(bool on) {

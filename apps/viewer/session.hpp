@@ -39,6 +39,9 @@ class Session {
   void set_param(const std::string& key, double value);
   void set_effect(const std::string& effect, bool on);
   void set_style(size_t object, Style style);
+  // The stroke files drawn in the viewer (apps/viewer/drawing.hpp), shown after the scene's
+  // own, kept across a replace(): a new renderer projects them; preprocessing stays.
+  void set_drawn(std::vector<StrokeFile> files);
 
   // Whether frames keep their intermediate buffers (Frame::buffers: the stage view).
   void keep_buffers(bool on);
@@ -69,7 +72,10 @@ class Session {
   void start_preprocessing();
   void make_renderer();
   Window& window_;
+  void show_drawn();
   Scene scene_;
+  size_t own_stroke_files_;  // the scene's, before the drawn ones
+  std::vector<StrokeFile> drawn_;
   OrbitCamera orbit_;
   std::unique_ptr<gpu::Renderer> renderer_;
   std::shared_ptr<const Preprocessed> preprocessed_;

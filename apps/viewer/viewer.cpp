@@ -12,6 +12,7 @@
 #include <tuple>
 #include <utility>
 
+#include "apps/viewer/drawing.hpp"
 #include "apps/viewer/file_watch.hpp"
 #include "apps/viewer/frame_image.hpp"
 #include "apps/viewer/inspection.hpp"
@@ -19,7 +20,9 @@
 #include "apps/viewer/script.hpp"
 #include "apps/viewer/session.hpp"
 #include "apps/viewer/window.hpp"
+#include "common/strokes/decal.hpp"
 #include "common/util/output_file.hpp"
+#include "gpu/strokes/decal.hpp"
 
 namespace plumbago {
 namespace {
@@ -29,13 +32,13 @@ constexpr int kPanelHeight = 720;   // the window's least height with the panel
 constexpr float kDegreesPerPixel = 0.4f;
 constexpr float kZoomPerNotch = 0.9f;
 
-// Mouse and keys over the frame (not over the panel): left drag orbits, right or middle
-// drag pans, the wheel zooms; R: the scene's camera, F: frame the scene.
-void steer(Session& session, const Placement& frame) {
+// Mouse and keys over the frame (not over the panel): left drag orbits (unless it draws),
+// right or middle drag pans, the wheel zooms; R: the scene's camera, F: frame the scene.
+void steer(Session& session, const Placement& frame, bool drawing) {
   const ImGuiIO& io = ImGui::GetIO();
   glm::vec2 d(io.MouseDelta.x, io.MouseDelta.y);
   bool moved = d != glm::vec2(0);
-  if (!io.WantCaptureMouse && moved && io.MouseDown[ImGuiMouseButton_Left])
+  if (!io.WantCaptureMouse && moved && io.MouseDown[ImGuiMouseButton_Left] && !drawing)
     session.move_camera([&](OrbitCamera& o) { o.orbit(-d.x * kDegreesPerPixel, d.y * kDegreesPerPixel); });
   if (!io.WantCaptureMouse && moved && (io.MouseDown[ImGuiMouseButton_Right] || io.MouseDown[ImGuiMouseButton_Middle]))
     session.move_camera([&](OrbitCamera& o) { o.pan(glm::vec2(d.x, -d.y) / float(std::max(frame.size.y, 1))); });
@@ -59,13 +62,20 @@ void write_json(const std::string& path, const nlohmann::json& j) {
   out.commit();
 }
 
+// The frame point under the cursor (pixels, origin bottom-left: docs/conventions.md), or
+// -1s off the frame or over the panel.
+glm::dvec2 point_under_cursor(const Placement& p, glm::ivec2 framebuffer, glm::ivec2 frame) {
+  const ImGuiIO& io = ImGui::GetIO();
+  glm::dvec2 scale(io.DisplayFramebufferScale.x, io.DisplayFramebufferScale.y);
+  glm::dvec2 at(io.MousePos.x * scale.x, double(framebuffer.y) - io.MousePos.y * scale.y);
+  glm::dvec2 f = (at - glm::dvec2(p.origin)) / glm::max(glm::dvec2(p.size), glm::dvec2(1)) * glm::dvec2(frame);
+  bool off = f.x < 0 || f.y < 0 || f.x >= frame.x || f.y >= frame.y || io.WantCaptureMouse;
+  return off ? glm::dvec2(-1) : f;
+}
+
 // The frame pixel under the cursor (row 0 at the bottom), or -1s off the frame.
 glm::ivec2 pixel_under_cursor(const Placement& p, glm::ivec2 framebuffer, glm::ivec2 frame) {
-  const ImGuiIO& io = ImGui::GetIO();
-  glm::vec2 scale(io.DisplayFramebufferScale.x, io.DisplayFramebufferScale.y);
-  glm::vec2 at(io.MousePos.x * scale.x, float(framebuffer.y) - io.MousePos.y * scale.y);
-  glm::vec2 f = (at - glm::vec2(p.origin)) / glm::max(glm::vec2(p.size), glm::vec2(1)) * glm::vec2(frame);
-  return f.x < 0 || f.y < 0 || io.WantCaptureMouse ? glm::ivec2(-1) : glm::ivec2(glm::floor(f));
+  return glm::ivec2(glm::floor(point_under_cursor(p, framebuffer, frame)));
 }
 
 class Viewer {
@@ -106,9 +116,11 @@ class Viewer {
     for (const std::string& path : window_.take_dropped()) open(path, false);
     run_script();
     glm::ivec2 framebuffer = window_.framebuffer_size();
-    steer(session_, place(image_.size(), frame_area(framebuffer, ui())));
+    Placement area = place(image_.size(), frame_area(framebuffer, ui()));
+    if (ui()) sketch(area, framebuffer);
+    steer(session_, area, ui() && panels_.drawing_on);
     poll_check();
-    if (ui()) panels_.draw(session_, inspect_, framebuffer, kPanelWidth);
+    if (ui()) panels_.draw(session_, inspect_, drawing_, framebuffer, kPanelWidth);
     if (session_.stale() || always_render) render();
     show();
     Placement placed = place(image_.size(), frame_area(framebuffer, ui()));  // the first frame's size is known now
@@ -191,10 +203,78 @@ class Viewer {
       session_.move_camera([&](OrbitCamera& o) { o.orbit(a.arg[0].get<float>(), a.arg[1].get<float>()); });
     if (a.key == "stage") select_stage(a.arg.get<std::string>());
     if (a.key == "heatmap") inspect_.heatmap = int(check_result(a.arg.get<std::string>()));
-    if (a.key == "save") save_scene(session_.scene(), a.arg.get<std::string>());
+    if (a.key == "save") save_scene(session_.scene(), a.arg.get<std::string>());  // refuses unsaved strokes
     if (a.key == "screenshot") script_shot_ = a.arg.get<std::string>();
     if (a.key == "reload") return std::exchange(reloads_, 0) > 0;
+    if (a.key == "draw") draw_stroke(draw_request(a.arg));
+    if (a.key == "undo" && !drawing_.undo()) throw std::invalid_argument("nothing drawn to undo");
+    if (a.key == "redo" && !drawing_.redo()) throw std::invalid_argument("nothing undone to redo");
+    if (a.key == "undo" || a.key == "redo") session_.set_drawn(drawing_.files());
+    if (a.key == "save_strokes") save_strokes(a.arg.get<std::string>());
     return a.key != "check" || check(a.arg.get<std::string>());
+  }
+
+  // Ctrl+Z, Ctrl+Y: undo and redo a stroke. A left drag over the frame in drawing mode: its
+  // points, shown as drawn, made a stroke on release.
+  void sketch(const Placement& placed, glm::ivec2 framebuffer) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const bool ctrl = io.KeyCtrl && !io.WantCaptureKeyboard;
+    if (ctrl && ((ImGui::IsKeyPressed(GLFW_KEY_Z, false) && drawing_.undo()) ||
+                 (ImGui::IsKeyPressed(GLFW_KEY_Y, false) && drawing_.redo())))
+      session_.set_drawn(drawing_.files());
+    if (!panels_.drawing_on) {
+      sketch_.clear(), screen_.clear();
+      return;
+    }
+    glm::dvec2 at = point_under_cursor(placed, framebuffer, image_.size());
+    if (io.MouseDown[ImGuiMouseButton_Left] && at.x >= 0 &&
+        (!sketch_.empty() || io.MouseClicked[ImGuiMouseButton_Left])) {
+      if (sketch_.empty() || glm::distance(sketch_.back().window, at) >= 1) sketch_.push_back({at, 1.0});
+      screen_.push_back(ImVec2(io.MousePos.x, io.MousePos.y));
+    }
+    if (!screen_.empty())
+      ImGui::GetForegroundDrawList()->AddPolyline(screen_.data(), int(screen_.size()), IM_COL32(200, 40, 40, 255),
+                                                  ImDrawFlags_None, 2.0f);
+    if (io.MouseDown[ImGuiMouseButton_Left] || sketch_.empty()) return;
+    DrawRequest request = panels_.draw_settings;
+    request.points = std::exchange(sketch_, {});
+    screen_.clear();
+    try {
+      draw_stroke(request);
+      panels_.draw_status = "drew a " + stroke_role_names()[size_t(request.role)] + " stroke";
+    } catch (const std::exception& e) {
+      panels_.draw_status = e.what();
+    }
+  }
+
+  // Draws `request` in the current view, or refuses it (nothing drawn): a stroke file
+  // would refuse it, the scene would (a hatching group's strokes all free or all
+  // structured), or a decal or hatch misses every object drawn in strokes style.
+  void draw_stroke(const DrawRequest& request) {
+    DrawnStroke stroke = drawn_stroke(session_.scene(), request);
+    Scene probe = session_.scene();
+    probe.stroke_files.push_back({"drawn stroke", probe.camera, probe.width, probe.height, "", {stroke}});
+    (void)decal_samples(probe);  // the scene's own checks of its stroke files
+    if (stroke.role == StrokeRole::Decal || stroke.role == StrokeRole::Hatching) {
+      probe.stroke_files.erase(probe.stroke_files.begin(), probe.stroke_files.end() - 1);
+      GpuScope gpu(window_);
+      size_t on = 0, samples = 0;
+      for (const ProjectedDecal& d : gpu::project_decals_through_gbuffer(probe))
+        for (const DecalPoint& p : d.points) {
+          ++samples;
+          on += p.object != kMissed && probe.objects[p.object].style == Style::Strokes;
+        }
+      if (on == 0)
+        throw std::invalid_argument("the stroke misses the model: none of its " + std::to_string(samples) +
+                                    " samples lies on an object drawn in strokes style; nothing drawn");
+    }
+    drawing_.add(session_.scene(), std::move(stroke));
+    session_.set_drawn(drawing_.files());
+  }
+
+  void save_strokes(const std::string& path) {
+    drawing_.save(path, session_.scene().origin);
+    session_.set_drawn(drawing_.files());  // their sources now: what the scene file lists
   }
 
   // The stage view of `buffer`, refused now (not at the next frame) when the frame has none.
@@ -242,7 +322,10 @@ class Viewer {
   std::string script_shot_;  // a screenshot the script asked for, written after this frame
   bool checking_ = false;    // the script's check action is under way
   FileWatch watch_;
-  int reloads_ = 0;  // files opened since the script last waited for one
+  Drawing drawing_;
+  std::vector<DrawnPoint> sketch_;  // the stroke being drawn: frame points
+  std::vector<ImVec2> screen_;      // and where the cursor was
+  int reloads_ = 0;                 // files opened since the script last waited for one
 };
 
 }  // namespace

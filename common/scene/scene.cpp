@@ -473,8 +473,10 @@ glm::dvec3 world_center(const std::vector<SceneReader::FileObject>& objects) {
   return lo.x <= hi.x ? (lo + hi) * 0.5 : glm::dvec3(0.0);
 }
 
-// The crease and silhouette examples of the stroke files (StrokeStyles' *_examples).
-void add_drawn_examples(Scene& s) {
+}  // namespace
+
+void set_drawn_examples(Scene& s) {
+  s.strokes.crease_examples.clear(), s.strokes.silhouette_examples.clear();
   for (const StrokeFile& file : s.stroke_files)
     for (size_t k = 0; k < file.strokes.size(); ++k) {
       const DrawnStroke& stroke = file.strokes[k];
@@ -483,6 +485,8 @@ void add_drawn_examples(Scene& s) {
       if (stroke.role == StrokeRole::Silhouette) s.strokes.silhouette_examples.push_back(drawn_offsets(stroke, where));
     }
 }
+
+namespace {
 
 Scene read_scene(const json& j, SceneReader& r, const std::string& source) {
   r.only_keys(j, "",
@@ -517,7 +521,7 @@ Scene read_scene(const json& j, SceneReader& r, const std::string& source) {
   if (j.contains("params")) r.params(j["params"], "/params", s.params);
   if (j.contains("strokes")) s.strokes = r.stroke_styles(j["strokes"], "/strokes");
   if (j.contains("stroke_files")) s.stroke_files = r.stroke_files(j["stroke_files"], "/stroke_files", s.origin);
-  add_drawn_examples(s);
+  set_drawn_examples(s);
   s.camera = j.contains("camera") ? r.camera(j["camera"], "/camera", s) : SceneReader::fitted_camera(s, 35.0f);
   r.check_camera(s, j.contains("camera") ? j["camera"] : json::object(), "/camera");
   s.lights_follow_camera = !j.contains("lights");

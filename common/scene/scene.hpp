@@ -92,6 +92,9 @@ std::string scene_folder(const std::string& source);
 // effects, parameters and object styles replaced by the scene's own and its relative
 // paths rebased on `path`'s folder. Leaves no partial file; throws SceneError.
 void save_scene(const Scene& scene, const std::string& path);
+// The crease and silhouette examples (StrokeStyles' *_examples) made anew from the scene's
+// stroke files: what loading does, and what a change to them (drawing in the viewer) needs.
+void set_drawn_examples(Scene& scene);
 // Parses scene JSON text; `source` names it in messages, `base_dir` resolves paths.
 Scene parse_scene(const std::string& json_text, const std::string& source, const std::string& base_dir);
 

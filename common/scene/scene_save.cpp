@@ -93,10 +93,22 @@ void rebase_stroke_styles(json& doc, const Rebase& rebase) {
   }
 }
 
-// Stroke files (Kalnins et al. 2002, §3, §4.5) are relative to the scene.
-void rebase_stroke_files(json& doc, const Rebase& rebase) {
-  if (!doc.contains("stroke_files") || !doc["stroke_files"].is_array()) return;
-  for (json& file : doc["stroke_files"]) rebase(file);
+// Stroke files (Kalnins et al. 2002, §3, §4.5) are relative to the scene; the scene's files
+// past the document's (drawn in the viewer, apps/viewer/drawing.hpp) are added, each by
+// the path it was written to, which must hold it.
+void set_stroke_files(json& doc, const Scene& scene, const Rebase& rebase, const fs::path& folder) {
+  json& files = doc["stroke_files"];
+  if (!files.is_array()) files = json::array();
+  for (json& file : files) rebase(file);
+  const fs::path to = fs::absolute(folder).lexically_normal();
+  for (size_t i = files.size(); i < scene.stroke_files.size(); ++i) {
+    const std::string& source = scene.stroke_files[i].source;
+    if (!fs::is_regular_file(source))
+      throw SceneError(scene.source + ": stroke file " + std::to_string(i) + " " + source +
+                       " is not on disk (save the drawn strokes first); not saved");
+    files.push_back(fs::absolute(source).lexically_normal().lexically_relative(to).string());
+  }
+  if (files.empty()) doc.erase("stroke_files");
 }
 
 }  // namespace
@@ -108,7 +120,7 @@ void save_scene(const Scene& scene, const std::string& path) {
   Rebase rebase(scene_folder(scene.source), folder.empty() ? "." : folder.string());
   set_objects(doc, scene, rebase);
   rebase_stroke_styles(doc, rebase);
-  rebase_stroke_files(doc, rebase);
+  set_stroke_files(doc, scene, rebase, folder.empty() ? fs::path(".") : folder);
   doc["camera"] = camera_json(scene.camera, scene.origin);
   doc["lights"] = lights_json(scene.lights);
   doc["resolution"] = {scene.width, scene.height};

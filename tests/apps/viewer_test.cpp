@@ -108,6 +108,46 @@ TEST_F(Viewer, ScriptedEffectToggleSavedRendersTheSame) {
   EXPECT_LE(png_difference(path("after.png"), path("render.png")), kTolerance);
 }
 
+const std::string kTorusStrokes = std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/torus_strokes.json";
+
+// Drawing on the model (Kalnins et al. 2002): a decal drawn by script shows at once, a
+// silhouette example restyles the silhouettes, undo takes a stroke back; the strokes and
+// the scene saved, `render` of the saved scene draws what the viewer showed, and
+// `compare` finds both backends agreeing on it.
+TEST_F(Viewer, DrawnStrokesSavedRenderTheSameOnBothBackends) {
+  view_script(kTorusStrokes, R"([{"screenshot": ")" + path("before.png") + R"("},
+      {"draw": {"kind": "decal", "style": "ink", "points": [[55, 35], [75, 41], [100, 31]], "pressure": [0.3, 1, 0.6]}},
+      {"draw": {"kind": "decal", "style": "pencil", "points": [[60, 80], [100, 85]]}}, {"undo": ""},
+      {"screenshot": ")" + path("decal.png") +
+                                 R"("},
+      {"draw": {"kind": "silhouette", "points": [[0, 0], [10, 8], [20, -8], [30, 8], [40, 0]]}},
+      {"save_strokes": ")" + path("drawn.strokes.json") +
+                                 R"("}, {"save": ")" + path("saved.json") + R"("},
+      {"screenshot": ")" + path("after.png") +
+                                 R"("}])");
+  EXPECT_GT(png_difference(path("before.png"), path("decal.png")), 0.25) << "the decal shows";
+  EXPECT_GT(png_difference(path("decal.png"), path("after.png")), 0.25) << "the example restyles the silhouettes";
+  StrokeFile saved = load_stroke_file(path("drawn.strokes.json"), glm::dvec3(0.0));
+  ASSERT_EQ(saved.strokes.size(), 2u) << "the undone stroke is not saved";
+  EXPECT_EQ(saved.strokes[1].role, StrokeRole::Silhouette);
+  testing::CliRun r = run("render " + path("saved.json") + " -o " + path("render.png"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_LE(png_difference(path("after.png"), path("render.png")), kTolerance);
+  testing::CliRun c = run("compare " + path("saved.json"));
+  EXPECT_EQ(c.code, 0) << c.out << c.err;
+}
+
+// A decal that lies on no object is refused, naming the action, and nothing is saved.
+TEST_F(Viewer, StrokeMissingTheModelIsRefusedAndNothingSaved) {
+  testing::CliRun v = view(kTorusStrokes + kSize + " --no-ui --frames 1 --script " +
+                           script(R"([{"draw": {"kind": "decal", "points": [[2, 2], [20, 6]]}},
+                                      {"save_strokes": ")" +
+                                  path("drawn.strokes.json") + R"("}])"));
+  EXPECT_NE(v.code, 0);
+  EXPECT_NE(v.err.find("action 0 (draw): the stroke misses the model"), std::string::npos) << v.err;
+  EXPECT_FALSE(std::filesystem::exists(path("drawn.strokes.json")));
+}
+
 TEST_F(Viewer, StageViewShowsTheBufferAsDumpStagesDoes) {
   const std::string buffer = "edge_detect.contour_darkness";
   view_script(kMixed, R"([{"orbit": [25, 10]}, {"stage": ")" + buffer + R"("},
