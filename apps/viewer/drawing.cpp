@@ -1,10 +1,13 @@
 // Drawing on the model: see apps/viewer/drawing.hpp.
 #include "apps/viewer/drawing.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <stdexcept>
 
+#include "common/strokes/strokes.hpp"
 #include "common/util/output_file.hpp"
 
 namespace plumbago {
@@ -45,8 +48,24 @@ DrawnStroke drawn_stroke(const Scene& scene, const DrawRequest& request) {
   return read.strokes.at(0);
 }
 
-void Drawing::add(const Scene& scene, DrawnStroke stroke) {
-  drawn_.push_back({scene.camera, scene.width, scene.height, std::move(stroke)});
+DrawnSurface drawn_surface(const Scene& scene, const DecalSurface& projected) {
+  DrawnSurface out;
+  std::map<uint32_t, size_t> on;  // points by object
+  for (const ProjectedDecal& d : projected)
+    for (size_t k = 0; k < d.points.size(); ++k) {  // split where a point missed or the object changes
+      const DecalPoint& p = d.points[k];
+      if (p.object == kMissed || scene.objects[p.object].style != Style::Strokes) continue;
+      if (k == 0 || d.points[k - 1].object != p.object) out.polylines.emplace_back();
+      out.polylines.back().push_back(p);
+      ++on[p.object];
+    }
+  auto most = std::max_element(on.begin(), on.end(), [](auto& a, auto& b) { return a.second < b.second; });
+  if (most != on.end()) out.object = most->first;
+  return out;
+}
+
+void Drawing::add(const Scene& scene, DrawnStroke stroke, DrawnSurface surface) {
+  drawn_.push_back({scene.camera, scene.width, scene.height, std::move(stroke), std::move(surface)});
   undone_.clear();
   changed();
 }
@@ -71,6 +90,22 @@ void Drawing::erase(size_t stroke) {
   drawn_.erase(drawn_.begin() + std::ptrdiff_t(std::min(stroke, drawn_.size())));
   undone_.clear();
   changed();
+}
+
+std::optional<size_t> Drawing::stroke_near(const Scene& scene, glm::dvec2 at, double radius) const {
+  const WindowProjection project(scene.camera, scene.width, scene.height);
+  std::optional<size_t> nearest;
+  double best = radius;
+  for (size_t i = 0; i < drawn_.size(); ++i)
+    for (const std::vector<DecalPoint>& line : drawn_[i].surface.polylines)
+      for (size_t k = 0; k < line.size(); ++k) {
+        glm::dvec2 a(project(decal_point_world(scene, line[k])));
+        glm::dvec2 b = k + 1 < line.size() ? glm::dvec2(project(decal_point_world(scene, line[k + 1]))) : a;
+        double t = glm::clamp(glm::dot(at - a, b - a) / std::max(glm::dot(b - a, b - a), 1e-12), 0.0, 1.0);
+        double d = glm::distance(at, a + t * (b - a));
+        if (d <= best) best = d, nearest = i;
+      }
+  return nearest;
 }
 
 std::vector<StrokeFile> Drawing::files() const {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "common/scene/scene.hpp"
+#include "common/strokes/decal.hpp"
 
 namespace plumbago {
 
@@ -31,10 +32,20 @@ struct DrawRequest {
 // naming "drawn stroke" and what is wrong.
 DrawnStroke drawn_stroke(const Scene& scene, const DrawRequest& request);
 
+// Where a decal or hatch landed: its polylines of surface points (projected through the
+// G-buffer of its view, common/strokes/decal.hpp), and the object most of them lie on
+// (kMissed for an example, which lies on no surface).
+struct DrawnSurface {
+  std::vector<std::vector<DecalPoint>> polylines;
+  uint32_t object = kMissed;
+};
+// The surface of `projected`, `scene`'s objects in strokes style only.
+DrawnSurface drawn_surface(const Scene& scene, const DecalSurface& projected);
+
 class Drawing {
  public:
-  // Adds `stroke`, drawn in `scene`'s view; drops what was undone.
-  void add(const Scene& scene, DrawnStroke stroke);
+  // Adds `stroke`, drawn in `scene`'s view, lying on `surface`; drops what was undone.
+  void add(const Scene& scene, DrawnStroke stroke, DrawnSurface surface = {});
   bool undo();  // whether there was a stroke to take back
   bool redo();
   void erase(size_t stroke);  // in the order drawn
@@ -44,6 +55,11 @@ class Drawing {
   // saved)", which names it in messages and is no file).
   size_t size() const { return drawn_.size(); }
   const DrawnStroke& stroke(size_t i) const { return drawn_.at(i).stroke; }
+  uint32_t object(size_t i) const { return drawn_.at(i).surface.object; }
+  // The decal or hatch whose surface passes nearest to window point `at` (px, origin
+  // bottom-left) in `scene`'s current view, within `radius` px: the eraser's pick. Points
+  // behind the near plane and surfaces hidden by others count alike.
+  std::optional<size_t> stroke_near(const Scene& scene, glm::dvec2 at, double radius) const;
   std::vector<StrokeFile> files() const;
   // Whether every stroke is in a file save() wrote since the last change.
   bool saved() const { return saved_; }
@@ -59,6 +75,7 @@ class Drawing {
     Camera camera;
     int width, height;
     DrawnStroke stroke;
+    DrawnSurface surface;
   };
   void changed() { saved_ = false, paths_.clear(); }
   std::vector<Drawn> drawn_, undone_;

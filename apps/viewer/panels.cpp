@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cfloat>
 #include <cstdio>
+#include <map>
+#include <tuple>
 
 #include "common/core/passes.hpp"
 
@@ -257,8 +259,16 @@ void Panels::save_section(Session& session) {
 // Kalnins et al. 2002's tool: what a left drag draws (a decal or hatch in a style, a crease
 // or silhouette example), undo and redo, the strokes drawn, and their files saved.
 void Panels::draw_section(Session& session, Drawing& drawing) {
-  ImGui::Checkbox("left drag draws", &drawing_on);
-  tooltip("Left drag over the frame draws a stroke in place of orbiting; it lands on release");
+  int drag = int(left_drag);
+  ImGui::Text("left drag:");
+  for (auto [mode, name, doc] : {std::tuple{LeftDrag::Orbit, "orbit", "orbits the camera"},
+                                 std::tuple{LeftDrag::Draw, "draw", "draws a stroke, landed on release"},
+                                 std::tuple{LeftDrag::Erase, "erase", "a click erases the decal or hatch under it"}}) {
+    ImGui::SameLine();
+    ImGui::RadioButton(name, &drag, int(mode));
+    tooltip(std::string("Left drag over the frame ") + doc);
+  }
+  left_drag = LeftDrag(drag);
   int role = int(draw_settings.role);
   if (combo("stroke", role, stroke_role_names())) draw_settings.role = StrokeRole(role);
   tooltip(
@@ -300,16 +310,30 @@ void Panels::draw_section(Session& session, Drawing& drawing) {
   ImGui::TextWrapped("%s", draw_status.c_str());
 }
 
-// The strokes drawn, in order, each with a button that erases it.
+// The strokes drawn, object by object (the examples last), each with a button that erases it.
 void Panels::drawn_list(Session& session, Drawing& drawing) {
-  for (size_t i = 0; i < drawing.size(); ++i) {
+  std::map<uint32_t, std::vector<size_t>> by_object;
+  for (size_t i = 0; i < drawing.size(); ++i) by_object[drawing.object(i)].push_back(i);
+  for (const auto& [object, strokes] : by_object) {
+    if (object == kMissed)
+      ImGui::TextDisabled("examples");
+    else
+      ImGui::TextDisabled("object %u (%s)", object, session.scene().objects.at(object).mesh->name.c_str());
+    if (!stroke_rows(session, drawing, strokes)) return;
+  }
+  if (drawing.size() > 0 && !drawing.saved()) ImGui::TextDisabled("not saved");
+}
+
+// Rows of the drawn strokes `strokes`; false when one was erased (the list changed).
+bool Panels::stroke_rows(Session& session, Drawing& drawing, const std::vector<size_t>& strokes) {
+  for (size_t i : strokes) {
     const DrawnStroke& s = drawing.stroke(i);
     ImGui::PushID(int(i));
     if (ImGui::SmallButton("x")) {
       drawing.erase(i);
       session.set_drawn(drawing.files());
       ImGui::PopID();
-      return;
+      return false;
     }
     ImGui::SameLine();
     ImGui::Text("%zu: %s%s, %zu points%s", i, stroke_role_names()[size_t(s.role)].c_str(),
@@ -317,7 +341,7 @@ void Panels::drawn_list(Session& session, Drawing& drawing) {
                 s.style_name.empty() ? "" : (", " + s.style_name).c_str());
     ImGui::PopID();
   }
-  if (drawing.size() > 0 && !drawing.saved()) ImGui::TextDisabled("not saved");
+  return true;
 }
 
 }  // namespace plumbago

@@ -14,6 +14,9 @@
 
 namespace plumbago {
 
+// What a left drag over the frame does.
+enum class LeftDrag { Orbit, Draw, Erase };
+
 class Panels {
  public:
   // Draws the panel in the framebuffer's right `width` pixels.
@@ -23,9 +26,9 @@ class Panels {
   bool continuous = false;         // render every frame (for timing), not only after a change
   bool screenshot_wanted = false;  // the viewer writes `screenshot_path` after drawing
   std::string screenshot_path = "plumbago-view.png";
-  // Drawing on the model (apps/viewer/drawing.hpp): whether a left drag draws, what it
-  // draws, and what the last stroke came to.
-  bool drawing_on = false;
+  // Drawing on the model (apps/viewer/drawing.hpp): what a left drag does, what it draws,
+  // and what the last stroke came to.
+  LeftDrag left_drag = LeftDrag::Orbit;
   DrawRequest draw_settings;
   std::string draw_status;
 
@@ -38,6 +41,7 @@ class Panels {
   void save_section(Session& session);
   void draw_section(Session& session, Drawing& drawing);
   void drawn_list(Session& session, Drawing& drawing);
+  static bool stroke_rows(Session& session, Drawing& drawing, const std::vector<size_t>& strokes);
   static void stage_section(Session& session, Inspection& inspection);
   static void reference_section(const Session& session, Inspection& inspection);
   // Values being dragged of parameters that preprocessing reads: applied on release,

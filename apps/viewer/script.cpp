@@ -64,13 +64,16 @@ void check_arg(const std::string& key, const json& arg) {
   if (key == "reload") return require(arg.is_boolean() && arg.get<bool>(), "takes true");
   if (key == "draw") return (void)draw_request(arg);
   if (key == "undo" || key == "redo") return require(arg == "", "takes \"\"");
+  if (key == "erase")
+    return require(arg.is_array() && arg.size() == 2 && finite_number(arg[0]) && finite_number(arg[1]),
+                   "takes [x, y]: frame pixels, origin bottom-left");
   if (key == "stage" || key == "check" || key == "heatmap" || key == "save" || key == "screenshot" ||
       key == "save_strokes")
     return require(arg.is_string() && (key == "stage" || key == "check" || !arg.get<std::string>().empty()),
                    "takes a string");
   throw std::invalid_argument(
       "unknown action (set, effect, orbit, stage, check, heatmap, save, screenshot, reload, draw, undo, redo, "
-      "save_strokes)");
+      "erase, save_strokes)");
 }
 
 ScriptAction parse_action(size_t index, const json& j) {

@@ -17,6 +17,7 @@
 //                                         frame's pixels, origin bottom-left; pressure
 //                                         optional, one a point, in [0, 1]
 //   {"undo": ""}, {"redo": ""}            the last stroke drawn, taken back or again
+//   {"erase": [x, y]}                     the decal or hatch drawn under that frame point
 //   {"save_strokes": "strokes.json"}      write the drawn strokes' stroke files (then "save"
 //                                         lists them in the scene)
 //

@@ -31,6 +31,7 @@ constexpr float kPanelWidth = 440;  // pixels right of the frame
 constexpr int kPanelHeight = 720;   // the window's least height with the panel
 constexpr float kDegreesPerPixel = 0.4f;
 constexpr float kZoomPerNotch = 0.9f;
+constexpr double kEraserPx = 6;  // how near the cursor a stroke is erased
 
 // Mouse and keys over the frame (not over the panel): left drag orbits (unless it draws),
 // right or middle drag pans, the wheel zooms; R: the scene's camera, F: frame the scene.
@@ -118,7 +119,7 @@ class Viewer {
     glm::ivec2 framebuffer = window_.framebuffer_size();
     Placement area = place(image_.size(), frame_area(framebuffer, ui()));
     if (ui()) sketch(area, framebuffer);
-    steer(session_, area, ui() && panels_.drawing_on);
+    steer(session_, area, ui() && panels_.left_drag != LeftDrag::Orbit);
     poll_check();
     if (ui()) panels_.draw(session_, inspect_, drawing_, framebuffer, kPanelWidth);
     if (session_.stale() || always_render) render();
@@ -211,22 +212,25 @@ class Viewer {
     if (a.key == "redo" && !drawing_.redo()) throw std::invalid_argument("nothing undone to redo");
     if (a.key == "undo" || a.key == "redo") session_.set_drawn(drawing_.files());
     if (a.key == "save_strokes") save_strokes(a.arg.get<std::string>());
+    if (a.key == "erase" && !erase_at({a.arg[0].get<double>(), a.arg[1].get<double>()}))
+      throw std::invalid_argument("no drawn decal or hatch within " + std::to_string(int(kEraserPx)) + " px");
     return a.key != "check" || check(a.arg.get<std::string>());
   }
 
   // Ctrl+Z, Ctrl+Y: undo and redo a stroke. A left drag over the frame in drawing mode: its
-  // points, shown as drawn, made a stroke on release.
+  // points, shown as drawn, made a stroke on release; a click in erasing mode erases.
   void sketch(const Placement& placed, glm::ivec2 framebuffer) {
     const ImGuiIO& io = ImGui::GetIO();
     const bool ctrl = io.KeyCtrl && !io.WantCaptureKeyboard;
     if (ctrl && ((ImGui::IsKeyPressed(GLFW_KEY_Z, false) && drawing_.undo()) ||
                  (ImGui::IsKeyPressed(GLFW_KEY_Y, false) && drawing_.redo())))
       session_.set_drawn(drawing_.files());
-    if (!panels_.drawing_on) {
+    glm::dvec2 at = point_under_cursor(placed, framebuffer, image_.size());
+    if (panels_.left_drag == LeftDrag::Erase && io.MouseClicked[ImGuiMouseButton_Left] && at.x >= 0) erase_at(at);
+    if (panels_.left_drag != LeftDrag::Draw) {
       sketch_.clear(), screen_.clear();
       return;
     }
-    glm::dvec2 at = point_under_cursor(placed, framebuffer, image_.size());
     if (io.MouseDown[ImGuiMouseButton_Left] && at.x >= 0 &&
         (!sketch_.empty() || io.MouseClicked[ImGuiMouseButton_Left])) {
       if (sketch_.empty() || glm::distance(sketch_.back().window, at) >= 1) sketch_.push_back({at, 1.0});
@@ -255,21 +259,28 @@ class Viewer {
     Scene probe = session_.scene();
     probe.stroke_files.push_back({"drawn stroke", probe.camera, probe.width, probe.height, "", {stroke}});
     (void)decal_samples(probe);  // the scene's own checks of its stroke files
+    DrawnSurface surface;
     if (stroke.role == StrokeRole::Decal || stroke.role == StrokeRole::Hatching) {
       probe.stroke_files.erase(probe.stroke_files.begin(), probe.stroke_files.end() - 1);
       GpuScope gpu(window_);
-      size_t on = 0, samples = 0;
-      for (const ProjectedDecal& d : gpu::project_decals_through_gbuffer(probe))
-        for (const DecalPoint& p : d.points) {
-          ++samples;
-          on += p.object != kMissed && probe.objects[p.object].style == Style::Strokes;
-        }
-      if (on == 0)
-        throw std::invalid_argument("the stroke misses the model: none of its " + std::to_string(samples) +
-                                    " samples lies on an object drawn in strokes style; nothing drawn");
+      surface = drawn_surface(probe, gpu::project_decals_through_gbuffer(probe));
+      if (surface.object == kMissed)
+        throw std::invalid_argument(
+            "the stroke misses the model: none of its samples lies on an object drawn in strokes style; nothing "
+            "drawn");
     }
-    drawing_.add(session_.scene(), std::move(stroke));
+    drawing_.add(session_.scene(), std::move(stroke), std::move(surface));
     session_.set_drawn(drawing_.files());
+  }
+
+  // The eraser: the decal or hatch under the cursor (within kEraserPx), in this view.
+  bool erase_at(glm::dvec2 at) {  // whether there was one
+    std::optional<size_t> hit = drawing_.stroke_near(session_.scene(), at, kEraserPx);
+    panels_.draw_status = hit ? "erased stroke " + std::to_string(*hit) : "no drawn stroke under the cursor";
+    if (!hit) return false;
+    drawing_.erase(*hit);
+    session_.set_drawn(drawing_.files());
+    return true;
   }
 
   void save_strokes(const std::string& path) {

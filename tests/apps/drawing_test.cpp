@@ -9,6 +9,7 @@
 
 #include "apps/viewer/drawing.hpp"
 #include "apps/viewer/script.hpp"
+#include "common/strokes/strokes.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace plumbago {
@@ -123,6 +124,41 @@ TEST(Drawing, StyleFileIsWrittenRelativeToTheStrokeFile) {
   StrokeFile read = load_stroke_file(tmp.path("out/s.json"), scene.origin);
   EXPECT_EQ(read.strokes.at(0).style_name, "../styles/mine.json");
   EXPECT_TRUE(read.strokes.at(0).style.has_value());
+}
+
+DecalPoint on_face(uint32_t face) { return {0, face, glm::dvec3(1.0 / 3)}; }
+
+TEST(Drawing, SurfaceSplitsWhereAPointMissedAndNamesItsObject) {
+  Scene scene = load_scene(kTorus);
+  DecalPoint missed;
+  DecalSurface projected{{default_stroke_style(), {on_face(0), missed, on_face(5), on_face(6)}, {}}};
+  DrawnSurface s = drawn_surface(scene, projected);
+  ASSERT_EQ(s.polylines.size(), 2u);
+  EXPECT_EQ(s.polylines[0].size(), 1u);
+  EXPECT_EQ(s.polylines[1].size(), 2u);
+  EXPECT_EQ(s.object, 0u);
+  scene.objects[0].style = Style::Pencil;  // decals show on stroke objects only
+  EXPECT_EQ(drawn_surface(scene, projected).object, kMissed);
+}
+
+TEST(Drawing, EraserPicksTheStrokeUnderTheCursorInThisView) {
+  Scene scene = load_scene(kTorus);
+  Drawing d;
+  DrawnSurface first = drawn_surface(scene, {{default_stroke_style(), {on_face(0), on_face(40)}, {}}});
+  DrawnSurface second = drawn_surface(scene, {{default_stroke_style(), {on_face(900), on_face(1200)}, {}}});
+  d.add(scene, drawn_stroke(scene, request(StrokeRole::Decal, {{1, 1}, {2, 2}})), first);
+  d.add(scene, drawn_stroke(scene, request(StrokeRole::Silhouette, {{1, 1}, {9, 2}})));  // on no surface
+  d.add(scene, drawn_stroke(scene, request(StrokeRole::Decal, {{1, 1}, {2, 2}})), second);
+  const WindowProjection project(scene.camera, scene.width, scene.height);
+  auto window = [&](const DecalPoint& p) { return glm::dvec2(project(decal_point_world(scene, p))); };
+  glm::dvec2 a = window(on_face(900)), b = window(on_face(1200)),
+             normal = glm::normalize(glm::dvec2(a.y - b.y, b.x - a.x));
+  ASSERT_GT(glm::distance(a, b), 20.0) << "a segment long enough to pick along";
+  EXPECT_EQ(d.stroke_near(scene, (a + b) * 0.5 + 3.0 * normal, 6), std::optional<size_t>(2));
+  EXPECT_EQ(d.stroke_near(scene, window(on_face(40)), 6), std::optional<size_t>(0));
+  EXPECT_EQ(d.stroke_near(scene, glm::dvec2(-100, -100), 6), std::nullopt);
+  Scene moved = orbited(scene);  // the surface points move with the view
+  EXPECT_NE(d.stroke_near(moved, (a + b) * 0.5, 0.5), std::optional<size_t>(2));
 }
 
 TEST(Drawing, StrokesAreRefusedAsStrokeFilesRefuseThem) {

@@ -111,13 +111,14 @@ TEST_F(Viewer, ScriptedEffectToggleSavedRendersTheSame) {
 const std::string kTorusStrokes = std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/torus_strokes.json";
 
 // Drawing on the model (Kalnins et al. 2002): a decal drawn by script shows at once, a
-// silhouette example restyles the silhouettes, undo takes a stroke back; the strokes and
+// silhouette example restyles the silhouettes, undo and the eraser take strokes back; the strokes and
 // the scene saved, `render` of the saved scene draws what the viewer showed, and
 // `compare` finds both backends agreeing on it.
 TEST_F(Viewer, DrawnStrokesSavedRenderTheSameOnBothBackends) {
   view_script(kTorusStrokes, R"([{"screenshot": ")" + path("before.png") + R"("},
       {"draw": {"kind": "decal", "style": "ink", "points": [[55, 35], [75, 41], [100, 31]], "pressure": [0.3, 1, 0.6]}},
       {"draw": {"kind": "decal", "style": "pencil", "points": [[60, 80], [100, 85]]}}, {"undo": ""},
+      {"draw": {"kind": "decal", "style": "pencil", "points": [[60, 90], [100, 95]]}}, {"erase": [80, 93]},
       {"screenshot": ")" + path("decal.png") +
                                  R"("},
       {"draw": {"kind": "silhouette", "points": [[0, 0], [10, 8], [20, -8], [30, 8], [40, 0]]}},
@@ -128,7 +129,7 @@ TEST_F(Viewer, DrawnStrokesSavedRenderTheSameOnBothBackends) {
   EXPECT_GT(png_difference(path("before.png"), path("decal.png")), 0.25) << "the decal shows";
   EXPECT_GT(png_difference(path("decal.png"), path("after.png")), 0.25) << "the example restyles the silhouettes";
   StrokeFile saved = load_stroke_file(path("drawn.strokes.json"), glm::dvec3(0.0));
-  ASSERT_EQ(saved.strokes.size(), 2u) << "the undone stroke is not saved";
+  ASSERT_EQ(saved.strokes.size(), 2u) << "the undone stroke and the erased one are not saved";
   EXPECT_EQ(saved.strokes[1].role, StrokeRole::Silhouette);
   testing::CliRun r = run("render " + path("saved.json") + " -o " + path("render.png"));
   ASSERT_EQ(r.code, 0) << r.err;
