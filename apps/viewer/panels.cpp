@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <map>
 #include <tuple>
+#include <utility>
 
 #include "common/core/passes.hpp"
 
@@ -119,6 +120,7 @@ void Panels::draw(Session& session, Inspection& inspection, Drawing& drawing, gl
   if (session.preprocessing()) preprocessing_bar(session);
   if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) scene_section(session);
   if (ImGui::CollapsingHeader("Camera")) camera_section(session);
+  if (drawing.size() > std::exchange(drawn_shown_, drawing.size())) ImGui::SetNextItemOpen(true);  // a new stroke
   if (ImGui::CollapsingHeader("Draw on the model")) draw_section(session, drawing);
   if (ImGui::CollapsingHeader("Stage view", ImGuiTreeNodeFlags_DefaultOpen)) stage_section(session, inspection);
   if (ImGui::CollapsingHeader("Check against the reference", ImGuiTreeNodeFlags_DefaultOpen))

@@ -50,6 +50,7 @@ class Panels {
   std::string scene_path_ = "plumbago-view.json", image_path_ = "plumbago-frame.png";
   std::string strokes_path_ = "plumbago-drawn.strokes.json";
   std::string status_;
+  size_t drawn_shown_ = 0;  // the strokes drawn when the panel last drew: one more opens its section
 };
 
 }  // namespace plumbago

@@ -92,9 +92,11 @@ class Viewer {
 
   void run() {
     for (int n = 1; !window_.should_close(); ++n) {
+      // Whether the panel this frame draws shows the final state (it draws before the frame renders).
+      const bool settled = !session_.stale() && !session_.preprocessing();
       window_.begin_frame(wait_s());
       frame(options_.frames > 0 || panels_.continuous);
-      if (options_.frames > 0 && n >= options_.frames && script_.done() && !session_.stale()) {
+      if (options_.frames > 0 && n >= options_.frames && script_.done() && settled && !session_.stale()) {
         finish();
         return;
       }

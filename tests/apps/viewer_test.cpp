@@ -138,6 +138,27 @@ TEST_F(Viewer, DrawnStrokesSavedRenderTheSameOnBothBackends) {
   EXPECT_EQ(c.code, 0) << c.out << c.err;
 }
 
+// What a new user does first: a decal drawn on the teapot (../shared/models), saved with
+// the scene, renders as the viewer showed it, and both backends agree on it.
+TEST_F(Viewer, DecalDrawnOnTheTeapotRendersAsShown) {
+  const std::string teapot = std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/teapot_strokes.json";
+  if (!std::filesystem::exists(std::string(PLUMBAGO_MODELS_DIR) + "/teapot.obj"))
+    GTEST_SKIP() << "../shared/models/teapot.obj is missing";
+  view_script(teapot, R"([{"draw": {"kind": "decal", "points": [[58, 50], [70, 55], [82, 49], [96, 54]]}},
+      {"save_strokes": ")" +
+                          path("teapot.strokes.json") + R"("}, {"save": ")" + path("teapot.json") + R"("},
+      {"screenshot": ")" + path("shown.png") +
+                          R"("}])");
+  testing::CliRun r = run("render " + path("teapot.json") + " -o " + path("render.png"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  testing::CliRun plain = run("render " + teapot + kSize + " -o " + path("plain.png"));
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  EXPECT_GT(png_difference(path("plain.png"), path("shown.png")), 0.25) << "the decal shows";
+  EXPECT_LE(png_difference(path("shown.png"), path("render.png")), kTolerance);
+  testing::CliRun c = run("compare " + path("teapot.json"));
+  EXPECT_EQ(c.code, 0) << c.out << c.err;
+}
+
 // A decal that lies on no object is refused, naming the action, and nothing is saved.
 TEST_F(Viewer, StrokeMissingTheModelIsRefusedAndNothingSaved) {
   testing::CliRun v = view(kTorusStrokes + kSize + " --no-ui --frames 1 --script " +
