@@ -51,13 +51,18 @@ size_t weld_vertices(Mesh& mesh) {
     remap[i] = it->second;
   }
   std::vector<glm::uvec3> faces;
-  for (const auto& t : mesh.triangles) {
+  std::vector<glm::vec2> uvs;
+  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const glm::uvec3& t = mesh.triangles[f];
     glm::uvec3 r(remap[t[0]], remap[t[1]], remap[t[2]]);
-    if (r[0] != r[1] && r[1] != r[2] && r[0] != r[2]) faces.push_back(r);
+    if (r[0] == r[1] || r[1] == r[2] || r[0] == r[2]) continue;
+    faces.push_back(r);
+    if (!mesh.uvs.empty()) uvs.insert(uvs.end(), &mesh.uvs[3 * f], &mesh.uvs[3 * f] + 3);
   }
   size_t merged = mesh.positions.size() - kept.size();
   mesh.positions = std::move(kept);
   mesh.triangles = std::move(faces);
+  mesh.uvs = std::move(uvs);
   return merged;
 }
 

@@ -25,6 +25,9 @@ struct Mesh {
   std::vector<glm::vec3> positions;   // welded: no two vertices share a position
   std::vector<glm::vec3> normals;     // unit, area-weighted average of face normals
   std::vector<glm::uvec3> triangles;  // counter-clockwise seen from outside; no two the same
+  // The surface's parameterization, (u, v) per face corner (3 f + k), where it has one: an OBJ
+  // file's `vt` (when every face gives them), a procedural surface's own. Empty where none.
+  std::vector<glm::vec2> uvs;
   // Where position 0 lies in the file's coordinates, in double: vertex i lies at
   // origin + positions[i] there. load_mesh centers a file's coordinates on their bounding
   // box in double, so that a file far from 0 keeps its precision in float.
@@ -55,7 +58,7 @@ Mesh load_mesh(const std::string& path);
 void compute_normals(Mesh& mesh);
 
 // Merges vertices with bit-identical positions and drops the faces that become
-// degenerate in index (two equal corners); returns how many vertices were merged. For
+// degenerate in index (two equal corners), with their uvs; returns how many vertices were merged. For
 // meshes made in float (procedural); files are welded by center_and_weld
 // (common/mesh/mesh_formats.hpp).
 size_t weld_vertices(Mesh& mesh);

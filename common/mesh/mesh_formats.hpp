@@ -24,6 +24,10 @@ struct MeshFile {
   std::string name;
   std::vector<glm::dvec3> positions;
   std::vector<glm::uvec3> triangles;
+  // OBJ's texture coordinates (`vt`), and per triangle the indices of its corners' (empty
+  // unless every face gives them).
+  std::vector<glm::dvec2> texcoords;
+  std::vector<glm::uvec3> texcoord_triangles;
 };
 
 // The file's coordinates made a Mesh: centered on their bounding box's center, in double
@@ -34,7 +38,8 @@ struct MeshFile {
 // that the renderers, which work in float relative to the objects' center, could not hold
 // apart. Faces with two corners on one vertex are dropped, and so are faces with the same
 // corners in the same cyclic order as an earlier one; a face with the opposite order is
-// kept (a two-sided sheet). Counts in Mesh::cleanup. No normals.
+// kept (a two-sided sheet). Counts in Mesh::cleanup. No normals. A kept face keeps its
+// corners' texture coordinates (Mesh::uvs).
 Mesh center_and_weld(const MeshFile& file);
 
 MeshFile read_off(const std::string& path);

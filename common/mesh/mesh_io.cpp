@@ -38,6 +38,23 @@ std::optional<long> corner_index(const std::string& corner) {
   return std::stol(index);
 }
 
+// The texture coordinate index of an OBJ face corner ("i/t", "i/t/n"), as corner_index reads
+// the vertex's; none where the corner gives none ("i", "i//n") or it is not a whole number.
+std::optional<long> corner_texcoord(const std::string& corner) {
+  size_t slash = corner.find('/');
+  if (slash == std::string::npos) return std::nullopt;
+  std::string rest = corner.substr(slash + 1);
+  return corner_index(rest.substr(0, rest.find('/')));
+}
+
+// An OBJ index (1-based, negative counting back from the `before` read so far) as a 0-based
+// one among `count`; none when out of range.
+std::optional<size_t> obj_index(long index, size_t count, size_t before) {
+  if (index == 0 || (index > 0 && size_t(index) > count) || (index < 0 && uint64_t(-(index + 1)) >= before))
+    return std::nullopt;
+  return index > 0 ? size_t(index - 1) : size_t(long(before) + index);
+}
+
 // An OBJ statement that carries data: the file must not end inside one. A line cut
 // mid-way still parses (`f 1 2 3` from `f 1 2 34`), so its missing newline is the signal.
 bool is_data_line(const std::vector<std::string>& w) {
@@ -73,11 +90,13 @@ void check_obj_lines(const std::string& path) {
   };
   size_t vertices = 0, triangles = 0;
   for_each_obj_line(path, [&](size_t number, const std::vector<std::string>& w) {
-    if (w[0] == "v") {
-      ++vertices;
-      for (size_t k = 1; k <= 3; ++k)
+    if (w[0] == "v" || w[0] == "vt") {
+      const bool vertex = w[0] == "v";
+      vertices += vertex;
+      for (size_t k = 1; k <= (vertex ? 3u : 2u); ++k)
         if (k >= w.size() || !mesh_text::is_finite_float(w[k]))
-          fail(number, "vertex coordinate '" + (k < w.size() ? w[k] : std::string()) + "' is not a finite number");
+          fail(number, std::string(vertex ? "vertex" : "texture") + " coordinate '" +
+                           (k < w.size() ? w[k] : std::string()) + "' is not a finite number");
     } else if (w[0] == "f") {
       if (w.size() < 4) fail(number, "a face needs at least 3 corners, found " + std::to_string(w.size() - 1));
       triangles += w.size() - 3;
@@ -95,7 +114,7 @@ void check_obj_lines(const std::string& path) {
     if (w[0] != "f") return;
     for (size_t k = 1; k < w.size(); ++k) {
       const long index = *corner_index(w[k]);
-      if (index == 0 || (index > 0 && size_t(index) > vertices) || (index < 0 && uint64_t(-(index + 1)) >= before))
+      if (!obj_index(index, vertices, before))
         fail(number, "face index " + w[k].substr(0, w[k].find('/')) + " is out of range (" +
                          std::to_string(index > 0 ? vertices : before) + " vertices" +
                          (index > 0 ? " in the file)" : " before it)"));
@@ -105,30 +124,43 @@ void check_obj_lines(const std::string& path) {
 
 }  // namespace
 
-// OBJ: `v x y z` (in double) and `f` lines (corners `i`, `i/t`, `i//n`, `i/t/n`; negative
-// indices count back), once check_obj_lines has checked every line; polygons fan-triangulated.
+// OBJ: `v x y z` (in double), `vt u v` and `f` lines (corners `i`, `i/t`, `i//n`, `i/t/n`;
+// negative indices count back), once check_obj_lines has checked every line; polygons
+// fan-triangulated. The texture coordinates are kept when every corner of every face names
+// one the file has (else the mesh has none: they are optional, the geometry stands).
 MeshFile read_obj(const std::string& path) {
   check_obj_lines(path);
   MeshFile m;
   m.name = path;
   for_each_obj_line(path, [&](size_t, const std::vector<std::string>& w) {
-    if (w[0] != "v") return;
-    glm::dvec3 p;
-    for (int c = 0; c < 3; ++c) mesh_text::is_finite_float(w[size_t(c) + 1], &p[c]);
-    m.positions.push_back(p);
+    if (w[0] == "v") {
+      glm::dvec3 p;
+      for (int c = 0; c < 3; ++c) mesh_text::is_finite_float(w[size_t(c) + 1], &p[c]);
+      m.positions.push_back(p);
+    } else if (w[0] == "vt") {
+      glm::dvec2 t;
+      for (int c = 0; c < 2; ++c) mesh_text::is_finite_float(w[size_t(c) + 1], &t[c]);
+      m.texcoords.push_back(t);
+    }
   });
-  size_t before = 0;
-  std::vector<unsigned> polygon;
+  size_t before = 0, texcoords_before = 0;
+  bool every_corner = true;
+  std::vector<unsigned> polygon, texcoord_polygon;
   for_each_obj_line(path, [&](size_t, const std::vector<std::string>& w) {
-    before += w[0] == "v";
+    before += w[0] == "v", texcoords_before += w[0] == "vt";
     if (w[0] != "f") return;
-    polygon.clear();
+    polygon.clear(), texcoord_polygon.clear();
     for (size_t k = 1; k < w.size(); ++k) {
-      const long index = *corner_index(w[k]);
-      polygon.push_back(unsigned(index > 0 ? index - 1 : long(before) + index));
+      polygon.push_back(unsigned(*obj_index(*corner_index(w[k]), m.positions.size(), before)));
+      const std::optional<long> t = corner_texcoord(w[k]);
+      const std::optional<size_t> at = t ? obj_index(*t, m.texcoords.size(), texcoords_before) : std::nullopt;
+      every_corner = every_corner && at;
+      if (at) texcoord_polygon.push_back(unsigned(*at));
     }
     mesh_text::add_fan(polygon, m.triangles);
+    if (every_corner) mesh_text::add_fan(texcoord_polygon, m.texcoord_triangles);
   });
+  if (!every_corner) m.texcoord_triangles.clear();
   return m;
 }
 
@@ -237,14 +269,18 @@ Mesh center_and_weld(const MeshFile& file) {
   m.cleanup.merged_vertices = file.positions.size() - m.positions.size();
   std::unordered_set<glm::uvec3, FaceHash> seen;
   m.triangles.reserve(file.triangles.size());
-  for (const glm::uvec3& t : file.triangles) {
+  const bool uvs = !file.texcoord_triangles.empty();
+  for (size_t f = 0; f < file.triangles.size(); ++f) {
+    const glm::uvec3& t = file.triangles[f];
     glm::uvec3 r(remap[t[0]], remap[t[1]], remap[t[2]]);
-    if (r[0] == r[1] || r[1] == r[2] || r[0] == r[2])
+    if (r[0] == r[1] || r[1] == r[2] || r[0] == r[2]) {
       ++m.cleanup.degenerate_faces;
-    else if (!seen.insert(canonical_face(r)).second)
+    } else if (!seen.insert(canonical_face(r)).second) {
       ++m.cleanup.duplicate_faces;
-    else
+    } else {
       m.triangles.push_back(r);
+      for (int k = 0; k < 3 && uvs; ++k) m.uvs.emplace_back(file.texcoords[file.texcoord_triangles[f][k]]);
+    }
   }
   return m;
 }

@@ -20,12 +20,41 @@ Mesh grid_surface(int nu, int nv, bool wrap_u, bool wrap_v, Surface surface) {
   for (int j = 0; j < rows; ++j)
     for (int i = 0; i < cols; ++i) m.positions.push_back(surface(float(i) / float(nu), float(j) / float(nv)));
   auto at = [&](int i, int j) { return unsigned((j % rows) * cols + (i % cols)); };
+  auto uv = [&](int i, int j) { return glm::vec2(float(i) / float(nu), float(j) / float(nv)); };
   for (int j = 0; j < nv; ++j)
-    for (int i = 0; i < nu; ++i) {
+    for (int i = 0; i < nu; ++i) {  // a wrapped corner keeps u (or v) = 1: the seam is per corner
       m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
       m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+      m.uvs.insert(m.uvs.end(), {uv(i, j), uv(i + 1, j), uv(i + 1, j + 1), uv(i, j), uv(i + 1, j + 1), uv(i, j + 1)});
     }
   return m;
+}
+
+// Per corner, (u, v) = (the angle about z over 2 pi, in [0, 1), and a coordinate along z);
+// a face across the seam at u = 0 takes u past 1 on its far corners, and a corner on the axis
+// the mean u of the other two: a chart without a cut through any face.
+glm::vec2 about_z(glm::vec3 p, float v) {
+  float u = std::atan2(p.y, p.x) / (2 * std::numbers::pi_v<float>);
+  return {u < 0 ? u + 1 : u, v};
+}
+void add_uvs_about_z(Mesh& m, float (*v_of)(glm::vec3)) {
+  for (const glm::uvec3& t : m.triangles) {
+    glm::vec2 c[3];
+    bool on_axis[3];
+    for (int k = 0; k < 3; ++k) {
+      glm::vec3 p = m.positions[t[k]];
+      c[k] = about_z(p, v_of(p));
+      on_axis[k] = p.x == 0 && p.y == 0;
+    }
+    float lo = 1, hi = 0;
+    for (int k = 0; k < 3; ++k)
+      if (!on_axis[k]) lo = std::min(lo, c[k].x), hi = std::max(hi, c[k].x);
+    for (int k = 0; k < 3; ++k)
+      if (!on_axis[k] && hi - lo > 0.5f && c[k].x < 0.5f) c[k].x += 1;
+    for (int k = 0; k < 3; ++k)
+      if (on_axis[k]) c[k].x = (c[(k + 1) % 3].x + c[(k + 2) % 3].x) / 2;
+    m.uvs.insert(m.uvs.end(), c, c + 3);
+  }
 }
 
 Mesh torus(float res) {
@@ -67,6 +96,7 @@ Mesh sphere(float res) {
     m.triangles = std::move(finer);
   }
   for (auto& p : m.positions) p = glm::normalize(p);
+  add_uvs_about_z(m, [](glm::vec3 p) { return std::acos(std::clamp(-p.z, -1.0f, 1.0f)) / std::numbers::pi_v<float>; });
   return m;
 }
 
@@ -116,12 +146,18 @@ std::vector<glm::vec2> circle(glm::vec2 center, float radius, int n) {
   return p;
 }
 
+// v of a cylinder's or cone's side: z in [-1, 1] as [0, 1]; of a flat cap, its radius in a
+// strip of its own below (the base) or above (a cylinder's top), so that no chart overlaps.
+float cone_v(glm::vec3 p) { return p.z <= -1 ? glm::length(glm::vec2(p)) - 0.5f : (p.z + 1) / 2; }
+float cylinder_v(glm::vec3 p) { return p.z >= 1 ? 1.5f - glm::length(glm::vec2(p)) : cone_v(p); }
+
 Mesh cylinder(float res) {
   int n = segments(64, res);
   Mesh m;
   auto rings = add_wall(m, circle({0, 0}, 0.5f, n), -1.0f, 1.0f, segments(8, res));
   add_fan(m, rings.front(), unsigned(n), {0, 0, -1}, false);
   add_fan(m, rings.back(), unsigned(n), {0, 0, 1}, true);
+  add_uvs_about_z(m, cylinder_v);
   return m;
 }
 
@@ -138,6 +174,7 @@ Mesh cone(float res) {
   for (int r = 0; r + 1 < rows; ++r) stitch(m, rings[r], rings[r + 1], unsigned(n));
   add_fan(m, rings.front(), unsigned(n), {0, 0, -1}, false);
   add_fan(m, rings.back(), unsigned(n), {0, 0, 1}, true);
+  add_uvs_about_z(m, cone_v);
   return m;
 }
 

@@ -231,6 +231,24 @@ TEST(MeshIo, ValidIndexFormsAreAccepted) {
   expect_unit_finite_normals(m);
 }
 
+// OBJ texture coordinates become the mesh's per-corner (u, v) when every face names ones the
+// file has; a dropped face takes its own with it; otherwise the mesh has none.
+TEST(MeshIo, ObjTextureCoordinatesFollowTheirFaces) {
+  TempDir tmp;
+  const std::string quad = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 0.5 0\nvt 0.5 0.5\nvt 0 0.5\n";
+  Mesh m = load_mesh(tmp.write("uv.obj", quad + "f 1/1 1/2 3/3\nf 1/1/1 2/2/1 3/3/1 4/4/1\n"));
+  ASSERT_EQ(m.triangles.size(), 2u) << "the degenerate face is dropped";
+  ASSERT_EQ(m.uvs.size(), 6u);
+  for (int k = 0; k < 3; ++k) {
+    glm::vec3 p0 = m.positions[m.triangles[0][k]], p1 = m.positions[m.triangles[1][k]];
+    EXPECT_EQ(m.uvs[size_t(k)], glm::vec2(p0.x + 0.5f, p0.y + 0.5f) * 0.5f);  // centered on (0.5, 0.5)
+    EXPECT_EQ(m.uvs[3 + size_t(k)], glm::vec2(p1.x + 0.5f, p1.y + 0.5f) * 0.5f);
+  }
+  EXPECT_TRUE(load_mesh(tmp.write("some.obj", quad + "f 1/1 2/2 3/3\nf 1 3 4\n")).uvs.empty());
+  EXPECT_TRUE(load_mesh(tmp.write("dangling.obj", quad + "f 1/1 2/2 3/9\n")).uvs.empty());
+  expect_refused(tmp.write("nanuv.obj", quad + "vt 0 nan\nf 1/1 2/2 3/3\n"), {"nanuv.obj:9:", "texture coordinate"});
+}
+
 // The memory budget for the duration of a test.
 class BudgetOf {
  public:

@@ -159,5 +159,28 @@ TEST(Procedural, UnknownKindAndBadResolutionAreRefused) {
   EXPECT_THROW(make_procedural("torus", NAN), std::invalid_argument);
 }
 
+// The parameterized kinds carry (u, v) per corner (Mesh::uvs): a chart without folds, each
+// face's (u, v) triangle turning the way the face does seen from outside (u about the axis,
+// v along it or across the tube), and the corners' u the angle of their position about z
+// (the sphere, cylinder and cone; 1 past the seam), through the weld.
+TEST(Procedural, ParameterizedKindsHaveAnUnfoldedChart) {
+  for (const std::string kind : {"torus", "sphere", "plane", "cylinder", "cone"}) {
+    Mesh m = make_procedural(kind);
+    ASSERT_EQ(m.uvs.size(), 3 * m.triangles.size()) << kind;
+    for (size_t f = 0; f < m.triangles.size(); ++f) {
+      const glm::vec2 *uv = &m.uvs[3 * f], a = uv[1] - uv[0], b = uv[2] - uv[0];
+      ASSERT_GT(a.x * b.y - a.y * b.x, 0.0f) << kind << " face " << f;
+      if (kind == "torus" || kind == "plane") continue;
+      for (int k = 0; k < 3; ++k) {
+        glm::vec3 p = m.positions[m.triangles[f][k]];
+        if (p.x == 0 && p.y == 0) continue;  // on the axis: no angle of its own
+        float angle = std::atan2(p.y, p.x) / (2 * std::numbers::pi_v<float>);
+        ASSERT_NEAR(std::fmod(uv[k].x - angle + 2, 1.0f), 0.0f, 1e-5f) << kind << " face " << f;
+      }
+    }
+  }
+  for (const std::string kind : {"cad", "cube", "storefront"}) EXPECT_TRUE(make_procedural(kind).uvs.empty()) << kind;
+}
+
 }  // namespace
 }  // namespace plumbago
