@@ -6,7 +6,8 @@
 // paths there are, how many show (a visible run or more), and the visible runs drawn.
 //   .json: every path, {"paths": [{"kind", "object", "closed", "points" (world),
 //          "screen" (pixels, origin bottom-left), "visible" (per point); a hatch's also
-//          "group" and "hatching", its group's kind: "structured" or "free"}]};
+//          "group", "hatching", its group's kind: "structured" or "free", and "mobile":
+//          whether it moves on the surface (Kalnins et al. 2002, §6.3)}]};
 //          With --truth also, per path, its window arc length at each point ("arc_px"),
 //          the visible runs the strokes would draw ("runs": [[s0, s1], ...], arc px), and
 //          what rays say ("truth": an Embree ray to the path every 0.5 px of arc,
@@ -55,7 +56,7 @@ nlohmann::json path_json(const WindowLines& lines, const WindowPath& p, const Im
                    {"visible", points_visible(p, keys)}};
   if (p.kind == LineKind::Hatching) {  // its group (common/strokes/hatching.hpp) and the group's kind
     const HatchGroupState& g = lines.hatching.at(size_t(p.hatch_group));
-    j["group"] = g.number, j["hatching"] = g.free ? "free" : "structured";
+    j["group"] = g.number, j["hatching"] = g.free ? "free" : "structured", j["mobile"] = g.mobile;
   }
   return j;
 }

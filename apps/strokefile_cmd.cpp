@@ -20,15 +20,19 @@ struct StrokeFileOptions {
   SceneOptions scene;
   std::string svg, output = "strokes.json", role = "decal", style;
   int group = 0;
-  bool free = false;
+  bool free = false, mobile = false;
 };
 
 void run(const StrokeFileOptions& o) {
   Scene scene = o.scene.load();
   const std::vector<std::string>& roles = stroke_role_names();
   std::filesystem::path folder = std::filesystem::path(o.output).parent_path();
-  SvgStrokeDefaults defaults{StrokeRole(std::find(roles.begin(), roles.end(), o.role) - roles.begin()), o.style,
-                             o.group, o.free, folder.empty() ? "." : folder.string()};
+  SvgStrokeDefaults defaults{StrokeRole(std::find(roles.begin(), roles.end(), o.role) - roles.begin()),
+                             o.style,
+                             o.group,
+                             o.free,
+                             o.mobile,
+                             folder.empty() ? "." : folder.string()};
   StrokeFile file;
   file.source = o.output;
   file.camera = scene.camera, file.width = scene.width, file.height = scene.height;
@@ -61,6 +65,8 @@ void setup(CLI::App& app) {
   cmd->add_flag("--free", o->free,
                 "hatching: a free group (Kalnins et al. 2002, §6) where an element has no "
                 "data-free");
+  cmd->add_flag("--mobile", o->mobile,
+                "hatching: a mobile group (Kalnins et al. 2002, §6.3) where an element has no data-mobile");
   cmd->callback([o] { run(*o); });
 }
 

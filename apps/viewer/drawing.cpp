@@ -42,6 +42,7 @@ DrawnStroke drawn_stroke(const Scene& scene, const DrawRequest& request) {
   s.role = request.role, s.points = request.points, s.style_name = on_surface ? style_reference(request.style) : "";
   s.group = request.role == StrokeRole::Hatching ? request.group : -1;
   s.free = request.role == StrokeRole::Hatching && request.free;
+  s.mobile = request.role == StrokeRole::Hatching && request.mobile;
   file.strokes.push_back(s);
   // What a stroke file with this one stroke would hold, read back as scenes read them.
   StrokeFile read = parse_stroke_file(stroke_file_json(file, scene.origin), "drawn stroke", ".", scene.origin);

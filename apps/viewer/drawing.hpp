@@ -17,13 +17,13 @@
 namespace plumbago {
 
 // What the artist asks for: the role, a style (preset or file; decals and hatching), a
-// hatching group and whether it is free, and the points in the frame's pixels (origin
+// hatching group, whether it is free and whether mobile, and the points in the frame's pixels (origin
 // bottom-left, docs/conventions.md) with their pressure.
 struct DrawRequest {
   StrokeRole role = StrokeRole::Decal;
   std::string style = kDefaultDecalStyle;
   int group = 0;
-  bool free = false;
+  bool free = false, mobile = false;
   std::vector<DrawnPoint> points;
 };
 

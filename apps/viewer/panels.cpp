@@ -289,6 +289,11 @@ void Panels::draw_section(Session& session, Drawing& drawing) {
   ImGui::InputInt("group", &draw_settings.group);
   draw_settings.group = std::clamp(draw_settings.group, 0, kMaxHatchingGroup);
   ImGui::Checkbox("free group", &draw_settings.free);
+  ImGui::SameLine();
+  ImGui::Checkbox("mobile", &draw_settings.mobile);
+  tooltip(
+      "Mobile hatching (Kalnins et al. 2002, §6.3): the group moves along a u-line of its object's (u, v) as "
+      "the view changes, lit by a pseudo-light opposite its normal where drawn");
   ImGui::EndDisabled();
   bool changed = false;
   if (ImGui::Button("Undo")) changed = drawing.undo();

@@ -108,8 +108,9 @@ double param_value(const std::string& key, const json& value) {
 DrawRequest draw_request(const json& arg) {
   require(arg.is_object(), "takes an object: kind, points, and optionally style, pressure, group, free");
   for (const auto& [key, value] : arg.items())
-    require(key == "kind" || key == "points" || key == "style" || key == "pressure" || key == "group" || key == "free",
-            "unknown key '" + key + "' (kind, points, style, pressure, group, free)");
+    require(key == "kind" || key == "points" || key == "style" || key == "pressure" || key == "group" ||
+                key == "free" || key == "mobile",
+            "unknown key '" + key + "' (kind, points, style, pressure, group, free, mobile)");
   const std::vector<std::string>& roles = stroke_role_names();
   const std::string kind = arg.contains("kind") && arg["kind"].is_string() ? arg["kind"].get<std::string>() : "";
   auto role = std::find(roles.begin(), roles.end(), kind);
@@ -127,6 +128,8 @@ DrawRequest draw_request(const json& arg) {
   r.group = arg.value("group", 0);
   require(!arg.contains("free") || arg["free"].is_boolean(), "free: true or false");
   r.free = arg.value("free", false);
+  require(!arg.contains("mobile") || arg["mobile"].is_boolean(), "mobile: true or false");
+  r.mobile = arg.value("mobile", false);
   r.points = drawn_points(arg);
   return r;
 }

@@ -13,7 +13,7 @@
 //   {"draw": {"kind": "decal", "style": "ink", "points": [[x, y], ...], "pressure": [...]}}
 //                                         draw a stroke on the model (apps/viewer/drawing.hpp):
 //                                         kind decal, crease, silhouette or hatching (with
-//                                         "group": G and "free": true|false); points in the
+//                                         "group": G, "free" and "mobile": true|false); points in the
 //                                         frame's pixels, origin bottom-left; pressure
 //                                         optional, one a point, in [0, 1]
 //   {"undo": ""}, {"redo": ""}            the last stroke drawn, taken back or again

@@ -76,6 +76,14 @@ void Session::set_drawn(std::vector<StrokeFile> files) {
   stale_ = true;
 }
 
+Scene Session::with_drawn(const std::vector<StrokeFile>& files) const {
+  Scene s = scene_;
+  s.stroke_files.resize(own_stroke_files_);
+  s.stroke_files.insert(s.stroke_files.end(), files.begin(), files.end());
+  set_drawn_examples(s);
+  return s;
+}
+
 void Session::show_drawn() {
   scene_.stroke_files.resize(own_stroke_files_);
   scene_.stroke_files.insert(scene_.stroke_files.end(), drawn_.begin(), drawn_.end());

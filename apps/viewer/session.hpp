@@ -42,6 +42,8 @@ class Session {
   // The stroke files drawn in the viewer (apps/viewer/drawing.hpp), shown after the scene's
   // own, kept across a replace(): a new renderer projects them; preprocessing stays.
   void set_drawn(std::vector<StrokeFile> files);
+  // The scene as it would be with `files` drawn instead.
+  Scene with_drawn(const std::vector<StrokeFile>& files) const;
 
   // Whether frames keep their intermediate buffers (Frame::buffers: the stage view).
   void keep_buffers(bool on);

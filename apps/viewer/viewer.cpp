@@ -258,12 +258,13 @@ class Viewer {
   // structured), or a decal or hatch misses every object drawn in strokes style.
   void draw_stroke(const DrawRequest& request) {
     DrawnStroke stroke = drawn_stroke(session_.scene(), request);
-    Scene probe = session_.scene();
-    probe.stroke_files.push_back({"drawn stroke", probe.camera, probe.width, probe.height, "", {stroke}});
-    (void)decal_samples(probe);  // the scene's own checks of its stroke files
+    Drawing next = drawing_;
+    next.add(session_.scene(), stroke);
+    (void)decal_samples(session_.with_drawn(next.files()));  // the scene's own checks of its stroke files
     DrawnSurface surface;
     if (stroke.role == StrokeRole::Decal || stroke.role == StrokeRole::Hatching) {
-      probe.stroke_files.erase(probe.stroke_files.begin(), probe.stroke_files.end() - 1);
+      Scene probe = session_.scene();  // the stroke alone, projected through the G-buffer
+      probe.stroke_files = {{"drawn stroke", probe.camera, probe.width, probe.height, "", {stroke}}};
       GpuScope gpu(window_);
       surface = drawn_surface(probe, gpu::project_decals_through_gbuffer(probe));
       if (surface.object == kMissed)

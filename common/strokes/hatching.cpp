@@ -76,9 +76,10 @@ std::vector<HatchGroup> hatching_groups(const Scene& scene) {
   for (uint32_t f = 0; f < scene.stroke_files.size(); ++f)
     for (const DrawnStroke& s : scene.stroke_files[f].strokes) {
       if (s.role != StrokeRole::Hatching) continue;
-      auto [it, added] = groups.emplace(s.group, HatchGroup{s.group, s.free, {f}, 0});
+      auto [it, added] = groups.emplace(s.group, HatchGroup{s.group, s.free, s.mobile, {f}, 0});
       HatchGroup& g = it->second;
       if (g.free != s.free) refuse(scene.stroke_files[f], s.group, "mixes free and structured strokes");
+      if (g.mobile != s.mobile) refuse(scene.stroke_files[f], s.group, "mixes mobile and stationary strokes");
       if (!g.free && g.files[0] != f)
         refuse(scene.stroke_files[f], s.group,
                "a structured group is drawn in one stroke file, and it is also in " +
@@ -106,16 +107,10 @@ std::vector<HatchPolyline> hatch_polylines(const Scene& scene) {
   return out;
 }
 
-namespace {
-
-// A float parameter as the decimal it was given (6 significant digits are kept): 1.6, not
-// 1.6000000238, so that sigma = 1.6 reaches t+ = 1.6 and 0.2 s at 30 fps is 6 frames.
-double given(float value) { return std::round(double(value) * 1e6) / 1e6; }
-
-}  // namespace
+double given_value(float value) { return std::round(double(value) * 1e6) / 1e6; }
 
 double HatchLod::progress(double time_s, double fade_s) const {
-  fade_s = given(float(fade_s));
+  fade_s = given_value(float(fade_s));
   if (from == to || fade_s <= 0) return 1;
   return std::clamp((time_s - start_s) / fade_s, 0.0, 1.0);
 }
@@ -126,7 +121,7 @@ HatchLod hatch_lod_step(const HatchLod& state, double sigma, double time_s, cons
                         const HatchingParams& p) {
   if (state.progress(time_s, p.fade_s) < 1) return state;  // a transition runs to its end
   int level = state.to;
-  double t_plus = given(p.t_plus), t_minus = std::min(given(p.t_minus), t_plus);
+  double t_plus = given_value(p.t_plus), t_minus = std::min(given_value(p.t_minus), t_plus);
   if (level < levels.highest && sigma >= levels.at(level + 1) * t_plus / 2) return {level, level + 1, time_s};
   if (level > levels.lowest && sigma < levels.at(level) * t_minus / 2) return {level, level - 1, time_s};
   return {level, level, state.start_s};
@@ -266,7 +261,7 @@ std::vector<HatchGroupState> hatch_states(const Scene& scene, const std::vector<
     for (size_t k = 1; k < cameras.size(); ++k)
       lod = hatch_lod_step(lod, scale.sigma(cameras[k]), scene.animation->time_s(int(k)), levels, p);
     double now = scene.animation ? scene.animation->time_s(scene.frame) : 0.0;
-    out.push_back({groups[g].number, groups[g].free, scale.object(), scale.sigma(cameras.back()), lod,
+    out.push_back({groups[g].number, groups[g].free, groups[g].mobile, scale.object(), scale.sigma(cameras.back()), lod,
                    lod.progress(now, p.fade_s)});
   }
   return out;

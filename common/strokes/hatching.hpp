@@ -50,7 +50,7 @@ constexpr int kMaxHatchLevel = 3;
 
 struct HatchingParams {
   static constexpr const char* stage = "hatching";
-  float t_plus, t_minus, fade_s;
+  float t_plus, t_minus, fade_s, mobile_threshold, mobile_fade;
   int max_level;
   template <class V>
   void visit(V& v) {
@@ -63,8 +63,18 @@ struct HatchingParams {
            "seconds of frame time a level transition takes (Kalnins et al. 2002, §6)");
     v.integer(max_level, "max_level", 2, 0, kMaxHatchLevel,
               "a structured group's highest level (2^level x its hatches); beyond it the strokes only thicken");
+    v.real(mobile_threshold, "mobile_threshold", 0.5, 0.0, 0.99,
+           "T: a mobile group is placed at a local maximum of l(u) = n_c . n(u) only where l >= T (Kalnins et al. "
+           "2002, §6.3: 1/2)");
+    v.real(mobile_fade, "mobile_fade", 0.1, 0.0, 1.0,
+           "a mobile group's alpha rises from 0 at l = T to 1 at l = T + this (the fade as l approaches T, §6.3); 0: "
+           "none");
   }
 };
+
+// A float parameter as the decimal it was given (6 significant digits are kept): 1.6, not
+// 1.6000000238, so that sigma = 1.6 reaches t+ = 1.6 and 0.2 s at 30 fps is 6 frames.
+double given_value(float value);
 
 // What a surface stroke is: a decal (group -1) or a hatch of a group.
 struct HatchTag {
@@ -75,13 +85,14 @@ struct HatchTag {
 struct HatchGroup {
   int number;  // the files' group number
   bool free;
+  bool mobile;                  // moves on the surface (Kalnins et al. 2002, §6.3, common/strokes/mobile_hatching.hpp)
   std::vector<uint32_t> files;  // indices in scene.stroke_files: structured one, free one per level
   size_t hatches = 0;           // structured: the drawn hatches
 };
 
 // The scene's hatching groups, ordered by number. Throws SceneError, naming the stroke
 // file and the group, for a structured group drawn in several files or a group mixing
-// free and structured strokes.
+// free and structured strokes, or mobile and stationary ones.
 std::vector<HatchGroup> hatching_groups(const Scene& scene);
 
 // A hatch before projection: its polyline in its stroke file's window.
@@ -121,7 +132,7 @@ HatchLod hatch_lod_settled(double sigma, const HatchLevels& levels, const Hatchi
 // outline while drawn does not hatch what lies behind).
 struct HatchGroupState {
   int number;
-  bool free;
+  bool free, mobile;
   uint32_t object;
   double sigma;
   HatchLod lod;

@@ -101,7 +101,7 @@ class StrokeFileReader {
   }
 
   DrawnStroke stroke(const json& j, const std::string& path, const std::string& file_style) const {
-    only_keys(j, path, {"role", "points", "style", "group", "free"});
+    only_keys(j, path, {"role", "points", "style", "group", "free", "mobile"});
     DrawnStroke s;
     s.role = role(j.contains("role") ? j["role"] : json(), path + "/role");
     if (!j.contains("points") || !j["points"].is_array() || j["points"].size() < 2)
@@ -121,6 +121,11 @@ class StrokeFileReader {
       if (s.role != StrokeRole::Hatching) fail(path + "/free", "only hatching strokes are free or structured");
       if (!j["free"].is_boolean()) fail(path + "/free", "expected true or false");
       s.free = j["free"].get<bool>();
+    }
+    if (j.contains("mobile")) {
+      if (s.role != StrokeRole::Hatching) fail(path + "/mobile", "only hatching strokes are mobile");
+      if (!j["mobile"].is_boolean()) fail(path + "/mobile", "expected true or false");
+      s.mobile = j["mobile"].get<bool>();
     }
     bool on_surface = s.role == StrokeRole::Decal || s.role == StrokeRole::Hatching;
     if (!on_surface)
@@ -228,6 +233,7 @@ std::string stroke_file_json(const StrokeFile& file, glm::dvec3 origin) {
     if (on_surface && !s.style_name.empty() && s.style_name != file.style) one["style"] = s.style_name;
     if (s.role == StrokeRole::Hatching) one["group"] = s.group;
     if (s.free) one["free"] = true;
+    if (s.mobile) one["mobile"] = true;
     strokes.push_back(one);
   }
   // One line a key, one line a stroke: a file a person can read and edit.

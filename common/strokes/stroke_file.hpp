@@ -7,7 +7,9 @@
 //    "strokes": [{"role": ROLE, "points": [[x, y, pressure], ...],
 //                 "style": PRESET_OR_FILE,     optional, decals and hatching
 //                 "group": G,                  hatching only: the group's number (>= 0)
-//                 "free": true}, ...]}         hatching only, optional: a free group (Kalnins et al. 2002, §6)
+//                 "free": true,                hatching only, optional: a free group (Kalnins et al. 2002, §6)
+//                 "mobile": true}, ...]}       hatching only, optional: a mobile group (§6.3,
+//                                              common/strokes/mobile_hatching.hpp)
 // Points are window pixels of docs/conventions.md (origin bottom-left), pressure in [0, 1]; a stroke
 // has 2 points or more. ROLE is
 //   - "decal": a stroke fixed on the surface where it was drawn (common/strokes/decal.hpp);
@@ -15,7 +17,8 @@
 //     drawn_offsets below): the scene's creases (and borders) or silhouettes take the
 //     examples of its stroke files in place of their style's;
 //   - "hatching": a stroke of hatching group G (Kalnins et al. 2002, §6, common/strokes/hatching.hpp): structured
-//     unless "free" says otherwise; a group's strokes are all structured or all free.
+//     unless "free" says otherwise, stationary unless "mobile" says otherwise; a group's
+//     strokes are all structured or all free, all mobile or all stationary.
 // Every role is used.
 // A scene lists its stroke files under "stroke_files" (docs/scene-format.md); a refusal
 // throws SceneError naming the stroke file and the JSON path, as scene files do.
@@ -49,6 +52,7 @@ struct DrawnStroke {
   std::optional<StrokeStyle> style;  // decals, hatching: loaded from style_name (ink when neither names one)
   int group = -1;                    // hatching: the group
   bool free = false;                 // hatching: a free group's stroke (else structured)
+  bool mobile = false;               // hatching: a mobile group's stroke (Kalnins et al. 2002, §6.3)
 };
 
 struct StrokeFile {

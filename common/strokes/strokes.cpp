@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "common/strokes/decal.hpp"
+#include "common/strokes/mobile_hatching.hpp"
 
 namespace plumbago {
 
@@ -297,7 +298,8 @@ const FeatureLineMesh* line_mesh(const LineMeshes& meshes, size_t object) {
 }
 
 WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which, const LineMeshes* prepared,
-                         const DecalSurface* decals, const std::vector<ChainPath>* silhouettes) {
+                         const DecalSurface* decals, const std::vector<ChainPath>* silhouettes,
+                         const MobileHatching* mobile) {
   std::shared_ptr<const LineMeshes> made;
   if (!prepared) made = line_meshes(scene, p, which), prepared = made.get();
   WindowLines out;
@@ -322,13 +324,27 @@ WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects
                 c.window.empty() ? nullptr : &c.window);
   assign_keys(out);
   if (!decals) return out;
-  out.hatching = hatch_states(scene, *decals, scene.params.get<HatchingParams>());
+  const auto hatching = scene.params.get<HatchingParams>();
+  out.hatching = hatch_states(scene, *decals, hatching);
   std::vector<HatchWeight> weights = hatch_weights(out.hatching, *decals);
+  std::optional<MobileHatching> own_mobile;
+  if (!mobile) mobile = &own_mobile.emplace(scene, *decals);
+  const std::vector<MobileHatching::Placement> placed =
+      mobile->place(scene, given_value(hatching.mobile_threshold), given_value(hatching.mobile_fade));
   for (uint32_t d = 0; d < decals->size(); ++d) {
     out.decal_styles.push_back((*decals)[d].style);
     int group = (*decals)[d].hatch.group;
-    if (weights[d].alpha > 0)
-      builder.add_decal((*decals)[d], d, weights[d], group >= 0 ? out.hatching[group].object : kMissed);
+    const uint32_t object = group >= 0 ? out.hatching[group].object : kMissed;
+    if (weights[d].alpha == 0) continue;
+    if (!mobile->moves(d)) {
+      builder.add_decal((*decals)[d], d, weights[d], object);
+      continue;
+    }
+    for (const MobileHatching::Copy& copy : mobile->copies(*decals, d, placed)) {
+      HatchWeight weight = weights[d];
+      weight.alpha *= copy.alpha;
+      if (weight.alpha > 0) builder.add_decal(copy.decal, d, weight, object);
+    }
   }
   return out;
 }

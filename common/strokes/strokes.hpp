@@ -144,12 +144,16 @@ struct ChainPath {
 // placed after the feature lines, or none; a hatch absent at this frame's level of detail
 // (weight 0) is left out. `silhouettes`: the silhouettes a backend chained itself
 // (common/strokes/silhouette_paths.hpp), in front of the near plane, in start order; none:
-// chained here in double.
+// chained here in double. `mobile`: the mobile hatching groups of `decals`
+// (common/strokes/mobile_hatching.hpp), made once by a backend that keeps its decals; none:
+// made here. A mobile hatch is placed as this frame's copies of it, its weight's alpha
+// times each copy's.
 struct ProjectedDecal;
 using DecalSurface = std::vector<ProjectedDecal>;  // common/strokes/decal.hpp
+class MobileHatching;
 WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which = LineObjects::Strokes,
                          const LineMeshes* prepared = nullptr, const DecalSurface* decals = nullptr,
-                         const std::vector<ChainPath>* silhouettes = nullptr);
+                         const std::vector<ChainPath>* silhouettes = nullptr, const MobileHatching* mobile = nullptr);
 
 // The part [t0, t1] of window segment a -> b within `margin` px of the window (Liang-Barsky);
 // false when none is.

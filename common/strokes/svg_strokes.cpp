@@ -200,7 +200,7 @@ class SvgReader {
     }
   }
 
-  // A stroke of element e without its points: role, style, group, free.
+  // A stroke of element e without its points: role, style, group, free, mobile.
   DrawnStroke attributes(const Element& e) {
     DrawnStroke s;
     s.role = e.has("data-role") ? role(e) : defaults_.role;
@@ -212,7 +212,8 @@ class SvgReader {
       s.group = e.has("data-group") ? group(e) : defaults_.group;
       if (!e.has("data-group") && (s.group < 0 || s.group > kMaxHatchingGroup))
         fail(e, "--group", "must be in 0.." + std::to_string(kMaxHatchingGroup));
-      s.free = e.has("data-free") ? free(e) : defaults_.free;
+      s.free = e.has("data-free") ? flag(e, "data-free") : defaults_.free;
+      s.mobile = e.has("data-mobile") ? flag(e, "data-mobile") : defaults_.mobile;
     }
     return s;
   }
@@ -231,9 +232,9 @@ class SvgReader {
     return int(g[0]);
   }
 
-  bool free(const Element& e) const {
-    const std::string v = e.value("data-free");
-    if (v != "true" && v != "false") fail(e, "data-free", "expected true or false");
+  bool flag(const Element& e, const char* attribute) const {
+    const std::string v = e.value(attribute);
+    if (v != "true" && v != "false") fail(e, attribute, "expected true or false");
     return v == "true";
   }
 

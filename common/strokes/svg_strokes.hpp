@@ -7,8 +7,8 @@
 //     else its stroke width (the `stroke-width` attribute or style property) over the
 //     widest stroke width of the drawing, else 1;
 //   - `data-role` (decal, crease, silhouette, hatching), `data-style` (the preset or style
-//     file of decals and hatching), `data-group` and `data-free="true"` (hatching): override
-//     the command's --role, --style, --group, --free.
+//     file of decals and hatching), `data-group`, `data-free="true"` and `data-mobile="true"`
+//     (hatching): override the command's --role, --style, --group, --free, --mobile.
 // Coordinates are the SVG's user units: the root's viewBox (else its width and height,
 // else the window) is mapped onto the window, y flipped (SVG's origin is top-left, the
 // window's bottom-left, docs/conventions.md). Curves (C, S, Q, T, A) and `transform` attributes are
@@ -40,6 +40,7 @@ struct SvgStrokeDefaults {
   std::string style;            // empty: the stroke file names none
   int group = 0;                // hatching
   bool free = false;            // hatching: a free group
+  bool mobile = false;          // hatching: a mobile group (Kalnins et al. 2002, §6.3)
   std::string style_dir = ".";  // where style files named by a relative path are (the stroke file's folder)
 };
 

@@ -4,7 +4,8 @@ renderings, as SVG, and makes them stroke files with `plumbago strokefile` (Kaln
 
   draw_stand_ins.py snowman     scenes/drawn/snowman.svg -> snowman.strokes.json: the face
                                 and buttons as decals, structured hatching on the shadow
-                                side of each ball, two layers on each tree (Fig. 8)
+                                side of each ball, two layers of mobile hatching on each
+                                tree (Fig. 8)
   draw_stand_ins.py cup         scenes/drawn/cup.svg -> cup.strokes.json: flowers, leaves and
                                 a band as decals on spot's flank (Table 1's cup)
   draw_stand_ins.py breakfast   scenes/drawn/breakfast.level<k>.svg -> .strokes.json: free
@@ -143,7 +144,8 @@ def snowman(scene):
         side = cam.away_from((base[:3] + apex[:3]) / 2, light)
         for layer, (angle, spacing) in enumerate(((70, 4), (-20, 5.5))):
             strokes = shadow_hatches(cam, center, reach, side, -reach * 0.05, angle, spacing, rng, inside)
-            elements.append((strokes, {"data-role": "hatching", "data-group": str(3 + 2 * t + layer)}))
+            elements.append((strokes, {"data-role": "hatching", "data-group": str(3 + 2 * t + layer),
+                                       "data-mobile": "true"}))  # they move with the view (§6.3)
     head = balls[2]
     hc, hr = head[:3, 3], head[0, 0]
     face = []

@@ -12,6 +12,7 @@
 
 #include <optional>
 
+#include "common/strokes/mobile_hatching.hpp"
 #include "common/strokes/silhouette_paths.hpp"
 #include "gpu/core/stage.hpp"
 #include "gpu/scene/mesh_buffers.hpp"
@@ -35,6 +36,7 @@ class IdImagePass : public GpuPass {
     // The decals' surface points, projected once for the renderer's frames (Kalnins et al.
     // 2002, §3).
     if (has_decals(f.scene)) decals_ = project_decals_through_gbuffer(f.scene);
+    mobile_.emplace(f.scene, decals_);  // the mobile hatching groups' travel (Kalnins et al. 2002, §6.3)
     first_key_ = first_faces(f.scene);
     for (uint32_t o = 0; o < f.scene.objects.size(); ++o)
       if (f.scene.objects[o].style == Style::Sketchy) sketchy_.push_back(upload_mesh(f.scene, o));
@@ -49,7 +51,7 @@ class IdImagePass : public GpuPass {
     std::vector<ChainPath> silhouettes = silhouettes_(f.scene, f.get(kLineMeshes), f.get(kSilhouettePaths),
                                                       f.get(kSilhouetteCrossings), p.silhouette_normalized);
     f.put(kWindowLines, window_lines(f.scene, p, LineObjects::Strokes, &f.get(kLineMeshes),
-                                     has_decals(f.scene) ? &decals_ : nullptr, &silhouettes));
+                                     has_decals(f.scene) ? &decals_ : nullptr, &silhouettes, &*mobile_));
     table_.emplace(f.get(kWindowLines));
     f.put(kPathTable, *table_);
     Texture& target = f.put(kIds);
@@ -117,6 +119,7 @@ class IdImagePass : public GpuPass {
   IdLines lines_;                       // rules 2 and 3
   std::optional<UploadedPaths> table_;  // this frame's, kept until the next
   DecalSurface decals_;
+  std::optional<MobileHatching> mobile_;
   std::vector<uint32_t> first_key_;  // per object, its first face key less one
   std::vector<MeshBuffers> sketchy_;
   Buffer gbuffer_first_keys_;  // gbuffer_first_keys

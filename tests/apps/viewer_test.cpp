@@ -111,7 +111,8 @@ TEST_F(Viewer, ScriptedEffectToggleSavedRendersTheSame) {
 const std::string kTorusStrokes = std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/torus_strokes.json";
 
 // Drawing on the model (Kalnins et al. 2002): a decal drawn by script shows at once, a
-// silhouette example restyles the silhouettes, undo and the eraser take strokes back; the strokes and
+// silhouette example restyles the silhouettes, a mobile hatching group of two strokes is
+// drawn, undo and the eraser take strokes back; the strokes and
 // the scene saved, `render` of the saved scene draws what the viewer showed, and
 // `compare` finds both backends agreeing on it.
 TEST_F(Viewer, DrawnStrokesSavedRenderTheSameOnBothBackends) {
@@ -122,6 +123,8 @@ TEST_F(Viewer, DrawnStrokesSavedRenderTheSameOnBothBackends) {
       {"screenshot": ")" + path("decal.png") +
                                  R"("},
       {"draw": {"kind": "silhouette", "points": [[0, 0], [10, 8], [20, -8], [30, 8], [40, 0]]}},
+      {"draw": {"kind": "hatching", "group": 0, "mobile": true, "points": [[62, 52], [65, 70]]}},
+      {"draw": {"kind": "hatching", "group": 0, "mobile": true, "points": [[67, 52], [70, 70]]}},
       {"save_strokes": ")" + path("drawn.strokes.json") +
                                  R"("}, {"save": ")" + path("saved.json") + R"("},
       {"screenshot": ")" + path("after.png") +
@@ -129,8 +132,9 @@ TEST_F(Viewer, DrawnStrokesSavedRenderTheSameOnBothBackends) {
   EXPECT_GT(png_difference(path("before.png"), path("decal.png")), 0.25) << "the decal shows";
   EXPECT_GT(png_difference(path("decal.png"), path("after.png")), 0.25) << "the example restyles the silhouettes";
   StrokeFile saved = load_stroke_file(path("drawn.strokes.json"), glm::dvec3(0.0));
-  ASSERT_EQ(saved.strokes.size(), 2u) << "the undone stroke and the erased one are not saved";
+  ASSERT_EQ(saved.strokes.size(), 4u) << "the undone stroke and the erased one are not saved";
   EXPECT_EQ(saved.strokes[1].role, StrokeRole::Silhouette);
+  EXPECT_TRUE(saved.strokes[3].mobile) << "a structured group of two strokes drawn in one view, mobile";
   testing::CliRun r = run("render " + path("saved.json") + " -o " + path("render.png"));
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_LE(png_difference(path("after.png"), path("render.png")), kTolerance);

@@ -230,7 +230,7 @@ TEST(SvgStrokes, TheCommittedDrawingsGiveTheirStrokeFiles) {
     const std::string strokes = (drawn / entry.path().stem()).string() + ".strokes.json";
     SCOPED_TRACE(svg);
     StrokeFile file = load_stroke_file(strokes, glm::dvec3(0.0));
-    SvgStrokeDefaults defaults{StrokeRole::Decal, file.style, 0, false, drawn.string()};
+    SvgStrokeDefaults defaults{StrokeRole::Decal, file.style, 0, false, false, drawn.string()};
     file.strokes = svg_strokes(read_input_file(svg, "SVG drawing"), svg, file.width, file.height, defaults);
     const std::string made = stroke_file_json(file, glm::dvec3(0.0)),
                       committed = read_input_file(strokes, "stroke file");

@@ -1,0 +1,258 @@
+// Mobile hatching (Kalnins et al. 2002, §6.3): see common/strokes/mobile_hatching.hpp.
+#include "common/strokes/mobile_hatching.hpp"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/convex_hull_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+
+#include "common/strokes/hatching.hpp"
+
+namespace plumbago {
+
+// Which face of a mesh holds a point of its (u, v) chart, and where: a uniform grid of
+// buckets over the chart, each listing the faces whose (u, v) box meets it.
+class UvChart {
+ public:
+  struct Hit {
+    uint32_t face;
+    glm::dvec3 bary;
+  };
+
+  explicit UvChart(const Mesh& mesh) : mesh_(mesh) {
+    for (const glm::vec2& uv : mesh.uvs) lo_ = glm::min(lo_, glm::dvec2(uv)), hi_ = glm::max(hi_, glm::dvec2(uv));
+    cells_ = std::clamp(int(std::sqrt(double(mesh.triangles.size()) / 2)), 1, 1024);
+    buckets_.resize(size_t(cells_) * size_t(cells_));
+    for (uint32_t f = 0; f < mesh.triangles.size(); ++f) {
+      glm::dvec2 a(INFINITY), b(-INFINITY);
+      for (int k = 0; k < 3; ++k) a = glm::min(a, corner(f, k)), b = glm::max(b, corner(f, k));
+      glm::ivec2 c0 = cell(a), c1 = cell(b);
+      for (int j = c0.y; j <= c1.y; ++j)
+        for (int i = c0.x; i <= c1.x; ++i) buckets_[size_t(j) * size_t(cells_) + size_t(i)].push_back(f);
+    }
+    const std::optional<Hit> first = locate({lo_.x, (lo_.y + hi_.y) / 2}),
+                             next = locate({lo_.x + 1, (lo_.y + hi_.y) / 2});
+    periodic_ =
+        first && next && glm::distance(position(*first), position(*next)) <= 1e-5 * double(mesh.bbox_diagonal());
+  }
+
+  // The face holding `uv`, the one it lies deepest in where several do (an edge); on a
+  // periodic chart u is taken modulo 1 first, then 1 further (a face across the seam).
+  std::optional<Hit> locate(glm::dvec2 uv) const {
+    if (periodic_) uv.x = lo_.x + (uv.x - lo_.x - std::floor(uv.x - lo_.x));
+    std::optional<Hit> hit = locate_in_chart(uv);
+    if (!hit && periodic_) hit = locate_in_chart({uv.x + 1, uv.y});
+    return hit;
+  }
+
+  glm::dvec3 position(const Hit& h) const {
+    return interpolate(h, [&](uint32_t v) { return mesh_.positions[v]; });
+  }
+  glm::dvec3 normal(const Hit& h) const {
+    return interpolate(h, [&](uint32_t v) { return mesh_.normals[v]; });
+  }
+  glm::dvec2 uv(uint32_t face, const glm::dvec3& bary) const {
+    return bary.x * corner(face, 0) + bary.y * corner(face, 1) + bary.z * corner(face, 2);
+  }
+  bool periodic() const { return periodic_; }
+  double u_lowest() const { return lo_.x; }
+  double u_span() const { return periodic_ ? 1.0 : hi_.x - lo_.x; }
+
+ private:
+  glm::dvec2 corner(uint32_t f, int k) const { return glm::dvec2(mesh_.uvs[3 * size_t(f) + size_t(k)]); }
+
+  glm::ivec2 cell(glm::dvec2 uv) const {
+    glm::dvec2 t = (uv - lo_) / glm::max(hi_ - lo_, glm::dvec2(1e-300)) * double(cells_);
+    return glm::clamp(glm::ivec2(glm::floor(t)), glm::ivec2(0), glm::ivec2(cells_ - 1));
+  }
+
+  std::optional<Hit> locate_in_chart(glm::dvec2 uv) const {
+    if (uv.x < lo_.x || uv.y < lo_.y || uv.x > hi_.x || uv.y > hi_.y) return std::nullopt;
+    glm::ivec2 c = cell(uv);
+    std::optional<Hit> best;
+    double deepest = -1e-9;
+    for (uint32_t f : buckets_[size_t(c.y) * size_t(cells_) + size_t(c.x)]) {
+      glm::dvec2 a = corner(f, 0), e1 = corner(f, 1) - a, e2 = corner(f, 2) - a, d = uv - a;
+      double det = e1.x * e2.y - e1.y * e2.x;
+      if (det == 0) continue;
+      double b1 = (d.x * e2.y - d.y * e2.x) / det, b2 = (e1.x * d.y - e1.y * d.x) / det;
+      double depth = std::min({1 - b1 - b2, b1, b2});
+      if (depth >= deepest) deepest = depth, best = Hit{f, {1 - b1 - b2, b1, b2}};
+    }
+    return best;
+  }
+
+  template <class Of>
+  glm::dvec3 interpolate(const Hit& h, Of of) const {
+    const glm::uvec3& t = mesh_.triangles[h.face];
+    return h.bary.x * glm::dvec3(of(t[0])) + h.bary.y * glm::dvec3(of(t[1])) + h.bary.z * glm::dvec3(of(t[2]));
+  }
+
+  const Mesh& mesh_;
+  glm::dvec2 lo_{INFINITY}, hi_{-INFINITY};
+  int cells_ = 1;
+  std::vector<std::vector<uint32_t>> buckets_;
+  bool periodic_ = false;
+};
+
+struct MobileHatching::Group {
+  int index;  // in hatching_groups
+  uint32_t object;
+  std::vector<size_t> decals;  // its surface strokes
+  glm::dvec2 c;                // the centroid of its points' hull in (u, v)
+  double width;                // the hull's extent in u
+  glm::dvec3 n_c;              // the smoothed normal at c, in the view space of the camera it was drawn in
+};
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+// The area centroid of the convex hull of `points` (its vertex mean where it has no area)
+// and its extent in u.
+std::pair<glm::dvec2, double> hull_centroid(const std::vector<glm::dvec2>& points) {
+  std::vector<Kernel::Point_2> in, hull;
+  for (glm::dvec2 p : points) in.emplace_back(p.x, p.y);
+  CGAL::convex_hull_2(in.begin(), in.end(), std::back_inserter(hull));
+  double area = 0, lo = INFINITY, hi = -INFINITY;
+  glm::dvec2 sum(0.0), mean(0.0);
+  for (size_t i = 0; i < hull.size(); ++i) {
+    glm::dvec2 a(hull[i].x(), hull[i].y()), b(hull[(i + 1) % hull.size()].x(), hull[(i + 1) % hull.size()].y());
+    double cross = a.x * b.y - a.y * b.x;
+    area += cross, sum += (a + b) * cross, mean += a / double(hull.size());
+    lo = std::min(lo, a.x), hi = std::max(hi, a.x);
+  }
+  return {std::abs(area) > 1e-14 ? sum / (3 * area) : mean, hi - lo};
+}
+
+// The object-space normal at (u, v) smoothed along the u-line by a box of `width`
+// (kMobileSamples / 8 samples across it, those on the surface), unnormalized; zero where
+// none is.
+glm::dvec3 smoothed_normal(const UvChart& chart, glm::dvec2 uv, double width) {
+  constexpr int kAcross = kMobileSamples / 8;
+  glm::dvec3 sum(0.0);
+  for (int k = 0; k < kAcross; ++k) {
+    double t = kAcross > 1 ? double(k) / (kAcross - 1) - 0.5 : 0.0;
+    if (auto hit = chart.locate({uv.x + t * width, uv.y})) sum += glm::normalize(chart.normal(*hit));
+  }
+  return sum;
+}
+
+// Object space to the view space of `camera`, for normals (the transform's inverse transpose).
+glm::dmat3 normal_to_view(const SceneObject& o, const Camera& camera) {
+  return glm::dmat3(glm::dmat4(camera.view())) * glm::transpose(glm::inverse(glm::dmat3(glm::dmat4(o.transform))));
+}
+
+// The object most of `points` lie on (kMissed: none).
+uint32_t most_met(const std::vector<const DecalPoint*>& points) {
+  std::map<uint32_t, size_t> count;
+  for (const DecalPoint* p : points) ++count[p->object];
+  auto most = std::max_element(count.begin(), count.end(), [](auto& a, auto& b) { return a.second < b.second; });
+  return most == count.end() ? kMissed : most->first;
+}
+
+}  // namespace
+
+MobileHatching::MobileHatching(const Scene& scene, const DecalSurface& surface) : charts_(scene.objects.size()) {
+  const std::vector<HatchGroup> groups = hatching_groups(scene);
+  for (int g = 0; g < int(groups.size()); ++g) {
+    if (!groups[g].mobile) continue;
+    Group group{g, kMissed, {}, {}, 0, {}};
+    std::vector<const DecalPoint*> hit;
+    for (size_t d = 0; d < surface.size(); ++d) {
+      if (surface[d].hatch.group != g) continue;
+      group.decals.push_back(d);
+      for (const DecalPoint& p : surface[d].points)
+        if (p.object != kMissed) hit.push_back(&p);
+    }
+    const StrokeFile& file = scene.stroke_files[groups[g].files[0]];
+    auto refuse = [&](const std::string& why) {
+      throw SceneError(file.source + ": hatching group " + std::to_string(groups[g].number) + ": " + why);
+    };
+    group.object = most_met(hit);
+    if (group.object == kMissed) refuse("a mobile group lies on no surface where it was drawn");
+    const Mesh& mesh = *scene.objects[group.object].mesh;
+    if (mesh.uvs.empty())
+      refuse("a mobile group travels along a u-line of its object's (u, v), and object " +
+             std::to_string(group.object) + " (" + mesh.name +
+             ") has none: an OBJ file with vt on every face, or a procedural torus, sphere, plane, cylinder or cone");
+    if (!charts_[group.object]) charts_[group.object] = std::make_shared<const UvChart>(mesh);
+    const UvChart& chart = *charts_[group.object];
+    std::vector<glm::dvec2> uv;
+    for (const DecalPoint* p : hit)
+      if (p->object == group.object) uv.push_back(chart.uv(p->face, p->bary));
+    std::tie(group.c, group.width) = hull_centroid(uv);
+    glm::dvec3 n = smoothed_normal(chart, group.c, group.width);
+    if (glm::length(n) == 0) refuse("the centroid of a mobile group's (u, v) hull lies off its object's chart");
+    group.n_c = glm::normalize(normal_to_view(scene.objects[group.object], file.camera) * n);
+    groups_.push_back(std::move(group));
+  }
+}
+
+MobileHatching::~MobileHatching() = default;
+MobileHatching::MobileHatching(MobileHatching&&) noexcept = default;
+
+const MobileHatching::Group* MobileHatching::group_of(size_t decal) const {
+  for (const Group& g : groups_)
+    if (std::find(g.decals.begin(), g.decals.end(), decal) != g.decals.end()) return &g;
+  return nullptr;
+}
+
+bool MobileHatching::moves(size_t decal) const { return group_of(decal) != nullptr; }
+
+std::vector<MobileHatching::Placement> MobileHatching::place(const Scene& scene, double threshold, double fade) const {
+  std::vector<Placement> out(hatching_groups(scene).size());
+  for (const Group& g : groups_) {
+    const UvChart& chart = *charts_[g.object];
+    const glm::dmat3 to_view = normal_to_view(scene.objects[g.object], scene.camera);
+    const double step = chart.u_span() / (chart.periodic() ? kMobileSamples : kMobileSamples - 1);
+    std::vector<double> l(kMobileSamples, -INFINITY);  // -inf: off the surface
+    for (int i = 0; i < kMobileSamples; ++i) {
+      glm::dvec3 n = smoothed_normal(chart, {chart.u_lowest() + i * step, g.c.y}, g.width);
+      if (glm::length(n) > 0) l[size_t(i)] = glm::dot(g.n_c, glm::normalize(to_view * n));
+    }
+    Placement& p = out[size_t(g.index)];
+    p.c = g.c;
+    auto at = [&](int i) { return chart.periodic() ? l[size_t((i + kMobileSamples) % kMobileSamples)] : l[size_t(i)]; };
+    for (int i = chart.periodic() ? 0 : 1; i < (chart.periodic() ? kMobileSamples : kMobileSamples - 1); ++i) {
+      const double a = at(i - 1), b = at(i), c = at(i + 1);
+      if (!(b >= threshold && b > a && b >= c)) continue;  // a plateau counts once, at its first sample
+      const double curve = a - 2 * b + c,
+                   shift = std::isfinite(a) && std::isfinite(c) && curve < 0 ? 0.5 * (a - c) / curve : 0;
+      p.u.push_back(chart.u_lowest() + (i + shift) * step);
+      p.l.push_back(b);
+      p.alpha.push_back(fade > 0 ? std::clamp((b - threshold) / fade, 0.0, 1.0) : 1.0);
+    }
+  }
+  return out;
+}
+
+std::vector<MobileHatching::Copy> MobileHatching::copies(const DecalSurface& surface, size_t decal,
+                                                         const std::vector<Placement>& placements) const {
+  std::vector<Copy> out;
+  const Group* g = group_of(decal);
+  if (!g) return out;
+  const UvChart& chart = *charts_[g->object];
+  const Placement& p = placements.at(size_t(g->index));
+  for (size_t m = 0; m < p.u.size(); ++m) {
+    ProjectedDecal moved = surface[decal];
+    for (DecalPoint& point : moved.points) {
+      if (point.object != g->object) {
+        point.object = kMissed;
+        continue;
+      }
+      std::optional<UvChart::Hit> hit = chart.locate(chart.uv(point.face, point.bary) + glm::dvec2(p.u[m] - g->c.x, 0));
+      if (hit)
+        point.face = hit->face, point.bary = hit->bary;
+      else
+        point.object = kMissed;
+    }
+    out.push_back({std::move(moved), p.alpha[m]});
+  }
+  return out;
+}
+
+}  // namespace plumbago

@@ -1,0 +1,77 @@
+// Mobile hatching (Kalnins et al. 2002, §6.3): hatching groups that move on the surface as
+// the view changes, "suggestive of light cast from somewhere behind the camera". A group
+// drawn in mobile mode (a stroke file's hatching strokes with "mobile": true) implies a
+// pseudo-light opposite its local normal: a light for highlights, a "dark light" for
+// shading.
+//
+// 1. When the renderer reads the scene (MobileHatching's constructor), per mobile group, on
+//    the object most of its drawn points lie on, whose parameterization (Mesh::uvs) it
+//    needs:
+//    - its projected points (common/strokes/decal.hpp) in (u, v): (1) projected into uv
+//      space, (2) their convex hull, (3) its centroid c (the polygon's area centroid),
+//      (4) n_c, the surface normal at c, in the view space of the camera it was drawn in;
+//    - it travels on the u-line through c (v = c.v), and its extent w is the hull's in u.
+// 2. Every frame, along the u-line, kMobileSamples samples of the normal n(u) (the mesh's
+//    vertex normals interpolated, in the current view space), smoothed by a box kernel of
+//    the group's extent w ("to reduce sensitivity to minor surface variations"; n_c is
+//    smoothed the same way), give l(u) = n_c . n(u). At each local maximum of l (refined
+//    by the parabola through it and its neighbours) with l >= T (hatching.mobile_threshold,
+//    the paper's 1/2) a copy of the group is placed: its points moved by u* - c.u in
+//    (u, v) and put back on the surface where (u, v) lies on a face (elsewhere missed,
+//    which splits a hatch as a decal's miss does). Its alpha is multiplied by
+//    clamp((l - T) / hatching.mobile_fade, 0, 1): the fade "as l(u) approaches T".
+//    A u-line is periodic (period 1) where the chart's lowest u and that plus 1 are the
+//    same point of the surface (a torus, sphere, cylinder or cone about its axis).
+// What is not done: a peak's width does not govern the copy's extent (each copy keeps the
+// drawn extent); the parameterization is the mesh's own (OBJ `vt`, a procedural surface's),
+// a mesh without one is refused; a group's level of detail is measured where it was drawn.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "common/strokes/decal.hpp"
+
+namespace plumbago {
+
+// Samples of l(u) along a group's u-line each frame.
+constexpr int kMobileSamples = 256;
+
+class UvChart;
+
+class MobileHatching {
+ public:
+  // The mobile groups of `scene` (hatching_groups), from their projected strokes `surface`
+  // (decal_samples' order). Throws SceneError naming the stroke file and group when the
+  // object a group lies on has no parameterization, or it lies on none.
+  MobileHatching(const Scene& scene, const DecalSurface& surface);
+  ~MobileHatching();
+  MobileHatching(MobileHatching&&) noexcept;
+
+  // Whether surface stroke `decal` is a mobile group's.
+  bool moves(size_t decal) const;
+
+  // A group this frame (2. above), in hatching_groups' order (stationary groups: none):
+  // its centroid c in (u, v), and per copy the u of its maximum, l there and its alpha.
+  struct Placement {
+    glm::dvec2 c{0.0};
+    std::vector<double> u, l, alpha;
+  };
+  std::vector<Placement> place(const Scene& scene, double threshold, double fade) const;
+
+  // The copies of mobile surface stroke `decal` at `placements` (place's): one a maximum,
+  // its points moved along the u-line; with each, its alpha.
+  struct Copy {
+    ProjectedDecal decal;
+    double alpha;
+  };
+  std::vector<Copy> copies(const DecalSurface& surface, size_t decal, const std::vector<Placement>& placements) const;
+
+ private:
+  struct Group;
+  const Group* group_of(size_t decal) const;
+  std::vector<std::shared_ptr<const UvChart>> charts_;  // per scene object, made where a group needs it
+  std::vector<Group> groups_;
+};
+
+}  // namespace plumbago

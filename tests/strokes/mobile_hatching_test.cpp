@@ -1,0 +1,154 @@
+// Mobile hatching (common/strokes/mobile_hatching.hpp, Kalnins et al. 2002, §6.3): a group
+// drawn on an upright sphere travels along its parallel by the angle the view orbits, its
+// hatches' surface points with it; its alpha fades as l approaches T; a mesh without a
+// parameterization is refused; both backends agree on the snowman's mobile trees along
+// their camera path.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "common/mesh/procedural.hpp"
+#include "common/scene/animation.hpp"
+#include "common/strokes/hatching.hpp"
+#include "common/strokes/mobile_hatching.hpp"
+#include "common/strokes/strokes.hpp"
+#include "parity/parity.hpp"
+#include "reference/strokes/decal.hpp"
+#include "tests/support/test_scenes.hpp"
+
+namespace plumbago {
+namespace {
+
+// One sample of l(u) along a parallel: the bound on where a maximum is placed (the parabola
+// through the samples refines it; the bound does not count on that).
+constexpr double kSample = 1.0 / kMobileSamples;
+
+// A sphere with its poles on the world's up axis (its parallels are its u-lines: the
+// procedural sphere's u is the angle about its own z), a mobile group of four short
+// hatches drawn on its right side.
+Scene sphere_with_mobile_group(const std::string& mesh = "sphere") {
+  Scene s = testing::one_stroke_object(make_procedural(mesh), glm::vec3(0, 1, 4));
+  s.objects[0].transform =
+      glm::mat4(glm::vec4(1, 0, 0, 0), glm::vec4(0, 0, -1, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 0, 1));  // z up
+  StrokeFile f;
+  f.source = "mobile hatches";
+  f.camera = s.camera, f.width = s.width, f.height = s.height;
+  for (int i = 0; i < 4; ++i) {
+    DrawnStroke h;
+    h.role = StrokeRole::Hatching, h.group = 0, h.mobile = true;
+    h.points = {{{190.0 + 5 * i, 100}, 1.0}, {{193.0 + 5 * i, 140}, 1.0}};
+    h.style = load_stroke_style("pencil");
+    f.strokes.push_back(h);
+  }
+  s.stroke_files = {f};
+  return s;
+}
+
+// `s` with its eye turned by `degrees` about the up axis through the target.
+Scene orbited(Scene s, double degrees) {
+  glm::dmat4 turn = glm::rotate(glm::dmat4(1.0), glm::radians(degrees), glm::dvec3(0, 1, 0));
+  s.camera.eye = glm::vec3(turn * glm::dvec4(glm::dvec3(s.camera.eye), 1.0));
+  return s;
+}
+
+// A u difference taken the short way round the period 1.
+double around(double du) { return du - std::round(du); }
+
+// The angle of a world point about the up axis, in turns.
+double turns_about_up(glm::dvec3 p) { return std::atan2(p.x, p.z) / (2 * std::numbers::pi); }
+
+TEST(MobileHatching, TravelsAlongItsULineByTheAngleTheViewOrbits) {
+  Scene s = sphere_with_mobile_group();
+  DecalSurface surface = reference::project_decals_by_rays(s);
+  MobileHatching mobile(s, surface);
+  ASSERT_TRUE(mobile.moves(0));
+  std::vector<double> shifts;
+  for (double degrees : {0.0, 20.0, 40.0, -30.0}) {
+    Scene view = orbited(s, degrees);
+    std::vector<MobileHatching::Placement> placed = mobile.place(view, 0.5, 0.1);
+    ASSERT_EQ(placed.size(), 1u);
+    ASSERT_EQ(placed[0].u.size(), 1u) << degrees << " degrees: one maximum of l on a sphere";
+    const double du = around(placed[0].u[0] - placed[0].c.x);
+    std::printf("[mobile] orbit %+.0f deg: u moves %+.5f (%+.2f deg), l %.4f\n", degrees, du, 360 * du, placed[0].l[0]);
+    EXPECT_NEAR(std::abs(du), std::abs(degrees) / 360, kSample) << degrees;
+    EXPECT_GT(placed[0].l[0], 0.99) << "a sphere turns its normal with the view";
+    shifts.push_back(du);
+    // Its hatches' surface points move with it: by the same angle about the up axis.
+    for (const MobileHatching::Copy& copy : mobile.copies(surface, 0, placed))
+      for (size_t k = 0; k < copy.decal.points.size(); ++k) {
+        if (copy.decal.points[k].object == kMissed || surface[0].points[k].object == kMissed) continue;
+        double moved = turns_about_up(decal_point_world(s, copy.decal.points[k])) -
+                       turns_about_up(decal_point_world(s, surface[0].points[k]));
+        ASSERT_NEAR(std::abs(around(moved)), std::abs(degrees) / 360, kSample) << degrees << " point " << k;
+      }
+  }
+  EXPECT_GT(shifts[1] * shifts[2], 0) << "one way round";
+  EXPECT_LT(shifts[2] * shifts[3], 0) << "the other way when the view orbits back";
+}
+
+TEST(MobileHatching, FadesAsTheLightingApproachesTheThreshold) {
+  Scene s = orbited(sphere_with_mobile_group(), 25);
+  DecalSurface surface = reference::project_decals_by_rays(s);
+  MobileHatching mobile(s, surface);
+  const double l = mobile.place(s, 0.5, 0.1)[0].l.at(0);
+  EXPECT_EQ(mobile.place(s, 0.5, 0.1)[0].alpha.at(0), 1.0);
+  EXPECT_NEAR(mobile.place(s, l - 0.05, 0.1)[0].alpha.at(0), 0.5, 1e-9);
+  EXPECT_TRUE(mobile.place(s, l + 1e-6, 0.1)[0].u.empty()) << "omitted below the threshold";
+  // window_lines draws each copy with the fade's alpha.
+  s.params.set("hatching.mobile_fade", 0.1);
+  s.params.set("hatching.mobile_threshold", double(float(l - 0.05)));
+  WindowLines lines = window_lines(s, s.params.get<StrokesParams>(), LineObjects::Strokes, nullptr, &surface);
+  size_t hatches = 0;
+  for (const WindowPath& p : lines.paths) {
+    if (p.kind != LineKind::Hatching) continue;
+    ++hatches;
+    EXPECT_NEAR(p.alpha_scale, (l - double(float(l - 0.05))) / 0.1, 1e-6);
+  }
+  EXPECT_GE(hatches, 4u);
+}
+
+TEST(MobileHatching, AGroupOnAMeshWithoutAParameterizationIsRefused) {
+  Scene s = sphere_with_mobile_group("cube");
+  DecalSurface surface = reference::project_decals_by_rays(s);
+  try {
+    MobileHatching mobile(s, surface);
+    FAIL() << "a cube has no (u, v)";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("mobile hatches: hatching group 0"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("has none"), std::string::npos) << e.what();
+  }
+  s.stroke_files[0].strokes[1].mobile = false;
+  EXPECT_THROW(hatching_groups(s), SceneError) << "a group's strokes all mobile or all stationary";
+}
+
+class MobileHatchingStrokes : public testing::GlTest {};
+
+// The snowman's trees carry two layers of mobile hatching (Fig. 8): along its orbit they move
+// on the cones, and the ID image, visibility and stroke raster agree on both backends.
+TEST_F(MobileHatchingStrokes, TheSnowmansTreesAgreeAlongTheOrbit) {
+  Scene path = load_scene(std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/snowman_mobile.json");
+  DecalSurface surface = reference::project_decals_by_rays(path);
+  MobileHatching mobile(path, surface);
+  const HatchingParams p = path.params.get<HatchingParams>();
+  size_t moving = 0;
+  for (size_t d = 0; d < surface.size(); ++d) moving += mobile.moves(d);
+  EXPECT_GT(moving, 40u) << "the trees' four groups";
+  for (int frame : {0, path.animation->frames - 1}) {
+    Scene scene = scene_at_frame(path, frame);
+    for (const MobileHatching::Placement& g : mobile.place(scene, p.mobile_threshold, p.mobile_fade))
+      for (size_t m = 0; m < g.u.size(); ++m)
+        std::printf("[snowman frame %d] a mobile group at u %+.4f from where drawn, l %.3f\n", frame,
+                    around(g.u[m] - g.c.x), g.l[m]);
+    for (const StageParity& r : run_parity(scene, {"id_image", "visibility", "stroke"})) {
+      std::printf("[snowman frame %d] %s  [%s]\n", frame, format_diff(r.name, r.diff).c_str(), r.note.c_str());
+      EXPECT_TRUE(r.pass) << frame << " " << r.name << ": " << r.note;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace plumbago
