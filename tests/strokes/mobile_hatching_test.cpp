@@ -29,8 +29,8 @@ constexpr double kSample = 1.0 / kMobileSamples;
 
 // A sphere with its poles on the world's up axis (its parallels are its u-lines: the
 // procedural sphere's u is the angle about its own z), a mobile group of four short
-// hatches drawn on its right side.
-Scene sphere_with_mobile_group(const std::string& mesh = "sphere") {
+// hatches drawn on its right side, structured or free.
+Scene sphere_with_mobile_group(const std::string& mesh = "sphere", bool free = false) {
   Scene s = testing::one_stroke_object(make_procedural(mesh), glm::vec3(0, 1, 4));
   s.objects[0].transform =
       glm::mat4(glm::vec4(1, 0, 0, 0), glm::vec4(0, 0, -1, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 0, 1));  // z up
@@ -39,7 +39,7 @@ Scene sphere_with_mobile_group(const std::string& mesh = "sphere") {
   f.camera = s.camera, f.width = s.width, f.height = s.height;
   for (int i = 0; i < 4; ++i) {
     DrawnStroke h;
-    h.role = StrokeRole::Hatching, h.group = 0, h.mobile = true;
+    h.role = StrokeRole::Hatching, h.group = 0, h.mobile = true, h.free = free;
     h.points = {{{190.0 + 5 * i, 100}, 1.0}, {{193.0 + 5 * i, 140}, 1.0}};
     h.style = load_stroke_style("pencil");
     f.strokes.push_back(h);
@@ -61,9 +61,13 @@ double around(double du) { return du - std::round(du); }
 // The angle of a world point about the up axis, in turns.
 double turns_about_up(glm::dvec3 p) { return std::atan2(p.x, p.z) / (2 * std::numbers::pi); }
 
-TEST(MobileHatching, TravelsAlongItsULineByTheAngleTheViewOrbits) {
-  Scene s = sphere_with_mobile_group();
+class MobileGroups : public ::testing::TestWithParam<bool> {};  // free or structured
+
+TEST_P(MobileGroups, TravelAlongTheirULineByTheAngleTheViewOrbits) {
+  Scene s = sphere_with_mobile_group("sphere", GetParam());
   DecalSurface surface = reference::project_decals_by_rays(s);
+  ASSERT_EQ(surface.size(), GetParam() ? 4u : 3u * (1u << kMaxHatchLevel) + 1u) << "free: as drawn; structured: "
+                                                                                   "with the hatches between";
   MobileHatching mobile(s, surface);
   ASSERT_TRUE(mobile.moves(0));
   std::vector<double> shifts;
@@ -89,6 +93,9 @@ TEST(MobileHatching, TravelsAlongItsULineByTheAngleTheViewOrbits) {
   EXPECT_GT(shifts[1] * shifts[2], 0) << "one way round";
   EXPECT_LT(shifts[2] * shifts[3], 0) << "the other way when the view orbits back";
 }
+
+INSTANTIATE_TEST_SUITE_P(Kinds, MobileGroups, ::testing::Bool(),
+                         [](const auto& info) { return info.param ? "Free" : "Structured"; });
 
 TEST(MobileHatching, FadesAsTheLightingApproachesTheThreshold) {
   Scene s = orbited(sphere_with_mobile_group(), 25);
