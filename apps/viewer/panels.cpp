@@ -110,7 +110,7 @@ void preprocessing_bar(const Session& session) {
 
 }  // namespace
 
-void Panels::draw(Session& session, Inspection& inspection, Drawing& drawing, glm::ivec2 framebuffer, float width) {
+void Panels::draw(Session& session, Inspection& inspection, DrawingTool& drawing, glm::ivec2 framebuffer, float width) {
   ImGui::SetNextWindowPos(ImVec2(float(framebuffer.x) - width, 0), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(width, float(framebuffer.y)), ImGuiCond_Always);
   const ImGuiWindowFlags pinned = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
@@ -120,7 +120,8 @@ void Panels::draw(Session& session, Inspection& inspection, Drawing& drawing, gl
   if (session.preprocessing()) preprocessing_bar(session);
   if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) scene_section(session);
   if (ImGui::CollapsingHeader("Camera")) camera_section(session);
-  if (drawing.size() > std::exchange(drawn_shown_, drawing.size())) ImGui::SetNextItemOpen(true);  // a new stroke
+  const size_t drawn = drawing.drawing().size();
+  if (drawn > std::exchange(drawn_shown_, drawn)) ImGui::SetNextItemOpen(true);  // a new stroke
   if (ImGui::CollapsingHeader("Draw on the model")) draw_section(session, drawing);
   if (ImGui::CollapsingHeader("Stage view", ImGuiTreeNodeFlags_DefaultOpen)) stage_section(session, inspection);
   if (ImGui::CollapsingHeader("Check against the reference", ImGuiTreeNodeFlags_DefaultOpen))
@@ -260,7 +261,7 @@ void Panels::save_section(Session& session) {
 
 // Kalnins et al. 2002's tool: what a left drag draws (a decal or hatch in a style, a crease
 // or silhouette example), undo and redo, the strokes drawn, and their files saved.
-void Panels::draw_section(Session& session, Drawing& drawing) {
+void Panels::draw_section(const Session& session, DrawingTool& drawing) {
   int drag = int(left_drag);
   ImGui::Text("left drag:");
   for (auto [mode, name, doc] : {std::tuple{LeftDrag::Orbit, "orbit", "orbits the camera"},
@@ -295,56 +296,54 @@ void Panels::draw_section(Session& session, Drawing& drawing) {
       "Mobile hatching (Kalnins et al. 2002, §6.3): the group moves along a u-line of its object's (u, v) as "
       "the view changes, lit by a pseudo-light opposite its normal where drawn");
   ImGui::EndDisabled();
-  bool changed = false;
-  if (ImGui::Button("Undo")) changed = drawing.undo();
+  if (ImGui::Button("Undo")) drawing.undo();
   tooltip("Ctrl+Z");
   ImGui::SameLine();
-  if (ImGui::Button("Redo")) changed = drawing.redo();
+  if (ImGui::Button("Redo")) drawing.redo();
   tooltip("Ctrl+Y");
-  if (changed) session.set_drawn(drawing.files());
   drawn_list(session, drawing);
   ImGui::InputText("##strokes", &strokes_path_);
   ImGui::SameLine();
   if (ImGui::Button("Save strokes")) {
     try {
-      drawing.save(strokes_path_, session.scene().origin);
-      session.set_drawn(drawing.files());
-      draw_status = "wrote " + strokes_path_ + " (a file a view drawn in); Save scene lists them";
+      drawing.save(strokes_path_);
     } catch (const std::exception& e) {
-      draw_status = e.what();
+      drawing.set_status(e.what());
     }
   }
-  ImGui::TextWrapped("%s", draw_status.c_str());
+  tooltip("One stroke file a view drawn in: this path, then -2, -3, ... before its extension");
+  ImGui::TextWrapped("%s", drawing.status().c_str());
 }
 
 // The strokes drawn, object by object (the examples last), each with a button that erases it.
-void Panels::drawn_list(Session& session, Drawing& drawing) {
+void Panels::drawn_list(const Session& session, DrawingTool& drawing) {
+  const Drawing& drawn = drawing.drawing();
   std::map<uint32_t, std::vector<size_t>> by_object;
-  for (size_t i = 0; i < drawing.size(); ++i) by_object[drawing.object(i)].push_back(i);
+  for (size_t i = 0; i < drawn.size(); ++i) by_object[drawn.object(i)].push_back(i);
   for (const auto& [object, strokes] : by_object) {
     if (object == kMissed)
       ImGui::TextDisabled("examples");
     else
       ImGui::TextDisabled("object %u (%s)", object, session.scene().objects.at(object).mesh->name.c_str());
-    if (!stroke_rows(session, drawing, strokes)) return;
+    if (!stroke_rows(drawing, strokes)) return;
   }
-  if (drawing.size() > 0 && !drawing.saved()) ImGui::TextDisabled("not saved");
+  if (drawn.size() > 0 && !drawn.saved()) ImGui::TextDisabled("not saved");
 }
 
 // Rows of the drawn strokes `strokes`; false when one was erased (the list changed).
-bool Panels::stroke_rows(Session& session, Drawing& drawing, const std::vector<size_t>& strokes) {
+bool Panels::stroke_rows(DrawingTool& drawing, const std::vector<size_t>& strokes) {
   for (size_t i : strokes) {
-    const DrawnStroke& s = drawing.stroke(i);
+    const DrawnStroke& s = drawing.drawing().stroke(i);
     ImGui::PushID(int(i));
     if (ImGui::SmallButton("x")) {
       drawing.erase(i);
-      session.set_drawn(drawing.files());
       ImGui::PopID();
       return false;
     }
     ImGui::SameLine();
-    ImGui::Text("%zu: %s%s, %zu points%s", i, stroke_role_names()[size_t(s.role)].c_str(),
-                s.role == StrokeRole::Hatching ? (" group " + std::to_string(s.group)).c_str() : "", s.points.size(),
+    ImGui::Text("%zu: %s%s%s, %zu points%s", i, stroke_role_names()[size_t(s.role)].c_str(),
+                s.role == StrokeRole::Hatching ? (" group " + std::to_string(s.group)).c_str() : "",
+                s.mobile ? " (mobile)" : "", s.points.size(),
                 s.style_name.empty() ? "" : (", " + s.style_name).c_str());
     ImGui::PopID();
   }

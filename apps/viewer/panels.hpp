@@ -7,30 +7,25 @@
 #include <map>
 #include <string>
 
-#include "apps/viewer/drawing.hpp"
+#include "apps/viewer/drawing_tool.hpp"
 #include "apps/viewer/inspection.hpp"
 #include "apps/viewer/session.hpp"
 #include "apps/viewer/timing.hpp"
 
 namespace plumbago {
 
-// What a left drag over the frame does.
-enum class LeftDrag { Orbit, Draw, Erase };
-
 class Panels {
  public:
   // Draws the panel in the framebuffer's right `width` pixels.
-  void draw(Session& session, Inspection& inspection, Drawing& drawing, glm::ivec2 framebuffer, float width);
+  void draw(Session& session, Inspection& inspection, DrawingTool& drawing, glm::ivec2 framebuffer, float width);
 
   Timing timing;
   bool continuous = false;         // render every frame (for timing), not only after a change
   bool screenshot_wanted = false;  // the viewer writes `screenshot_path` after drawing
   std::string screenshot_path = "plumbago-view.png";
-  // Drawing on the model (apps/viewer/drawing.hpp): what a left drag does, what it draws,
-  // and what the last stroke came to.
+  // Drawing on the model (apps/viewer/drawing_tool.hpp): what a left drag does, what it draws.
   LeftDrag left_drag = LeftDrag::Orbit;
   DrawRequest draw_settings;
-  std::string draw_status;
 
  private:
   void scene_section(Session& session);
@@ -39,9 +34,9 @@ class Panels {
   // `slow`: preprocessing reads the parameter.
   void param_row(Session& session, const ParamSpec& spec, bool slow);
   void save_section(Session& session);
-  void draw_section(Session& session, Drawing& drawing);
-  void drawn_list(Session& session, Drawing& drawing);
-  static bool stroke_rows(Session& session, Drawing& drawing, const std::vector<size_t>& strokes);
+  void draw_section(const Session& session, DrawingTool& drawing);
+  void drawn_list(const Session& session, DrawingTool& drawing);
+  static bool stroke_rows(DrawingTool& drawing, const std::vector<size_t>& strokes);
   static void stage_section(Session& session, Inspection& inspection);
   static void reference_section(const Session& session, Inspection& inspection);
   // Values being dragged of parameters that preprocessing reads: applied on release,

@@ -12,7 +12,7 @@
 #include <tuple>
 #include <utility>
 
-#include "apps/viewer/drawing.hpp"
+#include "apps/viewer/drawing_tool.hpp"
 #include "apps/viewer/file_watch.hpp"
 #include "apps/viewer/frame_image.hpp"
 #include "apps/viewer/inspection.hpp"
@@ -20,9 +20,7 @@
 #include "apps/viewer/script.hpp"
 #include "apps/viewer/session.hpp"
 #include "apps/viewer/window.hpp"
-#include "common/strokes/decal.hpp"
 #include "common/util/output_file.hpp"
-#include "gpu/strokes/decal.hpp"
 
 namespace plumbago {
 namespace {
@@ -31,7 +29,6 @@ constexpr float kPanelWidth = 440;  // pixels right of the frame
 constexpr int kPanelHeight = 720;   // the window's least height with the panel
 constexpr float kDegreesPerPixel = 0.4f;
 constexpr float kZoomPerNotch = 0.9f;
-constexpr double kEraserPx = 6;  // how near the cursor a stroke is erased
 
 // Mouse and keys over the frame (not over the panel): left drag orbits (unless it draws),
 // right or middle drag pans, the wheel zooms; R: the scene's camera, F: frame the scene.
@@ -120,7 +117,9 @@ class Viewer {
     run_script();
     glm::ivec2 framebuffer = window_.framebuffer_size();
     Placement area = place(image_.size(), frame_area(framebuffer, ui()));
-    if (ui()) sketch(area, framebuffer);
+    if (ui())
+      drawing_.handle_input(point_under_cursor(area, framebuffer, image_.size()), panels_.left_drag,
+                            panels_.draw_settings);
     steer(session_, area, ui() && panels_.left_drag != LeftDrag::Orbit);
     poll_check();
     if (ui()) panels_.draw(session_, inspect_, drawing_, framebuffer, kPanelWidth);
@@ -209,86 +208,14 @@ class Viewer {
     if (a.key == "save") save_scene(session_.scene(), a.arg.get<std::string>());  // refuses unsaved strokes
     if (a.key == "screenshot") script_shot_ = a.arg.get<std::string>();
     if (a.key == "reload") return std::exchange(reloads_, 0) > 0;
-    if (a.key == "draw") draw_stroke(draw_request(a.arg));
+    if (a.key == "draw") drawing_.draw(draw_request(a.arg));
     if (a.key == "undo" && !drawing_.undo()) throw std::invalid_argument("nothing drawn to undo");
     if (a.key == "redo" && !drawing_.redo()) throw std::invalid_argument("nothing undone to redo");
-    if (a.key == "undo" || a.key == "redo") session_.set_drawn(drawing_.files());
-    if (a.key == "save_strokes") save_strokes(a.arg.get<std::string>());
-    if (a.key == "erase" && !erase_at({a.arg[0].get<double>(), a.arg[1].get<double>()}))
-      throw std::invalid_argument("no drawn decal or hatch within " + std::to_string(int(kEraserPx)) + " px");
+    if (a.key == "save_strokes") drawing_.save(a.arg.get<std::string>());
+    if (a.key == "erase" && !drawing_.erase_at({a.arg[0].get<double>(), a.arg[1].get<double>()}))
+      throw std::invalid_argument("no drawn decal or hatch within " + std::to_string(int(DrawingTool::kEraserPx)) +
+                                  " px");
     return a.key != "check" || check(a.arg.get<std::string>());
-  }
-
-  // Ctrl+Z, Ctrl+Y: undo and redo a stroke. A left drag over the frame in drawing mode: its
-  // points, shown as drawn, made a stroke on release; a click in erasing mode erases.
-  void sketch(const Placement& placed, glm::ivec2 framebuffer) {
-    const ImGuiIO& io = ImGui::GetIO();
-    const bool ctrl = io.KeyCtrl && !io.WantCaptureKeyboard;
-    if (ctrl && ((ImGui::IsKeyPressed(GLFW_KEY_Z, false) && drawing_.undo()) ||
-                 (ImGui::IsKeyPressed(GLFW_KEY_Y, false) && drawing_.redo())))
-      session_.set_drawn(drawing_.files());
-    glm::dvec2 at = point_under_cursor(placed, framebuffer, image_.size());
-    if (panels_.left_drag == LeftDrag::Erase && io.MouseClicked[ImGuiMouseButton_Left] && at.x >= 0) erase_at(at);
-    if (panels_.left_drag != LeftDrag::Draw) {
-      sketch_.clear(), screen_.clear();
-      return;
-    }
-    if (io.MouseDown[ImGuiMouseButton_Left] && at.x >= 0 &&
-        (!sketch_.empty() || io.MouseClicked[ImGuiMouseButton_Left])) {
-      if (sketch_.empty() || glm::distance(sketch_.back().window, at) >= 1) sketch_.push_back({at, 1.0});
-      screen_.push_back(ImVec2(io.MousePos.x, io.MousePos.y));
-    }
-    if (!screen_.empty())
-      ImGui::GetForegroundDrawList()->AddPolyline(screen_.data(), int(screen_.size()), IM_COL32(200, 40, 40, 255),
-                                                  ImDrawFlags_None, 2.0f);
-    if (io.MouseDown[ImGuiMouseButton_Left] || sketch_.empty()) return;
-    DrawRequest request = panels_.draw_settings;
-    request.points = std::exchange(sketch_, {});
-    screen_.clear();
-    try {
-      draw_stroke(request);
-      panels_.draw_status = "drew a " + stroke_role_names()[size_t(request.role)] + " stroke";
-    } catch (const std::exception& e) {
-      panels_.draw_status = e.what();
-    }
-  }
-
-  // Draws `request` in the current view, or refuses it (nothing drawn): a stroke file
-  // would refuse it, the scene would (a hatching group's strokes all free or all
-  // structured), or a decal or hatch misses every object drawn in strokes style.
-  void draw_stroke(const DrawRequest& request) {
-    DrawnStroke stroke = drawn_stroke(session_.scene(), request);
-    Drawing next = drawing_;
-    next.add(session_.scene(), stroke);
-    (void)decal_samples(session_.with_drawn(next.files()));  // the scene's own checks of its stroke files
-    DrawnSurface surface;
-    if (stroke.role == StrokeRole::Decal || stroke.role == StrokeRole::Hatching) {
-      Scene probe = session_.scene();  // the stroke alone, projected through the G-buffer
-      probe.stroke_files = {{"drawn stroke", probe.camera, probe.width, probe.height, "", {stroke}}};
-      GpuScope gpu(window_);
-      surface = drawn_surface(probe, gpu::project_decals_through_gbuffer(probe));
-      if (surface.object == kMissed)
-        throw std::invalid_argument(
-            "the stroke misses the model: none of its samples lies on an object drawn in strokes style; nothing "
-            "drawn");
-    }
-    drawing_.add(session_.scene(), std::move(stroke), std::move(surface));
-    session_.set_drawn(drawing_.files());
-  }
-
-  // The eraser: the decal or hatch under the cursor (within kEraserPx), in this view.
-  bool erase_at(glm::dvec2 at) {  // whether there was one
-    std::optional<size_t> hit = drawing_.stroke_near(session_.scene(), at, kEraserPx);
-    panels_.draw_status = hit ? "erased stroke " + std::to_string(*hit) : "no drawn stroke under the cursor";
-    if (!hit) return false;
-    drawing_.erase(*hit);
-    session_.set_drawn(drawing_.files());
-    return true;
-  }
-
-  void save_strokes(const std::string& path) {
-    drawing_.save(path, session_.scene().origin);
-    session_.set_drawn(drawing_.files());  // their sources now: what the scene file lists
   }
 
   // The stage view of `buffer`, refused now (not at the next frame) when the frame has none.
@@ -336,10 +263,8 @@ class Viewer {
   std::string script_shot_;  // a screenshot the script asked for, written after this frame
   bool checking_ = false;    // the script's check action is under way
   FileWatch watch_;
-  Drawing drawing_;
-  std::vector<DrawnPoint> sketch_;  // the stroke being drawn: frame points
-  std::vector<ImVec2> screen_;      // and where the cursor was
-  int reloads_ = 0;                 // files opened since the script last waited for one
+  DrawingTool drawing_{session_, window_};
+  int reloads_ = 0;  // files opened since the script last waited for one
 };
 
 }  // namespace
