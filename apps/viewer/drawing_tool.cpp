@@ -24,7 +24,8 @@ void DrawingTool::handle_input(glm::dvec2 at, LeftDrag mode, const DrawRequest& 
     sketch_.clear(), cursor_.clear();
     return;
   }
-  if (io.MouseDown[ImGuiMouseButton_Left] && at.x >= 0 && (!sketch_.empty() || io.MouseClicked[ImGuiMouseButton_Left])) {
+  if (io.MouseDown[ImGuiMouseButton_Left] && at.x >= 0 &&
+      (!sketch_.empty() || io.MouseClicked[ImGuiMouseButton_Left])) {
     if (sketch_.empty() || glm::distance(sketch_.back().window, at) >= 1) sketch_.push_back({at, 1.0});
     cursor_.emplace_back(io.MousePos.x, io.MousePos.y);
   }

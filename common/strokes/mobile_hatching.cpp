@@ -98,15 +98,6 @@ class UvChart {
   bool periodic_ = false;
 };
 
-struct MobileHatching::Group {
-  int index;  // in hatching_groups
-  uint32_t object;
-  std::vector<size_t> decals;  // its surface strokes
-  glm::dvec2 c;                // the centroid of its points' hull in (u, v)
-  double width;                // the hull's extent in u
-  glm::dvec3 n_c;              // the smoothed normal at c, in the view space of the camera it was drawn in
-};
-
 namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -154,42 +145,106 @@ uint32_t most_met(const std::vector<const DecalPoint*>& points) {
   return most == count.end() ? kMissed : most->first;
 }
 
+// l(u) = n_c . n(u) at kMobileSamples samples of the u-line v = c.v, n smoothed over
+// `width` and seen from `to_view` (2. of mobile_hatching.hpp); -inf where the line leaves
+// the surface.
+class Profile {
+ public:
+  Profile(const UvChart& chart, glm::dvec2 c, double width, glm::dvec3 n_c, const glm::dmat3& to_view)
+      : periodic_(chart.periodic()), l_(kMobileSamples, -INFINITY) {
+    step_ = chart.u_span() / (periodic_ ? kMobileSamples : kMobileSamples - 1), u0_ = chart.u_lowest();
+    for (int i = 0; i < kMobileSamples; ++i) {
+      glm::dvec3 n = smoothed_normal(chart, {u(i), c.y}, width);
+      if (glm::length(n) > 0) l_[size_t(i)] = glm::dot(n_c, glm::normalize(to_view * n));
+    }
+  }
+  double u(double i) const { return u0_ + i * step_; }
+  int nearest(double u) const { return int(std::lround((u - u0_) / step_)); }
+  // Sample i's l; past the ends, a periodic line wraps and an open one has none.
+  double at(int i) const {
+    if (periodic_) return l_[size_t((i % kMobileSamples + kMobileSamples) % kMobileSamples)];
+    return i < 0 || i >= kMobileSamples ? -INFINITY : l_[size_t(i)];
+  }
+  // The maxima at or over `threshold`, as (fractional sample, l): each refined by the
+  // parabola through it and its neighbours; a plateau counts once, at its first sample.
+  std::vector<std::pair<double, double>> maxima(double threshold) const {
+    std::vector<std::pair<double, double>> out;
+    for (int i = periodic_ ? 0 : 1; i < (periodic_ ? kMobileSamples : kMobileSamples - 1); ++i) {
+      const double a = at(i - 1), b = at(i), c = at(i + 1);
+      if (!(b >= threshold && b > a && b >= c)) continue;
+      const double curve = a - 2 * b + c;
+      out.emplace_back(i + (std::isfinite(a) && std::isfinite(c) && curve < 0 ? 0.5 * (a - c) / curve : 0.0), b);
+    }
+    return out;
+  }
+  // The width in u of the peak at or next to sample i (climbed to its top first): the
+  // samples on each side while l falls and stays at or over `threshold` (at least one).
+  double peak_width(int i, double threshold) const {
+    for (int k = 0; k < kMobileSamples && at(i - 1) > at(i); ++k) --i;
+    for (int k = 0; k < kMobileSamples && at(i + 1) > at(i); ++k) ++i;
+    int lo = i, hi = i;
+    while (hi - lo < kMobileSamples && at(lo - 1) >= threshold && at(lo - 1) <= at(lo)) --lo;
+    while (hi - lo < kMobileSamples && at(hi + 1) >= threshold && at(hi + 1) <= at(hi)) ++hi;
+    return std::max(hi - lo, 1) * step_;
+  }
+
+ private:
+  bool periodic_;
+  std::vector<double> l_;
+  double step_ = 1, u0_ = 0;
+};
+
 }  // namespace
+
+struct MobileHatching::Group {
+  int index;  // in hatching_groups
+  uint32_t object;
+  std::vector<size_t> decals;  // its surface strokes
+  glm::dvec2 c;                // the centroid of its points' hull in (u, v)
+  double width;                // the hull's extent in u
+  glm::dvec3 n_c;              // the smoothed normal at c, in the view space of the camera it was drawn in
+  Profile drawn;               // l(u) in that view: its peak at c is the drawn one
+};
 
 MobileHatching::MobileHatching(const Scene& scene, const DecalSurface& surface) : charts_(scene.objects.size()) {
   const std::vector<HatchGroup> groups = hatching_groups(scene);
-  for (int g = 0; g < int(groups.size()); ++g) {
-    if (!groups[g].mobile) continue;
-    Group group{g, kMissed, {}, {}, 0, {}};
-    std::vector<const DecalPoint*> hit;
-    for (size_t d = 0; d < surface.size(); ++d) {
-      if (surface[d].hatch.group != g) continue;
-      group.decals.push_back(d);
-      for (const DecalPoint& p : surface[d].points)
-        if (p.object != kMissed) hit.push_back(&p);
-    }
-    const StrokeFile& file = scene.stroke_files[groups[g].files[0]];
-    auto refuse = [&](const std::string& why) {
-      throw SceneError(file.source + ": hatching group " + std::to_string(groups[g].number) + ": " + why);
-    };
-    group.object = most_met(hit);
-    if (group.object == kMissed) refuse("a mobile group lies on no surface where it was drawn");
-    const Mesh& mesh = *scene.objects[group.object].mesh;
-    if (mesh.uvs.empty())
-      refuse("a mobile group travels along a u-line of its object's (u, v), and object " +
-             std::to_string(group.object) + " (" + mesh.name +
-             ") has none: an OBJ file with vt on every face, or a procedural torus, sphere, plane, cylinder or cone");
-    if (!charts_[group.object]) charts_[group.object] = std::make_shared<const UvChart>(mesh);
-    const UvChart& chart = *charts_[group.object];
-    std::vector<glm::dvec2> uv;
-    for (const DecalPoint* p : hit)
-      if (p->object == group.object) uv.push_back(chart.uv(p->face, p->bary));
-    std::tie(group.c, group.width) = hull_centroid(uv);
-    glm::dvec3 n = smoothed_normal(chart, group.c, group.width);
-    if (glm::length(n) == 0) refuse("the centroid of a mobile group's (u, v) hull lies off its object's chart");
-    group.n_c = glm::normalize(normal_to_view(scene.objects[group.object], file.camera) * n);
-    groups_.push_back(std::move(group));
+  for (int g = 0; g < int(groups.size()); ++g)
+    if (groups[g].mobile) groups_.push_back(make_group(scene, surface, groups[g], g));
+}
+
+// 1. of mobile_hatching.hpp for group `g` (index `index`), its chart made where none is yet.
+MobileHatching::Group MobileHatching::make_group(const Scene& scene, const DecalSurface& surface, const HatchGroup& g,
+                                                 int index) {
+  std::vector<size_t> decals;
+  std::vector<const DecalPoint*> hit;
+  for (size_t d = 0; d < surface.size(); ++d) {
+    if (surface[d].hatch.group != index) continue;
+    decals.push_back(d);
+    for (const DecalPoint& p : surface[d].points)
+      if (p.object != kMissed) hit.push_back(&p);
   }
+  const StrokeFile& file = scene.stroke_files[g.files[0]];
+  auto refuse = [&](const std::string& why) {
+    throw SceneError(file.source + ": hatching group " + std::to_string(g.number) + ": " + why);
+  };
+  const uint32_t object = most_met(hit);
+  if (object == kMissed) refuse("a mobile group lies on no surface where it was drawn");
+  const Mesh& mesh = *scene.objects[object].mesh;
+  if (mesh.uvs.empty())
+    refuse("a mobile group travels along a u-line of its object's (u, v), and object " + std::to_string(object) + " (" +
+           mesh.name +
+           ") has none: an OBJ file with vt on every face, or a procedural torus, sphere, plane, cylinder or cone");
+  if (!charts_[object]) charts_[object] = std::make_shared<const UvChart>(mesh);
+  const UvChart& chart = *charts_[object];
+  std::vector<glm::dvec2> uv;
+  for (const DecalPoint* p : hit)
+    if (p->object == object) uv.push_back(chart.uv(p->face, p->bary));
+  auto [c, width] = hull_centroid(uv);
+  glm::dvec3 n = smoothed_normal(chart, c, width);
+  if (glm::length(n) == 0) refuse("the centroid of a mobile group's (u, v) hull lies off its object's chart");
+  const glm::dmat3 drawn_view = normal_to_view(scene.objects[object], file.camera);
+  const glm::dvec3 n_c = glm::normalize(drawn_view * n);
+  return {index, object, std::move(decals), c, width, n_c, Profile(chart, c, width, n_c, drawn_view)};
 }
 
 MobileHatching::~MobileHatching() = default;
@@ -207,24 +262,15 @@ std::vector<MobileHatching::Placement> MobileHatching::place(const Scene& scene,
   std::vector<Placement> out(hatching_groups(scene).size());
   for (const Group& g : groups_) {
     const UvChart& chart = *charts_[g.object];
-    const glm::dmat3 to_view = normal_to_view(scene.objects[g.object], scene.camera);
-    const double step = chart.u_span() / (chart.periodic() ? kMobileSamples : kMobileSamples - 1);
-    std::vector<double> l(kMobileSamples, -INFINITY);  // -inf: off the surface
-    for (int i = 0; i < kMobileSamples; ++i) {
-      glm::dvec3 n = smoothed_normal(chart, {chart.u_lowest() + i * step, g.c.y}, g.width);
-      if (glm::length(n) > 0) l[size_t(i)] = glm::dot(g.n_c, glm::normalize(to_view * n));
-    }
+    const Profile now(chart, g.c, g.width, g.n_c, normal_to_view(scene.objects[g.object], scene.camera));
+    const double drawn_width = g.drawn.peak_width(g.drawn.nearest(g.c.x), threshold);
     Placement& p = out[size_t(g.index)];
     p.c = g.c;
-    auto at = [&](int i) { return chart.periodic() ? l[size_t((i + kMobileSamples) % kMobileSamples)] : l[size_t(i)]; };
-    for (int i = chart.periodic() ? 0 : 1; i < (chart.periodic() ? kMobileSamples : kMobileSamples - 1); ++i) {
-      const double a = at(i - 1), b = at(i), c = at(i + 1);
-      if (!(b >= threshold && b > a && b >= c)) continue;  // a plateau counts once, at its first sample
-      const double curve = a - 2 * b + c,
-                   shift = std::isfinite(a) && std::isfinite(c) && curve < 0 ? 0.5 * (a - c) / curve : 0;
-      p.u.push_back(chart.u_lowest() + (i + shift) * step);
-      p.l.push_back(b);
-      p.alpha.push_back(fade > 0 ? std::clamp((b - threshold) / fade, 0.0, 1.0) : 1.0);
+    for (auto [i, l] : now.maxima(threshold)) {
+      p.u.push_back(now.u(i));
+      p.l.push_back(l);
+      p.alpha.push_back(fade > 0 ? std::clamp((l - threshold) / fade, 0.0, 1.0) : 1.0);
+      p.scale.push_back(std::clamp(now.peak_width(int(std::lround(i)), threshold) / drawn_width, 0.25, 4.0));
     }
   }
   return out;
@@ -244,7 +290,8 @@ std::vector<MobileHatching::Copy> MobileHatching::copies(const DecalSurface& sur
         point.object = kMissed;
         continue;
       }
-      std::optional<UvChart::Hit> hit = chart.locate(chart.uv(point.face, point.bary) + glm::dvec2(p.u[m] - g->c.x, 0));
+      glm::dvec2 uv = chart.uv(point.face, point.bary);
+      std::optional<UvChart::Hit> hit = chart.locate({p.u[m] + p.scale[m] * (uv.x - g->c.x), uv.y});
       if (hit)
         point.face = hit->face, point.bary = hit->bary;
       else

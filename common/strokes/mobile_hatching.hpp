@@ -19,12 +19,16 @@
 //    the paper's 1/2) a copy of the group is placed: its points moved by u* - c.u in
 //    (u, v) and put back on the surface where (u, v) lies on a face (elsewhere missed,
 //    which splits a hatch as a decal's miss does). Its alpha is multiplied by
-//    clamp((l - T) / hatching.mobile_fade, 0, 1): the fade "as l(u) approaches T".
+//    clamp((l - T) / hatching.mobile_fade, 0, 1): the fade "as l(u) approaches T". Its
+//    "extent is governed by the width of the peak": its points' u about c is scaled by the
+//    peak's width over the drawn peak's (l in the view it was drawn in, at c), clamped to
+//    [1/4, 4]; a peak's width is the samples about its maximum while l falls and stays at
+//    or over T.
 //    A u-line is periodic (period 1) where the chart's lowest u and that plus 1 are the
 //    same point of the surface (a torus, sphere, cylinder or cone about its axis).
-// What is not done: a peak's width does not govern the copy's extent (each copy keeps the
-// drawn extent); the parameterization is the mesh's own (OBJ `vt`, a procedural surface's),
-// a mesh without one is refused; a group's level of detail is measured where it was drawn.
+// What is not done: the parameterization is the mesh's own (OBJ `vt`, a procedural
+// surface's), a mesh without one is refused (no CGAL parameterization of the patch under
+// the group); a group's level of detail is measured where it was drawn.
 #pragma once
 
 #include <memory>
@@ -38,6 +42,7 @@ namespace plumbago {
 constexpr int kMobileSamples = 256;
 
 class UvChart;
+struct HatchGroup;
 
 class MobileHatching {
  public:
@@ -52,10 +57,11 @@ class MobileHatching {
   bool moves(size_t decal) const;
 
   // A group this frame (2. above), in hatching_groups' order (stationary groups: none):
-  // its centroid c in (u, v), and per copy the u of its maximum, l there and its alpha.
+  // its centroid c in (u, v), and per copy the u of its maximum, l there, its alpha and
+  // its scale in u (the peak's width over the drawn peak's).
   struct Placement {
     glm::dvec2 c{0.0};
-    std::vector<double> u, l, alpha;
+    std::vector<double> u, l, alpha, scale;
   };
   std::vector<Placement> place(const Scene& scene, double threshold, double fade) const;
 
@@ -69,6 +75,7 @@ class MobileHatching {
 
  private:
   struct Group;
+  Group make_group(const Scene& scene, const DecalSurface& surface, const HatchGroup& g, int index);
   const Group* group_of(size_t decal) const;
   std::vector<std::shared_ptr<const UvChart>> charts_;  // per scene object, made where a group needs it
   std::vector<Group> groups_;

@@ -30,10 +30,11 @@ constexpr double kSample = 1.0 / kMobileSamples;
 // A sphere with its poles on the world's up axis (its parallels are its u-lines: the
 // procedural sphere's u is the angle about its own z), a mobile group of four short
 // hatches drawn on its right side, structured or free.
-Scene sphere_with_mobile_group(const std::string& mesh = "sphere", bool free = false) {
-  Scene s = testing::one_stroke_object(make_procedural(mesh), glm::vec3(0, 1, 4));
-  s.objects[0].transform =
-      glm::mat4(glm::vec4(1, 0, 0, 0), glm::vec4(0, 0, -1, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 0, 1));  // z up
+Scene sphere_with_mobile_group(const std::string& mesh = "sphere", bool free = false, float long_x = 1,
+                               glm::vec3 eye = {0, 1, 4}) {
+  Scene s = testing::one_stroke_object(make_procedural(mesh), eye);
+  s.objects[0].transform = glm::mat4(glm::vec4(long_x, 0, 0, 0), glm::vec4(0, 0, -1, 0), glm::vec4(0, 1, 0, 0),
+                                     glm::vec4(0, 0, 0, 1));  // z up, x stretched by long_x
   StrokeFile f;
   f.source = "mobile hatches";
   f.camera = s.camera, f.width = s.width, f.height = s.height;
@@ -96,6 +97,26 @@ TEST_P(MobileGroups, TravelAlongTheirULineByTheAngleTheViewOrbits) {
 
 INSTANTIATE_TEST_SUITE_P(Kinds, MobileGroups, ::testing::Bool(),
                          [](const auto& info) { return info.param ? "Free" : "Structured"; });
+
+// "Each group's extent is governed by the width of the peak": on a sphere the peak keeps its
+// width as the view orbits; on an ellipsoid (x stretched 2.5 times) the group drawn where the
+// surface faces the eye is carried toward the pointed end as the view turns, where the normal
+// turns faster with u (about a / b = 2.5 times against b / a on the flank), and narrows.
+TEST(MobileHatching, ACopysExtentFollowsItsPeaksWidth) {
+  const double width_samples = 2 * kMobileSamples / 6.0;  // l = cos(angle) >= 1/2 within 60 degrees each side
+  Scene sphere = sphere_with_mobile_group();
+  DecalSurface on_sphere = reference::project_decals_by_rays(sphere);
+  MobileHatching round(sphere, on_sphere);
+  for (double degrees : {0.0, 30.0, 70.0})
+    EXPECT_NEAR(round.place(orbited(sphere, degrees), 0.5, 0.1)[0].scale.at(0), 1.0, 2.0 / width_samples) << degrees;
+  Scene ellipsoid = sphere_with_mobile_group("sphere", false, 2.5f, {0, 1.5f, 7});
+  DecalSurface on_ellipsoid = reference::project_decals_by_rays(ellipsoid);
+  MobileHatching mobile(ellipsoid, on_ellipsoid);
+  std::vector<MobileHatching::Placement> p = mobile.place(orbited(ellipsoid, 70), 0.5, 0.1);
+  ASSERT_FALSE(p[0].u.empty());
+  std::printf("[mobile] ellipsoid orbited 70 degrees: peak %.3f x the drawn one\n", p[0].scale[0]);
+  EXPECT_LT(p[0].scale[0], 0.9) << "nearer the pointed end, a narrower peak";
+}
 
 TEST(MobileHatching, FadesAsTheLightingApproachesTheThreshold) {
   Scene s = orbited(sphere_with_mobile_group(), 25);
