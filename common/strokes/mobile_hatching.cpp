@@ -209,12 +209,14 @@ struct MobileHatching::Group {
 MobileHatching::MobileHatching(const Scene& scene, const DecalSurface& surface) : charts_(scene.objects.size()) {
   const std::vector<HatchGroup> groups = hatching_groups(scene);
   for (int g = 0; g < int(groups.size()); ++g)
-    if (groups[g].mobile) groups_.push_back(make_group(scene, surface, groups[g], g));
+    if (groups[g].mobile)
+      if (std::optional<Group> group = make_group(scene, surface, groups[g], g)) groups_.push_back(std::move(*group));
 }
 
-// 1. of mobile_hatching.hpp for group `g` (index `index`), its chart made where none is yet.
-MobileHatching::Group MobileHatching::make_group(const Scene& scene, const DecalSurface& surface, const HatchGroup& g,
-                                                 int index) {
+// 1. of mobile_hatching.hpp for group `g` (index `index`), its chart made where none is yet;
+// none where the group lies on no surface (as a stationary group's, its hatches draw nothing).
+std::optional<MobileHatching::Group> MobileHatching::make_group(const Scene& scene, const DecalSurface& surface,
+                                                                const HatchGroup& g, int index) {
   std::vector<size_t> decals;
   std::vector<const DecalPoint*> hit;
   for (size_t d = 0; d < surface.size(); ++d) {
@@ -228,7 +230,7 @@ MobileHatching::Group MobileHatching::make_group(const Scene& scene, const Decal
     throw SceneError(file.source + ": hatching group " + std::to_string(g.number) + ": " + why);
   };
   const uint32_t object = most_met(hit);
-  if (object == kMissed) refuse("a mobile group lies on no surface where it was drawn");
+  if (object == kMissed) return std::nullopt;
   const Mesh& mesh = *scene.objects[object].mesh;
   if (mesh.uvs.empty())
     refuse("a mobile group travels along a u-line of its object's (u, v), and object " + std::to_string(object) + " (" +
@@ -244,7 +246,7 @@ MobileHatching::Group MobileHatching::make_group(const Scene& scene, const Decal
   if (glm::length(n) == 0) refuse("the centroid of a mobile group's (u, v) hull lies off its object's chart");
   const glm::dmat3 drawn_view = normal_to_view(scene.objects[object], file.camera);
   const glm::dvec3 n_c = glm::normalize(drawn_view * n);
-  return {index, object, std::move(decals), c, width, n_c, Profile(chart, c, width, n_c, drawn_view)};
+  return Group{index, object, std::move(decals), c, width, n_c, Profile(chart, c, width, n_c, drawn_view)};
 }
 
 MobileHatching::~MobileHatching() = default;

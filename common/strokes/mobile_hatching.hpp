@@ -32,6 +32,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "common/strokes/decal.hpp"
@@ -48,7 +49,7 @@ class MobileHatching {
  public:
   // The mobile groups of `scene` (hatching_groups), from their projected strokes `surface`
   // (decal_samples' order). Throws SceneError naming the stroke file and group when the
-  // object a group lies on has no parameterization, or it lies on none.
+  // object a group lies on has no parameterization (one on no surface is left out).
   MobileHatching(const Scene& scene, const DecalSurface& surface);
   ~MobileHatching();
   MobileHatching(MobileHatching&&) noexcept;
@@ -75,7 +76,7 @@ class MobileHatching {
 
  private:
   struct Group;
-  Group make_group(const Scene& scene, const DecalSurface& surface, const HatchGroup& g, int index);
+  std::optional<Group> make_group(const Scene& scene, const DecalSurface& surface, const HatchGroup& g, int index);
   const Group* group_of(size_t decal) const;
   std::vector<std::shared_ptr<const UvChart>> charts_;  // per scene object, made where a group needs it
   std::vector<Group> groups_;
