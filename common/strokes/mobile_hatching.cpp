@@ -9,6 +9,7 @@
 #include <map>
 #include <optional>
 
+#include "common/mesh/patch_parameterization.hpp"
 #include "common/strokes/hatching.hpp"
 
 namespace plumbago {
@@ -22,11 +23,14 @@ class UvChart {
     glm::dvec3 bary;
   };
 
-  explicit UvChart(const Mesh& mesh) : mesh_(mesh) {
-    for (const glm::vec2& uv : mesh.uvs) lo_ = glm::min(lo_, glm::dvec2(uv)), hi_ = glm::max(hi_, glm::dvec2(uv));
+  // `uvs` per face corner of `mesh` (Mesh::uvs, or a patch's: non-finite on the faces off it).
+  UvChart(const Mesh& mesh, std::vector<glm::vec2> uvs) : mesh_(mesh), uvs_(std::move(uvs)) {
+    for (uint32_t f = 0; f < mesh.triangles.size(); ++f)
+      for (int k = 0; k < 3 && charted(f); ++k) lo_ = glm::min(lo_, corner(f, k)), hi_ = glm::max(hi_, corner(f, k));
     cells_ = std::clamp(int(std::sqrt(double(mesh.triangles.size()) / 2)), 1, 1024);
     buckets_.resize(size_t(cells_) * size_t(cells_));
     for (uint32_t f = 0; f < mesh.triangles.size(); ++f) {
+      if (!charted(f)) continue;
       glm::dvec2 a(INFINITY), b(-INFINITY);
       for (int k = 0; k < 3; ++k) a = glm::min(a, corner(f, k)), b = glm::max(b, corner(f, k));
       glm::ivec2 c0 = cell(a), c1 = cell(b);
@@ -62,7 +66,12 @@ class UvChart {
   double u_span() const { return periodic_ ? 1.0 : hi_.x - lo_.x; }
 
  private:
-  glm::dvec2 corner(uint32_t f, int k) const { return glm::dvec2(mesh_.uvs[3 * size_t(f) + size_t(k)]); }
+  glm::dvec2 corner(uint32_t f, int k) const { return glm::dvec2(uvs_[3 * size_t(f) + size_t(k)]); }
+  bool charted(uint32_t f) const {
+    for (int k = 0; k < 3; ++k)
+      if (!std::isfinite(corner(f, k).x) || !std::isfinite(corner(f, k).y)) return false;
+    return true;
+  }
 
   glm::ivec2 cell(glm::dvec2 uv) const {
     glm::dvec2 t = (uv - lo_) / glm::max(hi_ - lo_, glm::dvec2(1e-300)) * double(cells_);
@@ -92,6 +101,7 @@ class UvChart {
   }
 
   const Mesh& mesh_;
+  std::vector<glm::vec2> uvs_;
   glm::dvec2 lo_{INFINITY}, hi_{-INFINITY};
   int cells_ = 1;
   std::vector<std::vector<uint32_t>> buckets_;
@@ -135,6 +145,21 @@ glm::dvec3 smoothed_normal(const UvChart& chart, glm::dvec2 uv, double width) {
 // Object space to the view space of `camera`, for normals (the transform's inverse transpose).
 glm::dmat3 normal_to_view(const SceneObject& o, const Camera& camera) {
   return glm::dmat3(glm::dmat4(camera.view())) * glm::transpose(glm::inverse(glm::dmat3(glm::dmat4(o.transform))));
+}
+
+// Where `object`'s mesh has no (u, v): LSCM on the disk-like patch under the group's points
+// `on` it (common/mesh/patch_parameterization.hpp), within 3/8 of the mesh's box diagonal of
+// them, u along the drawing camera's right in object space. Throws std::runtime_error.
+std::shared_ptr<const UvChart> patch_chart(const SceneObject& object, const Camera& drawn,
+                                           const std::vector<const DecalPoint*>& on) {
+  std::vector<uint32_t> seeds;
+  for (const DecalPoint* p : on) seeds.push_back(p->face);
+  std::sort(seeds.begin(), seeds.end());
+  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+  const glm::dvec3 right = glm::normalize(glm::cross(glm::dvec3(drawn.forward()), glm::dvec3(drawn.up)));
+  const glm::dvec3 along = glm::inverse(glm::dmat3(glm::dmat4(object.transform))) * right;
+  const Mesh& mesh = *object.mesh;
+  return std::make_shared<const UvChart>(mesh, patch_uvs(mesh, seeds, 0.375 * double(mesh.bbox_diagonal()), along));
 }
 
 // The object most of `points` lie on (kMissed: none).
@@ -199,11 +224,12 @@ class Profile {
 struct MobileHatching::Group {
   int index;  // in hatching_groups
   uint32_t object;
-  std::vector<size_t> decals;  // its surface strokes
-  glm::dvec2 c;                // the centroid of its points' hull in (u, v)
-  double width;                // the hull's extent in u
-  glm::dvec3 n_c;              // the smoothed normal at c, in the view space of the camera it was drawn in
-  Profile drawn;               // l(u) in that view: its peak at c is the drawn one
+  std::shared_ptr<const UvChart> chart;  // its object's own (u, v), or the patch's under it
+  std::vector<size_t> decals;            // its surface strokes
+  glm::dvec2 c;                          // the centroid of its points' hull in (u, v)
+  double width;                          // the hull's extent in u
+  glm::dvec3 n_c;                        // the smoothed normal at c, in the view space of the camera it was drawn in
+  Profile drawn;                         // l(u) in that view: its peak at c is the drawn one
 };
 
 MobileHatching::MobileHatching(const Scene& scene, const DecalSurface& surface) : charts_(scene.objects.size()) {
@@ -232,21 +258,29 @@ std::optional<MobileHatching::Group> MobileHatching::make_group(const Scene& sce
   const uint32_t object = most_met(hit);
   if (object == kMissed) return std::nullopt;
   const Mesh& mesh = *scene.objects[object].mesh;
-  if (mesh.uvs.empty())
-    refuse("a mobile group travels along a u-line of its object's (u, v), and object " + std::to_string(object) + " (" +
-           mesh.name +
-           ") has none: an OBJ file with vt on every face, or a procedural torus, sphere, plane, cylinder or cone");
-  if (!charts_[object]) charts_[object] = std::make_shared<const UvChart>(mesh);
-  const UvChart& chart = *charts_[object];
-  std::vector<glm::dvec2> uv;
+  std::vector<const DecalPoint*> on;  // its points on that object
   for (const DecalPoint* p : hit)
-    if (p->object == object) uv.push_back(chart.uv(p->face, p->bary));
+    if (p->object == object) on.push_back(p);
+  std::shared_ptr<const UvChart> own;
+  if (mesh.uvs.empty()) {
+    try {
+      own = patch_chart(scene.objects[object], file.camera, on);
+    } catch (const std::runtime_error& e) {
+      refuse("object " + std::to_string(object) + " (" + mesh.name + ") has no (u, v) of its own, and " + e.what());
+    }
+  } else {
+    if (!charts_[object]) charts_[object] = std::make_shared<const UvChart>(mesh, mesh.uvs);
+    own = charts_[object];
+  }
+  const UvChart& chart = *own;
+  std::vector<glm::dvec2> uv;
+  for (const DecalPoint* p : on) uv.push_back(chart.uv(p->face, p->bary));
   auto [c, width] = hull_centroid(uv);
   glm::dvec3 n = smoothed_normal(chart, c, width);
   if (glm::length(n) == 0) refuse("the centroid of a mobile group's (u, v) hull lies off its object's chart");
   const glm::dmat3 drawn_view = normal_to_view(scene.objects[object], file.camera);
   const glm::dvec3 n_c = glm::normalize(drawn_view * n);
-  return Group{index, object, std::move(decals), c, width, n_c, Profile(chart, c, width, n_c, drawn_view)};
+  return Group{index, object, own, std::move(decals), c, width, n_c, Profile(chart, c, width, n_c, drawn_view)};
 }
 
 MobileHatching::~MobileHatching() = default;
@@ -263,7 +297,7 @@ bool MobileHatching::moves(size_t decal) const { return group_of(decal) != nullp
 std::vector<MobileHatching::Placement> MobileHatching::place(const Scene& scene, double threshold, double fade) const {
   std::vector<Placement> out(hatching_groups(scene).size());
   for (const Group& g : groups_) {
-    const UvChart& chart = *charts_[g.object];
+    const UvChart& chart = *g.chart;
     const Profile now(chart, g.c, g.width, g.n_c, normal_to_view(scene.objects[g.object], scene.camera));
     const double drawn_width = g.drawn.peak_width(g.drawn.nearest(g.c.x), threshold);
     Placement& p = out[size_t(g.index)];
@@ -283,7 +317,7 @@ std::vector<MobileHatching::Copy> MobileHatching::copies(const DecalSurface& sur
   std::vector<Copy> out;
   const Group* g = group_of(decal);
   if (!g) return out;
-  const UvChart& chart = *charts_[g->object];
+  const UvChart& chart = *g->chart;
   const Placement& p = placements.at(size_t(g->index));
   for (size_t m = 0; m < p.u.size(); ++m) {
     ProjectedDecal moved = surface[decal];

@@ -5,8 +5,10 @@
 // shading.
 //
 // 1. When the renderer reads the scene (MobileHatching's constructor), per mobile group, on
-//    the object most of its drawn points lie on, whose parameterization (Mesh::uvs) it
-//    needs:
+//    the object most of its drawn points lie on, in its parameterization: the mesh's own
+//    (Mesh::uvs), else CGAL's LSCM on the disk-like patch under the group, within 3/8 of
+//    the mesh's box diagonal, u along the drawing camera's right
+//    (common/mesh/patch_parameterization.hpp):
 //    - its projected points (common/strokes/decal.hpp) in (u, v): (1) projected into uv
 //      space, (2) their convex hull, (3) its centroid c (the polygon's area centroid),
 //      (4) n_c, the surface normal at c, in the view space of the camera it was drawn in;
@@ -26,9 +28,7 @@
 //    or over T.
 //    A u-line is periodic (period 1) where the chart's lowest u and that plus 1 are the
 //    same point of the surface (a torus, sphere, cylinder or cone about its axis).
-// What is not done: the parameterization is the mesh's own (OBJ `vt`, a procedural
-// surface's), a mesh without one is refused (no CGAL parameterization of the patch under
-// the group); a group's level of detail is measured where it was drawn.
+// A group's level of detail is measured where it was drawn.
 #pragma once
 
 #include <memory>
@@ -48,8 +48,9 @@ struct HatchGroup;
 class MobileHatching {
  public:
   // The mobile groups of `scene` (hatching_groups), from their projected strokes `surface`
-  // (decal_samples' order). Throws SceneError naming the stroke file and group when the
-  // object a group lies on has no parameterization (one on no surface is left out).
+  // (decal_samples' order). Throws SceneError naming the stroke file, group and object when
+  // a group's object has no (u, v) and no disk-like patch lies under it (a group on no
+  // surface is left out).
   MobileHatching(const Scene& scene, const DecalSurface& surface);
   ~MobileHatching();
   MobileHatching(MobileHatching&&) noexcept;

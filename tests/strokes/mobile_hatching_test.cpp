@@ -1,7 +1,8 @@
 // Mobile hatching (common/strokes/mobile_hatching.hpp, Kalnins et al. 2002, §6.3): a group
 // drawn on an upright sphere travels along its parallel by the angle the view orbits, its
-// hatches' surface points with it; its alpha fades as l approaches T; a mesh without a
-// parameterization is refused; both backends agree on the snowman's mobile trees along
+// hatches' surface points with it; its extent follows its peak's width; its alpha fades as l
+// approaches T; a mesh without (u, v) gets one on the patch under the group (refused where
+// that is no disk); both backends agree on the snowman's mobile trees along
 // their camera path.
 #include <gtest/gtest.h>
 
@@ -31,8 +32,10 @@ constexpr double kSample = 1.0 / kMobileSamples;
 // procedural sphere's u is the angle about its own z), a mobile group of four short
 // hatches drawn on its right side, structured or free.
 Scene sphere_with_mobile_group(const std::string& mesh = "sphere", bool free = false, float long_x = 1,
-                               glm::vec3 eye = {0, 1, 4}) {
-  Scene s = testing::one_stroke_object(make_procedural(mesh), eye);
+                               glm::vec3 eye = {0, 1, 4}, bool own_uvs = true) {
+  Mesh m = make_procedural(mesh);
+  if (!own_uvs) m.uvs.clear();
+  Scene s = testing::one_stroke_object(std::move(m), eye);
   s.objects[0].transform = glm::mat4(glm::vec4(long_x, 0, 0, 0), glm::vec4(0, 0, -1, 0), glm::vec4(0, 1, 0, 0),
                                      glm::vec4(0, 0, 0, 1));  // z up, x stretched by long_x
   StrokeFile f;
@@ -139,15 +142,53 @@ TEST(MobileHatching, FadesAsTheLightingApproachesTheThreshold) {
   EXPECT_GE(hatches, 4u);
 }
 
-TEST(MobileHatching, AGroupOnAMeshWithoutAParameterizationIsRefused) {
-  Scene s = sphere_with_mobile_group("cube");
+// A mesh without (u, v) of its own gets one on the disk-like patch under the group (CGAL's
+// LSCM, u along the drawing camera's right): on the sphere that is nearly its parallel near
+// the equator, and the group follows the orbit as on the sphere's own (u, v).
+TEST(MobileHatching, AMeshWithoutAParameterizationGetsOneUnderTheGroup) {
+  Scene s = sphere_with_mobile_group("sphere", false, 1, {0, 1, 4}, false);
   DecalSurface surface = reference::project_decals_by_rays(s);
+  MobileHatching mobile(s, surface);
+  for (double degrees : {0.0, 20.0, -30.0}) {
+    std::vector<MobileHatching::Placement> placed = mobile.place(orbited(s, degrees), 0.5, 0.1);
+    ASSERT_EQ(placed[0].u.size(), 1u) << degrees;
+    std::vector<MobileHatching::Copy> copies = mobile.copies(surface, 0, placed);
+    double moved = 0, points = 0;
+    for (size_t k = 0; k < surface[0].points.size(); ++k) {
+      if (copies[0].decal.points[k].object == kMissed || surface[0].points[k].object == kMissed) continue;
+      moved += around(turns_about_up(decal_point_world(s, copies[0].decal.points[k])) -
+                      turns_about_up(decal_point_world(s, surface[0].points[k])));
+      ++points;
+    }
+    ASSERT_GT(points, 0) << degrees;
+    std::printf("[mobile, LSCM patch] orbit %+.0f deg: the hatch moves %+.2f deg about the up axis\n", degrees,
+                360 * moved / points);
+    EXPECT_NEAR(std::abs(360 * moved / points), std::abs(degrees), 3.0) << "a straight line of a conformal map";
+  }
+}
+
+// A patch that is no disk however small (a face with a fin: three faces on one edge) is
+// refused, naming the file, the group and the object; so is a group mixing mobile and
+// stationary strokes.
+TEST(MobileHatching, AGroupWithoutADiskUnderItIsRefused) {
+  Scene s = sphere_with_mobile_group("sphere", false, 1, {0, 1, 4}, false);
+  DecalSurface surface = reference::project_decals_by_rays(s);
+  Mesh finned = *s.objects[0].mesh;
+  const uint32_t face = surface[0].points[surface[0].points.size() / 2].face;
+  const glm::uvec3 t = finned.triangles[face];
+  finned.positions.push_back(finned.positions[t[0]] * 1.2f);
+  finned.triangles.push_back({t[0], t[1], uint32_t(finned.positions.size() - 1)});
+  compute_normals(finned);
+  s.objects[0].mesh = std::make_shared<const Mesh>(std::move(finned));
+  for (ProjectedDecal& d : surface)
+    for (DecalPoint& p : d.points)
+      if (p.object != kMissed) p.face = face;
   try {
     MobileHatching mobile(s, surface);
-    FAIL() << "a cube has no (u, v)";
+    FAIL() << "no disk under the group";
   } catch (const SceneError& e) {
-    EXPECT_NE(std::string(e.what()).find("mobile hatches: hatching group 0"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("has none"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("mobile hatches: hatching group 0: object 0"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no disk-like patch"), std::string::npos) << e.what();
   }
   s.stroke_files[0].strokes[1].mobile = false;
   EXPECT_THROW(hatching_groups(s), SceneError) << "a group's strokes all mobile or all stationary";
