@@ -196,6 +196,16 @@ TEST(MobileHatching, AGroupWithoutADiskUnderItIsRefused) {
 
 class MobileHatchingStrokes : public testing::GlTest {};
 
+// A free mobile group on the sphere, the view orbited 30 degrees: both backends place it
+// (each from its own projection) where the ID image, visibility and stroke raster agree.
+TEST_F(MobileHatchingStrokes, AFreeGroupAgreesOnBothBackends) {
+  Scene s = orbited(sphere_with_mobile_group("sphere", true), 30);
+  for (const StageParity& r : run_parity(s, {"id_image", "visibility", "stroke"})) {
+    std::printf("[free mobile group] %s  [%s]\n", format_diff(r.name, r.diff).c_str(), r.note.c_str());
+    EXPECT_TRUE(r.pass) << r.name << ": " << r.note;
+  }
+}
+
 // The snowman's trees carry two layers of mobile hatching (Fig. 8): along its orbit they move
 // on the cones, and the ID image, visibility and stroke raster agree on both backends.
 TEST_F(MobileHatchingStrokes, TheSnowmansTreesAgreeAlongTheOrbit) {
