@@ -177,7 +177,9 @@ class Profile {
  public:
   Profile(const UvChart& chart, glm::dvec2 c, double width, glm::dvec3 n_c, const glm::dmat3& to_view)
       : periodic_(chart.periodic()), l_(kMobileSamples, -INFINITY) {
-    step_ = chart.u_span() / (periodic_ ? kMobileSamples : kMobileSamples - 1), u0_ = chart.u_lowest();
+    // A chart of one u (degenerate) still samples a line, of a tiny step.
+    step_ = std::max(chart.u_span(), 1e-12) / (periodic_ ? kMobileSamples : kMobileSamples - 1);
+    u0_ = chart.u_lowest();
     for (int i = 0; i < kMobileSamples; ++i) {
       glm::dvec3 n = smoothed_normal(chart, {u(i), c.y}, width);
       if (glm::length(n) > 0) l_[size_t(i)] = glm::dot(n_c, glm::normalize(to_view * n));

@@ -194,6 +194,16 @@ TEST(MobileHatching, AGroupWithoutADiskUnderItIsRefused) {
   EXPECT_THROW(hatching_groups(s), SceneError) << "a group's strokes all mobile or all stationary";
 }
 
+// A (u, v) of one u (every face flat in the chart) has no u-line: refused, not divided by.
+TEST(MobileHatching, ADegenerateChartIsRefused) {
+  Scene s = sphere_with_mobile_group();
+  DecalSurface surface = reference::project_decals_by_rays(s);
+  Mesh flat = *s.objects[0].mesh;
+  for (glm::vec2& uv : flat.uvs) uv.x = 0.25f;
+  s.objects[0].mesh = std::make_shared<const Mesh>(std::move(flat));
+  EXPECT_THROW(MobileHatching(s, surface), SceneError);
+}
+
 class MobileHatchingStrokes : public testing::GlTest {};
 
 // A free mobile group on the sphere, the view orbited 30 degrees: both backends place it
