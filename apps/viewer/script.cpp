@@ -26,7 +26,9 @@ void check_set(const json& arg) {
 void check_effect(const json& arg) {
   require(arg.is_object() && !arg.empty(), "takes an object of effect names and true/false");
   const auto& table = effect_table();
-  for (const auto& [name, on] : arg.items()) {
+  for (const auto& item : arg.items()) {
+    const std::string& name = item.key();
+    const json& on = item.value();
     bool known = std::any_of(table.begin(), table.end(), [&](const EffectDef& e) { return e.name == name; });
     require(known, "unknown effect '" + name + "' (plumbago effects lists them)");
     require(on.is_boolean(), name + ": true or false");
