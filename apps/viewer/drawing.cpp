@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <map>
 #include <stdexcept>
 
 #include "common/strokes/strokes.hpp"
@@ -51,17 +50,16 @@ DrawnStroke drawn_stroke(const Scene& scene, const DrawRequest& request) {
 
 DrawnSurface drawn_surface(const Scene& scene, const DecalSurface& projected) {
   DrawnSurface out;
-  std::map<uint32_t, size_t> on;  // points by object
+  std::vector<uint32_t> objects;
   for (const ProjectedDecal& d : projected)
     for (size_t k = 0; k < d.points.size(); ++k) {  // split where a point missed or the object changes
       const DecalPoint& p = d.points[k];
       if (p.object == kMissed || scene.objects[p.object].style != Style::Strokes) continue;
       if (k == 0 || d.points[k - 1].object != p.object) out.polylines.emplace_back();
       out.polylines.back().push_back(p);
-      ++on[p.object];
+      objects.push_back(p.object);
     }
-  auto most = std::max_element(on.begin(), on.end(), [](auto& a, auto& b) { return a.second < b.second; });
-  if (most != on.end()) out.object = most->first;
+  out.object = most_common_object(objects);
   return out;
 }
 

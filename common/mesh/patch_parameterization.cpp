@@ -13,6 +13,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "common/mesh/mesh_topology.hpp"
+
 namespace plumbago {
 namespace {
 
@@ -27,13 +29,10 @@ glm::dvec3 centroid(const Mesh& mesh, uint32_t f) {
   return sum / 3.0;
 }
 
-// The faces reached from `seeds` across shared edges with their centroid within `radius`
-// of the seeds' mean centroid.
-std::vector<uint32_t> patch_faces(const Mesh& mesh, const std::vector<uint32_t>& seeds, double radius) {
-  std::unordered_map<uint64_t, std::vector<uint32_t>> edge_faces;
-  auto key = [](uint32_t a, uint32_t b) { return uint64_t(std::min(a, b)) << 32 | std::max(a, b); };
-  for (uint32_t f = 0; f < mesh.triangles.size(); ++f)
-    for (int k = 0; k < 3; ++k) edge_faces[key(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3])].push_back(f);
+// The faces reached from `seeds` across shared edges (common/mesh/mesh_topology.hpp) with
+// their centroid within `radius` of the seeds' mean centroid.
+std::vector<uint32_t> patch_faces(const Mesh& mesh, const MeshTopology& topology, const std::vector<uint32_t>& seeds,
+                                  double radius) {
   glm::dvec3 center(0.0);
   for (uint32_t f : seeds) center += centroid(mesh, f) / double(seeds.size());
   std::vector<uint8_t> in(mesh.triangles.size(), 0);
@@ -44,9 +43,10 @@ std::vector<uint32_t> patch_faces(const Mesh& mesh, const std::vector<uint32_t>&
     uint32_t f = todo.back();
     todo.pop_back();
     out.push_back(f);
-    for (int k = 0; k < 3; ++k)
-      for (uint32_t g : edge_faces[key(mesh.triangles[f][k], mesh.triangles[f][(k + 1) % 3])])
-        if (!in[g] && glm::distance(centroid(mesh, g), center) <= radius) in[g] = 1, todo.push_back(g);
+    for (uint32_t e : topology.face_edges[f])
+      for (int32_t g : topology.edges[e].face)
+        if (g >= 0 && !in[size_t(g)] && glm::distance(centroid(mesh, uint32_t(g)), center) <= radius)
+          in[size_t(g)] = 1, todo.push_back(uint32_t(g));
   }
   return out;
 }
@@ -94,8 +94,9 @@ glm::dmat2 frame_at(const glm::dvec3 p[3], const glm::dvec2 q[3], glm::dvec3 alo
 std::vector<glm::vec2> patch_uvs(const Mesh& mesh, const std::vector<uint32_t>& seeds, double radius,
                                  glm::dvec3 along) {
   if (seeds.empty()) throw std::runtime_error("no faces to parameterize around");
+  const MeshTopology topology = build_topology(mesh);
   for (int attempt = 0; attempt < 5; ++attempt, radius /= 2) {
-    const std::vector<uint32_t> faces = patch_faces(mesh, seeds, radius);
+    const std::vector<uint32_t> faces = patch_faces(mesh, topology, seeds, radius);
     SurfaceMesh sm;
     std::unordered_map<uint32_t, SurfaceMesh::Vertex_index> vertex;
     if (!disk_mesh(mesh, faces, sm, vertex)) continue;

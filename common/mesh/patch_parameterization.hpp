@@ -4,10 +4,10 @@
 // mobile hatching along u-lines of a "smooth surface region with roughly uniform
 // uv-parameterization": this is that region where the mesh brings none.
 //
-// The patch: the faces reached from `seeds` across shared edges whose centroid lies within
-// `radius` of the seeds' mean centroid. It must be a topological disk (one border, Euler
-// characteristic 1, manifold); where it is not, the radius is halved, up to 4 times. The
-// map's rotation and scale are CGAL's; it is turned so that the object-space direction
+// The patch: the faces reached from `seeds` across shared edges (common/mesh/mesh_topology.hpp,
+// which splits non-manifold faces off) whose centroid lies within `radius` of the seeds' mean
+// centroid. It must be a topological disk (one border, Euler characteristic 1, manifold); where it is not, the radius
+// is halved, up to 4 times. The map's rotation and scale are CGAL's; it is turned so that the object-space direction
 // `along` at the seeds runs along +u, and scaled so that u and v are lengths (object units).
 #pragma once
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace plumbago {
 
@@ -52,6 +53,14 @@ bool has_decals(const Scene& scene) {
     for (const DrawnStroke& stroke : file.strokes)
       if (stroke.role == StrokeRole::Decal || stroke.role == StrokeRole::Hatching) return true;
   return false;
+}
+
+uint32_t most_common_object(const std::vector<uint32_t>& objects) {
+  std::map<uint32_t, size_t> count;
+  for (uint32_t o : objects)
+    if (o != kMissed) ++count[o];
+  auto most = std::max_element(count.begin(), count.end(), [](auto& a, auto& b) { return a.second < b.second; });
+  return most == count.end() ? kMissed : most->first;
 }
 
 glm::dvec3 decal_point_local(const Scene& scene, const DecalPoint& d) {

@@ -78,6 +78,10 @@ struct ProjectedDecal {
   HatchTag hatch;
 };
 
+// The object most of `objects` name (the lowest on a tie), kMissed where none is named: the
+// object a hatching group, a mobile group or a drawn stroke lies on.
+uint32_t most_common_object(const std::vector<uint32_t>& objects);
+
 // Where a surface point lies on its object (object space), and in the world.
 glm::dvec3 decal_point_local(const Scene& scene, const DecalPoint& p);
 glm::dvec3 decal_point_world(const Scene& scene, const DecalPoint& p);

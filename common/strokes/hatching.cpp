@@ -149,7 +149,7 @@ class GroupScale {
     for (const ProjectedDecal& d : surface)
       if (d.hatch.group == index && (g.free ? d.hatch.position == 0 : d.hatch.position == std::floor(d.hatch.position)))
         add_anchor(d);
-    object_ = most_met();
+    object_ = most_common_object(objects_);
     if (object_ != kMissed) bound_object();
     const StrokeFile& drawn = scene.stroke_files[g.files[0]];
     drawn_ = measure(drawn.camera, drawn.width, drawn.height);
@@ -209,13 +209,6 @@ class GroupScale {
     double distance = glm::distance(center_, glm::dvec3(camera.eye));
     double half_fov = glm::radians(double(camera.fov_deg)) / 2;
     return distance > 0 ? 2 * radius_ / (distance * std::tan(half_fov)) * height / 2 : 0;
-  }
-
-  uint32_t most_met() const {
-    std::map<uint32_t, size_t> count;
-    for (uint32_t o : objects_) ++count[o];
-    auto most = std::max_element(count.begin(), count.end(), [](auto& a, auto& b) { return a.second < b.second; });
-    return most == count.end() ? kMissed : most->first;
   }
 
   // The bounding sphere of the object's box (Mesh::bbox_min/max) placed in the world.

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <optional>
 
 #include "common/mesh/patch_parameterization.hpp"
@@ -162,14 +161,6 @@ std::shared_ptr<const UvChart> patch_chart(const SceneObject& object, const Came
   return std::make_shared<const UvChart>(mesh, patch_uvs(mesh, seeds, 0.375 * double(mesh.bbox_diagonal()), along));
 }
 
-// The object most of `points` lie on (kMissed: none).
-uint32_t most_met(const std::vector<const DecalPoint*>& points) {
-  std::map<uint32_t, size_t> count;
-  for (const DecalPoint* p : points) ++count[p->object];
-  auto most = std::max_element(count.begin(), count.end(), [](auto& a, auto& b) { return a.second < b.second; });
-  return most == count.end() ? kMissed : most->first;
-}
-
 // l(u) = n_c . n(u) at kMobileSamples samples of the u-line v = c.v, n smoothed over
 // `width` and seen from `to_view` (2. of mobile_hatching.hpp); -inf where the line leaves
 // the surface.
@@ -257,7 +248,9 @@ std::optional<MobileHatching::Group> MobileHatching::make_group(const Scene& sce
   auto refuse = [&](const std::string& why) {
     throw SceneError(file.source + ": hatching group " + std::to_string(g.number) + ": " + why);
   };
-  const uint32_t object = most_met(hit);
+  std::vector<uint32_t> objects;
+  for (const DecalPoint* p : hit) objects.push_back(p->object);
+  const uint32_t object = most_common_object(objects);
   if (object == kMissed) return std::nullopt;
   const Mesh& mesh = *scene.objects[object].mesh;
   std::vector<const DecalPoint*> on;  // its points on that object

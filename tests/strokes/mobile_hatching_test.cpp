@@ -167,22 +167,21 @@ TEST(MobileHatching, AMeshWithoutAParameterizationGetsOneUnderTheGroup) {
   }
 }
 
-// A patch that is no disk however small (a face with a fin: three faces on one edge) is
-// refused, naming the file, the group and the object; so is a group mixing mobile and
-// stationary strokes.
+// A patch that is no disk however small (the group spans two pieces of the mesh, so two
+// borders) is refused, naming the file, the group and the object; so is a group mixing
+// mobile and stationary strokes.
 TEST(MobileHatching, AGroupWithoutADiskUnderItIsRefused) {
   Scene s = sphere_with_mobile_group("sphere", false, 1, {0, 1, 4}, false);
   DecalSurface surface = reference::project_decals_by_rays(s);
-  Mesh finned = *s.objects[0].mesh;
-  const uint32_t face = surface[0].points[surface[0].points.size() / 2].face;
-  const glm::uvec3 t = finned.triangles[face];
-  finned.positions.push_back(finned.positions[t[0]] * 1.2f);
-  finned.triangles.push_back({t[0], t[1], uint32_t(finned.positions.size() - 1)});
-  compute_normals(finned);
-  s.objects[0].mesh = std::make_shared<const Mesh>(std::move(finned));
-  for (ProjectedDecal& d : surface)
-    for (DecalPoint& p : d.points)
-      if (p.object != kMissed) p.face = face;
+  Mesh two = *s.objects[0].mesh;  // the sphere and a copy of it beside it
+  const auto n = uint32_t(two.positions.size()), faces = uint32_t(two.triangles.size());
+  for (uint32_t v = 0; v < n; ++v) two.positions.push_back(two.positions[v] + glm::vec3(3, 0, 0));
+  for (uint32_t f = 0; f < faces; ++f) two.triangles.push_back(two.triangles[f] + glm::uvec3(n));
+  compute_normals(two);
+  s.objects[0].mesh = std::make_shared<const Mesh>(std::move(two));
+  for (ProjectedDecal& d : surface)  // every other point on the copy
+    for (size_t k = 0; k < d.points.size(); k += 2)
+      if (d.points[k].object != kMissed) d.points[k].face += faces;
   try {
     MobileHatching mobile(s, surface);
     FAIL() << "no disk under the group";
