@@ -44,16 +44,17 @@ struct LinesOptions {
 constexpr double kTruthStepPx = 0.5;
 
 // `origin`: the scene's (p.world is relative to it); the file has world space.
-nlohmann::json path_json(const WindowLines& lines, const WindowPath& p, const ImageU32& keys, glm::dvec3 origin) {
+nlohmann::json path_json(const SceneLines& found, const WindowPath& p, glm::dvec3 origin) {
+  const WindowLines& lines = found.lines;
   nlohmann::json points = nlohmann::json::array(), screen = nlohmann::json::array();
   for (size_t k = 0; k < p.window.size(); ++k) {
     glm::dvec3 world = glm::dvec3(p.world[k]) + origin;
     points.push_back({world.x, world.y, world.z});
     screen.push_back({p.window[k].x, p.window[k].y});
   }
-  nlohmann::json j{{"kind", line_kind_name(p.kind)},    {"object", p.object}, {"closed", p.closed},
-                   {"front_facing", p.front_facing},    {"points", points},   {"screen", screen},
-                   {"visible", points_visible(p, keys)}};
+  nlohmann::json j{{"kind", line_kind_name(p.kind)},     {"object", p.object}, {"closed", p.closed},
+                   {"front_facing", p.front_facing},     {"points", points},   {"screen", screen},
+                   {"visible", points_visible(p, found)}};
   if (p.kind == LineKind::Hatching) {  // its group (common/strokes/hatching.hpp) and the group's kind
     const HatchGroupState& g = lines.hatching.at(size_t(p.hatch_group));
     j["group"] = g.number, j["hatching"] = g.free ? "free" : "structured", j["mobile"] = g.mobile;
@@ -167,7 +168,7 @@ void run(const LinesOptions& o) {
     text = svg(scene, lines, visibility);
   } else {
     nlohmann::json paths = nlohmann::json::array();
-    for (const WindowPath& path : lines.paths) paths.push_back(path_json(lines, path, found.keys, scene.origin));
+    for (const WindowPath& path : lines.paths) paths.push_back(path_json(found, path, scene.origin));
     nlohmann::json j{{"paths", paths}};
     if (o.truth) {
       add_truth(scene, lines, visibility, j["paths"]);

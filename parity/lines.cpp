@@ -37,16 +37,19 @@ SceneLines scene_lines(const Scene& scene, const std::string& backend) {
   out.lines = *out.frame.lines;  // the lines the frame made and tested, and the runs it found
   out.visibility = *out.frame.visibility;
   out.keys = keys_from_channels(out.frame.buffers.at(kIds.name));
+  if (out.scene.params.get<StrokesParams>().crease_under_silhouettes)
+    out.crease_keys = keys_from_channels(out.frame.buffers.at(kCreaseIds.name));
   for (VisibleRun& r : out.visibility.runs)  // the GPU frame's: their polylines were made on the GPU
     if (r.window.empty())
       r = run_along(out.lines.paths.at(r.path), r.path, r.s0, r.s1, r.closed, r.occluded_start, r.occluded_end);
   return out;
 }
 
-std::vector<bool> points_visible(const WindowPath& path, const ImageU32& keys) {
+std::vector<bool> points_visible(const WindowPath& path, const SceneLines& found) {
+  const ImageU32* under = found.crease_keys ? &*found.crease_keys : nullptr;
   std::vector<bool> out;
   for (size_t k = 0; k < path.window.size(); ++k)
-    out.push_back(path.front_facing && sample_visible(keys, sample_at(path, path.arc_px[k])));
+    out.push_back(path.front_facing && sample_visible(found.keys, under, sample_at(path, path.arc_px[k])));
   return out;
 }
 

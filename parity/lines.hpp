@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include <optional>
 #include "common/core/frame.hpp"
+
 #include "common/scene/scene.hpp"
 #include "common/strokes/strokes.hpp"
 #include "common/strokes/visibility.hpp"
@@ -16,8 +18,9 @@ namespace plumbago {
 struct SceneLines {
   Scene scene;  // the scene drawn: every object but the sketchy ones with strokes
   WindowLines lines;
-  Frame frame;    // that scene's frame, with its buffers
-  ImageU32 keys;  // its ID image
+  Frame frame;                          // that scene's frame, with its buffers
+  ImageU32 keys;                        // its ID image
+  std::optional<ImageU32> crease_keys;  // under strokes.crease_under_silhouettes: that image before the silhouettes
   Visibility visibility;
 };
 
@@ -28,6 +31,6 @@ struct SceneLines {
 SceneLines scene_lines(const Scene& scene, const std::string& backend);
 
 // Per point of `path`: whether it shows (front-facing, and its sample passes the ID image).
-std::vector<bool> points_visible(const WindowPath& path, const ImageU32& keys);
+std::vector<bool> points_visible(const WindowPath& path, const SceneLines& found);
 
 }  // namespace plumbago

@@ -77,10 +77,10 @@ py::object compare(const Scene& scene, const std::vector<std::string>& names) {
   return from_json(report);
 }
 
-py::dict path_entry(const WindowPath& p, const ImageU32& keys, glm::dvec3 origin, py::list runs) {
+py::dict path_entry(const WindowPath& p, const SceneLines& found, glm::dvec3 origin, py::list runs) {
   std::vector<glm::dvec3> world(p.world.size());
   for (size_t k = 0; k < world.size(); ++k) world[k] = glm::dvec3(p.world[k]) + origin;
-  std::vector<bool> shown = points_visible(p, keys);
+  std::vector<bool> shown = points_visible(p, found);
   return py::dict("kind"_a = line_kind_name(p.kind), "object"_a = p.object, "closed"_a = p.closed,
                   "front_facing"_a = p.front_facing, "points"_a = vector_array<double>(std::move(world)),
                   "screen"_a = vector_array<double>(p.window),
@@ -103,7 +103,7 @@ py::list lines(const Scene& scene, const std::string& backend) {
   for (const VisibleRun& r : found.visibility.runs) runs[r.path].append(py::make_tuple(r.s0, r.s1));
   py::list out;
   for (size_t i = 0; i < runs.size(); ++i)
-    out.append(path_entry(found.lines.paths[i], found.keys, found.scene.origin, runs[i]));
+    out.append(path_entry(found.lines.paths[i], found, found.scene.origin, runs[i]));
   return out;
 }
 

@@ -97,10 +97,11 @@ void add_silhouette_segment(const WindowPath& path, size_t k, const StrokesParam
   }
 }
 
-void add_path(const WindowPath& path, const StrokesParams& p, IdTriangles& tri) {
+// A path's quads, where `rule` draws its kind.
+void add_path(const WindowPath& path, const StrokesParams& p, IdLineRule rule, IdTriangles& tri) {
   if (path.kind == LineKind::Decal || path.kind == LineKind::Hatching) return;  // tested against its faces' keys
   bool silhouette = path.kind == LineKind::Silhouette;
-  if (silhouette && !path.front_facing) return;
+  if (silhouette != (rule == IdLineRule::Silhouettes) || (silhouette && !path.front_facing)) return;
   size_t n = path.window.size(), segments = path.closed ? n : n - 1;
   for (size_t k = 0; k < segments; ++k) {
     if (silhouette) {
@@ -111,11 +112,6 @@ void add_path(const WindowPath& path, const StrokesParams& p, IdTriangles& tri) 
     tri.segment(path.window[k], path.window[next], path.depth[k], path.depth[next], p.id_crease_px,
                 p.id_crease_depth_bias, path.key);
   }
-}
-
-// Rule 2 and 3: creases and borders come first in `lines`, then the silhouettes.
-void add_paths(const WindowLines& lines, const StrokesParams& p, IdTriangles& tri) {
-  for (const WindowPath& path : lines.paths) add_path(path, p, tri);
 }
 
 }  // namespace
@@ -161,9 +157,10 @@ std::vector<IdVertex> id_sketchy_face_triangles(const Scene& scene, const Window
   return std::move(tri.out);
 }
 
-std::vector<IdVertex> id_line_triangles(const Scene& scene, const WindowLines& lines, const StrokesParams& p) {
+std::vector<IdVertex> id_line_triangles(const Scene& scene, const WindowLines& lines, const StrokesParams& p,
+                                        IdLineRule rule) {
   IdTriangles tri(scene);
-  add_paths(lines, p, tri);
+  for (const WindowPath& path : lines.paths) add_path(path, p, rule, tri);
   return std::move(tri.out);
 }
 

@@ -14,6 +14,12 @@
 //      common/strokes/visibility.hpp.)
 // A segment's quad runs along it with its width centered on it (no caps).
 //
+// Two key images come out: the whole one, and the one before rule 3 (id_image.crease_ids),
+// where strokes.crease_under_silhouettes tests creases and borders too
+// (common/strokes/visibility.hpp). A silhouette is a line, not a surface: its quad, 3 px wide
+// and drawn nearer by its bias, covers a crease running within a pixel or two of it, and the
+// crease's faces, wherever the two run side by side (a coarse mesh's legs and hooves).
+//
 // Depth: each triangle vertex carries z = near / d, d its linear view depth: 1/d, and so z, is
 // affine in window space on a planar triangle, so interpolating z affinely over the
 // window is exact (perspective-correct) and the same rule on both backends. A line vertex
@@ -71,8 +77,10 @@ inline float face_z(double near, double d) { return float(near / std::max(d, nea
 // Rule 1's sketchy faces as triangles, three vertices each (the reference's; the GPU draws
 // them from the meshes it keeps, shaders/strokes/id_faces.vert, clipped by the rasterizer).
 std::vector<IdVertex> id_sketchy_face_triangles(const Scene& scene, const WindowLines& lines);
-// Rules 2 and 3, the lines, in drawing order.
-std::vector<IdVertex> id_line_triangles(const Scene& scene, const WindowLines& lines, const StrokesParams& p);
+// Rule 2 (the creases and borders) or rule 3 (the silhouettes), in drawing order.
+enum class IdLineRule { CreasesAndBorders, Silhouettes };
+std::vector<IdVertex> id_line_triangles(const Scene& scene, const WindowLines& lines, const StrokesParams& p,
+                                        IdLineRule rule);
 
 constexpr int kSubpixelBits = 8;
 
@@ -85,10 +93,13 @@ ImageU32 keys_from_channels(const Image& channels);
 constexpr double kDepthTie = 1e-5;
 
 inline constexpr Buffer kIds{"id_image.ids"};
+inline constexpr Buffer kCreaseIds{"id_image.crease_ids"};  // rules 1 and 2: before the silhouettes
 // The frame's lines in the window: feature lines, decals and hatching (common/strokes/strokes.hpp).
 inline constexpr Slot<WindowLines> kWindowLines{"id_image.lines"};
-// Reference only: where rounding decides the ID (what the parity bound of kIds reads).
+// Reference only: where rounding decides the ID (what the parity bounds of kIds and
+// kCreaseIds read).
 inline constexpr Slot<Image> kAmbiguousIds{"id_image.ambiguous"};
+inline constexpr Slot<Image> kAmbiguousCreaseIds{"id_image.crease_ambiguous"};
 
 struct IdImageStage {
   using Params = TypeList<StrokesParams, HatchingParams>;
@@ -112,13 +123,23 @@ struct IdImageStage {
                                       "rounding decides, which a derived bound allows and the note counts: depth ties "
                                       "(the nearest surfaces within 1e-5 relative plus a subpixel of z slope) and "
                                       "edges within a subpixel of the pixel center (torus 800x600: 62 px, 0.01%)"},
+                    {.handle = kCreaseIds,
+                     .channels = 2,
+                     .texel = Texel::Uint,
+                     .doc = "the key before the silhouettes' quads (faces, creases and borders): what crease and "
+                            "border samples test",
+                     .tolerance_why = "the same triangles as id_image.ids, fewer: exact except where rounding "
+                                      "decides, the same derived bound"},
                     {.handle = kWindowLines,
                      .channels = 0,
                      .texel = Texel::Host,
                      .doc = "the lines in the window, their keys and surface points (CPU)"},
                     {.handle = kAmbiguousIds,
                      .texel = Texel::Host,
-                     .doc = "reference only: 1 where rounding decides the key"}},
+                     .doc = "reference only: 1 where rounding decides the key"},
+                    {.handle = kAmbiguousCreaseIds,
+                     .texel = Texel::Host,
+                     .doc = "reference only: 1 where rounding decides the key before the silhouettes"}},
         .effects = {"strokes"}};
   }
 };

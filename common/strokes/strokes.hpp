@@ -40,7 +40,7 @@ namespace plumbago {
 struct StrokesParams {
   static constexpr const char* stage = "strokes";
   float crease_deg;
-  bool silhouette_normalized, keep_back_facing;
+  bool silhouette_normalized, keep_back_facing, crease_under_silhouettes;
   float id_crease_px, id_silhouette_px, id_depth_bias, id_crease_depth_bias, vis_step_px;
   template <class V>
   void visit(V& v) {
@@ -62,6 +62,10 @@ struct StrokesParams {
     v.real(id_crease_depth_bias, "id_crease_depth_bias", 1e-4, 0.0, 0.5,
            "crease and border quads are depth-tested at d (1 - bias) against the faces (relative, linear view depth; "
            "they need none to show, as their front-facing faces pass the test, only to clear depth ties)");
+    v.boolean(crease_under_silhouettes, "crease_under_silhouettes", false,
+              "a crease or border sample hidden in the ID image also shows where its pixel, before the silhouettes' "
+              "quads, holds its key or a front-facing face next to it: creases beside silhouettes on coarse meshes "
+              "kept, a pixel more shown where a crease goes behind a surface (experiments/stroke_visibility)");
     v.real(vis_step_px, "vis_step_px", 2.0, 0.25, 64.0,
            "visibility samples along a path, pixels apart (Kalnins et al. "
            "2002, §4.6)");

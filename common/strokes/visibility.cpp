@@ -240,6 +240,13 @@ bool sample_visible(const ImageU32& keys, const VisibilitySample& s) {
   return false;
 }
 
+bool sample_visible(const ImageU32& keys, const ImageU32* crease_keys, const VisibilitySample& s) {
+  if (sample_visible(keys, s)) return true;
+  if (!crease_keys || s.kind != kCreaseSample) return false;
+  int x = int(std::floor(s.window.x)), y = int(std::floor(s.window.y));  // NaN: not in the window
+  return x >= 0 && y >= 0 && x < crease_keys->width && y < crease_keys->height && holds(crease_keys->at(x, y), s);
+}
+
 double first_round_bound(const WindowPath& p, double step, double width, double height) {
   // Clear of the margin's edges by more than rounding moves a point: no edge sample.
   auto clear = [&](glm::dvec2 q) {

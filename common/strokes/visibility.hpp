@@ -7,7 +7,10 @@
 //   - a silhouette: its path key, with an arc-length byte within
 //     ceil(2 max(2, 256 / L_px)) of its own floor(255 s / L) (around the seam of a
 //     closed path, the shorter way);
-//   - a crease or border: its path key, or the key of a front-facing face next to it;
+//   - a crease or border: its path key, or the key of a front-facing face next to it; under
+//     strokes.crease_under_silhouettes also where its own pixel holds one of them in the key
+//     image before the silhouettes' quads (common/strokes/id_image.hpp: a silhouette's quad,
+//     3 px wide and drawn nearer, hides a crease running beside it);
 //   - a decal (a stroke fixed on the surface, Kalnins et al. 2002, §3, §4.5, common/strokes/decal.hpp): the key of the
 //     face of the nearer of its segment's two path points;
 //   - a hatch (Kalnins et al. 2002, §6, common/strokes/hatching.hpp), in the 5x5 box (2 px): the key of the face of
@@ -63,6 +66,9 @@ VisibilitySample sample_at(const WindowPath& path, double s);
 
 // The Kalnins et al. 2002, §4.6 test of one sample against the ID image's keys.
 bool sample_visible(const ImageU32& keys, const VisibilitySample& s);
+// The same, and under strokes.crease_under_silhouettes (`crease_keys`: the key image before
+// the silhouettes' quads, else none) a crease or border sample's own pixel there.
+bool sample_visible(const ImageU32& keys, const ImageU32* crease_keys, const VisibilitySample& s);
 
 // A visible stretch of a path, in window arc length.
 struct VisibleRun {
@@ -126,7 +132,7 @@ struct VisibilityStage {
             .kind = StageKind::Frame,
             .doc = "visibility of stroke samples from the ID image (Kalnins et al. 2002, §4.6)",
             .params = {"strokes"},
-            .inputs = {{.handle = kIds}, {.handle = kWindowLines}},
+            .inputs = {{.handle = kIds}, {.handle = kCreaseIds}, {.handle = kWindowLines}},
             .outputs = {{.handle = kFlags,
                          .texel = Texel::Unorm8,
                          .doc = "1 where a first-round sample is visible: one texel per sample, 1024 a row",

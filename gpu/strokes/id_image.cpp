@@ -7,7 +7,8 @@
 // double on the GPU (gpu/strokes/silhouette_points.hpp), read back for now (their paths'
 // rows and points only) and made window paths on the CPU with the creases. The window paths
 // go up once as the frame's path table (gpu/strokes/window_paths.hpp), from which the GPU
-// expands the lines' quads (gpu/strokes/id_lines.hpp) and the visibility steps sample.
+// expands the lines' quads (gpu/strokes/id_lines.hpp) and the visibility steps sample. Every
+// draw writes both key images but the silhouettes', which leave crease_ids as it stood.
 #include "common/strokes/id_image.hpp"
 
 #include <optional>
@@ -54,13 +55,18 @@ class IdImagePass : public GpuPass {
                                      has_decals(f.scene) ? &decals_ : nullptr, &silhouettes, &*mobile_));
     table_.emplace(f.get(kWindowLines));
     f.put(kPathTable, *table_);
-    Texture& target = f.put(kIds);
+    Texture &target = f.put(kIds), &crease_target = f.put(kCreaseIds);
+    lines_.prepare(*table_, p, target.width, target.height, f.scene.camera.near);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target.id(), 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, crease_target.id(), 0);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
+    const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1}, keys_only[2] = {GL_COLOR_ATTACHMENT0, GL_NONE};
+    glDrawBuffers(2, both);
     const GLuint none[4] = {0, 0, 0, 0};
     const float far = 0;
     glClearBufferuiv(GL_COLOR, 0, none);
+    glClearBufferuiv(GL_COLOR, 1, none);
     glClearBufferfv(GL_DEPTH, 0, &far);
     glViewport(0, 0, target.width, target.height);
     glEnable(GL_DEPTH_TEST);
@@ -68,7 +74,10 @@ class IdImagePass : public GpuPass {
     glBindVertexArray(empty_.id());
     draw_gbuffer_faces(f);
     draw_sketchy_faces(f);
-    lines_(*table_, p, target.width, target.height, f.scene.camera.near);
+    lines_.draw(*table_, IdLineRule::CreasesAndBorders);
+    glDrawBuffers(2, keys_only);  // crease_ids keeps what stands before the silhouettes
+    lines_.draw(*table_, IdLineRule::Silhouettes);
+    glDrawBuffers(2, both);
     glDepthFunc(GL_LESS);
     glDisable(GL_DEPTH_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

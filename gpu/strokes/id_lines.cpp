@@ -11,15 +11,22 @@ Program step(const char* name) {
 
 }  // namespace
 
+void IdLines::bind(const UploadedPaths& table) const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, table.paths.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, table.points.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, pieces_.id());
+}
+
 IdLines::IdLines()
     : count_(step("STEP_COUNT")),
       args_(step("STEP_ARGS")),
       draw_(Program::with_geometry("strokes/id_lines.vert", "strokes/id_lines.geom", "strokes/id_image.frag")),
       empty_(make_vertex_array()) {}
 
-void IdLines::operator()(const UploadedPaths& table, const StrokesParams& p, int width, int height, float near) {
+void IdLines::prepare(const UploadedPaths& table, const StrokesParams& p, int width, int height, float near) {
+  commands_ = 0;
   if (table.count == 0) return;
-  const size_t slots = size_t(table.entries) + 1 + 4;  // the counts, their total, the draw's command
+  const size_t slots = size_t(table.entries) + 1 + 8;  // the counts, their total, the draws' commands
   if (slots > capacity_) pieces_ = make_buffer(nullptr, slots * sizeof(uint32_t)), capacity_ = slots;
   const GLuint zero = 0;
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, pieces_.id());
@@ -28,6 +35,7 @@ void IdLines::operator()(const UploadedPaths& table, const StrokesParams& p, int
     GLuint id = program->id();
     glProgramUniform1ui(id, program->uniform("path_count"), table.count);
     glProgramUniform1ui(id, program->uniform("entry_count"), table.entries);
+    glProgramUniform1ui(id, program->uniform("silhouette_entry"), table.silhouette_entry);
     glProgramUniform1f(id, program->uniform("width"), float(width));
     glProgramUniform1f(id, program->uniform("height"), float(height));
     glProgramUniform1f(id, program->uniform("near"), near);
@@ -36,24 +44,26 @@ void IdLines::operator()(const UploadedPaths& table, const StrokesParams& p, int
     glProgramUniform1f(id, program->uniform("silhouette_px"), p.id_silhouette_px);
     glProgramUniform1f(id, program->uniform("silhouette_bias"), p.id_depth_bias);
   }
-  auto bind = [&] {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, table.paths.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, table.points.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, pieces_.id());
-  };
-  bind();
+  bind(table);
   dispatch_in_chunks(count_, table.entries, "first");
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   scan_(pieces_, size_t(table.entries) + 1);
-  bind();
+  bind(table);
   glUseProgram(args_.id());
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-  glUseProgram(draw_.id());
   glProgramUniform2f(draw_.id(), draw_.uniform("window_size"), float(width), float(height));
+  commands_ = size_t(table.entries) + 1;
+}
+
+void IdLines::draw(const UploadedPaths& table, IdLineRule rule) {
+  if (commands_ == 0) return;
+  const size_t command = commands_ + (rule == IdLineRule::Silhouettes ? 4 : 0);
+  bind(table);
+  glUseProgram(draw_.id());
   glBindVertexArray(empty_.id());
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, pieces_.id());
-  glDrawArraysIndirect(GL_POINTS, reinterpret_cast<const void*>((size_t(table.entries) + 1) * sizeof(uint32_t)));
+  glDrawArraysIndirect(GL_POINTS, reinterpret_cast<const void*>(command * sizeof(uint32_t)));
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
 }
 

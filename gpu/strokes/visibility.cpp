@@ -35,11 +35,13 @@ Program step(const char* name) {
 
 SampleTest::SampleTest() : program_(step("STEP_TEST")) {}
 
-std::vector<uint8_t> SampleTest::operator()(const Texture& ids, const std::vector<VisibilitySample>& batch) {
+std::vector<uint8_t> SampleTest::operator()(const Texture& ids, const Texture* crease_ids,
+                                            const std::vector<VisibilitySample>& batch) {
   Buffer samples = make_buffer(batch.data(), batch.size() * sizeof(VisibilitySample));
   Buffer flags = make_buffer(nullptr, batch.size() * sizeof(uint32_t));
   glProgramUniform1ui(program_.id(), program_.uniform("sample_count"), GLuint(batch.size()));
-  bind_textures(program_, {{"ids", &ids}});
+  bind_textures(program_, {{"ids", &ids}, {"crease_ids", crease_ids ? crease_ids : &ids}});
+  glProgramUniform1i(program_.id(), program_.uniform("crease_under_silhouettes"), crease_ids != nullptr);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, samples.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, flags.id());
   dispatch_in_chunks(program_, batch.size(), "first");
@@ -114,8 +116,8 @@ class VisibilityPass : public GpuPass {
                                                       &tested_.buffer,  &change_marks_.buffer, &run_marks_.buffer,
                                                       &changes_.buffer, &run_rows_.buffer};
     bind(all);
-    bind_textures(samples_, {{"ids", &f.get(kIds)}});
-    bind_textures(changes_step_, {{"ids", &f.get(kIds)}});
+    for (const Program* p : {&samples_, &changes_step_})
+      bind_textures(*p, {{"ids", &f.get(kIds)}, {"crease_ids", &f.get(kCreaseIds)}});
     dispatch_in_chunks(count_, table->entries, "first");
     barrier();
     dispatch_in_chunks(ends_, table->count, "first");
@@ -159,6 +161,8 @@ class VisibilityPass : public GpuPass {
       glProgramUniform1ui(p->id(), p->uniform("path_count"), table.count);
       glProgramUniform1ui(p->id(), p->uniform("entry_count"), table.entries);
       glProgramUniform1f(p->id(), p->uniform("step_px"), f.params<StrokesParams>().vis_step_px);
+      glProgramUniform1i(p->id(), p->uniform("crease_under_silhouettes"),
+                         f.params<StrokesParams>().crease_under_silhouettes);
       glProgramUniform1f(p->id(), p->uniform("width"), float(lines.width));
       glProgramUniform1f(p->id(), p->uniform("height"), float(lines.height));
     }

@@ -15,8 +15,11 @@ namespace plumbago::gpu {
 class SampleTest {
  public:
   SampleTest();
-  // One flag per sample against `ids` (the ID image: RG32UI, key >> 16 and key & 0xffff).
-  std::vector<uint8_t> operator()(const Texture& ids, const std::vector<VisibilitySample>& batch);
+  // One flag per sample against `ids` (the ID image: RG32UI, key >> 16 and key & 0xffff) and,
+  // under strokes.crease_under_silhouettes, `crease_ids` (the same before the silhouettes'
+  // quads; else none).
+  std::vector<uint8_t> operator()(const Texture& ids, const Texture* crease_ids,
+                                  const std::vector<VisibilitySample>& batch);
 
  private:
   Program program_;

@@ -31,6 +31,7 @@ PathTable::PathTable(const WindowLines& lines) {
     paths.push_back({uint32_t(points.size()), n, entries, first.kind | (p.closed ? 16u : 0u) | (in_ids ? 32u : 0u),
                      first.key, first.byte_window, 0, style_of(p), p.length_px, p.alpha_scale, p.width_scale});
     entries += (p.closed ? n : n - 1) + 1;
+    if (p.kind == LineKind::Crease || p.kind == LineKind::Border) silhouette_entry = entries;
     for (uint32_t k = 0; k < n; ++k)
       points.push_back({p.window[k], p.arc_px[k], k < p.front_faces.size() ? p.front_faces[k] : glm::uvec2(0),
                         k < p.pressure.size() ? p.pressure[k] : 1.0, p.depth[k]});
@@ -61,7 +62,7 @@ UploadedPaths::UploadedPaths(const WindowLines& lines) {
   PathTable table(lines);
   paths = make_buffer(table.paths.data(), table.paths.size() * sizeof(PathRow));
   points = make_buffer(table.points.data(), table.points.size() * sizeof(PointRow));
-  count = uint32_t(table.paths.size()), entries = table.entries;
+  count = uint32_t(table.paths.size()), entries = table.entries, silhouette_entry = table.silhouette_entry;
 }
 
 UploadedRuns::UploadedRuns(const WindowLines& lines, const Visibility& visibility) : paths_(lines) {

@@ -45,6 +45,7 @@ struct PathTable {
   std::vector<PathRow> paths;
   std::vector<PointRow> points;
   uint32_t entries = 0;
+  uint32_t silhouette_entry = 0;  // the entries of the creases and borders, which come first
 };
 
 // A frame's path table on the GPU, put up once: the ID image draws its lines from it
@@ -52,7 +53,7 @@ struct PathTable {
 struct UploadedPaths {
   explicit UploadedPaths(const WindowLines& lines);
   Buffer paths, points;
-  uint32_t count = 0, entries = 0;
+  uint32_t count = 0, entries = 0, silhouette_entry = 0;
 };
 inline constexpr Shared<UploadedPaths> kPathTable{"id_image.path_table"};
 

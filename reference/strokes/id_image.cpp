@@ -83,6 +83,20 @@ void draw_triangles(const std::vector<IdVertex>& v, IdRaster& r) {
       [&](const IdVertex* t, int y0, int y1) { draw(t, r, y0, y1); });
 }
 
+// The key image and where rounding decides it, as they stand.
+void put_keys(ReferenceFrame& f, const IdRaster& r, Buffer keys, Slot<Image> ambiguity) {
+  f.put(keys, key_channels(r.key));
+  Image ties(r.key.width, r.key.height, 1);
+  for (size_t i = 0; i < ties.data.size(); ++i) ties.data[i] = ambiguous(r, i);
+  f.put(ambiguity, std::move(ties));
+}
+
+// Where the rounding of a rasterizer decides (ambiguous above), the backends may keep either key.
+Image ambiguity_bound(Image ambiguous) {
+  for (float& b : ambiguous.data) b *= 65536.0f;
+  return ambiguous;
+}
+
 }  // namespace
 
 PLUMBAGO_REFERENCE_STAGE(id_image, [](ReferenceFrame& f) {
@@ -91,21 +105,19 @@ PLUMBAGO_REFERENCE_STAGE(id_image, [](ReferenceFrame& f) {
       has_decals(f.scene) ? project_decals_by_rays(f.scene) : DecalSurface{};  // by rays (Kalnins et al. 2002, §3)
   f.put(kWindowLines,
         window_lines(f.scene, p, LineObjects::Strokes, &f.get(kLineMeshes), has_decals(f.scene) ? &decals : nullptr));
+  const WindowLines& lines = f.get(kWindowLines);
   IdRaster r = empty_raster(f.scene.width, f.scene.height);
   draw_gbuffer_faces(f.get(kGBuffer), gbuffer_first_keys(f.scene), f.scene.camera.near, r);
-  draw_triangles(id_sketchy_face_triangles(f.scene, f.get(kWindowLines)), r);
-  draw_triangles(id_line_triangles(f.scene, f.get(kWindowLines), p), r);
-  f.put(kIds, key_channels(r.key));
-  Image ties(r.key.width, r.key.height, 1);
-  for (size_t i = 0; i < ties.data.size(); ++i) ties.data[i] = ambiguous(r, i);
-  f.put(kAmbiguousIds, std::move(ties));
+  draw_triangles(id_sketchy_face_triangles(f.scene, lines), r);
+  draw_triangles(id_line_triangles(f.scene, lines, p, IdLineRule::CreasesAndBorders), r);
+  put_keys(f, r, kCreaseIds, kAmbiguousCreaseIds);
+  draw_triangles(id_line_triangles(f.scene, lines, p, IdLineRule::Silhouettes), r);
+  put_keys(f, r, kIds, kAmbiguousIds);
 });
 
-// Where the rounding of a rasterizer decides (ambiguous above), the backends may keep either key.
-PLUMBAGO_REFERENCE_BOUND(id_image_ids, kIds.name, [](const ReferenceFrame& f) {
-  Image bound = f.get(kAmbiguousIds);
-  for (float& b : bound.data) b *= 65536.0f;
-  return bound;
-});
+PLUMBAGO_REFERENCE_BOUND(id_image_ids, kIds.name,
+                         [](const ReferenceFrame& f) { return ambiguity_bound(f.get(kAmbiguousIds)); });
+PLUMBAGO_REFERENCE_BOUND(id_image_crease_ids, kCreaseIds.name,
+                         [](const ReferenceFrame& f) { return ambiguity_bound(f.get(kAmbiguousCreaseIds)); });
 
 }  // namespace plumbago::reference

@@ -10,13 +10,15 @@
 namespace plumbago::reference {
 
 PLUMBAGO_REFERENCE_STAGE(visibility, [](ReferenceFrame& f) {
-  ImageU32 keys = keys_from_channels(f.get(kIds));
+  const auto p = f.params<StrokesParams>();
+  ImageU32 keys = keys_from_channels(f.get(kIds)), crease_keys = keys_from_channels(f.get(kCreaseIds));
+  const ImageU32* under = p.crease_under_silhouettes ? &crease_keys : nullptr;
   auto test = [&](const std::vector<VisibilitySample>& batch) {
     std::vector<uint8_t> flags(batch.size());
-    tbb::parallel_for(size_t(0), batch.size(), [&](size_t k) { flags[k] = sample_visible(keys, batch[k]); });
+    tbb::parallel_for(size_t(0), batch.size(), [&](size_t k) { flags[k] = sample_visible(keys, under, batch[k]); });
     return flags;
   };
-  Visibility v = visible_runs(f.get(kWindowLines), f.params<StrokesParams>(), test);
+  Visibility v = visible_runs(f.get(kWindowLines), p, test);
   f.put(kFlags, flags_image(v.flags));
   auto [paths, ends] = run_tables(v.runs);
   f.put(kRunPaths, std::move(paths));

@@ -6,6 +6,7 @@ uniform sampler2D depth;  // G-buffer: linear view depth d
 uniform float near;
 layout(std430, binding = 0) readonly buffer FirstKeys { uint first_key[]; };  // per G-buffer object
 layout(location = 0) out uvec2 halves;
+layout(location = 1) out uvec2 crease_halves;  // id_image.crease_ids: not drawn to by the silhouettes
 
 void main() {
   ivec2 x = ivec2(gl_FragCoord.xy);
@@ -14,4 +15,5 @@ void main() {
   uint key = first_key[id.x - 1u] + id.y;
   gl_FragDepth = near / max(texelFetch(depth, x, 0).r, near);
   halves = uvec2(key >> 16, key & 0xffffu);
+  crease_halves = halves;
 }

@@ -12,8 +12,10 @@ float z() { return z_line; }
 #endif
 flat in uint key;
 layout(location = 0) out uvec2 halves;
+layout(location = 1) out uvec2 crease_halves;  // id_image.crease_ids: not drawn to by the silhouettes
 
 void main() {
   gl_FragDepth = z();
   halves = uvec2(key >> 16, key & 0xffffu);
+  crease_halves = halves;
 }

@@ -21,7 +21,9 @@ struct Sample {  // common/strokes/visibility.hpp VisibilitySample
   uint byte_window;  // at most 255; bit 8: a closed path (bytes compared around the seam)
 };
 
-uniform usampler2D ids;  // (key >> 16, key & 0xffff)
+uniform usampler2D ids;         // (key >> 16, key & 0xffff)
+uniform usampler2D crease_ids;  // the same before the silhouettes' quads
+uniform bool crease_under_silhouettes;  // strokes.crease_under_silhouettes
 uniform uint first;      // of this dispatch (a step may take several: 65535 groups at most each)
 
 bool holds(uint value, Sample s) {
@@ -33,6 +35,11 @@ bool holds(uint value, Sample s) {
   int d = abs(int(value & 0xffu) - int(s.byte_value));
   if ((s.byte_window & 0x100u) != 0u) d = min(d, 256 - d);
   return d <= int(s.byte_window & 0xffu);
+}
+
+uint key_at(usampler2D image, ivec2 q) {
+  uvec2 halves = texelFetch(image, q, 0).xy;
+  return halves.x << 16 | halves.y;
 }
 
 // The test of common/strokes/visibility.cpp sample_visible: some pixel of the 3x3 box (5x5 for a hatch).
@@ -47,12 +54,12 @@ bool sample_visible(Sample s) {
   for (int dy = -r; dy <= r; ++dy)
     for (int dx = -r; dx <= r; ++dx) {
       ivec2 q = p + ivec2(dx, dy);
-      if (all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, size))) {
-        uvec2 halves = texelFetch(ids, q, 0).xy;
-        visible = visible || holds(halves.x << 16 | halves.y, s);
-      }
+      if (all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, size)))
+        visible = visible || holds(key_at(ids, q), s);
     }
-  return visible;
+  if (visible || !crease_under_silhouettes || s.kind != 0u || any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, size)))
+    return visible;
+  return holds(key_at(crease_ids, p), s);  // its own pixel before the silhouettes' quads
 }
 
 #if defined(STEP_TEST)

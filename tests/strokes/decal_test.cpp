@@ -270,8 +270,8 @@ TEST_F(DecalStrokes, Parity) {
     for (const WindowPath& p : lines.paths) decals += p.kind == LineKind::Decal;
     ASSERT_GT(decals, 5u) << name;
     auto results = run_parity(scene, {"id_image", "visibility", "stroke"});
-    ASSERT_EQ(testing::names_of(results),
-              (std::vector<std::string>{kIds.name, kFlags.name, kRunPaths.name, kRunEnds.name, kStrokeColor.name}));
+    ASSERT_EQ(testing::names_of(results), (std::vector<std::string>{kIds.name, kCreaseIds.name, kFlags.name,
+                                                                    kRunPaths.name, kRunEnds.name, kStrokeColor.name}));
     for (const StageParity& r : results) {
       std::printf("[decals %s] %s  [%s]\n", name, format_diff(r.name, r.diff).c_str(), r.note.c_str());
       EXPECT_TRUE(r.pass) << name << " " << r.name << ": " << r.note;

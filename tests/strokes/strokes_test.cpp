@@ -24,8 +24,8 @@ const std::vector<std::string> kStrokeStages = {"id_image", "visibility", "strok
 
 void expect_stroke_parity(const Scene& scene, const std::string& label) {
   auto results = run_parity(scene, kStrokeStages);
-  ASSERT_EQ(testing::names_of(results),
-            (std::vector<std::string>{kIds.name, kFlags.name, kRunPaths.name, kRunEnds.name, kStrokeColor.name}));
+  ASSERT_EQ(testing::names_of(results), (std::vector<std::string>{kIds.name, kCreaseIds.name, kFlags.name,
+                                                                  kRunPaths.name, kRunEnds.name, kStrokeColor.name}));
   for (const StageParity& r : results) {
     std::printf("[strokes %s] %s  [%s]\n", label.c_str(), format_diff(r.name, r.diff).c_str(), r.note.c_str());
     EXPECT_TRUE(r.pass) << label << " " << r.name << ": " << r.note;
@@ -115,10 +115,10 @@ TEST_F(StrokeParityNear, GpuLinesAreTheRunsItsFrameListed) {
   for (const std::string name : {"torus", "cad"}) {
     SCOPED_TRACE(name);
     SceneLines gpu = scene_lines(testing::builtin_at(name, 320, 240), "gpu");
-    const ImageU32& keys = gpu.keys;
     auto test = [&](const std::vector<VisibilitySample>& batch) {
       std::vector<uint8_t> flags;
-      for (const VisibilitySample& s : batch) flags.push_back(sample_visible(keys, s));
+      for (const VisibilitySample& s : batch)
+        flags.push_back(sample_visible(gpu.keys, gpu.crease_keys ? &*gpu.crease_keys : nullptr, s));
       return flags;
     };
     Visibility cpu = visible_runs(gpu.lines, gpu.scene.params.get<StrokesParams>(), test);
@@ -162,6 +162,31 @@ TEST_P(StrokeModelParity, SharedModels) {
 INSTANTIATE_TEST_SUITE_P(Models, StrokeModelParity,
                          ::testing::Values("fandisk.obj", "ogre.obj", "stanford-bunny.obj", "teapot.obj", "spot.obj",
                                            "cow.obj", "rocker-arm.obj", "igea.ply"));
+
+// The crease and border arc the visible runs of `lines` cover (px).
+double visible_crease_px(const SceneLines& lines) {
+  double px = 0;
+  for (const VisibleRun& r : lines.visibility.runs) {
+    const WindowPath& p = lines.lines.paths.at(r.path);
+    if (p.kind == LineKind::Crease || p.kind == LineKind::Border) px += r.closed ? p.length_px : r.s1 - r.s0;
+  }
+  return px;
+}
+
+// strokes.crease_under_silhouettes on the cow (5.8K faces), whose creases run beside its
+// silhouettes along the legs: the backends agree with it on, and each shows more crease arc
+// with it than without (experiments/stroke_visibility measures it against rays).
+TEST_F(StrokeParityNear, CreasesUnderSilhouettesOnTheCow) {
+  PLUMBAGO_REQUIRE_MODEL("cow.obj");
+  Scene on = testing::drawn_with_strokes(testing::model_scene("cow.obj", 400, 400)), off = on;
+  on.params.set("strokes.crease_under_silhouettes", 1.0);
+  expect_stroke_parity(on, "cow, creases under silhouettes");
+  for (const std::string backend : {"reference", "gpu"}) {
+    double with = visible_crease_px(scene_lines(on, backend)), without = visible_crease_px(scene_lines(off, backend));
+    std::printf("%s: visible crease arc %.1f px, %.1f px without the parameter\n", backend.c_str(), with, without);
+    EXPECT_GT(with, without + 10) << backend;
+  }
+}
 
 // A unit cube seen from a generic direction near a corner: 12 crease paths (docs/conventions.md), of which
 // the 9 around the three faces that face the eye are visible and the 3 meeting at the far

@@ -63,6 +63,25 @@ TEST(Visibility, EachKindOfSampleByHand) {
   EXPECT_TRUE(sample_visible(k, second));
 }
 
+// strokes.crease_under_silhouettes: a crease sample hidden in the ID image (a silhouette's quad
+// over the whole box) shows where its own pixel, before the silhouettes' quads, holds its key or
+// a front face next to it; only that pixel, and only for creases and borders.
+TEST(Visibility, ACreaseUnderASilhouetteByHand) {
+  ImageU32 k = keys_by_hand(), before = k;
+  for (int y = 0; y < 16; ++y)
+    for (int x = 6; x <= 11; ++x) k.at(x, y) = kSilhouettePath << 8 | 10;  // quads over the crease column
+  before.at(10, 4) = kFace + 1;                                            // another face beside it
+  VisibilitySample on = sample(8.5f, 4.5f, kCreaseSample, kCreasePath);
+  EXPECT_FALSE(sample_visible(k, on));
+  EXPECT_FALSE(sample_visible(k, nullptr, on));  // the parameter off
+  EXPECT_TRUE(sample_visible(k, &before, on));
+  EXPECT_FALSE(sample_visible(k, &before, sample(9.5f, 4.5f, kCreaseSample, kCreasePath)));    // only its own pixel
+  EXPECT_TRUE(sample_visible(k, &before, sample(10.5f, 5.5f, kCreaseSample, 7, kFace)));       // its front face there
+  EXPECT_FALSE(sample_visible(k, &before, sample(10.5f, 4.5f, kCreaseSample, 7, kFace)));      // another face there
+  EXPECT_FALSE(sample_visible(k, &before, sample(8.5f, 4.5f, kDecalSample, 0, kCreasePath)));  // creases alone
+  EXPECT_FALSE(sample_visible(k, &before, sample(-0.5f, 4.5f, kCreaseSample, kCreasePath)));
+}
+
 class VisibilityBackends : public testing::GlTest {};
 
 // Random keys from a small set (so that matches happen) and random samples of every kind,
@@ -75,6 +94,8 @@ TEST_F(VisibilityBackends, TheComputeShaderGivesTheSameFlags) {
     return rng.uniform() < 0.5 ? uint32_t(rng.uniform() * 6) : path << 8 | uint32_t(rng.uniform() * 256);
   };
   for (uint32_t& k : keys.data) k = key();
+  ImageU32 crease_keys = keys;  // the silhouettes' keys gone, as before their quads
+  for (uint32_t& k : crease_keys.data) k = k > 0xff ? uint32_t(rng.uniform() * 6) : k;
   std::vector<VisibilitySample> samples;
   for (int i = 0; i < 5000; ++i) {
     uint32_t kind = uint32_t(rng.uniform() * 4), face = uint32_t(rng.uniform() * 6);
@@ -86,11 +107,12 @@ TEST_F(VisibilityBackends, TheComputeShaderGivesTheSameFlags) {
                        uint32_t(rng.uniform() * 12) | (rng.uniform() < 0.5 ? 0x100u : 0u)});
   }
   gpu::Texture ids = gpu::upload_texture(key_channels(keys), GL_RG32UI);
-  std::vector<uint8_t> on_gpu = gpu::SampleTest()(ids, samples);
+  gpu::Texture crease_ids = gpu::upload_texture(key_channels(crease_keys), GL_RG32UI);
+  std::vector<uint8_t> on_gpu = gpu::SampleTest()(ids, &crease_ids, samples);
   ASSERT_EQ(on_gpu.size(), samples.size());
   size_t visible = 0;
   for (size_t i = 0; i < samples.size(); ++i) {
-    bool cpu = sample_visible(keys, samples[i]);
+    bool cpu = sample_visible(keys, &crease_keys, samples[i]);
     visible += cpu;
     EXPECT_EQ(bool(on_gpu[i]), cpu) << "sample " << i << " kind " << samples[i].kind;
   }
@@ -142,6 +164,7 @@ Visibility gpu_visibility(const Scene& scene, const WindowLines& lines, const Im
   gpu::GpuFrame f(scene, Preprocessed{}, {"visibility"});
   f.dump = true;
   f.put(kIds, gpu::upload_texture(key_channels(keys), GL_RG32UI));
+  f.put(kCreaseIds, gpu::upload_texture(key_channels(keys), GL_RG32UI));  // no silhouettes drawn
   const gpu::GpuPassDef* def = nullptr;
   for (const gpu::GpuPassDef& d : gpu::registered_passes())
     if (d.stages == std::vector<std::string>{"visibility"}) def = &d;
