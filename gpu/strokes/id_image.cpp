@@ -8,7 +8,8 @@
 // rows and points only) and made window paths on the CPU with the creases. The window paths
 // go up once as the frame's path table (gpu/strokes/window_paths.hpp), from which the GPU
 // expands the lines' quads (gpu/strokes/id_lines.hpp) and the visibility steps sample. Every
-// draw writes both key images but the silhouettes', which leave crease_ids as it stood.
+// draw writes both key images (under strokes.crease_under_silhouettes) but the silhouettes',
+// which leave crease_ids as it stood.
 #include "common/strokes/id_image.hpp"
 
 #include <optional>
@@ -62,11 +63,12 @@ class IdImagePass : public GpuPass {
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, crease_target.id(), 0);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
     const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1}, keys_only[2] = {GL_COLOR_ATTACHMENT0, GL_NONE};
-    glDrawBuffers(2, both);
     const GLuint none[4] = {0, 0, 0, 0};
     const float far = 0;
+    glDrawBuffers(2, both);
     glClearBufferuiv(GL_COLOR, 0, none);
     glClearBufferuiv(GL_COLOR, 1, none);
+    if (!p.crease_under_silhouettes) glDrawBuffers(2, keys_only);  // crease_ids stays 0: nothing tests it
     glClearBufferfv(GL_DEPTH, 0, &far);
     glViewport(0, 0, target.width, target.height);
     glEnable(GL_DEPTH_TEST);

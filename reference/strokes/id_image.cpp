@@ -110,7 +110,8 @@ PLUMBAGO_REFERENCE_STAGE(id_image, [](ReferenceFrame& f) {
   draw_gbuffer_faces(f.get(kGBuffer), gbuffer_first_keys(f.scene), f.scene.camera.near, r);
   draw_triangles(id_sketchy_face_triangles(f.scene, lines), r);
   draw_triangles(id_line_triangles(f.scene, lines, p, IdLineRule::CreasesAndBorders), r);
-  put_keys(f, r, kCreaseIds, kAmbiguousCreaseIds);
+  put_keys(f, p.crease_under_silhouettes ? r : empty_raster(r.key.width, r.key.height), kCreaseIds,
+           kAmbiguousCreaseIds);
   draw_triangles(id_line_triangles(f.scene, lines, p, IdLineRule::Silhouettes), r);
   put_keys(f, r, kIds, kAmbiguousIds);
 });

@@ -2,6 +2,8 @@
 // common/strokes/visibility.hpp on the ID image, sample by sample.
 #include "common/strokes/visibility.hpp"
 
+#include <optional>
+
 #include <tbb/parallel_for.h>
 
 #include "common/strokes/id_image.hpp"
@@ -11,8 +13,10 @@ namespace plumbago::reference {
 
 PLUMBAGO_REFERENCE_STAGE(visibility, [](ReferenceFrame& f) {
   const auto p = f.params<StrokesParams>();
-  ImageU32 keys = keys_from_channels(f.get(kIds)), crease_keys = keys_from_channels(f.get(kCreaseIds));
-  const ImageU32* under = p.crease_under_silhouettes ? &crease_keys : nullptr;
+  ImageU32 keys = keys_from_channels(f.get(kIds));
+  std::optional<ImageU32> crease_keys;
+  if (p.crease_under_silhouettes) crease_keys = keys_from_channels(f.get(kCreaseIds));
+  const ImageU32* under = crease_keys ? &*crease_keys : nullptr;
   auto test = [&](const std::vector<VisibilitySample>& batch) {
     std::vector<uint8_t> flags(batch.size());
     tbb::parallel_for(size_t(0), batch.size(), [&](size_t k) { flags[k] = sample_visible(keys, under, batch[k]); });

@@ -37,11 +37,6 @@ bool holds(uint value, Sample s) {
   return d <= int(s.byte_window & 0xffu);
 }
 
-uint key_at(usampler2D image, ivec2 q) {
-  uvec2 halves = texelFetch(image, q, 0).xy;
-  return halves.x << 16 | halves.y;
-}
-
 // The test of common/strokes/visibility.cpp sample_visible: some pixel of the 3x3 box (5x5 for a hatch).
 bool sample_visible(Sample s) {
   ivec2 size = textureSize(ids, 0);
@@ -54,12 +49,15 @@ bool sample_visible(Sample s) {
   for (int dy = -r; dy <= r; ++dy)
     for (int dx = -r; dx <= r; ++dx) {
       ivec2 q = p + ivec2(dx, dy);
-      if (all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, size)))
-        visible = visible || holds(key_at(ids, q), s);
+      if (all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, size))) {
+        uvec2 halves = texelFetch(ids, q, 0).xy;
+        visible = visible || holds(halves.x << 16 | halves.y, s);
+      }
     }
   if (visible || !crease_under_silhouettes || s.kind != 0u || any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, size)))
     return visible;
-  return holds(key_at(crease_ids, p), s);  // its own pixel before the silhouettes' quads
+  uvec2 under = texelFetch(crease_ids, p, 0).xy;  // its own pixel before the silhouettes' quads
+  return holds(under.x << 16 | under.y, s);
 }
 
 #if defined(STEP_TEST)
