@@ -4,8 +4,8 @@
 // Each round is an indirect dispatch over the compacted segments, whose size the GPU writes:
 // bit_width(records) rounds are issued (enough for a chain through every face), and those
 // past 2^k >= the segments' count (more than any chain needs) dispatch no work, nor do the
-// ranking rounds after one that moved no pointer. The CPU never learns the count: nothing
-// is read back.
+// rounds of either phase after one that changed nothing (shaders/strokes/silhouette_chains.comp
+// says why that is safe). The CPU never learns the count: nothing is read back.
 #include "common/strokes/silhouette_chains.hpp"
 
 #include <algorithm>
@@ -55,7 +55,8 @@ class SilhouetteChainsPass : public GpuPass {
     barrier();
     dispatch_in_chunks(args_, 1, "first_record");
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-    for (int r = 0; r < rounds_; ++r) over_members(loops_, round_args(r), r);  // each loop's lowest record
+    for (int r = 0; r < rounds_; ++r)
+      over_members(loops_, round_args(r), r);  // each loop's lowest record, chains' ends
     over_members(cut_, kAllMembers);
     for (int r = 0; r < rounds_; ++r) over_members(rank_, rank_args(r), r);  // starts, ranks, ends
     over_members(write_, kAllMembers);

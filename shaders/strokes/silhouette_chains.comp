@@ -15,9 +15,10 @@ layout(std430, binding = 1) buffer Links { uvec4 links[]; };
 layout(std430, binding = 2) buffer Members { uint members[]; };  // the records that hold a segment
 // How many members, the indirect dispatch over them all, and round k's of each phase: over
 // them all while 2^k < count (a chain is no longer than the count), else none. Over them all
-// is all_x x all_y groups, all_x at most GL's least maximum of 65535 (member() flattens them). Ranking also
-// stops once a round moved no pointer: that round wrote what it read, so both buffers hold
-// the result, whichever the steps after it read.
+// is all_x x all_y groups, all_x at most GL's least maximum of 65535 (member() flattens them).
+// Each phase also stops after a round that changed nothing it decides by: ranking, no pointer
+// moved (that round wrote what it read); finding loops, no mark changed (below). Both
+// buffers then hold the result, whichever the steps after it read.
 layout(std430, binding = 3) buffer Count {
   uint count;
   uint all_x, all_y, all_z;  // not a uvec3: std430 would align it to 16 bytes
@@ -25,8 +26,13 @@ layout(std430, binding = 3) buffer Count {
   uvec4 rank_groups[32];
 };
 // Pointer jumping between two buffers, each step reading one and writing the other:
-// finding loops, (next, lowest record so far, -, -); ranking, (start, rank, end, distance to it),
-// and the arc lengths below.
+// finding loops, (next, mark, -, -); ranking, (start, rank, end, distance to it), and the arc
+// lengths below. A record's mark is the least over the records from it to its `next` (not
+// included) of their keys: record + 1, 0 for an open chain's end. After the rounds a loop's
+// members hold its lowest record + 1 (where it is cut) and an open chain's 0, their `next` its
+// end. The marks are minima over windows that double each round: a round that changes none
+// changes none after it (where every mark at k is at most the one 2^k further on, so is each
+// at 2k), so each open chain's marks are 0 already, its windows and `next` at its end.
 layout(std430, binding = 4) buffer JumpA { uvec4 jump_a[]; };
 layout(std430, binding = 5) buffer JumpB { uvec4 jump_b[]; };
 uniform uint round_index;  // k, of this phase's rounds
@@ -107,7 +113,7 @@ void main() {
   uint next = linked(i, 1);
   links[i] = uvec4(next, linked(i, 0), 0u, 0u);
   members[atomicAdd(count, 1u)] = i;
-  put(i, uvec4(next == kNoLink ? i : next, i, 0u, 0u));
+  put(i, next == kNoLink ? uvec4(i, 0u, 0u, 0u) : uvec4(next, i + 1u, 0u, 0u));
 #elif defined(STEP_ARGS)  // one invocation
   if (gl_GlobalInvocationID.x != 0u) return;
   const uint kMaxGroups = 65535u;
@@ -116,22 +122,26 @@ void main() {
   all_x = all_y > 1u ? kMaxGroups : groups;
   all_z = 1u;
   for (uint k = 0u; k < 32u; ++k) {
-    round_groups[k] = uvec4(count > (1u << k) ? all_x : 0u, all_y, 1u, 0u);
-    rank_groups[k] = uvec4(k == 0u && count > 1u ? all_x : 0u, all_y, 1u, 0u);  // later ones: STEP_RANK
+    uint first = k == 0u && count > 1u ? all_x : 0u;  // later ones: STEP_LOOPS, STEP_RANK
+    round_groups[k] = uvec4(first, all_y, 1u, 0u);
+    rank_groups[k] = uvec4(first, all_y, 1u, 0u);
   }
-#elif defined(STEP_LOOPS)  // next <- next of next, lowest <- the lower of both
+#elif defined(STEP_LOOPS)  // next <- next of next, mark <- the lower of both
   uint i = member();
   if (i == kNoLink) return;
   uvec4 here = src(i), there = src(here.x);
-  put(i, uvec4(there.x, min(here.y, there.y), 0u, 0u));
+  uint mark = min(here.y, there.y);
+  put(i, uvec4(there.x, mark, 0u, 0u));
+  uint k = round_index + 1u;
+  if (mark != here.y && k < 32u && count > (1u << k)) round_groups[k].x = all_x;
 #elif defined(STEP_CUT)  // a loop is cut before its lowest record: every chain is a list both ways
   uint i = member();
   if (i == kNoLink) return;
   uvec4 found = src(i), l = links[i];
-  // After as many rounds as records, an open chain's `next` is its end, which has no successor.
+  // An open chain's `next` is its end, which has no successor; a loop's mark its lowest + 1.
   bool closed = links[found.x].x != kNoLink;
-  uint lowest = found.y;
-  bool first = l.y == kNoLink || (closed && i == lowest), last = l.x == kNoLink || (closed && l.x == lowest);
+  uint cut = found.y;
+  bool first = l.y == kNoLink || (closed && i + 1u == cut), last = l.x == kNoLink || (closed && l.x + 1u == cut);
   links[i].z = closed ? 1u : 0u;
   put(i, uvec4(first ? i : l.y, first ? 0u : 1u, last ? i : l.x, last ? 0u : 1u));
   arc_put(i, vec2(first ? 0.0 : length_of(l.y), last ? 0.0 : length_of(l.x)));
