@@ -15,7 +15,7 @@
 // A segment's quad runs along it with its width centered on it (no caps).
 //
 // Under strokes.crease_under_silhouettes a second key image comes out, the one before rule 3
-// (id_image.crease_ids, 0 everywhere without the parameter), where creases and borders are
+// (id_image.crease_ids, 1 x 1 of 0 without the parameter), where creases and borders are
 // tested too (common/strokes/visibility.hpp). A silhouette is a line, not a surface: its quad, 3 px wide
 // and drawn nearer by its bias, covers a crease running within a pixel or two of it, and the
 // crease's faces, wherever the two run side by side (a coarse mesh's legs and hooves).
@@ -127,7 +127,7 @@ struct IdImageStage {
                      .channels = 2,
                      .texel = Texel::Uint,
                      .doc = "under strokes.crease_under_silhouettes, the key before the silhouettes' quads (faces, "
-                            "creases and borders), which crease and border samples also test; else 0",
+                            "creases and borders), which crease and border samples also test; else 1 x 1 of 0",
                      .tolerance_why = "the same triangles as id_image.ids, fewer: exact except where rounding "
                                       "decides, the same derived bound"},
                     {.handle = kWindowLines,

@@ -56,19 +56,21 @@ class IdImagePass : public GpuPass {
                                      has_decals(f.scene) ? &decals_ : nullptr, &silhouettes, &*mobile_));
     table_.emplace(f.get(kWindowLines));
     f.put(kPathTable, *table_);
-    Texture &target = f.put(kIds), &crease_target = f.put(kCreaseIds);
+    Texture& target = f.put(kIds);
+    const Texture& crease_target = crease_ids(f, p.crease_under_silhouettes);
     lines_.prepare(*table_, p, target.width, target.height, f.scene.camera.near);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target.id(), 0);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, crease_target.id(), 0);
+    const bool both_images = p.crease_under_silhouettes;
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, both_images ? crease_target.id() : 0,
+                           0);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
     const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1}, keys_only[2] = {GL_COLOR_ATTACHMENT0, GL_NONE};
     const GLuint none[4] = {0, 0, 0, 0};
     const float far = 0;
-    glDrawBuffers(2, both);
+    glDrawBuffers(2, both_images ? both : keys_only);
     glClearBufferuiv(GL_COLOR, 0, none);
-    glClearBufferuiv(GL_COLOR, 1, none);
-    if (!p.crease_under_silhouettes) glDrawBuffers(2, keys_only);  // crease_ids stays 0: nothing tests it
+    if (both_images) glClearBufferuiv(GL_COLOR, 1, none);
     glClearBufferfv(GL_DEPTH, 0, &far);
     glViewport(0, 0, target.width, target.height);
     glEnable(GL_DEPTH_TEST);
@@ -90,6 +92,20 @@ class IdImagePass : public GpuPass {
   const StrokeMeshes& stroke_meshes(GpuFrame& f) {
     if (const StrokeMeshes* shared = f.get(maybe(kStrokeMeshes))) return *shared;
     return own_meshes_.emplace(f.scene, f.get(kLineMeshes));
+  }
+
+  // id_image.crease_ids: the window's size under strokes.crease_under_silhouettes, else 1 x 1
+  // of 0 (nothing tests it), made where the frame holds the other size.
+  static const Texture& crease_ids(GpuFrame& f, bool wanted) {
+    const int width = wanted ? f.scene.width : 1, height = wanted ? f.scene.height : 1;
+    const Texture* held = f.get(maybe(kCreaseIds));
+    if (!held || held->width != width || held->height != height) {
+      Texture made = make_texture(width, height, texture_format(find_output(kCreaseIds.name)));
+      const GLuint zero[4] = {0, 0, 0, 0};
+      glClearTexImage(made.id(), 0, GL_RG_INTEGER, GL_UNSIGNED_INT, zero);
+      f.put(kCreaseIds, std::move(made));
+    }
+    return f.get(kCreaseIds);
   }
 
   // Rule 1: the G-buffer's faces,

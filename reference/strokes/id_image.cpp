@@ -109,10 +109,18 @@ PLUMBAGO_REFERENCE_STAGE(id_image, [](ReferenceFrame& f) {
   IdRaster r = empty_raster(f.scene.width, f.scene.height);
   draw_gbuffer_faces(f.get(kGBuffer), gbuffer_first_keys(f.scene), f.scene.camera.near, r);
   draw_triangles(id_sketchy_face_triangles(f.scene, lines), r);
-  draw_triangles(id_line_triangles(f.scene, lines, p, IdLineRule::CreasesAndBorders), r);
-  put_keys(f, p.crease_under_silhouettes ? r : empty_raster(r.key.width, r.key.height), kCreaseIds,
-           kAmbiguousCreaseIds);
-  draw_triangles(id_line_triangles(f.scene, lines, p, IdLineRule::Silhouettes), r);
+  std::vector<IdVertex> line_triangles = id_line_triangles(f.scene, lines, p, IdLineRule::CreasesAndBorders);
+  if (p.crease_under_silhouettes) {
+    draw_triangles(line_triangles, r);
+    put_keys(f, r, kCreaseIds, kAmbiguousCreaseIds);
+    line_triangles.clear();
+  } else {  // nothing tests it: 1 x 1 of 0, and the lines drawn at once
+    f.put(kCreaseIds, Image(1, 1, 2));
+    f.put(kAmbiguousCreaseIds, Image(1, 1, 1));
+  }
+  std::vector<IdVertex> silhouettes = id_line_triangles(f.scene, lines, p, IdLineRule::Silhouettes);
+  line_triangles.insert(line_triangles.end(), silhouettes.begin(), silhouettes.end());
+  draw_triangles(line_triangles, r);
   put_keys(f, r, kIds, kAmbiguousIds);
 });
 
