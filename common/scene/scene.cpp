@@ -10,6 +10,7 @@
 #include <set>
 
 #include "common/core/passes.hpp"
+#include "common/mesh/decimate.hpp"
 #include "common/mesh/procedural.hpp"
 #include "common/util/input_file.hpp"
 
@@ -115,11 +116,19 @@ class SceneReader {
   PlacedMesh mesh(const json& j, const std::string& path) {
     try {
       if (j.is_string()) return mesh_file(j.get<std::string>());
-      if (!j.is_object()) fail(path, "expected a mesh file path or {\"procedural\": KIND}");
-      only_keys(j, path, {"procedural", "resolution"});
-      if (!j.contains("procedural") || !j["procedural"].is_string()) fail(path + "/procedural", "expected a name");
+      if (!j.is_object()) fail(path, "expected a mesh file path, {\"file\": PATH} or {\"procedural\": KIND}");
+      only_keys(j, path, {"procedural", "resolution", "file", "decimate_to"});
+      const size_t faces = j.contains("decimate_to") ? decimate_to(j["decimate_to"], path + "/decimate_to") : 0;
+      if (j.contains("file") == j.contains("procedural")) fail(path, "give either \"file\" or \"procedural\"");
+      if (j.contains("file")) {
+        if (!j["file"].is_string()) fail(path + "/file", "expected a mesh file path");
+        if (j.contains("resolution")) fail(path + "/resolution", "applies to a procedural mesh only");
+        return mesh_file(j["file"].get<std::string>(), faces);
+      }
+      if (!j["procedural"].is_string()) fail(path + "/procedural", "expected a name");
       float res = j.contains("resolution") ? number(j["resolution"], path + "/resolution") : 1.0f;
-      return centered(make_procedural(j["procedural"].get<std::string>(), res));
+      Mesh m = make_procedural(j["procedural"].get<std::string>(), res);
+      return centered(faces ? decimate(m, faces) : std::move(m));
     } catch (const MeshError& e) {
       fail(path, e.what());
     } catch (const std::invalid_argument& e) {
@@ -379,12 +388,21 @@ class SceneReader {
     return {std::make_shared<Mesh>(std::move(m)), origin};
   }
 
-  PlacedMesh mesh_file(const std::string& relative) {
+  // `faces`: decimated to about that many (common/mesh/decimate.hpp), or 0: as the file has it.
+  PlacedMesh mesh_file(const std::string& relative, size_t faces = 0) {
     fs::path p = fs::path(relative).is_absolute() ? fs::path(relative) : fs::path(base_) / relative;
-    std::string key = p.lexically_normal().string();
+    std::string file = p.lexically_normal().string(), key = file + (faces ? "#" + std::to_string(faces) : "");
     auto it = meshes_.find(key);
     if (it != meshes_.end()) return it->second;
-    return meshes_[key] = centered(load_mesh(key));
+    return meshes_[key] = centered(faces ? decimate(*mesh_file(relative).mesh, faces) : load_mesh(file));
+  }
+
+  size_t decimate_to(const json& j, const std::string& path) const {
+    if (!j.is_number_integer() || j.get<int64_t>() < int64_t(kMinDecimatedFaces) ||
+        j.get<int64_t>() > int64_t(kMaxDecimatedFaces))
+      fail(path, "expected a whole number of faces in " + std::to_string(kMinDecimatedFaces) + ".." +
+                     std::to_string(kMaxDecimatedFaces));
+    return size_t(j.get<int64_t>());
   }
 
   glm::dmat4 transform(const json& j, const std::string& path) const {

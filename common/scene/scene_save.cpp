@@ -79,7 +79,8 @@ void set_objects(json& doc, const Scene& scene, const Rebase& rebase) {
   if (!objects.is_array() || objects.size() != scene.objects.size())
     throw SceneError(scene.source + ": its objects changed on disk since it was loaded; not saved");
   for (size_t i = 0; i < objects.size(); ++i) {
-    rebase(objects[i]["mesh"]);
+    json& mesh = objects[i]["mesh"];
+    rebase(mesh.is_object() && mesh.contains("file") ? mesh["file"] : mesh);
     objects[i]["style"] = style_names().at(size_t(scene.objects[i].style));
   }
 }

@@ -63,7 +63,8 @@ TEST(SceneSave, ReloadsToTheSameSceneFromAnotherFolder) {
   tmp.write("a/tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   std::string path = tmp.write("a/s.json", R"({
     "objects": [{"mesh": "tri.obj", "color": [0.5, 0.25, 1]},
-                {"mesh": {"procedural": "torus"}, "transform": [2,0,0,0, 0,2,0,0, 0,0,2,0, 1,2,3,1]}],
+                {"mesh": {"procedural": "torus"}, "transform": [2,0,0,0, 0,2,0,0, 0,0,2,0, 1,2,3,1]},
+                {"mesh": {"file": "tri.obj", "decimate_to": 4}}],
     "resolution": [320, 200], "seed": 42, "params": {"paper.mu_p": 0.1}})");
   Scene s = load_scene(path);
   edit(s);
@@ -72,7 +73,10 @@ TEST(SceneSave, ReloadsToTheSameSceneFromAnotherFolder) {
   expect_same(s, back);
   EXPECT_EQ(back.objects[0].color, glm::vec3(0.5f, 0.25f, 1.0f)) << "what the viewer does not edit stays";
   std::ifstream in(tmp.path("b/c/saved.json"));
-  EXPECT_EQ(nlohmann::json::parse(in)["objects"][0]["mesh"], "../../a/tri.obj") << "relative to the new folder";
+  nlohmann::json saved = nlohmann::json::parse(in);
+  EXPECT_EQ(saved["objects"][0]["mesh"], "../../a/tri.obj") << "relative to the new folder";
+  EXPECT_EQ(saved["objects"][2]["mesh"]["file"], "../../a/tri.obj") << "a decimated file's too";
+  EXPECT_EQ(saved["objects"][2]["mesh"]["decimate_to"], 4);
 }
 
 TEST(SceneSave, BuiltinSceneSavesItsProceduralMesh) {
