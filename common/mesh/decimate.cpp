@@ -67,8 +67,7 @@ Mesh decimate(const Mesh& mesh, size_t faces) {
   SurfaceMesh s = surface_mesh(mesh);
   SMS::GarlandHeckbert_plane_policies<SurfaceMesh, Kernel> quadrics(s);
   SMS::Count_stop_predicate<SurfaceMesh> stop(3 * faces / 2);
-  SMS::edge_collapse(s, stop,
-                     CGAL::parameters::get_cost(quadrics.get_cost()).get_placement(quadrics.get_placement()));
+  SMS::edge_collapse(s, stop, CGAL::parameters::get_cost(quadrics.get_cost()).get_placement(quadrics.get_placement()));
   return mesh_of(s, mesh, faces);
 }
 

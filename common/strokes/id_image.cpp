@@ -90,9 +90,13 @@ void add_silhouette_segment(const WindowPath& path, size_t k, const StrokesParam
   int pieces = std::max(1, int(std::ceil((t1 - t0) * length / kSilhouettePiecePx)));
   auto at = [&](int i) { return t0 + (t1 - t0) * i / pieces; };
   auto depth_at = [&](double t) { return 1 / ((1 - t) * inv_a + t * inv_b); };  // 1/d is affine in the window
+  // At d (1 - bias), or nearer by the lift: its segment's world length times id_silhouette_lift.
+  const double keep = 1.0 - double(p.id_depth_bias),
+               lift = double(p.id_silhouette_lift) * glm::distance(path.world[k], path.world[next]);
+  auto placed = [&](double d) { return std::min(d * keep, d - lift); };
   for (int i = 0; i < pieces; ++i) {
     double u0 = at(i), u1 = at(i + 1), s_mid = path.arc_px[k] + length * (u0 + u1) / 2;
-    tri.segment(a + u0 * (b - a), a + u1 * (b - a), depth_at(u0), depth_at(u1), p.id_silhouette_px, p.id_depth_bias,
+    tri.segment(a + u0 * (b - a), a + u1 * (b - a), placed(depth_at(u0)), placed(depth_at(u1)), p.id_silhouette_px, 0.0,
                 silhouette_value(path, s_mid));
   }
 }

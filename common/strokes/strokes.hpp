@@ -41,7 +41,7 @@ struct StrokesParams {
   static constexpr const char* stage = "strokes";
   float crease_deg;
   bool silhouette_normalized, keep_back_facing, crease_under_silhouettes;
-  float id_crease_px, id_silhouette_px, id_depth_bias, id_crease_depth_bias, vis_step_px;
+  float id_crease_px, id_silhouette_px, id_depth_bias, id_silhouette_lift, id_crease_depth_bias, vis_step_px;
   template <class V>
   void visit(V& v) {
     v.real(crease_deg, "crease_deg", 60.0, 0.0, 180.0,
@@ -59,6 +59,10 @@ struct StrokesParams {
     v.real(id_depth_bias, "id_depth_bias", 0.005, 0.0, 0.5,
            "silhouette quads are depth-tested at d (1 - bias) against the faces (Kalnins et al. 2002, §4.6; relative, "
            "linear view depth)");
+    v.real(id_silhouette_lift, "id_silhouette_lift", 0.0, 0.0, 16.0,
+           "silhouette quads also come at least this many times their segment's world length nearer (on a coarse "
+           "mesh the facets that graze a smooth silhouette lie about a face from it, beyond a relative bias; "
+           "experiments/stroke_visibility)");
     v.real(id_crease_depth_bias, "id_crease_depth_bias", 1e-4, 0.0, 0.5,
            "crease and border quads are depth-tested at d (1 - bias) against the faces (relative, linear view depth; "
            "they need none to show, as their front-facing faces pass the test, only to clear depth ties)");

@@ -43,6 +43,7 @@ void IdLines::prepare(const UploadedPaths& table, const StrokesParams& p, int wi
     glProgramUniform1f(id, program->uniform("crease_bias"), p.id_crease_depth_bias);
     glProgramUniform1f(id, program->uniform("silhouette_px"), p.id_silhouette_px);
     glProgramUniform1f(id, program->uniform("silhouette_bias"), p.id_depth_bias);
+    glProgramUniform1f(id, program->uniform("silhouette_lift"), p.id_silhouette_lift);
   }
   bind(table);
   dispatch_in_chunks(count_, table.entries, "first");

@@ -32,9 +32,12 @@ PathTable::PathTable(const WindowLines& lines) {
                      first.key, first.byte_window, 0, style_of(p), p.length_px, p.alpha_scale, p.width_scale});
     entries += (p.closed ? n : n - 1) + 1;
     if (p.kind == LineKind::Crease || p.kind == LineKind::Border) silhouette_entry = entries;
-    for (uint32_t k = 0; k < n; ++k)
+    for (uint32_t k = 0; k < n; ++k) {
+      const bool segment = p.closed || k + 1 < n;  // to the next point (closed: the last to the first)
       points.push_back({p.window[k], p.arc_px[k], k < p.front_faces.size() ? p.front_faces[k] : glm::uvec2(0),
-                        k < p.pressure.size() ? p.pressure[k] : 1.0, p.depth[k]});
+                        k < p.pressure.size() ? p.pressure[k] : 1.0, p.depth[k],
+                        segment ? glm::distance(p.world[k], p.world[(k + 1) % n]) : 0.0, 0.0});
+    }
   }
 }
 

@@ -25,13 +25,13 @@ struct PointRow {
   glm::dvec2 window;
   double s;
   glm::uvec2 faces;
-  double pressure, depth;
+  double pressure, depth, world_step, pad;  // std430: a dvec2's struct is 16-aligned
 };
 struct RunRow {
   uint32_t path, flags;  // common/strokes/visibility.hpp run_tables' flags
   double s0, s1;
 };
-static_assert(sizeof(PathRow) == 56 && sizeof(PointRow) == 48 && sizeof(RunRow) == 24,
+static_assert(sizeof(PathRow) == 56 && sizeof(PointRow) == 64 && sizeof(RunRow) == 24,
               "std430 layouts of window_paths.glsl");
 
 // The paths of `lines` as rows; each path's entries (visibility.comp) are its segments and its end.

@@ -21,11 +21,12 @@ struct Piece {
   dvec2 a, b;
   double da, db;
   uint key;
+  double lift;  // nearer by at least this (a silhouette: its segment's world length times silhouette_lift)
 };
 
 Piece piece_of(Path p, uint k, uint i) {
   Point from = point(p, k), to = point(p, k + 1u);
-  if (!silhouette(p)) return Piece(from.window, to.window, from.depth, to.depth, p.key);
+  if (!silhouette(p)) return Piece(from.window, to.window, from.depth, to.depth, p.key, 0.0lf);
   double t0, t1;
   uint n = quads_of(p, k, t0, t1);
   double u0 = t0 + (t1 - t0) * double(i) / double(n), u1 = t0 + (t1 - t0) * double(i + 1u) / double(n);
@@ -35,7 +36,8 @@ Piece piece_of(Path p, uint k, uint i) {
   double s_mid = from.s + length * (u0 + u1) / 2.0lf;
   double byte = p.length_px > 0.0lf ? floor(255.0lf * s_mid / p.length_px) : 0.0lf;
   return Piece(a + u0 * (b - a), a + u1 * (b - a), 1.0lf / ((1.0lf - u0) * inv_a + u0 * inv_b),
-               1.0lf / ((1.0lf - u1) * inv_a + u1 * inv_b), p.key << 8 | uint(clamp(byte, 0.0lf, 255.0lf)));
+               1.0lf / ((1.0lf - u1) * inv_a + u1 * inv_b), p.key << 8 | uint(clamp(byte, 0.0lf, 255.0lf)),
+               double(silhouette_lift) * from.world_step);
 }
 
 void emit(dvec2 at, double d, uint piece_key) {
@@ -56,7 +58,7 @@ void main() {
   double width = double(silhouette(p) ? silhouette_px : crease_px);
   double keep = 1.0lf - double(silhouette(p) ? silhouette_bias : crease_bias);
   dvec2 n = dvec2(-along.y, along.x) / length * (width / 2.0lf);
-  double da = piece.da * keep, db = piece.db * keep;
+  double da = min(piece.da * keep, piece.da - piece.lift), db = min(piece.db * keep, piece.db - piece.lift);
   dvec2 corners[4] = dvec2[4](piece.a - n, piece.a + n, piece.b + n, piece.b - n);
   const int order[6] = int[6](0, 1, 2, 0, 2, 3);  // the reference's two triangles
   for (int v = 0; v < 6; ++v) {

@@ -13,7 +13,7 @@ layout(std430, binding = 2) buffer Pieces { uint pieces[]; };
 
 uniform uint path_count, entry_count;
 uniform float width, height, near;  // the window's size and the near plane: exact as doubles
-uniform float crease_px, crease_bias, silhouette_px, silhouette_bias;  // strokes.id_* parameters
+uniform float crease_px, crease_bias, silhouette_px, silhouette_bias, silhouette_lift;  // strokes.id_* parameters
 
 const uint kSilhouette = 1u;              // SampleKind
 const double kSilhouettePiecePx = 1.0lf;  // common/strokes/id_image.cpp: a silhouette's quads' length

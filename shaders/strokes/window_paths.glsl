@@ -16,7 +16,9 @@ struct Point {
   double s;         // window arc length from the path's start
   uvec2 faces;      // of the segment from this point (common/strokes/strokes.hpp WindowPath::front_faces)
   double pressure;  // a decal's or hatch's drawn pressure (else 1)
-  double depth;     // linear view depth
+  double depth;       // linear view depth
+  double world_step;  // the world length of the segment from this point (0 at an open path's end)
+  double pad;         // std430 rounds the struct to 16 bytes (its dvec2)
 };
 struct Run {
   uint path;

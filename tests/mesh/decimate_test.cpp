@@ -73,8 +73,8 @@ TEST(Decimate, ScenesAskForIt) {
   dir.write("ball.obj", [] {
     std::string obj;
     Mesh m = make_procedural("sphere", 1.0f);
-    for (const glm::vec3& p : m.positions) obj += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " +
-                                                   std::to_string(p.z) + "\n";
+    for (const glm::vec3& p : m.positions)
+      obj += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
     for (const glm::uvec3& t : m.triangles)
       obj += "f " + std::to_string(t[0] + 1) + " " + std::to_string(t[1] + 1) + " " + std::to_string(t[2] + 1) + "\n";
     return obj;

@@ -163,15 +163,16 @@ INSTANTIATE_TEST_SUITE_P(Models, StrokeModelParity,
                          ::testing::Values("fandisk.obj", "ogre.obj", "stanford-bunny.obj", "teapot.obj", "spot.obj",
                                            "cow.obj", "rocker-arm.obj", "igea.ply"));
 
-// The crease and border arc the visible runs of `lines` cover (px).
-double visible_crease_px(const SceneLines& lines) {
+// The arc the visible runs of `lines` cover on paths of `kinds` (px).
+double visible_px(const SceneLines& lines, std::initializer_list<LineKind> kinds) {
   double px = 0;
   for (const VisibleRun& r : lines.visibility.runs) {
     const WindowPath& p = lines.lines.paths.at(r.path);
-    if (p.kind == LineKind::Crease || p.kind == LineKind::Border) px += r.closed ? p.length_px : r.s1 - r.s0;
+    if (std::find(kinds.begin(), kinds.end(), p.kind) != kinds.end()) px += r.closed ? p.length_px : r.s1 - r.s0;
   }
   return px;
 }
+double visible_crease_px(const SceneLines& lines) { return visible_px(lines, {LineKind::Crease, LineKind::Border}); }
 
 // strokes.crease_under_silhouettes on the cow (5.8K faces), whose creases run beside its
 // silhouettes along the legs: the backends agree with it on, and each shows more crease arc
@@ -184,6 +185,27 @@ TEST_F(StrokeParityNear, CreasesUnderSilhouettesOnTheCow) {
   for (const std::string backend : {"reference", "gpu"}) {
     double with = visible_crease_px(scene_lines(on, backend)), without = visible_crease_px(scene_lines(off, backend));
     std::printf("%s: visible crease arc %.1f px, %.1f px without the parameter\n", backend.c_str(), with, without);
+    EXPECT_GT(with, without + 10) << backend;
+  }
+}
+
+// strokes.id_silhouette_lift on the bunny decimated to 2000 faces, whose smooth silhouettes lie
+// about a face off the facets that graze them: the backends agree with it on (its quads placed
+// in double from the same world lengths), and each shows more silhouette arc with it than
+// without (experiments/stroke_visibility measures it against rays).
+TEST_F(StrokeParityNear, LiftedSilhouettesOnADecimatedBunny) {
+  PLUMBAGO_REQUIRE_MODEL("stanford-bunny.obj");
+  Scene off = parse_scene(R"({"objects": [{"mesh": {"file": ")" + testing::model_path("stanford-bunny.obj") +
+                              R"(", "decimate_to": 2000}, "style": "strokes"}],
+      "resolution": [400, 400], "effects": ["strokes"]})",
+                          "decimated bunny", "."),
+        on = off;
+  on.params.set("strokes.id_silhouette_lift", 2.0);
+  expect_stroke_parity(on, "decimated bunny, lifted silhouettes");
+  for (const std::string backend : {"reference", "gpu"}) {
+    double with = visible_px(scene_lines(on, backend), {LineKind::Silhouette});
+    double without = visible_px(scene_lines(off, backend), {LineKind::Silhouette});
+    std::printf("%s: visible silhouette arc %.1f px, %.1f px without the lift\n", backend.c_str(), with, without);
     EXPECT_GT(with, without + 10) << backend;
   }
 }
