@@ -25,7 +25,8 @@
 // window is exact (perspective-correct) and the same rule on both backends. A line vertex
 // is placed at d (1 - bias) (an explicit bias, not glPolygonOffset's implementation-defined
 // units): a silhouette's `strokes.id_depth_bias`, as it lies off the facets, which graze
-// it; a crease's or border's `strokes.id_crease_depth_bias`, which only clears depth ties
+// it (under `strokes.id_silhouette_lift` k, at min(d (1 - bias), d - k l), l its segment's
+// world length: on a coarse mesh those facets lie about a face off it); a crease's or border's `strokes.id_crease_depth_bias`, which only clears depth ties
 // with its own faces (its test also accepts its front-facing faces, so it needs none to
 // show, and a larger one lets a line just behind a surface through). A pixel keeps the triangle with the largest z (the
 // nearest; GL_GREATER, the buffer cleared to 0); equal z keeps the first drawn.
