@@ -12,8 +12,9 @@ over every path, and apart for silhouettes and for creases with borders (their t
 against the sampling step (strokes.vis_step_px), the width of the ID image's line quads
 (strokes.id_silhouette_px and id_crease_px together) and the depth biases of the silhouettes'
 quads (strokes.id_depth_bias) and of the creases' and borders' (strokes.id_crease_depth_bias),
-and strokes.crease_under_silhouettes (a crease sample also tested at its own pixel of the ID
-image before the silhouettes' quads), one at a time around the defaults, with the time of the ID
+strokes.crease_under_silhouettes (a crease sample also tested at its own pixel of the ID
+image before the silhouettes' quads) and strokes.id_silhouette_lift (silhouette quads nearer
+by that many times their segment's world length), one at a time around the defaults, with the time of the ID
 image and visibility passes (CPU reference, wall time, the fastest of 3 runs; the flags
 are the same on the GPU, whose parity is exact).
 
@@ -37,7 +38,7 @@ import study_cli  # noqa: E402
 
 # the program's defaults
 DEFAULTS = {"vis_step_px": 2, "id_width_px": 3, "id_depth_bias": 0.005, "id_crease_depth_bias": 1e-4,
-            "crease_under_silhouettes": 0}
+            "crease_under_silhouettes": 0, "id_silhouette_lift": 0}
 FIGURES = ["visibility_error.png"]
 
 
