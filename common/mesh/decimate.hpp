@@ -1,7 +1,7 @@
 // A mesh simplified to about a given face count by edge collapse with Garland and Heckbert's
 // quadric error metrics (SIGGRAPH 1997), CGAL's Surface_mesh_simplification: for studies on
 // coarse meshes (experiments/stroke_visibility) and ablations over mesh resolution, from a
-// scene's mesh {"decimate_to": N} (docs/scenes.md).
+// scene's mesh {"decimate_to": N} (docs/scene-format.md).
 #pragma once
 
 #include <cstddef>

@@ -16,9 +16,9 @@
 //
 // Under strokes.crease_under_silhouettes a second key image comes out, the one before rule 3
 // (id_image.crease_ids, 1 x 1 of 0 without the parameter), where creases and borders are
-// tested too (common/strokes/visibility.hpp). A silhouette is a line, not a surface: its quad, 3 px wide
-// and drawn nearer by its bias, covers a crease running within a pixel or two of it, and the
-// crease's faces, wherever the two run side by side (a coarse mesh's legs and hooves).
+// tested too (common/strokes/visibility.hpp). A silhouette is a line, not a surface: its
+// quad, 3 px wide and drawn nearer by its bias, covers a crease running within a pixel or two
+// of it, and the crease's faces, wherever the two run side by side (a coarse mesh's legs).
 //
 // Depth: each triangle vertex carries z = near / d, d its linear view depth: 1/d, and so z, is
 // affine in window space on a planar triangle, so interpolating z affinely over the
@@ -26,9 +26,10 @@
 // is placed at d (1 - bias) (an explicit bias, not glPolygonOffset's implementation-defined
 // units): a silhouette's `strokes.id_depth_bias`, as it lies off the facets, which graze
 // it (under `strokes.id_silhouette_lift` k, at min(d (1 - bias), d - k l), l its segment's
-// world length: on a coarse mesh those facets lie about a face off it); a crease's or border's `strokes.id_crease_depth_bias`, which only clears depth ties
-// with its own faces (its test also accepts its front-facing faces, so it needs none to
-// show, and a larger one lets a line just behind a surface through). A pixel keeps the triangle with the largest z (the
+// world length: on a coarse mesh those facets lie about a face off it); a crease's or
+// border's `strokes.id_crease_depth_bias`, which only clears depth ties with its own faces
+// (its test also accepts its front-facing faces, so it needs none to show, and a larger one
+// lets a line just behind a surface through). A pixel keeps the triangle with the largest z (the
 // nearest; GL_GREATER, the buffer cleared to 0); equal z keeps the first drawn.
 //
 // Rasterization (both backends, docs/conventions.md): a triangle covers the pixel centers inside it and

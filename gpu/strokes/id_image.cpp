@@ -81,7 +81,6 @@ class IdImagePass : public GpuPass {
     lines_.draw(*table_, IdLineRule::CreasesAndBorders);
     glDrawBuffers(2, keys_only);  // crease_ids keeps what stands before the silhouettes
     lines_.draw(*table_, IdLineRule::Silhouettes);
-    glDrawBuffers(2, both);
     glDepthFunc(GL_LESS);
     glDisable(GL_DEPTH_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
