@@ -7,32 +7,31 @@
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_stop_predicate.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_plane_policies.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 
+#include <numeric>
 #include <string>
 #include <vector>
+
+#include "common/mesh/cgal_surface_mesh.hpp"
 
 namespace plumbago {
 namespace {
 
-using Kernel = CGAL::Simple_cartesian<double>;
-using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using Kernel = CgalKernel;
+using SurfaceMesh = CgalMesh;
 namespace SMS = CGAL::Surface_mesh_simplification;
 
 SurfaceMesh surface_mesh(const Mesh& mesh) {
   SurfaceMesh out;
-  std::vector<SurfaceMesh::Vertex_index> v;
-  for (const glm::vec3& p : mesh.positions) v.push_back(out.add_vertex(Kernel::Point_3(p.x, p.y, p.z)));
-  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
-    const glm::uvec3& t = mesh.triangles[f];
-    if (out.add_face(v[t[0]], v[t[1]], v[t[2]]) == SurfaceMesh::null_face())
-      throw MeshError(mesh.name + ": cannot be decimated: face " + std::to_string(f) +
-                      " makes it no manifold (an edge of three faces or a vertex joining two fans)");
-  }
+  std::vector<uint32_t> faces(mesh.triangles.size());
+  std::iota(faces.begin(), faces.end(), 0u);
+  std::unordered_map<uint32_t, SurfaceMesh::Vertex_index> vertex;
+  if (std::optional<uint32_t> refused = add_faces(mesh, faces, out, vertex))
+    throw MeshError(mesh.name + ": cannot be decimated: face " + std::to_string(*refused) +
+                    " makes it no manifold (an edge of three faces or a vertex joining two fans)");
   return out;
 }
 

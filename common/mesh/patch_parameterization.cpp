@@ -3,8 +3,6 @@
 
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
@@ -13,13 +11,14 @@
 #include <unordered_map>
 #include <vector>
 
+#include "common/mesh/cgal_surface_mesh.hpp"
 #include "common/mesh/mesh_topology.hpp"
 
 namespace plumbago {
 namespace {
 
-using Kernel = CGAL::Simple_cartesian<double>;
-using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using Kernel = CgalKernel;
+using SurfaceMesh = CgalMesh;
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
@@ -55,19 +54,7 @@ std::vector<uint32_t> patch_faces(const Mesh& mesh, const MeshTopology& topology
 // is no topological disk (a non-manifold face, not one border, Euler characteristic not 1).
 bool disk_mesh(const Mesh& mesh, const std::vector<uint32_t>& faces, SurfaceMesh& sm,
                std::unordered_map<uint32_t, SurfaceMesh::Vertex_index>& vertex) {
-  for (uint32_t f : faces) {
-    SurfaceMesh::Vertex_index v[3];
-    for (int k = 0; k < 3; ++k) {
-      uint32_t m = mesh.triangles[f][k];
-      auto [it, added] = vertex.emplace(m, SurfaceMesh::Vertex_index());
-      if (added) {
-        glm::dvec3 p(mesh.positions[m]);
-        it->second = sm.add_vertex(Kernel::Point_3(p.x, p.y, p.z));
-      }
-      v[k] = it->second;
-    }
-    if (sm.add_face(v[0], v[1], v[2]) == SurfaceMesh::null_face()) return false;
-  }
+  if (add_faces(mesh, faces, sm, vertex)) return false;
   std::vector<SurfaceMesh::Halfedge_index> borders;
   PMP::extract_boundary_cycles(sm, std::back_inserter(borders));
   const long euler = long(sm.number_of_vertices()) - long(sm.number_of_edges()) + long(sm.number_of_faces());

@@ -10,6 +10,7 @@
 #include "common/mesh/mesh_topology.hpp"
 #include "common/mesh/procedural.hpp"
 #include "common/scene/scene.hpp"
+#include "tests/support/far_mesh_files.hpp"
 #include "tests/support/temp_dir.hpp"
 
 namespace plumbago {
@@ -70,15 +71,7 @@ TEST(Decimate, RefusalsNameTheMesh) {
 // objects that name it, decimated or not.
 TEST(Decimate, ScenesAskForIt) {
   testing::TempDir dir;
-  dir.write("ball.obj", [] {
-    std::string obj;
-    Mesh m = make_procedural("sphere", 1.0f);
-    for (const glm::vec3& p : m.positions)
-      obj += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
-    for (const glm::uvec3& t : m.triangles)
-      obj += "f " + std::to_string(t[0] + 1) + " " + std::to_string(t[1] + 1) + " " + std::to_string(t[2] + 1) + "\n";
-    return obj;
-  }());
+  dir.write("ball.obj", testing::mesh_text_at(make_procedural("sphere", 1.0f), "obj", 0.0));
   Scene s = parse_scene(R"({"objects": [{"mesh": {"file": "ball.obj", "decimate_to": 200}},
       {"mesh": "ball.obj"}, {"mesh": {"procedural": "torus", "decimate_to": 300}}]})",
                         "decimate.json", dir.dir());

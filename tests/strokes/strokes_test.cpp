@@ -172,7 +172,17 @@ double visible_px(const SceneLines& lines, std::initializer_list<LineKind> kinds
   }
   return px;
 }
-double visible_crease_px(const SceneLines& lines) { return visible_px(lines, {LineKind::Crease, LineKind::Border}); }
+// The backends agree on `on` (a parameter set), and each shows more arc of `kinds` on it than
+// on `off` (the same scene without it).
+void expect_parity_and_more_arc(const Scene& on, const Scene& off, std::initializer_list<LineKind> kinds,
+                                const std::string& label) {
+  expect_stroke_parity(on, label);
+  for (const std::string backend : {"reference", "gpu"}) {
+    double with = visible_px(scene_lines(on, backend), kinds), without = visible_px(scene_lines(off, backend), kinds);
+    std::printf("%s, %s: visible arc %.1f px, %.1f px without\n", label.c_str(), backend.c_str(), with, without);
+    EXPECT_GT(with, without + 10) << backend;
+  }
+}
 
 // strokes.crease_under_silhouettes on the cow (5.8K faces), whose creases run beside its
 // silhouettes along the legs: the backends agree with it on, and each shows more crease arc
@@ -181,12 +191,7 @@ TEST_F(StrokeParityNear, CreasesUnderSilhouettesOnTheCow) {
   PLUMBAGO_REQUIRE_MODEL("cow.obj");
   Scene on = testing::drawn_with_strokes(testing::model_scene("cow.obj", 400, 400)), off = on;
   on.params.set("strokes.crease_under_silhouettes", 1.0);
-  expect_stroke_parity(on, "cow, creases under silhouettes");
-  for (const std::string backend : {"reference", "gpu"}) {
-    double with = visible_crease_px(scene_lines(on, backend)), without = visible_crease_px(scene_lines(off, backend));
-    std::printf("%s: visible crease arc %.1f px, %.1f px without the parameter\n", backend.c_str(), with, without);
-    EXPECT_GT(with, without + 10) << backend;
-  }
+  expect_parity_and_more_arc(on, off, {LineKind::Crease, LineKind::Border}, "cow, creases under silhouettes");
 }
 
 // strokes.id_silhouette_lift on the bunny decimated to 2000 faces, whose smooth silhouettes lie
@@ -201,13 +206,7 @@ TEST_F(StrokeParityNear, LiftedSilhouettesOnADecimatedBunny) {
                           "decimated bunny", "."),
         on = off;
   on.params.set("strokes.id_silhouette_lift", 2.0);
-  expect_stroke_parity(on, "decimated bunny, lifted silhouettes");
-  for (const std::string backend : {"reference", "gpu"}) {
-    double with = visible_px(scene_lines(on, backend), {LineKind::Silhouette});
-    double without = visible_px(scene_lines(off, backend), {LineKind::Silhouette});
-    std::printf("%s: visible silhouette arc %.1f px, %.1f px without the lift\n", backend.c_str(), with, without);
-    EXPECT_GT(with, without + 10) << backend;
-  }
+  expect_parity_and_more_arc(on, off, {LineKind::Silhouette}, "decimated bunny, lifted silhouettes");
 }
 
 // A unit cube seen from a generic direction near a corner: 12 crease paths (docs/conventions.md), of which
