@@ -116,32 +116,32 @@ struct IdImageStage {
                    {.handle = kGBuffer.depth},
                    {.handle = kSilhouettePaths},
                    {.handle = kSilhouetteCrossings}},
-        .outputs = {{.handle = kIds,
-                     .channels = 2,
-                     .texel = Texel::Uint,
-                     .doc = "the key, as (key >> 16, key & 0xffff)",
-                     .tolerance_why = "fed the same G-buffer, whose faces both copy; the sketchy faces and the lines "
-                                      "are the same triangles, rasterized with the same rules: exact except where "
-                                      "rounding decides, which a derived bound allows and the note counts: depth ties "
-                                      "(the nearest surfaces within 1e-5 relative plus a subpixel of z slope) and "
-                                      "edges within a subpixel of the pixel center (torus 800x600: 62 px, 0.01%)"},
-                    {.handle = kCreaseIds,
-                     .channels = 2,
-                     .texel = Texel::Uint,
-                     .doc = "under strokes.crease_under_silhouettes, the key before the silhouettes' quads (faces, "
-                            "creases and borders), which crease and border samples also test; else 1 x 1 of 0",
-                     .tolerance_why = "the same triangles as id_image.ids, fewer: exact except where rounding "
-                                      "decides, the same derived bound"},
-                    {.handle = kWindowLines,
-                     .channels = 0,
-                     .texel = Texel::Host,
-                     .doc = "the lines in the window, their keys and surface points (CPU)"},
-                    {.handle = kAmbiguousIds,
-                     .texel = Texel::Host,
-                     .doc = "reference only: 1 where rounding decides the key"},
-                    {.handle = kAmbiguousCreaseIds,
-                     .texel = Texel::Host,
-                     .doc = "reference only: 1 where rounding decides the key before the silhouettes"}},
+        .outputs =
+            {{.handle = kIds,
+              .channels = 2,
+              .texel = Texel::Uint,
+              .doc = "the key, as (key >> 16, key & 0xffff)",
+              .tolerance_why = "fed the same G-buffer, whose faces both copy; the sketchy faces and the lines "
+                               "are the same triangles, rasterized with the same rules: exact except where "
+                               "rounding decides, which a derived bound allows and the note counts: depth ties "
+                               "(the nearest surfaces within 1e-5 relative plus a subpixel of z slope) and "
+                               "edges within a subpixel of the pixel center (torus 800x600: 62 px, 0.01%)"},
+             {.handle = kCreaseIds,
+              .channels = 2,
+              .texel = Texel::Uint,
+              .doc = "under strokes.crease_under_silhouettes, the key before the silhouettes' quads (faces, "
+                     "creases and borders), which crease and border samples also test; else 1 x 1 of 0",
+              .tolerance_why = "the same triangles as id_image.ids, fewer: exact except where rounding "
+                               "decides, the same derived bound"},
+             {.handle = kWindowLines,
+              .channels = 0,
+              .texel = Texel::Host,
+              .doc = "the lines in the window, their keys and surface points (CPU; a GPU frame's silhouettes stay on "
+                     "the GPU, read back for its counts and dumps)"},
+             {.handle = kAmbiguousIds, .texel = Texel::Host, .doc = "reference only: 1 where rounding decides the key"},
+             {.handle = kAmbiguousCreaseIds,
+              .texel = Texel::Host,
+              .doc = "reference only: 1 where rounding decides the key before the silhouettes"}},
         .effects = {"strokes"}};
   }
 };

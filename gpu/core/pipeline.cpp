@@ -77,6 +77,7 @@ double Renderer::render_frame(Frame& timing) {
   Stopwatch watch;
   ThreadClock host;
   size_t read_before = bytes_read_back();
+  state_->frame.whole_lines = false;
   state_->run_frame();
   double ms = watch.ms();
   timing.host_ms = host.ms();
@@ -96,9 +97,12 @@ GBufferChannels Renderer::frame_channels(const std::string& stage) const {
 
 std::shared_ptr<const Preprocessed> Renderer::preprocessed() const { return state_->pre; }
 
+const GpuFrame& Renderer::frame() const { return state_->frame; }
+
 Frame Renderer::render(const FrameOptions& options) {
   Frame frame;
   state_->frame.dump = options.keep_buffers;
+  state_->frame.whole_lines = true;
   state_->run_frame();
   frame.ran = state_->pre->ran;  // made once, listed with every frame that uses it
   for (const PassTime& t : state_->timer.results()) frame.ran.push_back(t);

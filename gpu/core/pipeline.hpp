@@ -15,6 +15,8 @@ struct Preprocessed;  // common/core/preprocess.hpp
 
 namespace plumbago::gpu {
 
+class GpuFrame;  // gpu/core/stage.hpp
+
 class Renderer {
  public:
   // Uploads the scene's geometry and compiles the programs the scene's passes need. The
@@ -37,6 +39,8 @@ class Renderer {
   GBufferChannels frame_channels(const std::string& stage) const;
   // The scene's preprocessed data (common/core/preprocess.hpp), for another renderer to reuse.
   std::shared_ptr<const Preprocessed> preprocessed() const;
+  // The last frame's data as its passes left them on the GPU (tests read what it wrote).
+  const GpuFrame& frame() const;
 
  private:
   struct State;

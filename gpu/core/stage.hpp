@@ -42,6 +42,9 @@ class GpuFrame : public FrameData {
   Scene ordinary, sketchy;                // the objects each pipeline draws (common/sketchy/sketchy.hpp)
   const std::vector<std::string> stages;  // the frame stages that run
   bool dump = false;                      // a dump writes every output, the skipped ones too, in the whole window
+  // The window lines (common/strokes/id_image.hpp) hold the paths the GPU made as well, read
+  // back (Renderer::render: its counts; a dump always); else only those the CPU made.
+  bool whole_lines = false;
 
   template <class P>
   P params() const {

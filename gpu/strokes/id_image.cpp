@@ -4,15 +4,20 @@
 // (shaders/strokes/id_gbuffer.frag); the sketchy objects' are pulled from their meshes,
 // uploaded once (shaders/strokes/id_faces.vert): no CPU loop over faces per frame. The
 // silhouettes are the GPU's own (silhouette_paths), their points placed and projected in
-// double on the GPU (gpu/strokes/silhouette_points.hpp), read back for now (their paths'
-// rows and points only) and made window paths on the CPU with the creases. The window paths
-// go up once as the frame's path table (gpu/strokes/window_paths.hpp), from which the GPU
-// expands the lines' quads (gpu/strokes/id_lines.hpp) and the visibility steps sample. Every
-// draw writes both key images (under strokes.crease_under_silhouettes) but the silhouettes',
-// which leave crease_ids as it stood.
+// double on the GPU (gpu/strokes/silhouette_points.hpp) and made window paths there
+// (gpu/strokes/silhouette_rows.hpp), written into the frame's path table after the creases,
+// borders and decals the CPU puts up (gpu/strokes/window_paths.hpp); the CPU reads back their
+// counts and bounds alone. A frame that keeps its lines whole (GpuFrame::whole_lines) also
+// reads the paths and points back and makes the same window paths on the CPU. From the table
+// the GPU expands the lines' quads (gpu/strokes/id_lines.hpp) and the visibility steps
+// sample. Every draw writes both key images (under strokes.crease_under_silhouettes) but the
+// silhouettes', which leave crease_ids as it stood.
 #include "common/strokes/id_image.hpp"
 
+#include <algorithm>
 #include <optional>
+#include <stdexcept>
+#include <string>
 
 #include "common/strokes/mobile_hatching.hpp"
 #include "common/strokes/silhouette_paths.hpp"
@@ -21,6 +26,7 @@
 #include "gpu/strokes/decal.hpp"
 #include "gpu/strokes/id_lines.hpp"
 #include "gpu/strokes/silhouette_points.hpp"
+#include "gpu/strokes/silhouette_rows.hpp"
 
 namespace plumbago::gpu {
 
@@ -34,7 +40,9 @@ class IdImagePass : public GpuPass {
         fbo_(make_framebuffer()),
         empty_(make_vertex_array()),
         depth_(make_renderbuffer(f.scene.width, f.scene.height, GL_DEPTH_COMPONENT32F)),
-        silhouettes_(f.scene, f.get(kLineMeshes), stroke_meshes(f)) {
+        silhouettes_(f.scene, f.get(kLineMeshes), stroke_meshes(f)),
+        records_(first_faces(f.scene).back()),
+        rows_(records_) {
     // The decals' surface points, projected once for the renderer's frames (Kalnins et al.
     // 2002, §3).
     if (has_decals(f.scene)) decals_ = project_decals_through_gbuffer(f.scene);
@@ -50,15 +58,25 @@ class IdImagePass : public GpuPass {
 
   void run(GpuFrame& f) override {
     auto p = f.params<StrokesParams>();
-    std::vector<ChainPath> silhouettes = silhouettes_(f.scene, f.get(kLineMeshes), f.get(kSilhouettePaths),
-                                                      f.get(kSilhouetteCrossings), p.silhouette_normalized);
-    f.put(kWindowLines, window_lines(f.scene, p, LineObjects::Strokes, &f.get(kLineMeshes),
-                                     has_decals(f.scene) ? &decals_ : nullptr, &silhouettes, &*mobile_));
-    table_.emplace(f.get(kWindowLines));
-    f.put(kPathTable, *table_);
+    const LineMeshes& meshes = f.get(kLineMeshes);
+    const Texture& paths = f.get(kSilhouettePaths);
+    silhouettes_.place(f.scene, meshes, paths, f.get(kSilhouetteCrossings), p.silhouette_normalized);
+    const bool whole = f.whole_lines || f.dump;  // a dump reads runs back on the lines
+    std::vector<ChainPath> read;                 // none unless the lines stay whole
+    if (whole) read = silhouettes_.read(f.scene, meshes, paths);
+    WindowLines lines = window_lines(f.scene, p, LineObjects::Strokes, &meshes,
+                                     has_decals(f.scene) ? &decals_ : nullptr, &read, &*mobile_);
+    table_.put(lines, first_silhouette(lines), count_silhouettes(lines), records_, silhouette_point_rows(records_));
+    rows_(paths, silhouettes_,
+          {f.scene.width, f.scene.height, f.scene.camera.near, p.vis_step_px, lines.silhouette_base}, table_);
+    if (whole && table_.count != lines.paths.size())
+      throw std::logic_error("id_image: the GPU made " + std::to_string(table_.count) + " window paths, the CPU " +
+                             std::to_string(lines.paths.size()));
+    f.put(kWindowLines, std::move(lines));
+    f.put(kPathTable, table_);
     Texture& target = f.put(kIds);
     const Texture& crease_target = crease_ids(f, p.crease_under_silhouettes);
-    lines_.prepare(*table_, p, target.width, target.height, f.scene.camera.near);
+    lines_.prepare(table_, p, target.width, target.height, f.scene.camera.near);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target.id(), 0);
     const bool both_images = p.crease_under_silhouettes;
@@ -78,9 +96,9 @@ class IdImagePass : public GpuPass {
     glBindVertexArray(empty_.id());
     draw_gbuffer_faces(f);
     draw_sketchy_faces(f);
-    lines_.draw(*table_, IdLineRule::CreasesAndBorders);
+    lines_.draw(table_, IdLineRule::CreasesAndBorders);
     glDrawBuffers(2, keys_only);  // crease_ids keeps what stands before the silhouettes
-    lines_.draw(*table_, IdLineRule::Silhouettes);
+    lines_.draw(table_, IdLineRule::Silhouettes);
     glDepthFunc(GL_LESS);
     glDisable(GL_DEPTH_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -91,6 +109,19 @@ class IdImagePass : public GpuPass {
   const StrokeMeshes& stroke_meshes(GpuFrame& f) {
     if (const StrokeMeshes* shared = f.get(maybe(kStrokeMeshes))) return *shared;
     return own_meshes_.emplace(f.scene, f.get(kLineMeshes));
+  }
+
+  // Where the silhouettes start in the lines, after the creases and borders (assign_keys),
+  // before the decals and hatches, and how many they hold: none unless they stay whole.
+  static size_t first_silhouette(const WindowLines& lines) {
+    auto crease_or_border = [](const WindowPath& w) {
+      return w.kind == LineKind::Crease || w.kind == LineKind::Border;
+    };
+    return size_t(std::find_if_not(lines.paths.begin(), lines.paths.end(), crease_or_border) - lines.paths.begin());
+  }
+  static size_t count_silhouettes(const WindowLines& lines) {
+    return size_t(std::count_if(lines.paths.begin(), lines.paths.end(),
+                                [](const WindowPath& w) { return w.kind == LineKind::Silhouette; }));
   }
 
   // id_image.crease_ids: the window's size under strokes.crease_under_silhouettes, else 1 x 1
@@ -142,8 +173,10 @@ class IdImagePass : public GpuPass {
   Renderbuffer depth_;
   std::optional<StrokeMeshes> own_meshes_;
   SilhouettePoints silhouettes_;
-  IdLines lines_;                       // rules 2 and 3
-  std::optional<UploadedPaths> table_;  // this frame's, kept until the next
+  size_t records_;  // face records: the most silhouette paths
+  SilhouetteRows rows_;
+  IdLines lines_;        // rules 2 and 3
+  UploadedPaths table_;  // this frame's, kept until the next (its buffers across frames)
   DecalSurface decals_;
   std::optional<MobileHatching> mobile_;
   std::vector<uint32_t> first_key_;  // per object, its first face key less one

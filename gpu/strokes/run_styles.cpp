@@ -77,9 +77,12 @@ void RunStyleTables::add_line_style(LineKind kind, const StrokeStyles& styles) {
 
 double RunStyleTables::sample_bound(uint32_t style, double length, double runs) const {
   const StyleRow& row = rows_.at(style);
-  double most = gpu::sample_bound(length, runs, row.sample_px, 0, 0);  // no example, or one made for the run
+  // Every run's even samples (no example, or one made for the run), and each example's pen
+  // changes over all the runs, whichever runs take it: each term adds up over runs and paths.
+  const double even = gpu::sample_bound(length, runs, row.sample_px, 0, 0);
+  double most = even;
   for (uint32_t k = row.first_example; k < row.first_example + row.example_count; ++k)
-    most = std::max(most, gpu::sample_bound(length, runs, row.sample_px, examples_[k].length, lifts_[k]));
+    most += gpu::sample_bound(length, runs, row.sample_px, examples_[k].length, lifts_[k]) - even;
   return most;
 }
 

@@ -89,9 +89,9 @@ class RunStyleTables {
   // copied there on the GPU.
   uint32_t own_offsets() const { return uint32_t(offsets_.size()); }
   void copy_offsets(const Buffer& to) const;
-  // At least the samples of `runs` runs `length` px long together in style `style` (its
-  // examples' pen lifts included), and the offsets they make themselves (a synthesized
-  // example's; a decal's are bounded by its path's points).
+  // At least the samples of `runs` runs `length` px long together in style `style`, of one
+  // path or several, whichever examples they stamp (their pen lifts included), and the offsets they make themselves (a
+  // synthesized example's; a decal's are bounded by its path's points).
   double sample_bound(uint32_t style, double length, double runs) const;
   double synthesized_offsets(uint32_t style, double length, double runs) const;
   bool decal(uint32_t style) const { return rows_.at(style).offsets == kDecalPressure; }

@@ -26,8 +26,9 @@ SilhouettePoints::SilhouettePoints(const Scene& scene, const LineMeshes& meshes,
     : args_(step("STEP_ARGS")), points_(step("STEP_POINTS")), meshes_(shared) {
   const std::vector<uint32_t> first = first_faces(scene);
   const size_t records = first.back();
-  check_memory_budget("the silhouette points of " + std::to_string(records) + " faces on the GPU",
-                      double(records) * double(9 * sizeof(double) + 2 * sizeof(SilhouettePoint)));
+  check_memory_budget(
+      "the silhouette points of " + std::to_string(records) + " faces on the GPU",
+      double(records) * double(9 * sizeof(double) + 2 * (sizeof(SilhouettePoint) + sizeof(glm::dvec4))));
   std::vector<double> normals(std::max<size_t>(9 * records, 1), 0.0);
   for (uint32_t o = 0; o < scene.objects.size(); ++o) {
     const FeatureLineMesh* lines = line_mesh(meshes, o);
@@ -40,10 +41,11 @@ SilhouettePoints::SilhouettePoints(const Scene& scene, const LineMeshes& meshes,
   normals_ = make_buffer(normals.data(), normals.size() * sizeof(double));
   args_buffer_ = make_buffer(nullptr, sizeof(glm::uvec4));
   rows_ = make_buffer(nullptr, silhouette_point_rows(records) * sizeof(SilhouettePoint));
+  worlds_ = make_buffer(nullptr, silhouette_point_rows(records) * sizeof(glm::dvec4));
 }
 
-std::vector<ChainPath> SilhouettePoints::operator()(const Scene& scene, const LineMeshes& meshes, const Texture& paths,
-                                                    const Texture& crossings, bool normalized) {
+void SilhouettePoints::place(const Scene& scene, const LineMeshes& meshes, const Texture& paths,
+                             const Texture& crossings, bool normalized) {
   const std::vector<uint32_t> first = first_faces(scene);
   std::vector<ObjectRow> objects;
   for (uint32_t o = 0; o < scene.objects.size(); ++o) {
@@ -65,8 +67,8 @@ std::vector<ChainPath> SilhouettePoints::operator()(const Scene& scene, const Li
   glProgramUniform1f(points_.id(), points_.uniform("width"), float(scene.width));
   glProgramUniform1f(points_.id(), points_.uniform("height"), float(scene.height));
   const Buffer* bound[] = {&args_buffer_, &object_rows, &meshes_.positions, &meshes_.faces,
-                           &normals_,     &rows_,       &frame_rows};
-  for (GLuint b = 0; b < 7; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
+                           &normals_,     &rows_,       &frame_rows,        &worlds_};
+  for (GLuint b = 0; b < 8; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
   glUseProgram(args_.id());
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
@@ -74,8 +76,12 @@ std::vector<ChainPath> SilhouettePoints::operator()(const Scene& scene, const Li
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, args_buffer_.id());
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  // One readback: the counts, the paths' rows, then their points.
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+std::vector<ChainPath> SilhouettePoints::read(const Scene& scene, const LineMeshes& meshes,
+                                              const Texture& paths) const {
+  // The counts, the paths' rows, then their points.
   const std::vector<float> counts = read_table(paths, 4, 1);
   const auto path_count = size_t(counts[0]), point_count = size_t(counts[1]);
   std::vector<SilhouettePoint> rows(point_count);

@@ -3,8 +3,9 @@
 // double, and projected to the window (shaders/strokes/silhouette_points.comp), one
 // invocation per point by an indirect dispatch. The reference's formula is
 // common/strokes/feature_lines.cpp edge_crossing, its projection WindowProjection
-// (common/strokes/strokes.hpp). The ID image reads the paths back with their points
-// (common/strokes/silhouette_paths.hpp chain_paths) to make its window paths.
+// (common/strokes/strokes.hpp). The GPU makes its window paths of them
+// (gpu/strokes/silhouette_rows.hpp); a frame that keeps its lines whole reads the paths back
+// with their points (common/strokes/silhouette_paths.hpp chain_paths).
 #pragma once
 
 #include <vector>
@@ -22,14 +23,19 @@ class SilhouettePoints {
   // crease-aware corner normals (double) once; `meshes` from line_meshes for `scene`'s
   // stroke objects.
   SilhouettePoints(const Scene& scene, const LineMeshes& meshes, const StrokeMeshes& shared);
-  // This frame's silhouette paths from the silhouette_paths tables `paths` and `crossings`.
-  std::vector<ChainPath> operator()(const Scene& scene, const LineMeshes& meshes, const Texture& paths,
-                                    const Texture& crossings, bool normalized);
+  // Places this frame's silhouette path points from the silhouette_paths tables `paths` and
+  // `crossings`, on the GPU: points() and worlds() hold them.
+  void place(const Scene& scene, const LineMeshes& meshes, const Texture& paths, const Texture& crossings,
+             bool normalized);
+  // The paths `place` placed, read back.
+  std::vector<ChainPath> read(const Scene& scene, const LineMeshes& meshes, const Texture& paths) const;
+  const Buffer& points() const { return rows_; }    // SilhouettePoint, per point of the paths in order
+  const Buffer& worlds() const { return worlds_; }  // glm::dvec4, each point's world position
 
  private:
   Program args_, points_;
   const StrokeMeshes& meshes_;
-  Buffer normals_, args_buffer_, rows_;
+  Buffer normals_, args_buffer_, rows_, worlds_;
 };
 
 }  // namespace plumbago::gpu

@@ -54,22 +54,15 @@ struct StrokeSamples::Inputs {
     }
     point_bound = double(points.size()), this->runs = runs.size(), offset_rows = offsets.size();
   }
-  // From the paths alone, the most runs each may have and their most length together (a
-  // path's runs do not overlap); each path point lies in one run at most, to which a run's
-  // polyline adds its two ends, as does a decal's pressure example.
-  Inputs(const WindowLines& lines, const RunTables& tables, const RunStyleTables& styles)
-      : offset_rows(styles.own_offsets()) {
+  // From the paths' run bounds alone (window_paths.hpp RunBound): a path's runs do not overlap.
+  Inputs(const RunTables& tables, const RunStyleTables& styles) : offset_rows(styles.own_offsets()) {
     double made = 0, rows = 0;  // offsets the runs make; most runs
-    for (size_t i = 0; i < lines.paths.size(); ++i) {
-      const double r = tables.path_runs.at(i);
-      if (r == 0) continue;
-      rows += r;
-      const WindowPath& path = lines.paths[i];
-      const uint32_t style = PathTable::style_of(path);
-      const double points = double(path.window.size()) + 2 * r, length = tables.path_lengths.at(i);
-      bound += styles.sample_bound(style, length, r);
-      point_bound += points;
-      made += styles.decal(style) ? points : styles.synthesized_offsets(style, length, r);
+    for (const RunBound& b : tables.bounds) {
+      if (b.runs == 0) continue;
+      rows += b.runs;
+      bound += styles.sample_bound(b.style, b.length, b.runs);
+      point_bound += b.points;
+      made += styles.decal(b.style) ? b.points : styles.synthesized_offsets(b.style, b.length, b.runs);
     }
     offset_rows += size_t(made);  // the examples' own copied on the GPU, the rest made there
     runs = std::min(size_t(tables.bound), size_t(std::ceil(rows)));
@@ -148,14 +141,13 @@ StrokeSamples::StrokeSamples()
 
 void StrokeSamples::operator()(const std::vector<StyledRun>& runs) { run(Inputs(runs), nullptr, nullptr); }
 
-void StrokeSamples::operator()(const WindowLines& lines, const RunTables& tables, const RunStyleTables& styles,
-                               uint32_t seed) {
+void StrokeSamples::operator()(const RunTables& tables, const RunStyleTables& styles, uint32_t seed) {
   for (const Program* p : {&inputs_args_, &inputs_count_, &inputs_write_}) {
     glProgramUniform1ui(p->id(), p->uniform("seed"), seed);
     glProgramUniform1ui(p->id(), p->uniform("own_offsets"), styles.own_offsets());
     glProgramUniform1ui(p->id(), p->uniform("listed_at"), tables.listed.at);
   }
-  run(Inputs(lines, tables, styles), &tables, &styles);
+  run(Inputs(tables, styles), &tables, &styles);
 }
 
 void StrokeSamples::run(const Inputs& in, const RunTables* tables, const RunStyleTables* styles) {

@@ -8,7 +8,7 @@
 // sum and writes them, with each run's record, where shaders/strokes/common_ribbon.glsl reads
 // them, and the indirect draw of their ribbons. Every step goes over the runs the GPU
 // listed, by indirect dispatches and prefix sums over their count: nothing is read back, and
-// the CPU sizes the buffers from the paths alone (gpu/strokes/window_paths.hpp RunTables).
+// the CPU sizes the buffers from the paths' run bounds alone (gpu/strokes/window_paths.hpp RunBound).
 #pragma once
 
 #include <cstdint>
@@ -37,10 +37,10 @@ class StrokeSamples {
   // Computes the samples of `runs`, through their polylines; the buffers hold them until the
   // next call.
   void operator()(const std::vector<StyledRun>& runs);
-  // The same of the runs over `lines` that `tables` holds on the GPU, however many it lists:
-  // their polylines and styles made on the GPU (`styles`; `seed`, the scene's), the buffers
-  // sized from the paths.
-  void operator()(const WindowLines& lines, const RunTables& tables, const RunStyleTables& styles, uint32_t seed);
+  // The same of the runs that `tables` holds on the GPU, however many it lists: their
+  // polylines and styles made on the GPU (`styles`; `seed`, the scene's), the buffers sized
+  // from the paths' run bounds.
+  void operator()(const RunTables& tables, const RunStyleTables& styles, uint32_t seed);
   // The samples and runs to SSBO bindings 0 and 1, as common_ribbon.glsl reads them.
   void bind() const;
   // The ribbons' draw (DrawArraysIndirectCommand, GL_TRIANGLES); none without runs.

@@ -60,10 +60,12 @@ struct TestedRow {
 };
 static_assert(sizeof(TestedRow) == 24);
 
-// At least the first round's samples of each path of `lines` (first_round_bound).
-std::vector<double> first_round_samples(const WindowLines& lines, double step) {
-  std::vector<double> bounds;
-  for (const WindowPath& p : lines.paths) bounds.push_back(first_round_bound(p, step, lines.width, lines.height));
+// At least the first round's samples of each path of `lines` that `table` has from the CPU
+// (first_round_bound; 0 for the others).
+std::vector<double> first_round_samples(const WindowLines& lines, const UploadedPaths& table, double step) {
+  std::vector<double> bounds(lines.paths.size(), 0.0);
+  for (size_t i = 0; i < lines.paths.size(); ++i)
+    if (table.from_cpu(i)) bounds[i] = first_round_bound(lines.paths[i], step, lines.width, lines.height);
   return bounds;
 }
 
@@ -82,7 +84,9 @@ class VisibilityPass : public GpuPass {
   void run(GpuFrame& f) override {
     const WindowLines& lines = f.get(kWindowLines);
     tables_ = {};
-    if (!lines.paths.empty()) list_runs(f, lines);
+    const UploadedPaths* table = f.get(maybe(kPathTable));  // the ID image's, or (parity) one of its own
+    if (!table) table = &own_.emplace(lines);
+    if (table->count > 0) list_runs(f, lines, *table);
     f.put(kRunTables, tables_);
     if (!f.dump) return;
     Visibility v = read_runs(tables_, lines);
@@ -99,32 +103,32 @@ class VisibilityPass : public GpuPass {
   }
 
  private:
-  void list_runs(GpuFrame& f, const WindowLines& lines) {
+  // `lines`: the window lines, which hold the paths of `table` the CPU made (and the GPU's
+  // where they stay whole: GpuFrame::whole_lines).
+  void list_runs(GpuFrame& f, const WindowLines& lines, const UploadedPaths& table) {
     const auto p = f.params<StrokesParams>();
-    const UploadedPaths* table = f.get(maybe(kPathTable));  // the ID image's, or (parity) one of its own
-    if (!table) table = &own_.emplace(lines);
-    std::vector<double> path_samples = first_round_samples(lines, p.vis_step_px);
-    const double bound = std::accumulate(path_samples.begin(), path_samples.end(), 0.0);
-    check_memory(lines, p.vis_step_px, bound);
+    std::vector<double> path_samples = first_round_samples(lines, table, p.vis_step_px);
+    const double bound = std::accumulate(path_samples.begin(), path_samples.end(), table.gpu_first_round);
+    check_memory(table.count, p.vis_step_px, bound);
     const auto capacity = uint32_t(bound);
-    const size_t n = std::max<size_t>(capacity, 1), args = size_t(table->entries) + 1;
+    const size_t n = std::max<size_t>(capacity, 1), args = size_t(table.entries) + 1;
     // The counts, their total, two dispatches' groups, then the runs listed.
     entries_ = make_zeroed_buffer(args + 7);
     reserve(n);
-    set_uniforms(f, lines, *table, capacity);
-    const std::initializer_list<const Buffer*> all = {&table->paths,    &table->points,        &entries_,
-                                                      &tested_.buffer,  &change_marks_.buffer, &run_marks_.buffer,
-                                                      &changes_.buffer, &run_rows_.buffer};
+    set_uniforms(f, lines, table, capacity);
+    const std::initializer_list<const Buffer*> all = {&table.paths.buffer, &table.points.buffer,  &entries_,
+                                                      &tested_.buffer,     &change_marks_.buffer, &run_marks_.buffer,
+                                                      &changes_.buffer,    &run_rows_.buffer};
     bind(all);
     for (const Program* p : {&samples_, &changes_step_})
       bind_textures(*p, {{"ids", &f.get(kIds)}, {"crease_ids", &f.get(kCreaseIds)}});
-    dispatch_in_chunks(count_, table->entries, "first");
+    dispatch_in_chunks(count_, table.entries, "first");
     barrier();
-    dispatch_in_chunks(ends_, table->count, "first");
+    dispatch_in_chunks(ends_, table.count, "first");
     barrier();
     scan_(entries_, args);
     bind(all);
-    dispatch_in_chunks(samples_, table->entries, "first");
+    dispatch_in_chunks(samples_, table.entries, "first");
     glUseProgram(args_.id());
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
@@ -138,14 +142,13 @@ class VisibilityPass : public GpuPass {
     bind(all);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries_.id());
     over_samples(list_runs_, args + 3);
-    tables_.paths = &table->paths, tables_.points = &table->points, tables_.runs = &run_rows_.buffer;
+    tables_.paths = &table.paths.buffer, tables_.points = &table.points.buffer, tables_.runs = &run_rows_.buffer;
     tables_.listed = {&entries_, uint32_t(args + 6)}, tables_.samples = {&entries_, uint32_t(args - 1)};
     tables_.bound = uint32_t(2 * n);
-    for (size_t i = 0; i < lines.paths.size(); ++i) {  // window_paths.hpp RunTables
-      tables_.path_runs.push_back(std::floor(path_samples[i] / 2) + 1);
-      tables_.path_lengths.push_back(length_in_margin(lines.paths[i], lines.width, lines.height) +
-                                     tables_.path_runs.back());
-    }
+    for (size_t i = 0; i < path_samples.size(); ++i)
+      if (table.from_cpu(i))
+        tables_.bounds.push_back(run_bound(lines.paths[i], path_samples[i], lines.width, lines.height));
+    if (table.gpu.runs > 0) tables_.bounds.push_back(table.gpu);
   }
 
   // A step over the samples (or their run slots), with the groups the GPU wrote at uint `at`.
@@ -170,12 +173,12 @@ class VisibilityPass : public GpuPass {
 
   // What the samples may take (the bound: their record, a mark and a change, two run marks
   // and two runs), against the memory budget before any is made.
-  static void check_memory(const WindowLines& lines, double step, double bound) {
+  static void check_memory(uint32_t paths, double step, double bound) {
     char what[200];
     std::snprintf(what, sizeof what,
-                  "the visibility samples of %zu lines on the GPU (at most %.0f, every "
+                  "the visibility samples of %u lines on the GPU (at most %.0f, every "
                   "strokes.vis_step_px %g)",
-                  lines.paths.size(), bound, step);
+                  paths, bound, step);
     check_memory_budget(what, bound * double(sizeof(TestedRow) + 4 + sizeof(glm::dvec2) + 8 + 2 * sizeof(RunRow)));
     if (bound > double(std::numeric_limits<uint32_t>::max() / 2 - 1))
       throw std::length_error(std::string(what) + ": more than 2^31 samples");

@@ -1,10 +1,22 @@
 // The window paths and runs on the GPU: see gpu/strokes/window_paths.hpp.
 #include "gpu/strokes/window_paths.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
 namespace plumbago::gpu {
+
+namespace {
+
+// Copies `bytes` of `rows` into `to` from byte `offset` (the buffers are immutable).
+void upload(const void* rows, size_t bytes, const ScratchBuffer& to, size_t offset = 0) {
+  if (bytes > 0)
+    glCopyNamedBufferSubData(make_buffer(rows, bytes).id(), to.id(), 0, GLintptr(offset), GLsizeiptr(bytes));
+}
+
+}  // namespace
 
 uint32_t PathTable::style_of(const WindowPath& p) {
   switch (p.kind) {
@@ -21,8 +33,10 @@ uint32_t PathTable::style_of(const WindowPath& p) {
   return 3 + p.decal;
 }
 
-PathTable::PathTable(const WindowLines& lines) {
-  for (const WindowPath& p : lines.paths) {
+PathTable::PathTable(const WindowLines& lines, size_t skip_first, size_t skip) {
+  for (size_t i = 0; i < lines.paths.size(); ++i) {
+    if (i >= skip_first && i < skip_first + skip) continue;
+    const WindowPath& p = lines.paths[i];
     auto n = uint32_t(p.window.size());
     if (n == 0) throw std::logic_error("visibility: a window path has no points");  // window_lines makes none
     VisibilitySample first = sample_at(p, 0);  // its kind and (silhouettes) byte window
@@ -39,6 +53,11 @@ PathTable::PathTable(const WindowLines& lines) {
                         segment ? glm::distance(p.world[k], p.world[(k + 1) % n]) : 0.0, 0.0});
     }
   }
+}
+
+RunBound run_bound(const WindowPath& p, double first_round_samples, double width, double height) {
+  const double runs = std::floor(first_round_samples / 2) + 1;
+  return {PathTable::style_of(p), runs, length_in_margin(p, width, height) + runs, double(p.window.size()) + 2 * runs};
 }
 
 uint32_t GpuCount::read() const {
@@ -61,27 +80,44 @@ Visibility read_runs(const RunTables& tables, const WindowLines& lines) {
   return v;
 }
 
-UploadedPaths::UploadedPaths(const WindowLines& lines) {
-  PathTable table(lines);
-  paths = make_buffer(table.paths.data(), table.paths.size() * sizeof(PathRow));
-  points = make_buffer(table.points.data(), table.points.size() * sizeof(PointRow));
-  count = uint32_t(table.paths.size()), entries = table.entries, silhouette_entry = table.silhouette_entry;
+void UploadedPaths::put(const WindowLines& lines, size_t first, size_t in_lines, size_t more_paths,
+                        size_t more_points) {
+  PathTable table(lines, first, in_lines);
+  const size_t path_bytes = table.paths.size() * sizeof(PathRow), point_bytes = table.points.size() * sizeof(PointRow);
+  paths.reserve(path_bytes + more_paths * sizeof(PathRow));
+  points.reserve(point_bytes + more_points * sizeof(PointRow));
+  after_.assign(table.paths.begin() + std::ptrdiff_t(first), table.paths.end());
+  upload(table.paths.data(), first * sizeof(PathRow), paths);
+  upload(table.points.data(), point_bytes, points);
+  gpu_first = uint32_t(first), gpu_in_lines = uint32_t(in_lines), cpu_points = uint32_t(table.points.size());
+  cpu_entries_ = table.entries, silhouette_entry = table.silhouette_entry;
+  first_gpu_entry = after_.empty() ? table.entries : after_.front().first_entry;
+  gpu_first_round = 0, gpu = {2};  // PathTable::style_of a silhouette
+}
+
+void UploadedPaths::add_gpu_paths(uint32_t gpu_paths, uint32_t gpu_entries) {
+  for (PathRow& row : after_) row.first_entry += gpu_entries;
+  const size_t at = size_t(gpu_first) + gpu_paths;
+  upload(after_.data(), after_.size() * sizeof(PathRow), paths, at * sizeof(PathRow));
+  count = uint32_t(at + after_.size()), entries = cpu_entries_ + gpu_entries;
 }
 
 UploadedRuns::UploadedRuns(const WindowLines& lines, const Visibility& visibility) : paths_(lines) {
   std::vector<RunRow> rows;
-  tables_.path_runs.assign(lines.paths.size(), 0.0);
-  tables_.path_lengths.assign(lines.paths.size(), 0.0);
+  for (const WindowPath& p : lines.paths) tables_.bounds.push_back({PathTable::style_of(p), 0, 0, 0});
   for (const VisibleRun& r : visibility.runs) {
     rows.push_back(
         {r.path, uint32_t(r.closed) | uint32_t(r.occluded_start) << 1 | uint32_t(r.occluded_end) << 2, r.s0, r.s1});
-    tables_.path_runs.at(r.path) += 1;
-    tables_.path_lengths.at(r.path) += r.closed ? lines.paths[r.path].length_px : r.s1 - r.s0;
+    RunBound& b = tables_.bounds.at(r.path);
+    b.runs += 1;
+    b.length += r.closed ? lines.paths[r.path].length_px : r.s1 - r.s0;
   }
+  for (size_t i = 0; i < lines.paths.size(); ++i)
+    tables_.bounds[i].points = double(lines.paths[i].window.size()) + 2 * tables_.bounds[i].runs;
   const uint32_t counts[2] = {uint32_t(rows.size()), uint32_t(visibility.samples)};
   runs_ = make_buffer(rows.data(), rows.size() * sizeof(RunRow));
   counts_ = make_buffer(counts, sizeof counts);
-  tables_.paths = &paths_.paths, tables_.points = &paths_.points, tables_.runs = &runs_;
+  tables_.paths = &paths_.paths.buffer, tables_.points = &paths_.points.buffer, tables_.runs = &runs_;
   tables_.listed = {&counts_, 0}, tables_.samples = {&counts_, 1}, tables_.bound = counts[0];
 }
 

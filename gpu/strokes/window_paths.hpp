@@ -34,13 +34,14 @@ struct RunRow {
 static_assert(sizeof(PathRow) == 56 && sizeof(PointRow) == 64 && sizeof(RunRow) == 24,
               "std430 layouts of window_paths.glsl");
 
-// The paths of `lines` as rows; each path's entries (visibility.comp) are its segments and its end.
+// The paths of `lines` as rows, but `skip` paths from `skip_first` (the GPU's own, made
+// elsewhere); each path's entries (visibility.comp) are its segments and its end.
 // A path's kind: its sample kind (common/strokes/visibility.hpp), + 16 closed, + 32 drawn in
 // the ID image (common/strokes/id_image.hpp: creases, borders and front-facing silhouettes).
 // A path's style: its line kind's (crease 0, border 1, silhouette 2), or its decal's, 3 + d
 // (gpu/strokes/run_styles.hpp).
 struct PathTable {
-  explicit PathTable(const WindowLines& lines);
+  explicit PathTable(const WindowLines& lines, size_t skip_first = 0, size_t skip = 0);
   static uint32_t style_of(const WindowPath& p);
   std::vector<PathRow> paths;
   std::vector<PointRow> points;
@@ -48,12 +49,51 @@ struct PathTable {
   uint32_t silhouette_entry = 0;  // the entries of the creases and borders, which come first
 };
 
+// What the CPU sizes the visibility and stroke buffers by, for one path or for several
+// together: the most runs (from the first-round samples' bound S: a run holds a visible sample
+// and a hidden one parts two runs, so floor(S / 2) + 1 at most), their most length together
+// (the length within the window's margin, common/strokes/visibility.hpp length_in_margin, and
+// 1 px a run), and the most points their polylines take (each path point in one run at most,
+// and a run's two ends).
+struct RunBound {
+  uint32_t style = 0;  // PathTable::style_of
+  double runs = 0, length = 0, points = 0;
+};
+RunBound run_bound(const WindowPath& p, double first_round_samples, double width, double height);
+
 // A frame's path table on the GPU, put up once: the ID image draws its lines from it
 // (gpu/strokes/id_lines.hpp), the visibility steps sample it, the stroke steps follow it.
+// Its paths are in the order of the window lines (common/strokes/strokes.hpp: creases and
+// borders, silhouettes, decals and hatches). The GPU may write the silhouettes itself
+// (gpu/strokes/silhouette_rows.hpp), the CPU knowing them by their counts and bounds alone:
+// their points then follow the CPU's, and the CPU's rows after them go up once the GPU has
+// counted them.
 struct UploadedPaths {
-  explicit UploadedPaths(const WindowLines& lines);
-  Buffer paths, points;
+  UploadedPaths() = default;
+  explicit UploadedPaths(const WindowLines& lines) {  // every path from the CPU
+    put(lines, 0, 0, 0, 0);
+    add_gpu_paths(0, 0);
+  }
+  // Puts up the paths of `lines` but `gpu_in_lines` from `gpu_first` (where the lines hold
+  // the GPU's too), with room for `more_paths` paths from `gpu_first` and `more_points` points
+  // after the CPU's; the rows after `gpu_first` wait for add_gpu_paths. The buffers are kept
+  // where they hold that.
+  void put(const WindowLines& lines, size_t gpu_first, size_t gpu_in_lines, size_t more_paths, size_t more_points);
+  // The GPU wrote `paths` paths with `entries` entries from gpu_first: puts up the CPU's rows
+  // after them.
+  void add_gpu_paths(uint32_t paths, uint32_t entries);
+  // Whether path i of the lines put up is one the CPU made.
+  bool from_cpu(size_t i) const { return i < gpu_first || i >= gpu_first + gpu_in_lines; }
+  ScratchBuffer paths, points;
   uint32_t count = 0, entries = 0, silhouette_entry = 0;
+  uint32_t gpu_first = 0, gpu_in_lines = 0;  // where the GPU's paths start, and how many of them the lines hold
+  uint32_t cpu_points = 0, first_gpu_entry = 0;
+  double gpu_first_round = 0;  // the first-round samples' bound of the GPU's paths, together
+  RunBound gpu;                // their run bound together, in the silhouettes' style (runs 0: none)
+
+ private:
+  std::vector<PathRow> after_;  // the CPU's rows after the GPU's
+  uint32_t cpu_entries_ = 0;
 };
 inline constexpr Shared<UploadedPaths> kPathTable{"id_image.path_table"};
 
@@ -66,15 +106,12 @@ struct GpuCount {
 
 // The runs of a frame on the GPU: the paths' rows and points, the run rows, how many are
 // listed and how many first-round visibility samples found them, both on the GPU. What the
-// CPU knows: the most runs the rows hold, and per path the most runs it may have (from its
-// first-round samples' bound S: a run holds a visible sample and a hidden one parts two
-// runs, so ceil(S / 2) at most) and their most length together (its length within the
-// window's margin, common/strokes/visibility.hpp length_in_margin, and 1 px a run).
+// CPU knows: the most runs the rows hold, and the paths' run bounds.
 struct RunTables {
   const Buffer *paths = nullptr, *points = nullptr, *runs = nullptr;
   GpuCount listed, samples;
   uint32_t bound = 0;
-  std::vector<double> path_runs, path_lengths;  // per path: most runs, and their most length together
+  std::vector<RunBound> bounds;  // per CPU path, then the GPU's paths together
 };
 inline constexpr Shared<RunTables> kRunTables{"visibility.run_tables"};
 

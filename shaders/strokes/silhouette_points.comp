@@ -5,7 +5,7 @@
 // reference's (common/strokes/feature_lines.cpp silhouette_test, edge_crossing), in double;
 // the projection that of common/strokes/strokes.hpp WindowProjection.
 //   STEP_ARGS:   one invocation: the groups of STEP_POINTS from the paths' point count;
-//   STEP_POINTS: per point, its crossing and window position.
+//   STEP_POINTS: per point, its crossing, its world and window positions.
 const uint kPointsGroup = 64u;  // STEP_POINTS' workgroup
 #if defined(STEP_ARGS)
 layout(local_size_x = 1) in;
@@ -50,6 +50,7 @@ layout(std430, binding = 3) readonly buffer Faces { uvec4 faces[]; };
 layout(std430, binding = 4) readonly buffer Normals { double normals[]; };  // per record, 3 corners x 3
 layout(std430, binding = 5) writeonly buffer Points { Point points[]; };
 layout(std430, binding = 6) readonly buffer Frame { dmat4 clip, view; };  // world to clip, to view
+layout(std430, binding = 7) writeonly buffer Worlds { dvec4 worlds[]; };  // per point (silhouette_rows.comp)
 
 uniform bool normalized;  // g = n·normalize(eye - x); false: n·(eye - x)
 uniform uint object_count;
@@ -101,5 +102,6 @@ void main() {
   dvec4 world = o.model * dvec4(a + (b - a) * t, 1.0LF), c = clip * world;
   dvec2 window = (c.xy / c.w * 0.5LF + 0.5LF) * dvec2(double(width), double(height));
   points[q] = Point(window.x, window.y, -(view * world).z, t, record, slot);
+  worlds[q] = world;
 }
 #endif

@@ -1,6 +1,7 @@
 // The window paths and visible runs as the GPU's stroke steps read them (gpu/strokes/window_paths.hpp
 // PathRow, PointRow, RunRow; std430): the paths' table and points, bound at PATHS_BINDING and
-// POINTS_BINDING, which the includer defines. Positions and arc lengths are in double, as the
+// POINTS_BINDING, which the includer defines (and POINTS_ACCESS, the points' qualifier:
+// readonly unless defined). Positions and arc lengths are in double, as the
 // reference (common/strokes/visibility.cpp) takes them.
 struct Path {
   uint first_point, points, first_entry;
@@ -27,7 +28,10 @@ struct Run {
 };
 
 layout(std430, binding = PATHS_BINDING) buffer Paths { Path paths[]; };
-layout(std430, binding = POINTS_BINDING) readonly buffer PathPoints { Point path_points[]; };
+#ifndef POINTS_ACCESS
+#define POINTS_ACCESS readonly
+#endif
+layout(std430, binding = POINTS_BINDING) POINTS_ACCESS buffer PathPoints { Point path_points[]; };
 
 const uint kPathClosed = 16u, kPathInIds = 32u;  // Path.kind's flags
 

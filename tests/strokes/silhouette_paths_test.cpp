@@ -9,9 +9,12 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "common/mesh/procedural.hpp"
+#include "common/scene/scene.hpp"
 #include "common/strokes/silhouette_paths.hpp"
 #include "common/strokes/strokes.hpp"
 #include "gpu/core/pipeline.hpp"
+#include "gpu/core/stage.hpp"
+#include "gpu/strokes/window_paths.hpp"
 #include "parity/parity.hpp"
 #include "tests/support/parity_checks.hpp"
 #include "tests/support/test_scenes.hpp"
@@ -134,6 +137,84 @@ TEST_F(SilhouettePaths, GpuFrameChainsTheSilhouettesTheReferenceDraws) {
     EXPECT_LT(window, kDoublePointPx) << name;
     EXPECT_LT(depth, kDoubleRelative) << name;
     EXPECT_LT(surface, kDoubleRelative) << name;
+  }
+}
+
+// A stroke torus seen from within its tube's reach, nearer to it than the near plane: its
+// silhouettes are cut there, some into pieces of which a path keeps its first.
+Scene torus_cut_by_the_near_plane() {
+  Scene s = testing::one_stroke_object(make_procedural("torus"), glm::vec3(1.65f, 0.0f, 0.0f));
+  s.camera.near = 0.3f;
+  return s;
+}
+
+// The rows of the table `table` holds on the GPU: its paths, and its points up to the last
+// a path names.
+gpu::PathTable read_rows(const gpu::UploadedPaths& table) {
+  gpu::PathTable rows(WindowLines{});
+  rows.paths.resize(table.count);
+  gpu::read_buffer(table.paths, rows.paths.data(), rows.paths.size() * sizeof(gpu::PathRow));
+  size_t points = 0;
+  for (const gpu::PathRow& p : rows.paths) points = std::max<size_t>(points, p.first_point + p.points);
+  rows.points.resize(points);
+  gpu::read_buffer(table.points, rows.points.data(), points * sizeof(gpu::PointRow));
+  rows.entries = table.entries;
+  return rows;
+}
+
+// The GPU frame writes its silhouettes' window paths itself (gpu/strokes/silhouette_rows.hpp,
+// the CPU reading back only their counts and bounds): its path table's rows against those
+// the CPU makes of the same points (common/strokes/strokes.cpp window_lines, which a frame
+// that keeps its lines whole runs too): the same paths, counts, keys, kinds and entries
+// exactly, the same window points and depths, and arc lengths, lengths and world steps within
+// the rounding of a few double operations (a fused multiply-add, a square root).
+TEST_F(SilhouettePaths, GpuWritesTheWindowPathsTheCpuMakesOfItsPoints) {
+  std::vector<std::pair<std::string, Scene>> all = scenes();
+  all.emplace_back("torus cut by the near plane", torus_cut_by_the_near_plane());
+  all.emplace_back("fine torus, back-facing kept", all[4].second);
+  all.back().second.params.set("strokes.keep_back_facing", 1.0);
+  all.emplace_back("sphere with hatches", load_scene(PLUMBAGO_SOURCE_DIR "/scenes/hatching_lod.json"));
+  all.emplace_back("teapot with decals", load_scene(PLUMBAGO_SOURCE_DIR "/scenes/teapot_decals.json"));
+  for (auto& [name, s] : all) {
+    gpu::Renderer renderer(s);
+    Frame frame = renderer.render(FrameOptions{true});
+    ASSERT_TRUE(frame.lines) << name;
+    const gpu::UploadedPaths* table = renderer.frame().get(maybe(gpu::kPathTable));
+    ASSERT_TRUE(table) << name;
+    const gpu::PathTable cpu(*frame.lines), gpu_rows = read_rows(*table);
+    ASSERT_EQ(gpu_rows.paths.size(), cpu.paths.size()) << name;
+    EXPECT_EQ(gpu_rows.entries, cpu.entries) << name;
+    double arc = 0, step = 0;
+    size_t silhouettes = 0, cut = 0;
+    for (size_t i = 0; i < cpu.paths.size(); ++i) {
+      const gpu::PathRow &g = gpu_rows.paths[i], &c = cpu.paths[i];
+      const std::string at = name + " path " + std::to_string(i);
+      ASSERT_EQ(g.points, c.points) << at;
+      EXPECT_EQ(g.first_entry, c.first_entry) << at;
+      EXPECT_EQ(g.kind, c.kind) << at;
+      EXPECT_EQ(g.key, c.key) << at;
+      EXPECT_EQ(g.byte_window, c.byte_window) << at;
+      EXPECT_EQ(g.style, c.style) << at;
+      EXPECT_NEAR(g.length_px, c.length_px, 1e-12 * std::max(1.0, c.length_px)) << at;
+      EXPECT_EQ(g.alpha_scale, c.alpha_scale) << at;
+      EXPECT_EQ(g.width_scale, c.width_scale) << at;
+      if (c.style != 2) continue;  // the CPU's own (the table's first rows, and those after the silhouettes)
+      ++silhouettes, cut += (c.kind & 16u) == 0;
+      for (uint32_t k = 0; k < c.points; ++k) {
+        const gpu::PointRow &gp = gpu_rows.points[g.first_point + k], &cp = cpu.points[c.first_point + k];
+        EXPECT_EQ(gp.window, cp.window) << at << " point " << k;
+        EXPECT_EQ(gp.depth, cp.depth) << at << " point " << k;
+        EXPECT_EQ(gp.faces, cp.faces) << at << " point " << k;
+        EXPECT_EQ(gp.pressure, 1.0) << at << " point " << k;
+        arc = std::max(arc, std::abs(gp.s - cp.s) / std::max(1.0, c.length_px));
+        step = std::max(step, std::abs(gp.world_step - cp.world_step) / std::max(1.0, cp.world_step));
+      }
+    }
+    std::printf("[GPU rows %s] %zu silhouette paths (%zu open), arc lengths within %.3g, world steps %.3g relative\n",
+                name.c_str(), silhouettes, cut, arc, step);
+    EXPECT_GT(silhouettes, 0u) << name;
+    EXPECT_LT(arc, kDoubleRelative) << name;
+    EXPECT_LT(step, kDoubleRelative) << name;
   }
 }
 

@@ -93,7 +93,7 @@ Tally compare_from_tables(const SceneLines& found) {
   gpu::UploadedRuns tables(lines, v);
   gpu::RunStyleTables styles(found.scene.strokes, lines.decal_styles);
   gpu::StrokeSamples gpu_samples;
-  gpu_samples(lines, tables.tables(), styles, found.scene.seed);
+  gpu_samples(tables.tables(), styles, found.scene.seed);
   return compare(styled_runs(lines, v, found.scene.strokes, found.scene.seed), gpu_samples);
 }
 
