@@ -136,8 +136,8 @@ struct IdImageStage {
              {.handle = kWindowLines,
               .channels = 0,
               .texel = Texel::Host,
-              .doc = "the lines in the window, their keys and surface points (CPU; a GPU frame's silhouettes stay on "
-                     "the GPU, read back for its counts and dumps)"},
+              .doc = "the lines in the window, their keys and surface points (CPU; a GPU frame makes its creases, "
+                     "borders and silhouettes on the GPU, and here only for its counts and dumps)"},
              {.handle = kAmbiguousIds, .texel = Texel::Host, .doc = "reference only: 1 where rounding decides the key"},
              {.handle = kAmbiguousCreaseIds,
               .texel = Texel::Host,

@@ -217,16 +217,20 @@ void assign_keys(WindowLines& lines) {
   uint64_t next = uint64_t(lines.face_count) + 1;
   for (WindowPath& p : lines.paths)
     if (p.kind != LineKind::Silhouette) p.key = uint32_t(next++);
-  uint64_t base = ((next - 1) >> 8) + 1;
-  if (base + lines.face_count >= (uint64_t(1) << 24))
-    throw std::length_error("the ID image's keys do not fit 32 bits: " + std::to_string(lines.face_count) + " faces, " +
-                            std::to_string(next - 1 - lines.face_count) + " crease and border paths");
-  lines.silhouette_base = uint32_t(base);
+  lines.silhouette_base = silhouette_base(lines.face_count, next - 1 - lines.face_count);
   for (WindowPath& p : lines.paths)
-    if (p.kind == LineKind::Silhouette) p.key += uint32_t(base);
+    if (p.kind == LineKind::Silhouette) p.key += lines.silhouette_base;
 }
 
 }  // namespace
+
+uint32_t silhouette_base(uint32_t face_count, uint64_t crease_paths) {
+  const uint64_t base = ((face_count + crease_paths) >> 8) + 1;
+  if (base + face_count >= (uint64_t(1) << 24))
+    throw std::length_error("the ID image's keys do not fit 32 bits: " + std::to_string(face_count) + " faces, " +
+                            std::to_string(crease_paths) + " crease and border paths");
+  return uint32_t(base);
+}
 
 const char* line_kind_name(LineKind kind) {
   switch (kind) {
@@ -299,7 +303,7 @@ const FeatureLineMesh* line_mesh(const LineMeshes& meshes, size_t object) {
 
 WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which, const LineMeshes* prepared,
                          const DecalSurface* decals, const std::vector<ChainPath>* silhouettes,
-                         const MobileHatching* mobile) {
+                         const MobileHatching* mobile, bool creases) {
   std::shared_ptr<const LineMeshes> made;
   if (!prepared) made = line_meshes(scene, p, which), prepared = made.get();
   WindowLines out;
@@ -315,8 +319,10 @@ WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects
     if (!mesh) continue;
     const FeatureLines& fixed = mesh->creases_and_borders();
     const EdgeFaces* edges = prepared->edges[i].get();
-    for (const FeaturePath& path : fixed.creases) builder.add(path, LineKind::Crease, i, edges);
-    for (const FeaturePath& path : fixed.borders) builder.add(path, LineKind::Border, i, edges);
+    if (creases) {
+      for (const FeaturePath& path : fixed.creases) builder.add(path, LineKind::Crease, i, edges);
+      for (const FeaturePath& path : fixed.borders) builder.add(path, LineKind::Border, i, edges);
+    }
     if (!silhouettes) add_window_silhouettes(scene, project, i, *mesh, p, own);
   }
   for (const ChainPath& c : silhouettes ? *silhouettes : own)

@@ -118,6 +118,10 @@ struct WindowLines {
 // face count.
 std::vector<uint32_t> first_faces(const Scene& scene);
 
+// WindowLines::silhouette_base for `face_count` faces and `crease_paths` crease and border
+// paths; throws std::length_error where the keys do not fit 32 bits.
+uint32_t silhouette_base(uint32_t face_count, uint64_t crease_paths);
+
 // Which objects' lines: those drawn with strokes, or every object but the sketchy ones
 // (the `lines` command: pencil objects too).
 enum class LineObjects { Strokes, AllButSketchy };
@@ -155,13 +159,15 @@ struct ChainPath {
 // chained here in double. `mobile`: the mobile hatching groups of `decals`
 // (common/strokes/mobile_hatching.hpp), made once by a backend that keeps its decals; none:
 // made here. A mobile hatch is placed as this frame's copies of it, its weight's alpha
-// times each copy's.
+// times each copy's. `creases`: false leaves the creases and borders out (a backend that
+// makes them itself; the silhouettes' keys then count none).
 struct ProjectedDecal;
 using DecalSurface = std::vector<ProjectedDecal>;  // common/strokes/decal.hpp
 class MobileHatching;
 WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which = LineObjects::Strokes,
                          const LineMeshes* prepared = nullptr, const DecalSurface* decals = nullptr,
-                         const std::vector<ChainPath>* silhouettes = nullptr, const MobileHatching* mobile = nullptr);
+                         const std::vector<ChainPath>* silhouettes = nullptr, const MobileHatching* mobile = nullptr,
+                         bool creases = true);
 
 // The part [t0, t1] of window segment a -> b within `margin` px of the window (Liang-Barsky);
 // false when none is.

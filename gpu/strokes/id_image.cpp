@@ -3,15 +3,17 @@
 // the fragment's depth. The faces are the G-buffer's, copied in one full-window pass
 // (shaders/strokes/id_gbuffer.frag); the sketchy objects' are pulled from their meshes,
 // uploaded once (shaders/strokes/id_faces.vert): no CPU loop over faces per frame. The
-// silhouettes are the GPU's own (silhouette_paths), their points placed and projected in
-// double on the GPU (gpu/strokes/silhouette_points.hpp) and made window paths there
-// (gpu/strokes/silhouette_rows.hpp), written into the frame's path table after the creases,
-// borders and decals the CPU puts up (gpu/strokes/window_paths.hpp); the CPU reads back their
-// counts and bounds alone. A frame that keeps its lines whole (GpuFrame::whole_lines) also
-// reads the paths and points back and makes the same window paths on the CPU. From the table
-// the GPU expands the lines' quads (gpu/strokes/id_lines.hpp) and the visibility steps
-// sample. Every draw writes both key images (under strokes.crease_under_silhouettes) but the
-// silhouettes', which leave crease_ids as it stood.
+// creases and borders (gpu/strokes/crease_rows.hpp) and the silhouettes are made window paths
+// on the GPU, in double: the silhouettes are the GPU's own (silhouette_paths), their points
+// placed and projected on the GPU (gpu/strokes/silhouette_points.hpp), then cut and measured
+// there (gpu/strokes/silhouette_rows.hpp). Both are written first in the frame's path table,
+// before the decals and hatches the CPU puts up (gpu/strokes/window_paths.hpp); the CPU reads
+// back their counts and bounds alone (gpu/strokes/row_counts.hpp). A frame that keeps its
+// lines whole (GpuFrame::whole_lines) also reads the silhouettes back and makes the same
+// window paths on the CPU. From the table the GPU expands the lines' quads
+// (gpu/strokes/id_lines.hpp) and the visibility steps sample. Every draw writes both key
+// images (under strokes.crease_under_silhouettes) but the silhouettes', which leave
+// crease_ids as it stood.
 #include "common/strokes/id_image.hpp"
 
 #include <algorithm>
@@ -23,8 +25,10 @@
 #include "common/strokes/silhouette_paths.hpp"
 #include "gpu/core/stage.hpp"
 #include "gpu/scene/mesh_buffers.hpp"
+#include "gpu/strokes/crease_rows.hpp"
 #include "gpu/strokes/decal.hpp"
 #include "gpu/strokes/id_lines.hpp"
+#include "gpu/strokes/row_counts.hpp"
 #include "gpu/strokes/silhouette_points.hpp"
 #include "gpu/strokes/silhouette_rows.hpp"
 
@@ -41,8 +45,10 @@ class IdImagePass : public GpuPass {
         empty_(make_vertex_array()),
         depth_(make_renderbuffer(f.scene.width, f.scene.height, GL_DEPTH_COMPONENT32F)),
         silhouettes_(f.scene, f.get(kLineMeshes), stroke_meshes(f)),
+        creases_(f.scene, f.get(kLineMeshes), stroke_meshes(f)),
         records_(first_faces(f.scene).back()),
-        rows_(records_) {
+        rows_(records_),
+        counts_(make_buffer(nullptr, sizeof(RowCounts))) {
     // The decals' surface points, projected once for the renderer's frames (Kalnins et al.
     // 2002, §3).
     if (has_decals(f.scene)) decals_ = project_decals_through_gbuffer(f.scene);
@@ -65,10 +71,19 @@ class IdImagePass : public GpuPass {
     std::vector<ChainPath> read;                 // none unless the lines stay whole
     if (whole) read = silhouettes_.read(f.scene, meshes, paths);
     WindowLines lines = window_lines(f.scene, p, LineObjects::Strokes, &meshes,
-                                     has_decals(f.scene) ? &decals_ : nullptr, &read, &*mobile_);
-    table_.put(lines, first_silhouette(lines), count_silhouettes(lines), records_, silhouette_point_rows(records_));
-    rows_(paths, silhouettes_,
-          {f.scene.width, f.scene.height, f.scene.camera.near, p.vis_step_px, lines.silhouette_base}, table_);
+                                     has_decals(f.scene) ? &decals_ : nullptr, &read, &*mobile_, whole);
+    const size_t gpu_paths = creases_.points() + records_,
+                 gpu_points = creases_.points() + silhouette_point_rows(records_);
+    table_.put(lines, whole ? made_on_gpu(lines) : 0, gpu_paths, gpu_points);
+    const RowFrame frame{f.scene.width, f.scene.height, f.scene.camera.near, p.vis_step_px};
+    const GLuint zero = 0;
+    glClearNamedBufferData(counts_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    creases_(f.scene, frame, table_.cpu_points, counts_, table_);
+    rows_(paths, silhouettes_, frame, table_.cpu_points + uint32_t(creases_.points()), counts_, table_);
+    const RowCounts counts = RowCounts::read(counts_);
+    if (silhouette_base(records_, counts.crease_rows) != counts.silhouette_base)  // refuses keys past 32 bits
+      throw std::logic_error("id_image: the GPU's first silhouette key is not the CPU's");
+    counts.add_to(table_);
     if (whole && table_.count != lines.paths.size())
       throw std::logic_error("id_image: the GPU made " + std::to_string(table_.count) + " window paths, the CPU " +
                              std::to_string(lines.paths.size()));
@@ -108,20 +123,15 @@ class IdImagePass : public GpuPass {
   // The silhouette segments' meshes, or (the segments computed elsewhere: parity) its own.
   const StrokeMeshes& stroke_meshes(GpuFrame& f) {
     if (const StrokeMeshes* shared = f.get(maybe(kStrokeMeshes))) return *shared;
-    return own_meshes_.emplace(f.scene, f.get(kLineMeshes));
+    return own_meshes_ ? *own_meshes_ : own_meshes_.emplace(f.scene, f.get(kLineMeshes));
   }
 
-  // Where the silhouettes start in the lines, after the creases and borders (assign_keys),
-  // before the decals and hatches, and how many they hold: none unless they stay whole.
-  static size_t first_silhouette(const WindowLines& lines) {
-    auto crease_or_border = [](const WindowPath& w) {
-      return w.kind == LineKind::Crease || w.kind == LineKind::Border;
-    };
-    return size_t(std::find_if_not(lines.paths.begin(), lines.paths.end(), crease_or_border) - lines.paths.begin());
-  }
-  static size_t count_silhouettes(const WindowLines& lines) {
-    return size_t(std::count_if(lines.paths.begin(), lines.paths.end(),
-                                [](const WindowPath& w) { return w.kind == LineKind::Silhouette; }));
+  // The paths of `lines` the GPU also makes: the creases, borders and silhouettes, which come
+  // first (common/strokes/strokes.hpp WindowLines).
+  static size_t made_on_gpu(const WindowLines& lines) {
+    return size_t(std::count_if(lines.paths.begin(), lines.paths.end(), [](const WindowPath& w) {
+      return w.kind == LineKind::Crease || w.kind == LineKind::Border || w.kind == LineKind::Silhouette;
+    }));
   }
 
   // id_image.crease_ids: the window's size under strokes.crease_under_silhouettes, else 1 x 1
@@ -173,8 +183,10 @@ class IdImagePass : public GpuPass {
   Renderbuffer depth_;
   std::optional<StrokeMeshes> own_meshes_;
   SilhouettePoints silhouettes_;
+  CreaseRows creases_;
   size_t records_;  // face records: the most silhouette paths
   SilhouetteRows rows_;
+  Buffer counts_;        // RowCounts
   IdLines lines_;        // rules 2 and 3
   UploadedPaths table_;  // this frame's, kept until the next (its buffers across frames)
   DecalSurface decals_;

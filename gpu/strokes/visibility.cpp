@@ -148,7 +148,7 @@ class VisibilityPass : public GpuPass {
     for (size_t i = 0; i < path_samples.size(); ++i)
       if (table.from_cpu(i))
         tables_.bounds.push_back(run_bound(lines.paths[i], path_samples[i], lines.width, lines.height));
-    if (table.gpu.runs > 0) tables_.bounds.push_back(table.gpu);
+    tables_.bounds.insert(tables_.bounds.end(), table.gpu.begin(), table.gpu.end());
   }
 
   // A step over the samples (or their run slots), with the groups the GPU wrote at uint `at`.

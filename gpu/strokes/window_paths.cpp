@@ -33,9 +33,8 @@ uint32_t PathTable::style_of(const WindowPath& p) {
   return 3 + p.decal;
 }
 
-PathTable::PathTable(const WindowLines& lines, size_t skip_first, size_t skip) {
-  for (size_t i = 0; i < lines.paths.size(); ++i) {
-    if (i >= skip_first && i < skip_first + skip) continue;
+PathTable::PathTable(const WindowLines& lines, size_t skip) {
+  for (size_t i = skip; i < lines.paths.size(); ++i) {
     const WindowPath& p = lines.paths[i];
     auto n = uint32_t(p.window.size());
     if (n == 0) throw std::logic_error("visibility: a window path has no points");  // window_lines makes none
@@ -80,26 +79,23 @@ Visibility read_runs(const RunTables& tables, const WindowLines& lines) {
   return v;
 }
 
-void UploadedPaths::put(const WindowLines& lines, size_t first, size_t in_lines, size_t more_paths,
-                        size_t more_points) {
-  PathTable table(lines, first, in_lines);
-  const size_t path_bytes = table.paths.size() * sizeof(PathRow), point_bytes = table.points.size() * sizeof(PointRow);
-  paths.reserve(path_bytes + more_paths * sizeof(PathRow));
+void UploadedPaths::put(const WindowLines& lines, size_t in_lines, size_t more_paths, size_t more_points) {
+  PathTable table(lines, in_lines);
+  const size_t point_bytes = table.points.size() * sizeof(PointRow);
+  paths.reserve((more_paths + table.paths.size()) * sizeof(PathRow));
   points.reserve(point_bytes + more_points * sizeof(PointRow));
-  after_.assign(table.paths.begin() + std::ptrdiff_t(first), table.paths.end());
-  upload(table.paths.data(), first * sizeof(PathRow), paths);
   upload(table.points.data(), point_bytes, points);
-  gpu_first = uint32_t(first), gpu_in_lines = uint32_t(in_lines), cpu_points = uint32_t(table.points.size());
+  cpu_rows_ = std::move(table.paths);
+  gpu_in_lines = uint32_t(in_lines), cpu_points = uint32_t(table.points.size());
   cpu_entries_ = table.entries, silhouette_entry = table.silhouette_entry;
-  first_gpu_entry = after_.empty() ? table.entries : after_.front().first_entry;
-  gpu_first_round = 0, gpu = {2};  // PathTable::style_of a silhouette
+  gpu_first_round = 0, gpu.clear();
 }
 
-void UploadedPaths::add_gpu_paths(uint32_t gpu_paths, uint32_t gpu_entries) {
-  for (PathRow& row : after_) row.first_entry += gpu_entries;
-  const size_t at = size_t(gpu_first) + gpu_paths;
-  upload(after_.data(), after_.size() * sizeof(PathRow), paths, at * sizeof(PathRow));
-  count = uint32_t(at + after_.size()), entries = cpu_entries_ + gpu_entries;
+void UploadedPaths::add_gpu_paths(uint32_t gpu_paths, uint32_t gpu_entries, uint32_t crease_entries) {
+  for (PathRow& row : cpu_rows_) row.first_entry += gpu_entries;
+  upload(cpu_rows_.data(), cpu_rows_.size() * sizeof(PathRow), paths, size_t(gpu_paths) * sizeof(PathRow));
+  count = uint32_t(gpu_paths + cpu_rows_.size()), entries = cpu_entries_ + gpu_entries;
+  silhouette_entry += crease_entries;
 }
 
 UploadedRuns::UploadedRuns(const WindowLines& lines, const Visibility& visibility) : paths_(lines) {

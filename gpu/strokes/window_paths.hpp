@@ -34,14 +34,14 @@ struct RunRow {
 static_assert(sizeof(PathRow) == 56 && sizeof(PointRow) == 64 && sizeof(RunRow) == 24,
               "std430 layouts of window_paths.glsl");
 
-// The paths of `lines` as rows, but `skip` paths from `skip_first` (the GPU's own, made
-// elsewhere); each path's entries (visibility.comp) are its segments and its end.
+// The paths of `lines` as rows, but their first `skip` (the GPU's own, made elsewhere); each
+// path's entries (visibility.comp) are its segments and its end.
 // A path's kind: its sample kind (common/strokes/visibility.hpp), + 16 closed, + 32 drawn in
 // the ID image (common/strokes/id_image.hpp: creases, borders and front-facing silhouettes).
 // A path's style: its line kind's (crease 0, border 1, silhouette 2), or its decal's, 3 + d
 // (gpu/strokes/run_styles.hpp).
 struct PathTable {
-  explicit PathTable(const WindowLines& lines, size_t skip_first = 0, size_t skip = 0);
+  explicit PathTable(const WindowLines& lines, size_t skip = 0);
   static uint32_t style_of(const WindowPath& p);
   std::vector<PathRow> paths;
   std::vector<PointRow> points;
@@ -64,35 +64,35 @@ RunBound run_bound(const WindowPath& p, double first_round_samples, double width
 // A frame's path table on the GPU, put up once: the ID image draws its lines from it
 // (gpu/strokes/id_lines.hpp), the visibility steps sample it, the stroke steps follow it.
 // Its paths are in the order of the window lines (common/strokes/strokes.hpp: creases and
-// borders, silhouettes, decals and hatches). The GPU may write the silhouettes itself
-// (gpu/strokes/silhouette_rows.hpp), the CPU knowing them by their counts and bounds alone:
-// their points then follow the CPU's, and the CPU's rows after them go up once the GPU has
-// counted them.
+// borders, silhouettes, decals and hatches). The GPU may write the first ones itself, the
+// creases, borders and silhouettes (gpu/strokes/crease_rows.hpp, silhouette_rows.hpp), the
+// CPU knowing them by their counts and bounds alone (gpu/strokes/row_counts.hpp): their
+// points then follow the CPU's, and the CPU's rows go up after them once the GPU has counted
+// them.
 struct UploadedPaths {
   UploadedPaths() = default;
   explicit UploadedPaths(const WindowLines& lines) {  // every path from the CPU
-    put(lines, 0, 0, 0, 0);
-    add_gpu_paths(0, 0);
+    put(lines, 0, 0, 0);
+    add_gpu_paths(0, 0, 0);
   }
-  // Puts up the paths of `lines` but `gpu_in_lines` from `gpu_first` (where the lines hold
-  // the GPU's too), with room for `more_paths` paths from `gpu_first` and `more_points` points
-  // after the CPU's; the rows after `gpu_first` wait for add_gpu_paths. The buffers are kept
-  // where they hold that.
-  void put(const WindowLines& lines, size_t gpu_first, size_t gpu_in_lines, size_t more_paths, size_t more_points);
-  // The GPU wrote `paths` paths with `entries` entries from gpu_first: puts up the CPU's rows
-  // after them.
-  void add_gpu_paths(uint32_t paths, uint32_t entries);
+  // Puts up the paths of `lines` but their first `gpu_in_lines` (the GPU's, where the lines
+  // hold them too), with room for `more_paths` paths before them and `more_points` points
+  // after theirs; their rows wait for add_gpu_paths. The buffers are kept where they hold that.
+  void put(const WindowLines& lines, size_t gpu_in_lines, size_t more_paths, size_t more_points);
+  // The GPU wrote the first `paths` paths with `entries` entries, the first `crease_entries`
+  // of them its creases' and borders': puts up the CPU's rows after them.
+  void add_gpu_paths(uint32_t paths, uint32_t entries, uint32_t crease_entries);
   // Whether path i of the lines put up is one the CPU made.
-  bool from_cpu(size_t i) const { return i < gpu_first || i >= gpu_first + gpu_in_lines; }
+  bool from_cpu(size_t i) const { return i >= gpu_in_lines; }
   ScratchBuffer paths, points;
   uint32_t count = 0, entries = 0, silhouette_entry = 0;
-  uint32_t gpu_first = 0, gpu_in_lines = 0;  // where the GPU's paths start, and how many of them the lines hold
-  uint32_t cpu_points = 0, first_gpu_entry = 0;
+  uint32_t gpu_in_lines = 0;   // the GPU's paths the lines hold too
+  uint32_t cpu_points = 0;     // the CPU's points, before the GPU's
   double gpu_first_round = 0;  // the first-round samples' bound of the GPU's paths, together
-  RunBound gpu;                // their run bound together, in the silhouettes' style (runs 0: none)
+  std::vector<RunBound> gpu;   // their run bounds, per line style
 
  private:
-  std::vector<PathRow> after_;  // the CPU's rows after the GPU's
+  std::vector<PathRow> cpu_rows_;  // after the GPU's
   uint32_t cpu_entries_ = 0;
 };
 inline constexpr Shared<UploadedPaths> kPathTable{"id_image.path_table"};

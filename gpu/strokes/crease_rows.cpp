@@ -1,0 +1,137 @@
+// Crease and border paths as window paths on the GPU: see gpu/strokes/crease_rows.hpp.
+#include "gpu/strokes/crease_rows.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "common/strokes/crease_points.hpp"
+#include "common/util/memory_budget.hpp"
+#include "gpu/core/stage.hpp"
+
+namespace plumbago::gpu {
+
+namespace {
+
+// shaders/strokes/crease_rows.comp's Object and CreasePoint (std430).
+struct ObjectRow {
+  glm::dmat4 model;
+  uint32_t first_record, first_vertex, pad[6];
+};
+struct ScratchPoint {
+  glm::dvec4 world;
+  glm::dvec2 window;
+  double depth, pad;
+  glm::uvec2 faces, pad2;
+  double pad3[2];
+};
+static_assert(sizeof(ObjectRow) == 160 && sizeof(ScratchPoint) == 96);
+
+Program step(const char* name) {
+  return Program::compute("strokes/crease_rows.comp", std::string("#define ") + name + "\n");
+}
+
+// Per crease and border path of `scene`'s stroke objects, in window_lines' order: its first
+// record, its points, and flags (1 closed, 2 a border).
+std::vector<glm::uvec4> path_defs(const Scene& scene, const LineMeshes& meshes) {
+  std::vector<glm::uvec4> defs;
+  uint32_t next = 0;
+  auto add = [&](const FeaturePath& p, uint32_t border) {
+    defs.emplace_back(next, uint32_t(p.points.size()), 0u, (p.closed ? 1u : 0u) | border);
+    next += uint32_t(p.points.size());
+  };
+  for (uint32_t o = 0; o < scene.objects.size(); ++o) {
+    const FeatureLineMesh* lines = line_mesh(meshes, o);
+    if (!lines) continue;
+    for (const FeaturePath& p : lines->creases_and_borders().creases) add(p, 0u);
+    for (const FeaturePath& p : lines->creases_and_borders().borders) add(p, 2u);
+  }
+  return defs;
+}
+
+}  // namespace
+
+CreaseRows::CreaseRows(const Scene& scene, const LineMeshes& meshes, const StrokeMeshes& shared)
+    : points_step_(step("STEP_POINTS")),
+      pieces_step_(step("STEP_PIECES")),
+      rows_step_(step("STEP_ROWS")),
+      totals_(step("STEP_TOTALS")),
+      meshes_(shared),
+      first_face_(first_faces(scene)) {
+  face_count_ = first_face_.back();
+  std::vector<glm::uvec4> packed, defs = path_defs(scene, meshes);
+  std::vector<uint32_t> around;
+  for (const CreaseRecord& r : crease_records(scene, meshes)) {
+    packed.emplace_back(r.vertex, uint32_t(around.size()), uint32_t(r.faces.size()), r.object);
+    around.insert(around.end(), r.faces.begin(), r.faces.end());
+  }
+  records_ = packed.size(), paths_ = defs.size();
+  check_memory_budget("the crease and border points of " + std::to_string(records_) + " on the GPU",
+                      double(records_) * double(sizeof(glm::uvec4) + sizeof(ScratchPoint)));
+  packed.emplace_back(0u), around.push_back(0), defs.emplace_back(0u);  // never an empty buffer
+  records_buffer_ = make_buffer(packed.data(), packed.size() * sizeof(glm::uvec4));
+  around_ = make_buffer(around.data(), around.size() * sizeof(uint32_t));
+  defs_ = make_buffer(defs.data(), defs.size() * sizeof(glm::uvec4));
+  scratch_ = make_buffer(nullptr, std::max<size_t>(records_, 1) * sizeof(ScratchPoint));
+  pieces_ = make_buffer(nullptr, (paths_ + 1) * sizeof(uint32_t));
+  entries_ = make_buffer(nullptr, (paths_ + 1) * sizeof(uint32_t));
+}
+
+void CreaseRows::place_points(const Scene& scene, const RowFrame& frame) {
+  std::vector<ObjectRow> objects(scene.objects.size());
+  for (uint32_t o = 0; o < scene.objects.size(); ++o)
+    objects[o] = {glm::dmat4(scene.objects[o].transform), first_face_[o], meshes_.first_vertex[o], {}};
+  Buffer object_rows = make_buffer(objects.data(), objects.size() * sizeof(ObjectRow));
+  const WindowProjection project(scene.camera, frame.width, frame.height);
+  const GLuint p = points_step_.id();
+  glProgramUniformMatrix4dv(p, points_step_.uniform("clip"), 1, GL_FALSE, glm::value_ptr(project.clip));
+  glProgramUniformMatrix4dv(p, points_step_.uniform("view"), 1, GL_FALSE, glm::value_ptr(project.view));
+  glProgramUniform3dv(p, points_step_.uniform("eye"), 1, glm::value_ptr(glm::dvec3(scene.camera.eye)));
+  glProgramUniform1f(p, points_step_.uniform("width"), float(frame.width));
+  glProgramUniform1f(p, points_step_.uniform("height"), float(frame.height));
+  glProgramUniform1ui(p, points_step_.uniform("record_count"), GLuint(records_));
+  const Buffer* bound[] = {&records_buffer_, &around_, &meshes_.positions, &meshes_.faces, &object_rows, &scratch_};
+  for (GLuint b = 0; b < 6; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
+  dispatch_in_chunks(points_step_, records_, "first");
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+// A step over the paths, one invocation each (path_rows.glsl path_index).
+void CreaseRows::over_paths(const Program& step) const {
+  const size_t groups = (paths_ + 63) / 64, rows = (groups + 65534) / 65535;
+  glUseProgram(step.id());
+  if (groups > 0) glDispatchCompute(GLuint((groups + rows - 1) / rows), GLuint(rows), 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void CreaseRows::operator()(const Scene& scene, const RowFrame& frame, uint32_t first_point, const Buffer& counts,
+                            const UploadedPaths& table) {
+  place_points(scene, frame);
+  for (const Program* p : {&pieces_step_, &rows_step_, &totals_}) {
+    glProgramUniform1f(p->id(), p->uniform("near"), frame.near);
+    glProgramUniform1f(p->id(), p->uniform("width"), float(frame.width));
+    glProgramUniform1f(p->id(), p->uniform("height"), float(frame.height));
+    glProgramUniform1f(p->id(), p->uniform("step_px"), frame.step_px);
+    glProgramUniform1ui(p->id(), p->uniform("path_count"), GLuint(paths_));
+    glProgramUniform1ui(p->id(), p->uniform("face_count"), face_count_);
+    glProgramUniform1ui(p->id(), p->uniform("first_point"), first_point);
+  }
+  auto bind = [&] {
+    const Buffer* bound[] = {&counts, &defs_, &scratch_, &pieces_, &entries_};
+    for (GLuint b = 0; b < 5; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, table.paths.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, table.points.id());
+  };
+  bind();
+  over_paths(pieces_step_);
+  scan_(pieces_, paths_ + 1);
+  scan_(entries_, paths_ + 1);
+  bind();
+  over_paths(rows_step_);
+  glUseProgram(totals_.id());
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+}  // namespace plumbago::gpu
