@@ -179,11 +179,23 @@ Buffer make_buffer(const void* data, size_t bytes) {
 
 Buffer make_zeroed_buffer(size_t count) {
   Buffer b = make_buffer(nullptr, count * sizeof(uint32_t));
+  clear_buffer(b);
+  return b;
+}
+
+void clear_buffer(const Buffer& buffer) {
   const uint32_t zero = 0;
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, b.id());  // not glClearNamedBufferData: OSMesa has no such entry
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer.id());  // not glClearNamedBufferData: OSMesa has no such entry
   glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-  return b;
+}
+
+void copy_buffer(const Buffer& from, const Buffer& to, size_t bytes, size_t offset) {
+  glBindBuffer(GL_COPY_READ_BUFFER, from.id());
+  glBindBuffer(GL_COPY_WRITE_BUFFER, to.id());  // not glCopyNamedBufferSubData: OSMesa has no such entry
+  glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, GLintptr(offset), GLsizeiptr(bytes));
+  glBindBuffer(GL_COPY_READ_BUFFER, 0);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
 }
 
 VertexArray make_vertex_array() {

@@ -99,6 +99,10 @@ struct ScratchBuffer {
 };
 // A buffer of `count` uint32 zeros, cleared on the GPU.
 Buffer make_zeroed_buffer(size_t count);
+// Sets every uint32 of `buffer` to 0, on the GPU.
+void clear_buffer(const Buffer& buffer);
+// Copies `bytes` from the start of `from` into `to` from byte `offset`, on the GPU.
+void copy_buffer(const Buffer& from, const Buffer& to, size_t bytes, size_t offset = 0);
 // Reads `bytes` of a buffer from `offset` back into `out`.
 void read_buffer(const Buffer& buffer, void* out, size_t bytes, size_t offset = 0);
 // Every byte read back from GPU memory so far (download_texture*, read_buffer): what a frame

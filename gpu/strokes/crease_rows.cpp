@@ -4,8 +4,6 @@
 #include <algorithm>
 #include <string>
 
-#include <glm/gtc/type_ptr.hpp>
-
 #include "common/strokes/crease_points.hpp"
 #include "common/util/memory_budget.hpp"
 #include "gpu/core/stage.hpp"
@@ -14,7 +12,7 @@ namespace plumbago::gpu {
 
 namespace {
 
-// shaders/strokes/crease_rows.comp's Object and CreasePoint (std430).
+// shaders/strokes/crease_rows.comp's Object, CreasePoint and Frame (std430).
 struct ObjectRow {
   glm::dmat4 model;
   uint32_t first_record, first_vertex, pad[6];
@@ -26,7 +24,11 @@ struct ScratchPoint {
   glm::uvec2 faces, pad2;
   double pad3[2];
 };
-static_assert(sizeof(ObjectRow) == 160 && sizeof(ScratchPoint) == 96);
+struct FrameRow {
+  glm::dmat4 clip, view;  // world to clip, to view
+  glm::dvec4 eye;         // world space
+};
+static_assert(sizeof(ObjectRow) == 160 && sizeof(ScratchPoint) == 96 && sizeof(FrameRow) == 288);
 
 Program step(const char* name) {
   return Program::compute("strokes/crease_rows.comp", std::string("#define ") + name + "\n");
@@ -84,15 +86,15 @@ void CreaseRows::place_points(const Scene& scene, const RowFrame& frame) {
     objects[o] = {glm::dmat4(scene.objects[o].transform), first_face_[o], meshes_.first_vertex[o], {}};
   Buffer object_rows = make_buffer(objects.data(), objects.size() * sizeof(ObjectRow));
   const WindowProjection project(scene.camera, frame.width, frame.height);
+  const FrameRow view_row{project.clip, project.view, glm::dvec4(glm::dvec3(scene.camera.eye), 1.0)};
+  Buffer frame_row = make_buffer(&view_row, sizeof view_row);  // not double uniforms: OSMesa has no such entries
   const GLuint p = points_step_.id();
-  glProgramUniformMatrix4dv(p, points_step_.uniform("clip"), 1, GL_FALSE, glm::value_ptr(project.clip));
-  glProgramUniformMatrix4dv(p, points_step_.uniform("view"), 1, GL_FALSE, glm::value_ptr(project.view));
-  glProgramUniform3dv(p, points_step_.uniform("eye"), 1, glm::value_ptr(glm::dvec3(scene.camera.eye)));
   glProgramUniform1f(p, points_step_.uniform("width"), float(frame.width));
   glProgramUniform1f(p, points_step_.uniform("height"), float(frame.height));
   glProgramUniform1ui(p, points_step_.uniform("record_count"), GLuint(records_));
-  const Buffer* bound[] = {&records_buffer_, &around_, &meshes_.positions, &meshes_.faces, &object_rows, &scratch_};
-  for (GLuint b = 0; b < 6; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
+  const Buffer* bound[] = {&records_buffer_, &around_,  &meshes_.positions, &meshes_.faces,
+                           &object_rows,     &scratch_, &frame_row};
+  for (GLuint b = 0; b < 7; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
   dispatch_in_chunks(points_step_, records_, "first");
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }

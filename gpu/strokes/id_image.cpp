@@ -76,8 +76,7 @@ class IdImagePass : public GpuPass {
                  gpu_points = creases_.points() + silhouette_point_rows(records_);
     table_.put(lines, whole ? made_on_gpu(lines) : 0, gpu_paths, gpu_points);
     const RowFrame frame{f.scene.width, f.scene.height, f.scene.camera.near, p.vis_step_px};
-    const GLuint zero = 0;
-    glClearNamedBufferData(counts_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    clear_buffer(counts_);
     creases_(f.scene, frame, table_.cpu_points, counts_, table_);
     rows_(paths, silhouettes_, frame, table_.cpu_points + uint32_t(creases_.points()), counts_, table_);
     const RowCounts counts = RowCounts::read(counts_);

@@ -34,13 +34,7 @@ RunStyleTables::RunStyleTables(const StrokeStyles& styles, const std::vector<Str
 }
 
 void RunStyleTables::copy_offsets(const Buffer& to) const {
-  if (offsets_.empty()) return;
-  glBindBuffer(GL_COPY_READ_BUFFER, offsets_buffer_.id());
-  glBindBuffer(GL_COPY_WRITE_BUFFER, to.id());  // not glCopyNamedBufferSubData: OSMesa has no such entry
-  glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0,
-                      GLsizeiptr(offsets_.size() * sizeof(OffsetInput)));
-  glBindBuffer(GL_COPY_READ_BUFFER, 0);
-  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+  if (!offsets_.empty()) copy_buffer(offsets_buffer_, to, offsets_.size() * sizeof(OffsetInput));
 }
 
 void RunStyleTables::add_example(const OffsetExample& e) {

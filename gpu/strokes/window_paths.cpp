@@ -12,8 +12,7 @@ namespace {
 
 // Copies `bytes` of `rows` into `to` from byte `offset` (the buffers are immutable).
 void upload(const void* rows, size_t bytes, const ScratchBuffer& to, size_t offset = 0) {
-  if (bytes > 0)
-    glCopyNamedBufferSubData(make_buffer(rows, bytes).id(), to.id(), 0, GLintptr(offset), GLsizeiptr(bytes));
+  if (bytes > 0) copy_buffer(make_buffer(rows, bytes), to, bytes, offset);
 }
 
 }  // namespace

@@ -41,9 +41,10 @@ struct Object {  // gpu/strokes/crease_rows.cpp ObjectRow
 };
 layout(std430, binding = 4) readonly buffer Objects { Object objects[]; };
 layout(std430, binding = 5) writeonly buffer Scratch { CreasePoint scratch[]; };
-
-uniform dmat4 clip, view;  // world to clip, to view
-uniform dvec3 eye;         // world space
+layout(std430, binding = 6) readonly buffer Frame {
+  dmat4 clip, view;  // world to clip, to view
+  dvec4 eye;         // world space
+};
 uniform float width, height;
 uniform uint record_count, first;  // first: of this dispatch (dispatch_in_chunks)
 
@@ -55,7 +56,7 @@ dvec3 world_corner(Object o, uint record, int k) {
 bool faces_eye(Object o, uint face) {
   uint record = o.first_record + face;
   dvec3 p0 = world_corner(o, record, 0), p1 = world_corner(o, record, 1), p2 = world_corner(o, record, 2);
-  return dot(cross(p1 - p0, p2 - p0), eye - p0) > 0.0lf;
+  return dot(cross(p1 - p0, p2 - p0), eye.xyz - p0) > 0.0lf;
 }
 
 void main() {
