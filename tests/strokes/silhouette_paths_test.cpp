@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -12,6 +13,7 @@
 #include "common/scene/scene.hpp"
 #include "common/strokes/silhouette_paths.hpp"
 #include "common/strokes/strokes.hpp"
+#include "common/strokes/visibility.hpp"
 #include "gpu/core/pipeline.hpp"
 #include "gpu/core/stage.hpp"
 #include "gpu/strokes/window_paths.hpp"
@@ -186,6 +188,37 @@ gpu::PathTable read_rows(const gpu::UploadedPaths& table) {
   return rows;
 }
 
+// The bounds the GPU summed for its paths (gpu/strokes/row_counts.hpp), by which the CPU sizes
+// the visibility and stroke buffers, against the same bounds of the CPU's paths
+// (first_round_bound, gpu::run_bound): at least those, and more by less than 1 a path (the
+// GPU rounds each path's up to an integer).
+void expect_gpu_bounds(const WindowLines& lines, const gpu::UploadedPaths& table, double step,
+                       const std::string& name) {
+  double first_round = 0;
+  std::array<gpu::RunBound, 3> cpu{};  // per line style: crease, border, silhouette
+  std::array<double, 3> paths{};
+  for (const WindowPath& p : lines.paths) {
+    const uint32_t style = gpu::PathTable::style_of(p);
+    if (style > 2) continue;  // a decal's or hatch's: the CPU's own
+    const double s = first_round_bound(p, step, lines.width, lines.height);
+    const gpu::RunBound b = gpu::run_bound(p, s, lines.width, lines.height);
+    first_round += s, cpu[style].runs += b.runs, cpu[style].length += b.length, cpu[style].points += b.points;
+    paths[style] += 1;
+  }
+  const double all = paths[0] + paths[1] + paths[2];
+  EXPECT_GE(table.gpu_first_round, first_round - 1e-6) << name;
+  EXPECT_LT(table.gpu_first_round, first_round + all) << name;
+  std::array<gpu::RunBound, 3> gpu{};
+  for (const gpu::RunBound& b : table.gpu) gpu.at(b.style) = b;
+  for (size_t style = 0; style < 3; ++style) {
+    const std::string at = name + " style " + std::to_string(style);
+    EXPECT_EQ(gpu[style].runs, cpu[style].runs) << at;
+    EXPECT_EQ(gpu[style].points, cpu[style].points) << at;
+    EXPECT_GE(gpu[style].length, cpu[style].length - 1e-6) << at;
+    EXPECT_LT(gpu[style].length, cpu[style].length + paths[style] + 1e-6) << at;
+  }
+}
+
 // The GPU frame writes the window paths of its creases, borders and silhouettes itself
 // (gpu/strokes/crease_rows.hpp, silhouette_rows.hpp; the CPU reads back only their counts and
 // bounds): its path table's rows against those the CPU makes of the same points
@@ -254,6 +287,7 @@ TEST_F(SilhouettePaths, GpuWritesTheWindowPathsTheCpuMakesOfItsPoints) {
     EXPECT_LT(depth, kDoubleRelative) << name;
     EXPECT_LT(arc, kDoubleRelative) << name;
     EXPECT_LT(step, kDoubleRelative) << name;
+    expect_gpu_bounds(*frame.lines, *table, s.params.get<StrokesParams>().vis_step_px, name);
   }
 }
 
