@@ -99,6 +99,13 @@ std::shared_ptr<const Preprocessed> Renderer::preprocessed() const { return stat
 
 const GpuFrame& Renderer::frame() const { return state_->frame; }
 
+Image Renderer::color() const {
+  std::string color = frame_color_buffer(state_->frame.stages);  // none without effects: the blank page
+  const Scene& scene = state_->frame.scene;
+  return color.empty() ? Image(scene.width, scene.height, 3, 1.0f)
+                       : download_texture(state_->frame.texture_named(color), 3);
+}
+
 Frame Renderer::render(const FrameOptions& options) {
   Frame frame;
   state_->frame.dump = options.keep_buffers;
@@ -107,10 +114,7 @@ Frame Renderer::render(const FrameOptions& options) {
   frame.ran = state_->pre->ran;  // made once, listed with every frame that uses it
   for (const PassTime& t : state_->timer.results()) frame.ran.push_back(t);
   Stopwatch readback;
-  std::string color = frame_color_buffer(state_->frame.stages);  // none without effects: the blank page
-  const Scene& scene = state_->frame.scene;
-  frame.color = color.empty() ? Image(scene.width, scene.height, 3, 1.0f)
-                              : download_texture(state_->frame.texture_named(color), 3);
+  frame.color = color();
   frame.ran.push_back({"readback", readback.ms()});
   if (options.keep_buffers) {
     frame.buffers = state_->dump();

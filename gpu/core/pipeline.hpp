@@ -32,8 +32,14 @@ class Renderer {
   Frame render(const FrameOptions& options = {});
   // Renders one frame without reading the image back; returns wall-clock ms to glFinish
   // and fills `timing.ran` with the GPU time of each pass, `host_ms` and `readback_bytes`
-  // (what its passes read back).
+  // (what its passes read back). Its strokes' lines are not kept whole on the CPU, and once
+  // a frame has sized the buffers the stroke steps size theirs by (the renderer's first
+  // frame, and every render()), it reads nothing back: its buffers are as those frames sized
+  // them, which hold the same frame's; where a frame needs more (a per-frame parameter
+  // changed since), the strokes past them are left out until render() sizes them again.
   double render_frame(Frame& timing);
+  // The last frame's image (RGB, row 0 = bottom), read back.
+  Image color() const;
   // What a frame writes of the G-buffer `stage` ("gbuffer", "sketchy_gbuffer"): what its
   // passes sample.
   GBufferChannels frame_channels(const std::string& stage) const;

@@ -115,7 +115,7 @@ void CreaseRows::operator()(const Scene& scene, const RowFrame& frame, uint32_t 
     glProgramUniform1f(p->id(), p->uniform("width"), float(frame.width));
     glProgramUniform1f(p->id(), p->uniform("height"), float(frame.height));
     glProgramUniform1f(p->id(), p->uniform("step_px"), frame.step_px);
-    glProgramUniform1ui(p->id(), p->uniform("path_count"), GLuint(paths_));
+    glProgramUniform1ui(p->id(), p->uniform("crease_paths"), GLuint(paths_));
     glProgramUniform1ui(p->id(), p->uniform("face_count"), face_count_);
     glProgramUniform1ui(p->id(), p->uniform("first_point"), first_point);
   }

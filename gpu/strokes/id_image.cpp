@@ -6,14 +6,15 @@
 // creases and borders (gpu/strokes/crease_rows.hpp) and the silhouettes are made window paths
 // on the GPU, in double: the silhouettes are the GPU's own (silhouette_paths), their points
 // placed and projected on the GPU (gpu/strokes/silhouette_points.hpp), then cut and measured
-// there (gpu/strokes/silhouette_rows.hpp). Both are written first in the frame's path table,
-// before the decals and hatches the CPU puts up (gpu/strokes/window_paths.hpp); the CPU reads
-// back their counts and bounds alone (gpu/strokes/row_counts.hpp). A frame that keeps its
-// lines whole (GpuFrame::whole_lines) also reads the silhouettes back and makes the same
-// window paths on the CPU. From the table the GPU expands the lines' quads
-// (gpu/strokes/id_lines.hpp) and the visibility steps sample. Every draw writes both key
-// images (under strokes.crease_under_silhouettes) but the silhouettes', which leave
-// crease_ids as it stood.
+// there (gpu/strokes/silhouette_rows.hpp). Both are written first in the frame's path table;
+// the GPU places the decals and hatches the CPU puts up after them and writes the table's
+// header (gpu/strokes/row_counts.hpp TableRows). A frame that sizes the buffers (the first,
+// and any that keeps its lines whole: GpuFrame::whole_lines) reads back the GPU's counts and
+// bounds (RowCounts); the others read nothing back. A frame that keeps its lines whole also
+// reads the silhouettes back and makes the same window paths on the CPU. From the table the
+// GPU expands the lines' quads (gpu/strokes/id_lines.hpp) and the visibility steps sample.
+// Every draw writes both key images (under strokes.crease_under_silhouettes) but the
+// silhouettes', which leave crease_ids as it stood.
 #include "common/strokes/id_image.hpp"
 
 #include <algorithm>
@@ -79,13 +80,9 @@ class IdImagePass : public GpuPass {
     clear_buffer(counts_);
     creases_(f.scene, frame, table_.cpu_points, counts_, table_);
     rows_(paths, silhouettes_, frame, table_.cpu_points + uint32_t(creases_.points()), counts_, table_);
-    const RowCounts counts = RowCounts::read(counts_);
-    if (silhouette_base(records_, counts.crease_rows) != counts.silhouette_base)  // refuses keys past 32 bits
-      throw std::logic_error("id_image: the GPU's first silhouette key is not the CPU's");
-    counts.add_to(table_);
-    if (whole && table_.count != lines.paths.size())
-      throw std::logic_error("id_image: the GPU made " + std::to_string(table_.count) + " window paths, the CPU " +
-                             std::to_string(lines.paths.size()));
+    place_(counts_, table_);
+    table_.sized = whole || !sized_;
+    if (table_.sized) size_by_counts(whole ? &lines : nullptr);
     f.put(kWindowLines, std::move(lines));
     f.put(kPathTable, table_);
     Texture& target = f.put(kIds);
@@ -123,6 +120,21 @@ class IdImagePass : public GpuPass {
   const StrokeMeshes& stroke_meshes(GpuFrame& f) {
     if (const StrokeMeshes* shared = f.get(maybe(kStrokeMeshes))) return *shared;
     return own_meshes_ ? *own_meshes_ : own_meshes_.emplace(f.scene, f.get(kLineMeshes));
+  }
+
+  // Reads back what the GPU counted: its paths' bounds, by which the steps after size their
+  // buffers (a frame that keeps its lines whole, or the first), checked against `lines` where
+  // they stay whole. The frames after go by those buffers and read nothing back.
+  void size_by_counts(const WindowLines* lines) {
+    const RowCounts counts = RowCounts::read(counts_);
+    if (silhouette_base(records_, counts.crease_rows) != counts.silhouette_base)  // refuses keys past 32 bits
+      throw std::logic_error("id_image: the GPU's first silhouette key is not the CPU's");
+    counts.add_bounds_to(table_);
+    sized_ = true;
+    const size_t made = size_t(counts.crease_rows) + counts.silhouette_rows + table_.cpu_paths;
+    if (lines && made != lines->paths.size())
+      throw std::logic_error("id_image: the GPU made " + std::to_string(made) + " window paths, the CPU " +
+                             std::to_string(lines->paths.size()));
   }
 
   // The paths of `lines` the GPU also makes: the creases, borders and silhouettes, which come
@@ -186,6 +198,8 @@ class IdImagePass : public GpuPass {
   size_t records_;  // face records: the most silhouette paths
   SilhouetteRows rows_;
   Buffer counts_;        // RowCounts
+  TableRows place_;      // the CPU's rows after the GPU's, and the header
+  bool sized_ = false;   // whether a frame has sized the buffers (size_by_counts)
   IdLines lines_;        // rules 2 and 3
   UploadedPaths table_;  // this frame's, kept until the next (its buffers across frames)
   DecalSurface decals_;

@@ -25,17 +25,14 @@ IdLines::IdLines()
 
 void IdLines::prepare(const UploadedPaths& table, const StrokesParams& p, int width, int height, float near) {
   commands_ = 0;
-  if (table.count == 0) return;
-  const size_t slots = size_t(table.entries) + 1 + 8;  // the counts, their total, the draws' commands
+  if (table.path_bound == 0) return;
+  commands_ = size_t(table.entry_bound) + 1;  // after the counts and their total
+  const size_t slots = commands_ + 8;         // two draws' commands
   if (slots > capacity_) pieces_ = make_buffer(nullptr, slots * sizeof(uint32_t)), capacity_ = slots;
-  const GLuint zero = 0;
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, pieces_.id());
-  glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  clear_buffer(pieces_);
   for (const Program* program : {&count_, &args_, &draw_}) {
     GLuint id = program->id();
-    glProgramUniform1ui(id, program->uniform("path_count"), table.count);
-    glProgramUniform1ui(id, program->uniform("entry_count"), table.entries);
-    glProgramUniform1ui(id, program->uniform("silhouette_entry"), table.silhouette_entry);
+    glProgramUniform1ui(id, program->uniform("commands_at"), GLuint(commands_));
     glProgramUniform1f(id, program->uniform("width"), float(width));
     glProgramUniform1f(id, program->uniform("height"), float(height));
     glProgramUniform1f(id, program->uniform("near"), near);
@@ -46,15 +43,15 @@ void IdLines::prepare(const UploadedPaths& table, const StrokesParams& p, int wi
     glProgramUniform1f(id, program->uniform("silhouette_lift"), p.id_silhouette_lift);
   }
   bind(table);
-  dispatch_in_chunks(count_, table.entries, "first");
+  glUseProgram(count_.id());
+  table.dispatch_over_entries();
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  scan_(pieces_, size_t(table.entries) + 1);
+  scan_(pieces_, commands_, table.paths, offsetof(TableHeader, entries) / sizeof(uint32_t), 1);
   bind(table);
   glUseProgram(args_.id());
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   glProgramUniform2f(draw_.id(), draw_.uniform("window_size"), float(width), float(height));
-  commands_ = size_t(table.entries) + 1;
 }
 
 void IdLines::draw(const UploadedPaths& table, IdLineRule rule) {

@@ -1,7 +1,8 @@
-// What the GPU's window-path steps count for the CPU (shaders/strokes/path_rows.glsl Counts,
-// std430): the creases' and borders' rows and entries (gpu/strokes/crease_rows.hpp), the
-// silhouettes' (gpu/strokes/silhouette_rows.hpp), and per line style the bounds the CPU sizes
-// the visibility and stroke buffers by, summed. A frame reads back this alone, 144 bytes.
+// What the GPU's window-path steps count (shaders/strokes/row_counts.glsl Counts, std430): the
+// creases' and borders' rows and entries (gpu/strokes/crease_rows.hpp), the silhouettes'
+// (gpu/strokes/silhouette_rows.hpp), and per line style the bounds the CPU sizes the
+// visibility and stroke buffers by, summed. The GPU completes the path table from them
+// (TableRows); a frame that sizes its buffers reads them back, 144 bytes.
 #pragma once
 
 #include <cstdint>
@@ -9,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "gpu/gl/gl_objects.hpp"
+#include "gpu/gl/program.hpp"
 #include "gpu/strokes/window_paths.hpp"
 
 namespace plumbago::gpu {
@@ -26,9 +28,20 @@ struct RowCounts {
   }
   // Reads them from `buffer`, once the steps have run.
   static RowCounts read(const Buffer& buffer);
-  // Adds the GPU's rows, their entries and their bounds to `table`.
-  void add_to(UploadedPaths& table) const;
+  // Adds the GPU's paths' bounds to `table`.
+  void add_bounds_to(UploadedPaths& table) const;
 };
-static_assert(sizeof(RowCounts) == 144, "std430 layout of path_rows.glsl Counts");
+static_assert(sizeof(RowCounts) == 144, "std430 layout of row_counts.glsl Counts");
+
+// Completes a path table whose first rows the GPU wrote, as `counts` (RowCounts) counts them:
+// the CPU's rows after them, and the header (shaders/strokes/table_rows.comp).
+class TableRows {
+ public:
+  TableRows();
+  void operator()(const Buffer& counts, const UploadedPaths& table) const;
+
+ private:
+  Program place_, header_;
+};
 
 }  // namespace plumbago::gpu

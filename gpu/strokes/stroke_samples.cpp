@@ -45,7 +45,8 @@ uint32_t flags(const StrokeRun& r, const std::optional<OffsetExample>& example) 
 // The tables stroke_samples.comp reads, given (per run its style and points, the styles'
 // offsets), or made on the GPU from the run tables (run_inputs.comp: there), and the bounds
 // the buffers are sized by.
-struct StrokeSamples::Inputs {
+struct StrokeSamples::Inputs : Sizes {
+  explicit Inputs(const Sizes& sizes) : Sizes(sizes) {}
   explicit Inputs(const std::vector<StyledRun>& runs) {
     for (const StyledRun& r : runs) {
       add(r.run, r.style, polyline_length(r.run));
@@ -55,8 +56,9 @@ struct StrokeSamples::Inputs {
     point_bound = double(points.size()), this->runs = runs.size(), offset_rows = offsets.size();
   }
   // From the paths' run bounds alone (window_paths.hpp RunBound): a path's runs do not overlap.
-  Inputs(const RunTables& tables, const RunStyleTables& styles) : offset_rows(styles.own_offsets()) {
+  Inputs(const RunTables& tables, const RunStyleTables& styles) {
     double made = 0, rows = 0;  // offsets the runs make; most runs
+    offset_rows = styles.own_offsets();
     for (const RunBound& b : tables.bounds) {
       if (b.runs == 0) continue;
       rows += b.runs;
@@ -70,8 +72,6 @@ struct StrokeSamples::Inputs {
   std::vector<RunInput> runs_in;     // given
   std::vector<glm::dvec2> points;    // given
   std::vector<OffsetInput> offsets;  // given
-  size_t runs = 0, offset_rows = 0;
-  double bound = 0, point_bound = 0;
 
  private:
   void add(const StrokeRun& run, const StrokeStyle& s, double length) {
@@ -147,7 +147,8 @@ void StrokeSamples::operator()(const RunTables& tables, const RunStyleTables& st
     glProgramUniform1ui(p->id(), p->uniform("own_offsets"), styles.own_offsets());
     glProgramUniform1ui(p->id(), p->uniform("listed_at"), tables.listed.at);
   }
-  run(Inputs(tables, styles), &tables, &styles);
+  if (tables.sized) sized_ = Inputs(tables, styles);
+  run(Inputs(sized_), &tables, &styles);
 }
 
 void StrokeSamples::run(const Inputs& in, const RunTables* tables, const RunStyleTables* styles) {
@@ -160,9 +161,10 @@ void StrokeSamples::run(const Inputs& in, const RunTables* tables, const RunStyl
     runs_in_.reserve(runs_ * sizeof(RunInput)), points_.reserve(points * sizeof(glm::dvec2));
     offsets_.reserve(in.offset_rows * sizeof(OffsetInput));
   } else {
-    runs_in_ = {make_buffer(in.runs_in.data(), runs_ * sizeof(RunInput)), 0};
-    points_ = {make_buffer(in.points.data(), points * sizeof(glm::dvec2)), 0};
-    offsets_ = {make_buffer(in.offsets.data(), in.offset_rows * sizeof(OffsetInput)), 0};
+    runs_in_ = {make_buffer(in.runs_in.data(), runs_ * sizeof(RunInput)), runs_ * sizeof(RunInput)};
+    points_ = {make_buffer(in.points.data(), points * sizeof(glm::dvec2)), points * sizeof(glm::dvec2)};
+    offsets_ = {make_buffer(in.offsets.data(), in.offset_rows * sizeof(OffsetInput)),
+                in.offset_rows * sizeof(OffsetInput)};
   }
   counts_.reserve((size_t(runs_) + 1) * sizeof(uint32_t));
   distinct_.reserve(points * sizeof(glm::dvec2)), states_.reserve(runs_ * sizeof(RunState));
@@ -173,6 +175,8 @@ void StrokeSamples::run(const Inputs& in, const RunTables* tables, const RunStyl
   for (const Program* p : {&inputs_args_, &inputs_count_, &inputs_write_, &count_, &write_, &args_}) {
     glProgramUniform1ui(p->id(), p->uniform("run_count"), runs_);
     glProgramUniform1ui(p->id(), p->uniform("capacity"), capacity_);
+    glProgramUniform1ui(p->id(), p->uniform("point_capacity"), GLuint(points_.bytes / sizeof(glm::dvec2)));
+    glProgramUniform1ui(p->id(), p->uniform("offset_capacity"), GLuint(offsets_.bytes / sizeof(OffsetInput)));
   }
   auto bind_all = [&] {
     const Buffer* at[] = {&samples_.buffer, &runs_out_.buffer, &runs_in_.buffer,  &points_.buffer,

@@ -8,7 +8,9 @@
 // sum and writes them, with each run's record, where shaders/strokes/common_ribbon.glsl reads
 // them, and the indirect draw of their ribbons. Every step goes over the runs the GPU
 // listed, by indirect dispatches and prefix sums over their count: nothing is read back, and
-// the CPU sizes the buffers from the paths' run bounds alone (gpu/strokes/window_paths.hpp RunBound).
+// the CPU sizes the buffers from the paths' run bounds alone (gpu/strokes/window_paths.hpp
+// RunBound), in a frame that sizes them; the frames after keep them, and a run whose points,
+// offsets or samples would pass them is left out (run_inputs.comp, stroke_samples.comp).
 #pragma once
 
 #include <cstdint>
@@ -39,7 +41,8 @@ class StrokeSamples {
   void operator()(const std::vector<StyledRun>& runs);
   // The same of the runs that `tables` holds on the GPU, however many it lists: their
   // polylines and styles made on the GPU (`styles`; `seed`, the scene's), the buffers sized
-  // from the paths' run bounds.
+  // from the paths' run bounds, or (tables not sized: RunTables::sized) as the last sized call
+  // sized them.
   void operator()(const RunTables& tables, const RunStyleTables& styles, uint32_t seed);
   // The samples and runs to SSBO bindings 0 and 1, as common_ribbon.glsl reads them.
   void bind() const;
@@ -51,6 +54,12 @@ class StrokeSamples {
   std::vector<RunRecord> runs() const;
 
  private:
+  // What the buffers are sized by: the runs' rows, the offsets' rows, and bounds on the
+  // samples and on the points.
+  struct Sizes {
+    size_t runs = 0, offset_rows = 0;
+    double bound = 0, point_bound = 0;
+  };
   struct Inputs;
   void run(const Inputs& in, const RunTables* tables, const RunStyleTables* styles);
   void make_inputs(const RunTables& tables, const RunStyleTables& styles);
@@ -64,6 +73,7 @@ class StrokeSamples {
   ScratchBuffer counts_, point_counts_, offset_counts_;
   Buffer run_args_;
   uint32_t runs_ = 0, capacity_ = 0;
+  Sizes sized_;  // the last call's from run bounds
 };
 
 }  // namespace plumbago::gpu

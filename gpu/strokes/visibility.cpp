@@ -3,12 +3,13 @@
 // (gpu/strokes/window_paths.hpp; parity feeds make their own), compute shaders
 // (shaders/strokes/visibility.comp) take the first round of samples segment by segment,
 // test them against the ID image, bisect each change to 1 px in one invocation and list the
-// runs, placing everything by prefix sums. The buffers hold a bound on the samples the CPU
-// takes from the paths, kept across frames; the steps over samples, and the prefix sums
-// over their marks, go over the samples the GPU took, so the count stays on the GPU, and so
-// do the runs, for the stroke pass (gpu/strokes/window_paths.hpp): a frame reads nothing
-// back (Kalnins et al. read the whole ID image back every frame); a dump reads the runs and
-// flags.
+// runs, placing everything by prefix sums. The steps over entries and paths go by the
+// table's header; the buffers hold a bound on the samples the CPU takes from the paths (in a
+// frame that sizes them, UploadedPaths::sized; the frames after keep them), kept across
+// frames; the steps over samples, and the prefix sums over their marks, go over the samples
+// the GPU took (those past the buffers left out), so the count stays on the GPU, and so do
+// the runs, for the stroke pass (gpu/strokes/window_paths.hpp): a frame reads nothing back
+// (Kalnins et al. read the whole ID image back every frame); a dump reads the runs and flags.
 #include "gpu/strokes/visibility.hpp"
 
 #include <cmath>
@@ -86,7 +87,7 @@ class VisibilityPass : public GpuPass {
     tables_ = {};
     const UploadedPaths* table = f.get(maybe(kPathTable));  // the ID image's, or (parity) one of its own
     if (!table) table = &own_.emplace(lines);
-    if (table->count > 0) list_runs(f, lines, *table);
+    if (table->path_bound > 0) list_runs(f, lines, *table);
     f.put(kRunTables, tables_);
     if (!f.dump) return;
     Visibility v = read_runs(tables_, lines);
@@ -107,44 +108,51 @@ class VisibilityPass : public GpuPass {
   // where they stay whole: GpuFrame::whole_lines).
   void list_runs(GpuFrame& f, const WindowLines& lines, const UploadedPaths& table) {
     const auto p = f.params<StrokesParams>();
-    std::vector<double> path_samples = first_round_samples(lines, table, p.vis_step_px);
-    const double bound = std::accumulate(path_samples.begin(), path_samples.end(), table.gpu_first_round);
-    check_memory(table.count, p.vis_step_px, bound);
-    const auto capacity = uint32_t(bound);
-    const size_t n = std::max<size_t>(capacity, 1), args = size_t(table.entries) + 1;
-    // The counts, their total, two dispatches' groups, then the runs listed.
-    entries_ = make_zeroed_buffer(args + 7);
+    std::vector<double> path_samples;
+    if (table.sized) {  // else the buffers an earlier frame sized, kept
+      path_samples = first_round_samples(lines, table, p.vis_step_px);
+      const double bound = std::accumulate(path_samples.begin(), path_samples.end(), table.gpu_first_round);
+      check_memory(table.path_bound, p.vis_step_px, bound);
+      capacity_ = uint32_t(bound);
+    }
+    const uint32_t capacity = capacity_;
+    const size_t n = std::max<size_t>(capacity, 1), slots = size_t(table.entry_bound) + 1;
+    // The counts and their total, then two dispatches' groups, the runs listed, the samples.
+    entries_ = make_zeroed_buffer(slots + 8);
     reserve(n);
-    set_uniforms(f, lines, table, capacity);
+    set_uniforms(f, lines, capacity, slots);
     const std::initializer_list<const Buffer*> all = {&table.paths.buffer, &table.points.buffer,  &entries_,
                                                       &tested_.buffer,     &change_marks_.buffer, &run_marks_.buffer,
                                                       &changes_.buffer,    &run_rows_.buffer};
     bind(all);
     for (const Program* p : {&samples_, &changes_step_})
       bind_textures(*p, {{"ids", &f.get(kIds)}, {"crease_ids", &f.get(kCreaseIds)}});
-    dispatch_in_chunks(count_, table.entries, "first");
+    glUseProgram(count_.id());
+    table.dispatch_over_entries();
     barrier();
-    dispatch_in_chunks(ends_, table.count, "first");
+    glUseProgram(ends_.id());
+    table.dispatch_over_paths();
     barrier();
-    scan_(entries_, args);
+    scan_(entries_, slots, table.paths, offsetof(TableHeader, entries) / sizeof(uint32_t), 1);
     bind(all);
-    dispatch_in_chunks(samples_, table.entries, "first");
+    glUseProgram(samples_.id());
+    table.dispatch_over_entries();
     glUseProgram(args_.id());
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries_.id());
-    over_samples(changes_step_, args);
-    scan_(change_marks_, n + 1, entries_, args - 1, 1);  // over the samples the GPU took
+    over_samples(changes_step_, slots);
+    scan_(change_marks_, n + 1, entries_, slots + 7, 1);  // over the samples the GPU took
     bind(all);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries_.id());
-    over_samples(marks_, args);
-    scan_(run_marks_, 2 * n + 1, entries_, args - 1, 2);
+    over_samples(marks_, slots);
+    scan_(run_marks_, 2 * n + 1, entries_, slots + 7, 2);
     bind(all);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries_.id());
-    over_samples(list_runs_, args + 3);
+    over_samples(list_runs_, slots + 3);
     tables_.paths = &table.paths.buffer, tables_.points = &table.points.buffer, tables_.runs = &run_rows_.buffer;
-    tables_.listed = {&entries_, uint32_t(args + 6)}, tables_.samples = {&entries_, uint32_t(args - 1)};
-    tables_.bound = uint32_t(2 * n);
+    tables_.listed = {&entries_, uint32_t(slots + 6)}, tables_.samples = {&entries_, uint32_t(slots + 7)};
+    tables_.bound = uint32_t(2 * n), tables_.sized = table.sized;
     for (size_t i = 0; i < path_samples.size(); ++i)
       if (table.from_cpu(i))
         tables_.bounds.push_back(run_bound(lines.paths[i], path_samples[i], lines.width, lines.height));
@@ -158,11 +166,10 @@ class VisibilityPass : public GpuPass {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
 
-  void set_uniforms(GpuFrame& f, const WindowLines& lines, const UploadedPaths& table, uint32_t capacity) {
+  void set_uniforms(GpuFrame& f, const WindowLines& lines, uint32_t capacity, size_t slots) {
     for (const Program* p : {&count_, &ends_, &samples_, &args_, &changes_step_, &marks_, &list_runs_}) {
       glProgramUniform1ui(p->id(), p->uniform("capacity"), capacity);
-      glProgramUniform1ui(p->id(), p->uniform("path_count"), table.count);
-      glProgramUniform1ui(p->id(), p->uniform("entry_count"), table.entries);
+      glProgramUniform1ui(p->id(), p->uniform("slots_at"), GLuint(slots));
       glProgramUniform1f(p->id(), p->uniform("step_px"), f.params<StrokesParams>().vis_step_px);
       glProgramUniform1i(p->id(), p->uniform("crease_under_silhouettes"),
                          f.params<StrokesParams>().crease_under_silhouettes);
@@ -206,6 +213,7 @@ class VisibilityPass : public GpuPass {
   // What the stroke pass reads (kRunTables) and a dump reads back, kept until the next frame.
   ScratchBuffer run_rows_;
   Buffer entries_;
+  uint32_t capacity_ = 0;  // the samples the buffers hold: the bound of the last frame that sized them
   RunTables tables_;
   ExclusiveScan scan_;
   std::map<std::string, Image> dumped_;

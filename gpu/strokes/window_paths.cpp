@@ -78,23 +78,41 @@ Visibility read_runs(const RunTables& tables, const WindowLines& lines) {
   return v;
 }
 
+glm::uvec3 row_groups(uint32_t count) {
+  constexpr uint32_t kGroup = 64, kMaxGroups = 65535;  // window_paths.glsl kRowsGroup, kMaxGroups
+  const uint32_t groups = (count + kGroup - 1) / kGroup, rows = (groups + kMaxGroups - 1) / kMaxGroups;
+  return {rows == 0 ? 0 : (groups + rows - 1) / rows, rows, 1};
+}
+
+UploadedPaths::UploadedPaths(const WindowLines& lines) {
+  put(lines, 0, 0, 0);
+  TableHeader h{cpu_paths, cpu_entries, cpu_silhouette_entry};
+  const glm::uvec3 e = row_groups(h.entries), p = row_groups(h.paths);
+  std::copy(&e.x, &e.x + 3, h.over_entries), std::copy(&p.x, &p.x + 3, h.over_paths);
+  upload(&h, sizeof h, paths);
+  copy_buffer(cpu_rows, paths, size_t(cpu_paths) * sizeof(PathRow), sizeof h);
+}
+
 void UploadedPaths::put(const WindowLines& lines, size_t in_lines, size_t more_paths, size_t more_points) {
   PathTable table(lines, in_lines);
-  const size_t point_bytes = table.points.size() * sizeof(PointRow);
-  paths.reserve((more_paths + table.paths.size()) * sizeof(PathRow));
+  const size_t point_bytes = table.points.size() * sizeof(PointRow), row_bytes = table.paths.size() * sizeof(PathRow);
+  paths.reserve(sizeof(TableHeader) + (more_paths + table.paths.size()) * sizeof(PathRow));
   points.reserve(point_bytes + more_points * sizeof(PointRow));
+  cpu_rows.reserve(std::max<size_t>(row_bytes, 1));
   upload(table.points.data(), point_bytes, points);
-  cpu_rows_ = std::move(table.paths);
+  upload(table.paths.data(), row_bytes, cpu_rows);
   gpu_in_lines = uint32_t(in_lines), cpu_points = uint32_t(table.points.size());
-  cpu_entries_ = table.entries, silhouette_entry = table.silhouette_entry;
+  cpu_paths = uint32_t(table.paths.size()), cpu_entries = table.entries;
+  cpu_silhouette_entry = table.silhouette_entry;
+  path_bound = uint32_t(more_paths + table.paths.size());
+  entry_bound = uint32_t(cpu_entries + more_points + more_paths);  // a path's entries: its points, and one
   gpu_first_round = 0, gpu.clear();
 }
 
-void UploadedPaths::add_gpu_paths(uint32_t gpu_paths, uint32_t gpu_entries, uint32_t crease_entries) {
-  for (PathRow& row : cpu_rows_) row.first_entry += gpu_entries;
-  upload(cpu_rows_.data(), cpu_rows_.size() * sizeof(PathRow), paths, size_t(gpu_paths) * sizeof(PathRow));
-  count = uint32_t(gpu_paths + cpu_rows_.size()), entries = cpu_entries_ + gpu_entries;
-  silhouette_entry += crease_entries;
+void UploadedPaths::dispatch(size_t offset) const {
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, paths.id());
+  glDispatchComputeIndirect(GLintptr(offset));
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
 
 UploadedRuns::UploadedRuns(const WindowLines& lines, const Visibility& visibility) : paths_(lines) {

@@ -6,6 +6,7 @@
 // found elsewhere (parity feeds the reference's), UploadedRuns puts them up.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -61,39 +62,54 @@ struct RunBound {
 };
 RunBound run_bound(const WindowPath& p, double first_round_samples, double width, double height);
 
+// A path table's header, before its rows (strokes/window_paths.glsl, std430): how many paths
+// and entries it holds, its first silhouette entry, and the indirect dispatches over its
+// entries and over its paths, (x, y, 1) groups of 64 (row_groups).
+struct TableHeader {
+  uint32_t paths = 0, entries = 0, silhouette_entry = 0, pad = 0;
+  uint32_t over_entries[3] = {0, 0, 0}, over_paths[3] = {0, 0, 0}, pad2[2] = {0, 0};
+};
+static_assert(sizeof(TableHeader) == 48, "std430 layout of window_paths.glsl Paths' header");
+// The (x, y, 1) groups of 64 rows over `count` rows (strokes/window_paths.glsl row_groups).
+glm::uvec3 row_groups(uint32_t count);
+
 // A frame's path table on the GPU, put up once: the ID image draws its lines from it
 // (gpu/strokes/id_lines.hpp), the visibility steps sample it, the stroke steps follow it.
 // Its paths are in the order of the window lines (common/strokes/strokes.hpp: creases and
 // borders, silhouettes, decals and hatches). The GPU may write the first ones itself, the
-// creases, borders and silhouettes (gpu/strokes/crease_rows.hpp, silhouette_rows.hpp), the
-// CPU knowing them by their counts and bounds alone (gpu/strokes/row_counts.hpp): their
-// points then follow the CPU's, and the CPU's rows go up after them once the GPU has counted
-// them.
+// creases, borders and silhouettes (gpu/strokes/crease_rows.hpp, silhouette_rows.hpp): their
+// points then follow the CPU's, and the GPU places the CPU's rows after its own and writes the
+// header (gpu/strokes/row_counts.hpp TableRows), so that the CPU knows the table by its bounds
+// alone: the steps over its rows go by the header's dispatches.
 struct UploadedPaths {
   UploadedPaths() = default;
-  explicit UploadedPaths(const WindowLines& lines) {  // every path from the CPU
-    put(lines, 0, 0, 0);
-    add_gpu_paths(0, 0, 0);
-  }
+  explicit UploadedPaths(const WindowLines& lines);  // every path from the CPU, the header too
   // Puts up the paths of `lines` but their first `gpu_in_lines` (the GPU's, where the lines
   // hold them too), with room for `more_paths` paths before them and `more_points` points
-  // after theirs; their rows wait for add_gpu_paths. The buffers are kept where they hold that.
+  // after theirs; their rows wait in cpu_rows for TableRows. The buffers are kept where they
+  // hold that.
   void put(const WindowLines& lines, size_t gpu_in_lines, size_t more_paths, size_t more_points);
-  // The GPU wrote the first `paths` paths with `entries` entries, the first `crease_entries`
-  // of them its creases' and borders': puts up the CPU's rows after them.
-  void add_gpu_paths(uint32_t paths, uint32_t entries, uint32_t crease_entries);
   // Whether path i of the lines put up is one the CPU made.
   bool from_cpu(size_t i) const { return i >= gpu_in_lines; }
-  ScratchBuffer paths, points;
-  uint32_t count = 0, entries = 0, silhouette_entry = 0;
-  uint32_t gpu_in_lines = 0;   // the GPU's paths the lines hold too
-  uint32_t cpu_points = 0;     // the CPU's points, before the GPU's
-  double gpu_first_round = 0;  // the first-round samples' bound of the GPU's paths, together
-  std::vector<RunBound> gpu;   // their run bounds, per line style
+  // A dispatch of the program in use over the table's entries, or over its paths.
+  void dispatch_over_entries() const { dispatch(offsetof(TableHeader, over_entries)); }
+  void dispatch_over_paths() const { dispatch(offsetof(TableHeader, over_paths)); }
+  ScratchBuffer paths, points;  // paths: the header, then the rows
+  ScratchBuffer cpu_rows;       // the CPU's rows, their entries from 0, for TableRows
+  uint32_t cpu_paths = 0, cpu_entries = 0;
+  uint32_t cpu_silhouette_entry = 0;         // the CPU's creases' and borders' entries
+  uint32_t path_bound = 0, entry_bound = 0;  // the most the table holds: what the steps size by
+  uint32_t gpu_in_lines = 0;                 // the GPU's paths the lines hold too
+  uint32_t cpu_points = 0;                   // the CPU's points, before the GPU's
+  // Whether the CPU knows the GPU's paths' bounds this frame (it read them back: a frame that
+  // sizes the buffers, gpu/core/pipeline.hpp): their first-round samples' bound, together, and
+  // their run bounds, per line style. Else the steps go by the buffers an earlier frame sized.
+  bool sized = true;
+  double gpu_first_round = 0;
+  std::vector<RunBound> gpu;
 
  private:
-  std::vector<PathRow> cpu_rows_;  // after the GPU's
-  uint32_t cpu_entries_ = 0;
+  void dispatch(size_t offset) const;
 };
 inline constexpr Shared<UploadedPaths> kPathTable{"id_image.path_table"};
 
@@ -106,11 +122,13 @@ struct GpuCount {
 
 // The runs of a frame on the GPU: the paths' rows and points, the run rows, how many are
 // listed and how many first-round visibility samples found them, both on the GPU. What the
-// CPU knows: the most runs the rows hold, and the paths' run bounds.
+// CPU knows: the most runs the rows hold, and (where `sized`, UploadedPaths::sized) the
+// paths' run bounds.
 struct RunTables {
   const Buffer *paths = nullptr, *points = nullptr, *runs = nullptr;
   GpuCount listed, samples;
   uint32_t bound = 0;
+  bool sized = true;
   std::vector<RunBound> bounds;  // per CPU path, then the GPU's paths together
 };
 inline constexpr Shared<RunTables> kRunTables{"visibility.run_tables"};

@@ -85,6 +85,7 @@ layout(std430, binding = 4) buffer Entries { uint entries[]; };  // per path its
 #define POINTS_BINDING 7
 #define POINTS_ACCESS  // written here
 #include "strokes/window_paths.glsl"
+#include "util/rows.glsl"
 
 dvec2 window_of(uint q) { return scratch[q].window; }
 double depth_of(uint q) { return scratch[q].depth; }
@@ -94,13 +95,13 @@ uvec2 faces_of(uint q) { return scratch[q].faces; }
 #include "strokes/path_rows.glsl"
 
 uniform float near, width, height, step_px;  // exact as doubles
-uniform uint path_count, face_count;
+uniform uint crease_paths, face_count;  // the creases and borders (defs), the faces keyed before them
 uniform uint first_point;  // where the points start in the table
 
 #if defined(STEP_PIECES) || defined(STEP_ROWS)
 void main() {
-  uint p = path_index();
-  if (p >= path_count) return;
+  uint p = row_index();
+  if (p >= crease_paths) return;
   uvec4 d = defs[p];
   uint style = (d.w & 2u) != 0u ? 1u : 0u;  // window_paths.hpp PathTable::style_of
   uint count = 0u, start = d.x, made = 0u, made_entries = 0u;
@@ -139,8 +140,8 @@ void main() {
 }
 #elif defined(STEP_TOTALS)
 void main() {
-  crease_rows = pieces[path_count];
-  crease_entries = entries[path_count];
+  crease_rows = pieces[crease_paths];
+  crease_entries = entries[crease_paths];
   silhouette_base = ((face_count + crease_rows) >> 8) + 1u;  // common/strokes/strokes.cpp assign_keys
 }
 #endif

@@ -50,7 +50,7 @@ void emit(dvec2 at, double d, uint piece_key) {
 
 void main() {
   uint q = quad[0], e = entry_of_quad(q);
-  Path p = paths[path_of_entry(e, path_count)];
+  Path p = paths[path_of_entry(e)];
   Piece piece = piece_of(p, e - p.first_entry, q - pieces[e]);
   dvec2 along = piece.b - piece.a;
   double length = sqrt(along.x * along.x + along.y * along.y);

@@ -7,11 +7,11 @@
 #define POINTS_BINDING 1
 #include "strokes/window_paths.glsl"
 
-// Per entry, its quads; their exclusive prefix sums, the total after the last entry; then
-// the draw's command (DrawArraysIndirectCommand).
+// Per entry, its quads; their exclusive prefix sums, the total after the last entry; then,
+// from commands_at (past the most entries the table holds), the draws' commands
+// (DrawArraysIndirectCommand).
 layout(std430, binding = 2) buffer Pieces { uint pieces[]; };
 
-uniform uint path_count, entry_count;
 uniform float width, height, near;  // the window's size and the near plane: exact as doubles
 uniform float crease_px, crease_bias, silhouette_px, silhouette_bias, silhouette_lift;  // strokes.id_* parameters
 

@@ -1,29 +1,8 @@
 // What the GPU's window-path steps share (shaders/strokes/crease_rows.comp,
-// silhouette_rows.comp), after strokes/window_paths.glsl: what they count for the CPU
-// (gpu/strokes/row_counts.hpp RowCounts, std430) at binding 0: the indirect dispatch over the
-// silhouette paths, 64-bit sums (low, high) per line style (crease 0, border 1, silhouette 2)
-// of the pieces' first-round samples, most runs, their most length and most points, and the
-// rows each step wrote and their entries; and, where the includer defines window_of,
-// depth_of, world_of and faces_of for its points (and ROWS), how a piece is measured and
-// written.
-layout(std430, binding = 0) buffer Counts {
-  uvec4 silhouette_args;  // (groups x, y, 1, silhouette paths)
-  uint sums[24];
-  uint crease_rows, crease_entries, silhouette_base, silhouette_rows;
-  uint silhouette_entries, counts_pad0, counts_pad1, counts_pad2;
-};
-
-const uint kRowsGroup = 64u;  // the per-path steps' workgroup
-const uint kMaxGroups = 65535u;  // per dimension (GL_MAX_COMPUTE_WORK_GROUP_COUNT)
-
-// The groups (x, y, 1) of a dispatch over `count` paths, and the count.
-uvec4 path_groups(uint count) {
-  uint groups = (count + kRowsGroup - 1u) / kRowsGroup, rows = (groups + kMaxGroups - 1u) / kMaxGroups;
-  return uvec4(rows == 0u ? 0u : (groups + rows - 1u) / rows, rows, 1u, count);
-}
-uint path_index() {
-  return (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * kRowsGroup + gl_LocalInvocationID.x;
-}
+// silhouette_rows.comp), after strokes/window_paths.glsl: what they count
+// (strokes/row_counts.glsl), and, where the includer defines window_of, depth_of, world_of
+// and faces_of for its points (and ROWS), how a piece is measured and written.
+#include "strokes/row_counts.glsl"
 
 // Adds v >= 0 to sum `value` of style `style`, carrying where the low word wraps.
 void add_to_sum(uint style, uint value, double v) {

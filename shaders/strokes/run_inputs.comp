@@ -60,6 +60,9 @@ layout(std430, binding = 13) buffer RunArgs { uint run_args[4]; };  // (groups, 
 uniform uint run_count, seed;  // run_count: the rows' bound
 uniform uint listed_at;
 uniform uint own_offsets;  // the examples' offsets, at the start of offsets[]
+// The points and offsets the buffers hold: a run whose own would pass them is not drawn (a
+// frame sized by an earlier one, gpu/core/pipeline.hpp Renderer::render_frame).
+uniform uint point_capacity, offset_capacity;
 
 // common/util/random.hpp hash32, stream_key and CounterStream.
 uint hash32(uint x) {
@@ -246,6 +249,10 @@ void at_run(uint run) {
   point_counts[run] = run_polyline(r, p, 0u);
   offset_counts[run] = own_run_offsets(st, r, p, run, 0u);
 #else
+  if (point_counts[run + 1u] > point_capacity || own_offsets + offset_counts[run + 1u] > offset_capacity) {
+    runs_in[run] = run_input(st, r, p, run, 0u, 0u);  // past the buffers: not drawn
+    return;
+  }
   uint n = run_polyline(r, p, point_counts[run]);
   own_run_offsets(st, r, p, run, own_offsets + offset_counts[run]);
   runs_in[run] = run_input(st, r, p, run, point_counts[run], n);

@@ -36,6 +36,7 @@ layout(std430, binding = 5) buffer Entries { uint entries[]; };  // per path, th
 #define POINTS_BINDING 7
 #define POINTS_ACCESS  // written here
 #include "strokes/window_paths.glsl"
+#include "util/rows.glsl"
 
 dvec2 window_of(uint q) { return dvec2(points[q].x, points[q].y); }
 double depth_of(uint q) { return points[q].depth; }
@@ -51,10 +52,10 @@ uniform uint first_point;              // where these paths' points start in the
 vec4 path_row(uint p) { return texelFetch(path_table, table_texel(1u + p), 0); }
 
 #if defined(STEP_ARGS)
-void main() { silhouette_args = path_groups(uint(texelFetch(path_table, table_texel(0u), 0).x)); }
+void main() { silhouette_args = row_groups(uint(texelFetch(path_table, table_texel(0u), 0).x)); }
 #elif defined(STEP_PIECES)
 void main() {
-  uint p = path_index();
+  uint p = row_index();
   if (p >= silhouette_args.w) return;
   vec4 row = path_row(p);
   uint first = uint(row.y), n = uint(row.z), flags = uint(row.w);
@@ -83,7 +84,7 @@ void main() {
 }
 #elif defined(STEP_ROWS)
 void main() {
-  uint p = path_index();
+  uint p = row_index();
   if (p >= silhouette_args.w || pieces[p].y == 0u) return;
   uvec4 piece = pieces[p];
   bool closed = piece.z != 0u;

@@ -10,7 +10,7 @@
 //   STEP_ARGS:    one invocation: the dispatches over the samples, whose count stays on the GPU;
 //   STEP_RUNS:    per run start, the run to the next change;
 //   STEP_TEST:    per sample of a given batch, the test alone (gpu::SampleTest).
-layout(local_size_x = 64) in;  // gpu/gl/program.hpp dispatch_in_chunks
+layout(local_size_x = 64) in;  // kRowsGroup; STEP_TEST: gpu/gl/program.hpp dispatch_in_chunks
 
 struct Sample {  // common/strokes/visibility.hpp VisibilitySample
   vec2 window;
@@ -24,7 +24,6 @@ struct Sample {  // common/strokes/visibility.hpp VisibilitySample
 uniform usampler2D ids;         // (key >> 16, key & 0xffff)
 uniform usampler2D crease_ids;  // the same before the silhouettes' quads
 uniform bool crease_under_silhouettes;  // strokes.crease_under_silhouettes
-uniform uint first;      // of this dispatch (a step may take several: 65535 groups at most each)
 
 bool holds(uint value, Sample s) {
   if (value == 0u) return false;
@@ -64,6 +63,7 @@ bool sample_visible(Sample s) {
 layout(std430, binding = 0) readonly buffer Samples { Sample samples[]; };
 layout(std430, binding = 1) writeonly buffer Flags { uint flags[]; };
 uniform uint sample_count;
+uniform uint first;  // of this dispatch (a batch may take several: 65535 groups at most each)
 
 void main() {
   uint k = first + gl_GlobalInvocationID.x;
@@ -80,6 +80,7 @@ struct Tested {
 #define PATHS_BINDING 0
 #define POINTS_BINDING 1
 #include "strokes/window_paths.glsl"
+#include "util/rows.glsl"
 layout(std430, binding = 2) buffer Entries { uint entries[]; };  // counts, then their prefix sums
 layout(std430, binding = 3) buffer Samples { Tested tested[]; };
 layout(std430, binding = 4) buffer ChangeMarks { uint change_marks[]; };  // per sample, then prefix sums
@@ -87,12 +88,14 @@ layout(std430, binding = 5) buffer RunMarks { uint run_marks[]; };        // 2 p
 layout(std430, binding = 6) buffer Changes { dvec2 changes[]; };          // (located s, turns visible)
 layout(std430, binding = 7) writeonly buffer Runs { Run runs[]; };
 
-uniform uint path_count, entry_count;
-uniform uint capacity;  // samples the buffers hold: the CPU's bound
+uniform uint capacity;  // samples the buffers hold
+// Where entries[] holds, past the most entries the table holds, the indirect dispatches over
+// the samples (slots_at) and their run slots (+ 3), how many runs STEP_RUNS listed (+ 6),
+// where the stroke steps read it, and the first round's samples (+ 7).
+uniform uint slots_at;
 
-// The first round's samples: the prefix sum after the last entry. entries[] holds after it
-// the indirect dispatches over the samples (entry_count + 1) and their run slots (+ 4), then
-// how many runs STEP_RUNS listed (+ 7), where the stroke steps read it.
+// The first round's samples: the prefix sum after the last entry (the table's header counts
+// the paths and entries, strokes/window_paths.glsl).
 uint sample_total() { return entries[entry_count]; }
 uniform float step_px, width, height;  // the parameter (a float) and the window's size: exact as doubles
 
@@ -101,8 +104,11 @@ const double kLocatedPx = 1.0lf;  // Kalnins et al. 2002, §4.1: a change is loc
 
 uint entry_end(uint p) { return p + 1u < path_count ? paths[p + 1u].first_entry : entry_count; }
 
-// Path p's first sample and the one after its last.
-uvec2 sample_range(uint p) { return uvec2(entries[paths[p].first_entry], entries[entry_end(p)]); }
+// Path p's first sample and the one after its last, within the buffers (where the samples
+// outgrow them, those past them are not taken).
+uvec2 sample_range(uint p) {
+  return min(uvec2(entries[paths[p].first_entry], entries[entry_end(p)]), uvec2(capacity));
+}
 
 // Segment k's first-round samples: where it enters the margin, the multiples of the step
 // from there up to where it leaves (one at the segment's end belongs to the next), and that.
@@ -160,7 +166,7 @@ bool visible_at(Path p, double s) {
 bool has_end_sample(Path p) { return !is_closed(p) && (p.sampled != 0u || p.length_px > 0.0lf); }
 
 void put(uint at, uint path, Path p, uint k, double s) {
-  if (at >= capacity) return;  // past the CPU's bound, which it never is (first_round_bound)
+  if (at >= capacity) return;  // samples past the buffers are not taken
   tested[at] = Tested(s, 0.0lf, sample_visible(sample_on(p, k, along(p, k, s), s)) ? 1u : 0u, path);
 }
 
@@ -215,10 +221,10 @@ void at_slot(uint i) {  // slot i % 2 of sample i / 2
 #endif
 
 void main() {
-  uint i = first + gl_GlobalInvocationID.x;
+  uint i = row_index();  // STEP_COUNT, STEP_SAMPLES: an entry; STEP_ENDS: a path
 #if defined(STEP_COUNT)
   if (i >= entry_count) return;
-  uint path = path_of_entry(i, path_count), k = i - paths[path].first_entry;
+  uint path = path_of_entry(i), k = i - paths[path].first_entry;
   Stretch st;
   uint n = k < segments(paths[path]) && stretch_of(paths[path], k, st) ? count_of(st) : 0u;
   entries[i] = n;
@@ -229,7 +235,7 @@ void main() {
   entries[entry_end(i) - 1u] = (has_end_sample(p) ? 1u : 0u) + (p.sampled == 0u ? 1u : 0u);
 #elif defined(STEP_SAMPLES)
   if (i >= entry_count) return;
-  uint path = path_of_entry(i, path_count), k = i - paths[path].first_entry, at = entries[i];
+  uint path = path_of_entry(i), k = i - paths[path].first_entry, at = entries[i];
   Path p = paths[path];
   if (k == segments(p)) {  // the end entry
     if (p.sampled == 0u) put(at++, path, p, 0u, 0.0lf);
@@ -244,12 +250,13 @@ void main() {
 #elif defined(STEP_ARGS)  // one invocation: the dispatches over the samples and over their run slots
   if (gl_GlobalInvocationID.x != 0u) return;
   uint n = min(sample_total(), capacity);
-  for (uint k = 1u; k <= 6u; ++k) entries[entry_count + k] = 1u;  // (x, 1, 1) twice
-  entries[entry_count + 1u] = clamp((n + 63u) / 64u, 1u, 65535u);
-  entries[entry_count + 4u] = clamp((2u * n + 63u) / 64u, 1u, 65535u);
+  for (uint k = 0u; k < 6u; ++k) entries[slots_at + k] = 1u;  // (x, 1, 1) twice
+  entries[slots_at] = clamp((n + 63u) / 64u, 1u, 65535u);
+  entries[slots_at + 3u] = clamp((2u * n + 63u) / 64u, 1u, 65535u);
+  entries[slots_at + 7u] = sample_total();
 #elif defined(STEP_RUNS)  // each invocation every (groups x 64)th slot; the first also the runs' count
   uint slots = 2u * min(sample_total(), capacity);
-  if (gl_GlobalInvocationID.x == 0u) entries[entry_count + 7u] = run_marks[slots];
+  if (gl_GlobalInvocationID.x == 0u) entries[slots_at + 6u] = run_marks[slots];
   for (uint j = gl_GlobalInvocationID.x; j < slots; j += gl_NumWorkGroups.x * 64u) at_slot(j);
 #else  // STEP_CHANGES, STEP_MARKS: each invocation every (groups x 64)th sample
   for (uint j = gl_GlobalInvocationID.x; j < min(sample_total(), capacity); j += gl_NumWorkGroups.x * 64u)

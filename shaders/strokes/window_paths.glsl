@@ -27,7 +27,15 @@ struct Run {
   double s0, s1;
 };
 
-layout(std430, binding = PATHS_BINDING) buffer Paths { Path paths[]; };
+// The table's header (gpu/strokes/window_paths.hpp TableHeader), then its rows: how many paths
+// and entries it holds and the first silhouette entry, written where the rows are (the CPU,
+// or shaders/strokes/table_rows.comp), and the indirect dispatches over its entries and over
+// its paths, (x, y, 1) groups of kRowsGroup.
+layout(std430, binding = PATHS_BINDING) buffer Paths {
+  uint path_count, entry_count, silhouette_entry, header_pad;
+  uint over_entries[3], over_paths[3], header_pad2[2];
+  Path paths[];
+};
 #ifndef POINTS_ACCESS
 #define POINTS_ACCESS readonly
 #endif
@@ -39,9 +47,9 @@ bool is_closed(Path p) { return (p.kind & kPathClosed) != 0u; }
 uint segments(Path p) { return is_closed(p) ? p.points : p.points - 1u; }
 Point point(Path p, uint k) { return path_points[p.first_point + k % p.points]; }
 
-// The last of the first `path_count` paths whose first entry is at most e: the path of entry e
-// (its segments, then its end: gpu/strokes/window_paths.hpp PathTable).
-uint path_of_entry(uint e, uint path_count) {
+// The last path whose first entry is at most e: the path of entry e (its segments, then its
+// end: gpu/strokes/window_paths.hpp PathTable).
+uint path_of_entry(uint e) {
   uint lo = 0u, hi = path_count;
   while (hi - lo > 1u) {
     uint mid = (lo + hi) / 2u;

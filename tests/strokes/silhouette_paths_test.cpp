@@ -174,17 +174,31 @@ std::pair<size_t, size_t> crease_points_behind(const Scene& s) {
   return {behind, paths};
 }
 
-// The rows of the table `table` holds on the GPU: its paths, and its points up to the last
-// a path names.
+// The rows of the table `table` holds on the GPU, as its header counts them: its paths, and
+// its points up to the last a path names; with the header's dispatches, which must cover its
+// entries and paths.
 gpu::PathTable read_rows(const gpu::UploadedPaths& table) {
+  gpu::TableHeader h;
+  gpu::read_buffer(table.paths, &h, sizeof h);
   gpu::PathTable rows(WindowLines{});
-  rows.paths.resize(table.count);
-  gpu::read_buffer(table.paths, rows.paths.data(), rows.paths.size() * sizeof(gpu::PathRow));
+  rows.paths.resize(h.paths);
+  gpu::read_buffer(table.paths, rows.paths.data(), rows.paths.size() * sizeof(gpu::PathRow), sizeof h);
   size_t points = 0;
   for (const gpu::PathRow& p : rows.paths) points = std::max<size_t>(points, p.first_point + p.points);
   rows.points.resize(points);
   gpu::read_buffer(table.points, rows.points.data(), points * sizeof(gpu::PointRow));
-  rows.entries = table.entries;
+  rows.entries = h.entries, rows.silhouette_entry = h.silhouette_entry;
+  EXPECT_LE(h.paths, table.path_bound);
+  EXPECT_LE(h.entries, table.entry_bound);
+  auto expect_covers = [](const uint32_t groups[3], uint32_t count) {  // rows of 64, at most one group row spare
+    const size_t rows = size_t(groups[0]) * groups[1] * 64;
+    EXPECT_GE(rows, count);
+    EXPECT_LT(rows, size_t(count) + size_t(groups[0]) * 64 + 1);
+    EXPECT_LE(groups[0], 65535u);
+    EXPECT_EQ(groups[2], 1u);
+  };
+  expect_covers(h.over_entries, h.entries);
+  expect_covers(h.over_paths, h.paths);
   return rows;
 }
 
@@ -248,7 +262,7 @@ TEST_F(SilhouettePaths, GpuWritesTheWindowPathsTheCpuMakesOfItsPoints) {
     const gpu::PathTable cpu(*frame.lines), gpu_rows = read_rows(*table);
     ASSERT_EQ(gpu_rows.paths.size(), cpu.paths.size()) << name;
     EXPECT_EQ(gpu_rows.entries, cpu.entries) << name;
-    EXPECT_EQ(table->silhouette_entry, cpu.silhouette_entry) << name;
+    EXPECT_EQ(gpu_rows.silhouette_entry, cpu.silhouette_entry) << name;
     double window = 0, depth = 0, arc = 0, step = 0;
     size_t made[3] = {0, 0, 0}, cut = 0;  // creases, borders, silhouettes
     for (size_t i = 0; i < cpu.paths.size(); ++i) {
