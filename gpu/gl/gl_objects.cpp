@@ -177,12 +177,6 @@ Buffer make_buffer(const void* data, size_t bytes) {
   return Buffer(id);
 }
 
-Buffer make_zeroed_buffer(size_t count) {
-  Buffer b = make_buffer(nullptr, count * sizeof(uint32_t));
-  clear_buffer(b);
-  return b;
-}
-
 void clear_buffer(const Buffer& buffer) {
   const uint32_t zero = 0;
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer.id());  // not glClearNamedBufferData: OSMesa has no such entry

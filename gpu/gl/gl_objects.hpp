@@ -97,8 +97,6 @@ struct ScratchBuffer {
   GLuint id() const { return buffer.id(); }
   operator const Buffer&() const { return buffer; }
 };
-// A buffer of `count` uint32 zeros, cleared on the GPU.
-Buffer make_zeroed_buffer(size_t count);
 // Sets every uint32 of `buffer` to 0, on the GPU.
 void clear_buffer(const Buffer& buffer);
 // Copies `bytes` from the start of `from` into `to` from byte `offset`, on the GPU.

@@ -28,8 +28,8 @@ void IdLines::prepare(const UploadedPaths& table, const StrokesParams& p, int wi
   if (table.path_bound == 0) return;
   commands_ = size_t(table.entry_bound) + 1;  // after the counts and their total
   const size_t slots = commands_ + 8;         // two draws' commands
+  // Kept across frames, not cleared: the steps write every slot they read.
   if (slots > capacity_) pieces_ = make_buffer(nullptr, slots * sizeof(uint32_t)), capacity_ = slots;
-  clear_buffer(pieces_);
   for (const Program* program : {&count_, &args_, &draw_}) {
     GLuint id = program->id();
     glProgramUniform1ui(id, program->uniform("commands_at"), GLuint(commands_));

@@ -117,11 +117,12 @@ class VisibilityPass : public GpuPass {
     }
     const uint32_t capacity = capacity_;
     const size_t n = std::max<size_t>(capacity, 1), slots = size_t(table.entry_bound) + 1;
-    // The counts and their total, then two dispatches' groups, the runs listed, the samples.
-    entries_ = make_zeroed_buffer(slots + 8);
+    // The counts and their total, then two dispatches' groups, the runs listed, the samples;
+    // kept across frames, not cleared: the steps write every slot they read.
+    entries_.reserve((slots + 8) * sizeof(uint32_t));
     reserve(n);
     set_uniforms(f, lines, capacity, slots);
-    const std::initializer_list<const Buffer*> all = {&table.paths.buffer, &table.points.buffer,  &entries_,
+    const std::initializer_list<const Buffer*> all = {&table.paths.buffer, &table.points.buffer,  &entries_.buffer,
                                                       &tested_.buffer,     &change_marks_.buffer, &run_marks_.buffer,
                                                       &changes_.buffer,    &run_rows_.buffer};
     bind(all);
@@ -151,7 +152,7 @@ class VisibilityPass : public GpuPass {
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, entries_.id());
     over_samples(list_runs_, slots + 3);
     tables_.paths = &table.paths.buffer, tables_.points = &table.points.buffer, tables_.runs = &run_rows_.buffer;
-    tables_.listed = {&entries_, uint32_t(slots + 6)}, tables_.samples = {&entries_, uint32_t(slots + 7)};
+    tables_.listed = {&entries_.buffer, uint32_t(slots + 6)}, tables_.samples = {&entries_.buffer, uint32_t(slots + 7)};
     tables_.bound = uint32_t(2 * n), tables_.sized = table.sized;
     for (size_t i = 0; i < path_samples.size(); ++i)
       if (table.from_cpu(i))
@@ -212,7 +213,7 @@ class VisibilityPass : public GpuPass {
   ScratchBuffer tested_, changes_, change_marks_, run_marks_;
   // What the stroke pass reads (kRunTables) and a dump reads back, kept until the next frame.
   ScratchBuffer run_rows_;
-  Buffer entries_;
+  ScratchBuffer entries_;
   uint32_t capacity_ = 0;  // the samples the buffers hold: the bound of the last frame that sized them
   RunTables tables_;
   ExclusiveScan scan_;
