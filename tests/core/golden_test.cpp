@@ -42,6 +42,13 @@ constexpr int kGoldenSize = 200;
 // (GoldenSensitivity below).
 constexpr double kExactLevel = 0.5 / 255.0;  // over half a level = one 8-bit level or more
 constexpr double kExactShare = 0.0;          // no pixel may change
+// The reference on another CPU: on a 2-core AMD EPYC (AVX2, FMA; 2026-11-30) the same build
+// moved 2, 2, 3 and 23 of the 40,000 pixels of the sphere, pencil, fandisk pencil and
+// torus strokes reference goldens by one level (the GPU goldens stayed exact, and so did the
+// reference under Embree's SSE4.2, AVX and AVX2 kernels and on one thread: the cause was not
+// found). So the reference's goldens let at most 0.1% of the pixels move, by one level at
+// most.
+constexpr double kCpuShare = 0.001, kCpuMostLevels = 1.0;
 // A GPU that is not llvmpipe rounds and filters differently (the goldens are made with
 // llvmpipe): its GPU goldens pass when at most 1% of the pixels differ by over 2/255.
 // Not measured (no such GPU here); chosen well under the 7.7% that edge.depth_scale
@@ -53,9 +60,12 @@ struct Tolerance {
   double level;  // a pixel differs when a channel differs by more than this
   double share;  // the golden fails when more than this share of pixels differ
   std::string what;
+  double most = 1.0;  // or when a channel differs by more than this
 };
 
 const Tolerance kExact{kExactLevel, kExactShare, "exact (8-bit)"};
+const Tolerance kReferenceCpu{kExactLevel, kCpuShare, "one level in 0.1% of the pixels (8-bit)",
+                              (kCpuMostLevels + 0.5) / 255.0};
 
 enum class Backend { Reference, Gpu };
 const char* backend_name(Backend b) { return b == Backend::Reference ? "reference" : "gpu"; }
@@ -123,7 +133,8 @@ Image quantized(const Image& img) {
 bool is_llvmpipe() { return gpu::Context::get().renderer().find("llvmpipe") != std::string::npos; }
 
 Tolerance tolerance_for(Backend b) {
-  if (b == Backend::Reference || is_llvmpipe()) return kExact;
+  if (b == Backend::Reference) return kReferenceCpu;
+  if (is_llvmpipe()) return kExact;
   return {kLooseLevel, kLooseShare,
           "loose (GPU '" + gpu::Context::get().renderer() + "' is not llvmpipe, which made the goldens)"};
 }
@@ -144,7 +155,7 @@ GoldenResult compare_with_golden(const Image& golden, const Image& actual, const
     return r;
   }
   r.diff = compare_images(golden, actual, tol.level);
-  r.match = r.diff.over_tolerance <= tol.share;
+  r.match = r.diff.over_tolerance <= tol.share && r.diff.max_abs <= tol.most;
   char buf[256];
   std::snprintf(buf, sizeof buf, "%zu of %zu pixels differ by over %.3g (%.4f%%, allowed %.4f%%), max %.0f/255",
                 size_t(r.diff.over_tolerance * double(r.diff.compared) + 0.5), r.diff.compared, tol.level,
