@@ -9,8 +9,8 @@
 // them, and the indirect draw of their ribbons. Every step goes over the runs the GPU
 // listed, by indirect dispatches and prefix sums over their count: nothing is read back, and
 // the CPU sizes the buffers from the paths' run bounds alone (gpu/strokes/window_paths.hpp
-// RunBound), in a frame that sizes them; the frames after keep them, and a run whose points,
-// offsets or samples would pass them is left out (run_inputs.comp, stroke_samples.comp).
+// RunBound), in a frame that sizes them; the frames after keep them: a run whose points or
+// offsets would pass them is left out (run_inputs.comp), and so are samples past them.
 #pragma once
 
 #include <cstdint>

@@ -79,7 +79,7 @@ Visibility read_runs(const RunTables& tables, const WindowLines& lines) {
 }
 
 glm::uvec3 row_groups(uint32_t count) {
-  constexpr uint32_t kGroup = 64, kMaxGroups = 65535;  // window_paths.glsl kRowsGroup, kMaxGroups
+  constexpr uint32_t kGroup = 64, kMaxGroups = 65535;  // shaders/util/rows.glsl kRowsGroup, kMaxGroups
   const uint32_t groups = (count + kGroup - 1) / kGroup, rows = (groups + kMaxGroups - 1) / kMaxGroups;
   return {rows == 0 ? 0 : (groups + rows - 1) / rows, rows, 1};
 }
@@ -87,8 +87,7 @@ glm::uvec3 row_groups(uint32_t count) {
 UploadedPaths::UploadedPaths(const WindowLines& lines) {
   put(lines, 0, 0, 0);
   TableHeader h{cpu_paths, cpu_entries, cpu_silhouette_entry};
-  const glm::uvec3 e = row_groups(h.entries), p = row_groups(h.paths);
-  std::copy(&e.x, &e.x + 3, h.over_entries), std::copy(&p.x, &p.x + 3, h.over_paths);
+  for (int k = 0; k < 3; ++k) h.over_entries[k] = row_groups(h.entries)[k], h.over_paths[k] = row_groups(h.paths)[k];
   upload(&h, sizeof h, paths);
   copy_buffer(cpu_rows, paths, size_t(cpu_paths) * sizeof(PathRow), sizeof h);
 }

@@ -70,7 +70,7 @@ struct TableHeader {
   uint32_t over_entries[3] = {0, 0, 0}, over_paths[3] = {0, 0, 0}, pad2[2] = {0, 0};
 };
 static_assert(sizeof(TableHeader) == 48, "std430 layout of window_paths.glsl Paths' header");
-// The (x, y, 1) groups of 64 rows over `count` rows (strokes/window_paths.glsl row_groups).
+// The (x, y, 1) groups of 64 rows over `count` rows (shaders/util/rows.glsl row_groups).
 glm::uvec3 row_groups(uint32_t count);
 
 // A frame's path table on the GPU, put up once: the ID image draws its lines from it
