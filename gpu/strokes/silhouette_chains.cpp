@@ -38,10 +38,8 @@ class SilhouetteChainsPass : public GpuPass {
     links_ = make_buffer(nullptr, n * sizeof(glm::uvec4));
     members_ = make_buffer(nullptr, n * sizeof(uint32_t));
     count_ = make_buffer(nullptr, kRoundArgs + 2 * 32 * 4 * sizeof(uint32_t));
-    jump_[0] = make_buffer(nullptr, n * sizeof(glm::uvec4));
-    jump_[1] = make_buffer(nullptr, n * sizeof(glm::uvec4));
-    arc_[0] = make_buffer(nullptr, n * sizeof(glm::vec2));
-    arc_[1] = make_buffer(nullptr, n * sizeof(glm::vec2));
+    jump_ = make_buffer(nullptr, 2 * n * sizeof(glm::uvec4));  // two halves of `records_` rows
+    arc_ = make_buffer(nullptr, 2 * n * sizeof(glm::vec2));
   }
 
   void run(GpuFrame& f) override {
@@ -77,10 +75,8 @@ class SilhouetteChainsPass : public GpuPass {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, links_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, members_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, count_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, jump_[0].id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, jump_[1].id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, arc_[0].id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, arc_[1].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, jump_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, arc_.id());
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, count_.id());
   }
 
@@ -102,7 +98,7 @@ class SilhouetteChainsPass : public GpuPass {
   Program link_, args_, loops_, cut_, rank_, write_;
   uint32_t records_ = 0;
   int rounds_ = 0;
-  Buffer slot_links_, links_, members_, count_, jump_[2], arc_[2];
+  Buffer slot_links_, links_, members_, count_, jump_, arc_;
 };
 
 }  // namespace

@@ -25,21 +25,25 @@ layout(std430, binding = 3) buffer Count {
   uvec4 round_groups[32];
   uvec4 rank_groups[32];
 };
-// Pointer jumping between two buffers, each step reading one and writing the other:
-// finding loops, (next, mark, -, -); ranking, (start, rank, end, distance to it), and the arc
-// lengths below. A record's mark is the least over the records from it to its `next` (not
-// included) of their keys: record + 1, 0 for an open chain's end. After the rounds a loop's
-// members hold its lowest record + 1 (where it is cut) and an open chain's 0, their `next` its
-// end. The marks are minima over windows that double each round: a round that changes none
-// changes none after it (where every mark at k is at most the one 2^k further on, so is each
-// at 2k), so each open chain's marks are 0 already, its windows and `next` at its end.
-layout(std430, binding = 4) buffer JumpA { uvec4 jump_a[]; };
-layout(std430, binding = 5) buffer JumpB { uvec4 jump_b[]; };
+// Pointer jumping between the two halves of each buffer below, each step reading one and
+// writing the other: finding loops, (next, mark, -, -); ranking, (start, rank, end, distance
+// to it), and the arc lengths below. A record's mark is the least over the records from it to
+// its `next` (not included) of their keys: record + 1, 0 for an open chain's end. After the
+// rounds a loop's members hold its lowest record + 1 (where it is cut) and an open chain's 0,
+// their `next` its end. The marks are minima over windows that double each round: a round
+// that changes none changes none after it (where every mark at k is at most the one 2^k
+// further on, so is each at 2k), so each open chain's marks are 0 already, its windows and
+// `next` at its end.
+layout(std430, binding = 4) buffer Jump { uvec4 jump[]; };  // half h from h * records
+// Ranking's window arc lengths alongside, the same way: (before, after), the lengths of the
+// segments before it and after it in its list.
+layout(std430, binding = 5) buffer Arc { vec2 arc[]; };  // half h from h * records
 uniform uint round_index;  // k, of this phase's rounds
 uniform uint rounds;       // issued per phase
+uniform uint records, first_record;
 
 // The rounds that do work, R: those with 2^k < count (Count above). The link step writes
-// buffer 0; round k of the first phase reads k % 2, so the cut reads R % 2 and writes the
+// half 0; round k of the first phase reads k % 2, so the cut reads R % 2 and writes the
 // other, round k of the second phase reads (R + 1 + k) % 2, and the last step reads 1.
 uint working_rounds() { return min(rounds, count > 1u ? uint(findMSB(count - 1u)) + 1u : 0u); }
 uint source() {
@@ -50,34 +54,21 @@ uint source() {
 #elif defined(STEP_RANK)
   return (working_rounds() + 1u + round_index) % 2u;
 #else
-  return 1u;  // the link step writes buffer 0; the last step reads buffer 1
+  return 1u;  // the link step writes half 0; the last step reads half 1
 #endif
 }
-uvec4 src(uint i) { return source() == 0u ? jump_a[i] : jump_b[i]; }
-void put(uint i, uvec4 v) {
-  if (source() == 0u)
-    jump_b[i] = v;
-  else
-    jump_a[i] = v;
-}
-// Ranking's window arc lengths alongside, the same way: (before, after), the lengths of the
-// segments before it and after it in its list.
-layout(std430, binding = 6) buffer ArcA { vec2 arc_a[]; };
-layout(std430, binding = 7) buffer ArcB { vec2 arc_b[]; };
-vec2 arc_src(uint i) { return source() == 0u ? arc_a[i] : arc_b[i]; }
-void arc_put(uint i, vec2 v) {
-  if (source() == 0u)
-    arc_b[i] = v;
-  else
-    arc_a[i] = v;
-}
+// Where this invocation reads and writes: source()'s half and the other, set once (main).
+uint read_at, write_at;
+uvec4 src(uint i) { return jump[read_at + i]; }
+void put(uint i, uvec4 v) { jump[write_at + i] = v; }
+vec2 arc_src(uint i) { return arc[read_at + i]; }
+void arc_put(uint i, vec2 v) { arc[write_at + i] = v; }
 
 uniform sampler2D facing;  // silhouette_segments.facing
 uniform sampler2D slots;   // silhouette_segments.slots (entry, exit)
 uniform sampler2D ends;    // silhouette_segments.ends
 layout(rgba32f, binding = 0) writeonly uniform image2D chains;
 layout(rg32f, binding = 1) writeonly uniform image2D arcs;
-uniform uint records, first_record;
 
 float facing_of(uint i) { return texelFetch(facing, table_texel(i), 0).r; }
 int slot_of(uint i, int end) { return int(texelFetch(slots, table_texel(i), 0)[end]); }
@@ -102,6 +93,7 @@ uint member() {
 }
 
 void main() {
+  read_at = source() * records, write_at = (1u - source()) * records;
 #if defined(STEP_LINK)  // every record, in chunks: links, the members, and the loop search's start
   uint i = first_record + gl_GlobalInvocationID.x;
   if (i >= records) return;

@@ -90,15 +90,14 @@ TEST_F(SilhouetteChains, GpuRanksTheSameChainsAsTheWalk) {
 TEST_F(SilhouetteChains, MembersBeyondOneDispatchRowAreAllReached) {
   const uint32_t count = 64u * 65535u + 1000u;
   std::vector<uint32_t> members(count);
-  std::vector<glm::uvec4> jump(count);
+  std::vector<glm::uvec4> jump(2 * size_t(count));  // the two halves: round 0 reads the first
   for (uint32_t m = 0; m < count; ++m) members[m] = m, jump[m] = glm::uvec4(m, m, 0, 0);
   std::vector<uint32_t> args(4 + 2 * 32 * 4, 0);  // Count: count, all_x, all_y, all_z, round_groups, rank_groups
   args[0] = count;
   gpu::Buffer member_buffer = gpu::make_buffer(members.data(), count * sizeof(uint32_t));
-  gpu::Buffer from = gpu::make_buffer(jump.data(), count * sizeof(glm::uvec4));
-  gpu::Buffer to = gpu::make_buffer(nullptr, count * sizeof(glm::uvec4));
+  gpu::Buffer halves = gpu::make_buffer(jump.data(), jump.size() * sizeof(glm::uvec4));
   gpu::Buffer count_buffer = gpu::make_buffer(args.data(), args.size() * sizeof(uint32_t));
-  for (auto [binding, buffer] : {std::pair{2, &member_buffer}, {3, &count_buffer}, {4, &from}, {5, &to}})
+  for (auto [binding, buffer] : {std::pair{2, &member_buffer}, {3, &count_buffer}, {4, &halves}})
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(binding), buffer->id());
   gpu::Program step_args =
       gpu::Program::compute("strokes/silhouette_chains.comp", gpu::table_prelude() + "#define STEP_ARGS\n");
@@ -111,13 +110,14 @@ TEST_F(SilhouetteChains, MembersBeyondOneDispatchRowAreAllReached) {
   EXPECT_EQ((std::vector<uint32_t>(args.begin() + 1, args.begin() + 8)),
             (std::vector<uint32_t>{65535, 2, 1, 65535, 2, 1, 0}));  // all, then round 0's
   glProgramUniform1ui(loops.id(), loops.uniform("round_index"), 0);
+  glProgramUniform1ui(loops.id(), loops.uniform("records"), count);
   glUseProgram(loops.id());
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, count_buffer.id());
   glDispatchComputeIndirect(4 * sizeof(uint32_t));  // round_groups[0]
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  gpu::read_buffer(to, jump.data(), count * sizeof(glm::uvec4));
+  gpu::read_buffer(halves, jump.data(), jump.size() * sizeof(glm::uvec4));
   uint32_t reached = 0;
-  for (uint32_t m = 0; m < count; ++m) reached += jump[m] == glm::uvec4(m, m, 0, 0);
+  for (uint32_t m = 0; m < count; ++m) reached += jump[count + m] == glm::uvec4(m, m, 0, 0);
   EXPECT_EQ(reached, count);
 }
 
