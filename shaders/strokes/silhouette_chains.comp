@@ -57,12 +57,16 @@ uint source() {
   return 1u;  // the link step writes half 0; the last step reads half 1
 #endif
 }
-// Where this invocation reads and writes: source()'s half and the other, set once (main).
-uint read_at, write_at;
-uvec4 src(uint i) { return jump[read_at + i]; }
-void put(uint i, uvec4 v) { jump[write_at + i] = v; }
-vec2 arc_src(uint i) { return arc[read_at + i]; }
-void arc_put(uint i, vec2 v) { arc[write_at + i] = v; }
+// Where a step reads and writes: source()'s half and the other, found once per invocation
+// (main), not in every access (source() reads `count`).
+struct Halves {
+  uint from, to;
+};
+Halves halves() { return Halves(source() * records, (1u - source()) * records); }
+uvec4 src(Halves h, uint i) { return jump[h.from + i]; }
+void put(Halves h, uint i, uvec4 v) { jump[h.to + i] = v; }
+vec2 arc_src(Halves h, uint i) { return arc[h.from + i]; }
+void arc_put(Halves h, uint i, vec2 v) { arc[h.to + i] = v; }
 
 uniform sampler2D facing;  // silhouette_segments.facing
 uniform sampler2D slots;   // silhouette_segments.slots (entry, exit)
@@ -93,7 +97,7 @@ uint member() {
 }
 
 void main() {
-  read_at = source() * records, write_at = (1u - source()) * records;
+  Halves h = halves();
 #if defined(STEP_LINK)  // every record, in chunks: links, the members, and the loop search's start
   uint i = first_record + gl_GlobalInvocationID.x;
   if (i >= records) return;
@@ -105,7 +109,7 @@ void main() {
   uint next = linked(i, 1);
   links[i] = uvec4(next, linked(i, 0), 0u, 0u);
   members[atomicAdd(count, 1u)] = i;
-  put(i, next == kNoLink ? uvec4(i, 0u, 0u, 0u) : uvec4(next, i + 1u, 0u, 0u));
+  put(h, i, next == kNoLink ? uvec4(i, 0u, 0u, 0u) : uvec4(next, i + 1u, 0u, 0u));
 #elif defined(STEP_ARGS)  // one invocation
   if (gl_GlobalInvocationID.x != 0u) return;
   const uint kMaxGroups = 65535u;
@@ -121,29 +125,29 @@ void main() {
 #elif defined(STEP_LOOPS)  // next <- next of next, mark <- the lower of both
   uint i = member();
   if (i == kNoLink) return;
-  uvec4 here = src(i), there = src(here.x);
+  uvec4 here = src(h, i), there = src(h, here.x);
   uint mark = min(here.y, there.y);
-  put(i, uvec4(there.x, mark, 0u, 0u));
+  put(h, i, uvec4(there.x, mark, 0u, 0u));
   uint k = round_index + 1u;
   if (mark != here.y && k < 32u && count > (1u << k)) round_groups[k].x = all_x;
 #elif defined(STEP_CUT)  // a loop is cut before its lowest record: every chain is a list both ways
   uint i = member();
   if (i == kNoLink) return;
-  uvec4 found = src(i), l = links[i];
+  uvec4 found = src(h, i), l = links[i];
   // An open chain's `next` is its end, which has no successor; a loop's mark its lowest + 1.
   bool closed = links[found.x].x != kNoLink;
   uint cut = found.y;
   bool first = l.y == kNoLink || (closed && i + 1u == cut), last = l.x == kNoLink || (closed && l.x + 1u == cut);
   links[i].z = closed ? 1u : 0u;
-  put(i, uvec4(first ? i : l.y, first ? 0u : 1u, last ? i : l.x, last ? 0u : 1u));
-  arc_put(i, vec2(first ? 0.0 : length_of(l.y), last ? 0.0 : length_of(l.x)));
+  put(h, i, uvec4(first ? i : l.y, first ? 0u : 1u, last ? i : l.x, last ? 0u : 1u));
+  arc_put(h, i, vec2(first ? 0.0 : length_of(l.y), last ? 0.0 : length_of(l.x)));
 #elif defined(STEP_RANK)  // both ways: start and rank, end and distance to it
   uint i = member();
   if (i == kNoLink) return;
-  uvec4 here = src(i), back = src(here.x), ahead = src(here.z);
+  uvec4 here = src(h, i), back = src(h, here.x), ahead = src(h, here.z);
   uvec4 jumped = uvec4(back.x, here.y + back.y, ahead.z, here.w + ahead.w);
-  put(i, jumped);
-  arc_put(i, vec2(arc_src(i).x + arc_src(here.x).x, arc_src(i).y + arc_src(here.z).y));
+  put(h, i, jumped);
+  arc_put(h, i, vec2(arc_src(h, i).x + arc_src(h, here.x).x, arc_src(h, i).y + arc_src(h, here.z).y));
   // Only a start and an end point at themselves, with rank and distance 0 (and s 0): a
   // member whose pointers did not move is done.
   uint k = round_index + 1u;
@@ -151,9 +155,9 @@ void main() {
 #elif defined(STEP_WRITE)
   uint i = member();
   if (i == kNoLink) return;
-  uvec4 ranked = src(i);
+  uvec4 ranked = src(h, i);
   imageStore(chains, table_texel(i), vec4(ranked.x + 1u, ranked.y, ranked.y + ranked.w + 1u, links[i].z));
-  vec2 arc = arc_src(i);
+  vec2 arc = arc_src(h, i);
   imageStore(arcs, table_texel(i), vec4(arc.x, arc.x + length_of(i) + arc.y, 0.0, 0.0));
 #endif
 }
