@@ -301,9 +301,37 @@ const FeatureLineMesh* line_mesh(const LineMeshes& meshes, size_t object) {
   return mesh && !mesh->corner_normals().empty() ? &*mesh : nullptr;
 }
 
+SurfaceStrokes surface_strokes(const Scene& scene, const DecalSurface& decals, const MobileHatching* mobile) {
+  SurfaceStrokes out;
+  const auto hatching = scene.params.get<HatchingParams>();
+  out.hatching = hatch_states(scene, decals, hatching);
+  std::vector<HatchWeight> weights = hatch_weights(out.hatching, decals);
+  std::optional<MobileHatching> own_mobile;
+  if (!mobile) mobile = &own_mobile.emplace(scene, decals);
+  const std::vector<MobileHatching::Placement> placed =
+      mobile->place(scene, given_value(hatching.mobile_threshold), given_value(hatching.mobile_fade));
+  for (uint32_t d = 0; d < decals.size(); ++d) {
+    out.styles.push_back(decals[d].style);
+    int group = decals[d].hatch.group;
+    const uint32_t object = group >= 0 ? out.hatching[group].object : kMissed;
+    if (weights[d].alpha == 0) continue;
+    if (!mobile->moves(d)) {
+      out.drawn.push_back({&decals[d], d, weights[d], object});
+      continue;
+    }
+    for (MobileHatching::Copy& copy : mobile->copies(decals, d, placed)) {
+      HatchWeight weight = weights[d];
+      weight.alpha *= copy.alpha;
+      if (weight.alpha == 0) continue;
+      out.copies.push_back(std::move(copy.decal));
+      out.drawn.push_back({&out.copies.back(), d, weight, object});
+    }
+  }
+  return out;
+}
+
 WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which, const LineMeshes* prepared,
-                         const DecalSurface* decals, const std::vector<ChainPath>* silhouettes,
-                         const MobileHatching* mobile, bool creases) {
+                         const SurfaceStrokes* surface, const std::vector<ChainPath>* silhouettes, bool whole) {
   std::shared_ptr<const LineMeshes> made;
   if (!prepared) made = line_meshes(scene, p, which), prepared = made.get();
   WindowLines out;
@@ -319,7 +347,7 @@ WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects
     if (!mesh) continue;
     const FeatureLines& fixed = mesh->creases_and_borders();
     const EdgeFaces* edges = prepared->edges[i].get();
-    if (creases) {
+    if (whole) {
       for (const FeaturePath& path : fixed.creases) builder.add(path, LineKind::Crease, i, edges);
       for (const FeaturePath& path : fixed.borders) builder.add(path, LineKind::Border, i, edges);
     }
@@ -329,29 +357,11 @@ WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects
     builder.add(c.path, LineKind::Silhouette, c.object, nullptr, c.start_record,
                 c.window.empty() ? nullptr : &c.window);
   assign_keys(out);
-  if (!decals) return out;
-  const auto hatching = scene.params.get<HatchingParams>();
-  out.hatching = hatch_states(scene, *decals, hatching);
-  std::vector<HatchWeight> weights = hatch_weights(out.hatching, *decals);
-  std::optional<MobileHatching> own_mobile;
-  if (!mobile) mobile = &own_mobile.emplace(scene, *decals);
-  const std::vector<MobileHatching::Placement> placed =
-      mobile->place(scene, given_value(hatching.mobile_threshold), given_value(hatching.mobile_fade));
-  for (uint32_t d = 0; d < decals->size(); ++d) {
-    out.decal_styles.push_back((*decals)[d].style);
-    int group = (*decals)[d].hatch.group;
-    const uint32_t object = group >= 0 ? out.hatching[group].object : kMissed;
-    if (weights[d].alpha == 0) continue;
-    if (!mobile->moves(d)) {
-      builder.add_decal((*decals)[d], d, weights[d], object);
-      continue;
-    }
-    for (const MobileHatching::Copy& copy : mobile->copies(*decals, d, placed)) {
-      HatchWeight weight = weights[d];
-      weight.alpha *= copy.alpha;
-      if (weight.alpha > 0) builder.add_decal(copy.decal, d, weight, object);
-    }
-  }
+  if (!surface) return out;
+  out.hatching = surface->hatching;
+  out.decal_styles = surface->styles;
+  if (whole)
+    for (const SurfaceStroke& s : surface->drawn) builder.add_decal(*s.decal, s.index, s.weight, s.object);
   return out;
 }
 

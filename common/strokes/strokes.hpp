@@ -25,6 +25,7 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <string>
 #include <vector>
@@ -151,23 +152,46 @@ struct ChainPath {
   std::vector<glm::dvec3> window = {};
 };
 
-// `prepared` (from line_meshes with the same scene, parameters and `which`) or none;
-// `decals`, the surface points of decals and hatches (Kalnins et al. 2002, §3, §6, common/strokes/decal.hpp),
-// placed after the feature lines, or none; a hatch absent at this frame's level of detail
-// (weight 0) is left out. `silhouettes`: the silhouettes a backend chained itself
-// (common/strokes/silhouette_paths.hpp), in front of the near plane, in start order; none:
-// chained here in double. `mobile`: the mobile hatching groups of `decals`
-// (common/strokes/mobile_hatching.hpp), made once by a backend that keeps its decals; none:
-// made here. A mobile hatch is placed as this frame's copies of it, its weight's alpha
-// times each copy's. `creases`: false leaves the creases and borders out (a backend that
-// makes them itself; the silhouettes' keys then count none).
 struct ProjectedDecal;
 using DecalSurface = std::vector<ProjectedDecal>;  // common/strokes/decal.hpp
 class MobileHatching;
+
+// One surface stroke as a frame draws it (Kalnins et al. 2002, §3, §6): a decal, a hatch, or
+// one of this frame's copies of a mobile hatch; its index in the DecalSurface (its style's in
+// WindowLines::decal_styles), its weight this frame (a copy's alpha times its hatch's), and
+// the object its hatch's group lies on (its points elsewhere count as missed), else kMissed.
+struct SurfaceStroke {
+  const ProjectedDecal* decal;
+  uint32_t index;
+  HatchWeight weight;
+  uint32_t object;
+};
+// A frame's surface strokes: the hatching groups' levels of detail, every stroke's style, and
+// the strokes drawn (weight alpha above 0), in the order window_lines places them: by index, a
+// mobile hatch as its copies. Move-only: `drawn` points into `copies`.
+struct SurfaceStrokes {
+  SurfaceStrokes() = default;
+  SurfaceStrokes(SurfaceStrokes&&) = default;
+  SurfaceStrokes& operator=(SurfaceStrokes&&) = default;
+  std::vector<HatchGroupState> hatching;
+  std::vector<StrokeStyle> styles;
+  std::vector<SurfaceStroke> drawn;
+  std::deque<ProjectedDecal> copies;  // a deque: its elements stay where they are
+};
+// `decals`' strokes this frame; `mobile`: its mobile hatching groups (common/strokes/mobile_hatching.hpp),
+// made once by a backend that keeps its decals; none: made here.
+SurfaceStrokes surface_strokes(const Scene& scene, const DecalSurface& decals, const MobileHatching* mobile = nullptr);
+
+// `prepared` (from line_meshes with the same scene, parameters and `which`) or none;
+// `surface`: the decals and hatches (surface_strokes), placed after the feature lines, or
+// none. `silhouettes`: the silhouettes a backend chained itself
+// (common/strokes/silhouette_paths.hpp), in front of the near plane, in start order; none:
+// chained here in double. `whole`: false leaves out the paths a backend makes itself, the
+// creases, borders, decals and hatches (the silhouettes' keys then count no crease), but
+// keeps the hatching groups and the decals' styles.
 WindowLines window_lines(const Scene& scene, const StrokesParams& p, LineObjects which = LineObjects::Strokes,
-                         const LineMeshes* prepared = nullptr, const DecalSurface* decals = nullptr,
-                         const std::vector<ChainPath>* silhouettes = nullptr, const MobileHatching* mobile = nullptr,
-                         bool creases = true);
+                         const LineMeshes* prepared = nullptr, const SurfaceStrokes* surface = nullptr,
+                         const std::vector<ChainPath>* silhouettes = nullptr, bool whole = true);
 
 // The part [t0, t1] of window segment a -> b within `margin` px of the window (Liang-Barsky);
 // false when none is.

@@ -6,13 +6,14 @@
 // creases and borders (gpu/strokes/crease_rows.hpp) and the silhouettes are made window paths
 // on the GPU, in double: the silhouettes are the GPU's own (silhouette_paths), their points
 // placed and projected on the GPU (gpu/strokes/silhouette_points.hpp), then cut and measured
-// there (gpu/strokes/silhouette_rows.hpp). Both are written first in the frame's path table;
-// the GPU places the decals and hatches the CPU puts up after them and writes the table's
-// header (gpu/strokes/row_counts.hpp TableRows). A frame that sizes the buffers (the first,
-// and any that keeps its lines whole: GpuFrame::whole_lines) reads back the GPU's counts and
-// bounds (RowCounts); the others read nothing back. A frame that keeps its lines whole also
-// reads the silhouettes back and makes the same window paths on the CPU. From the table the
-// GPU expands the lines' quads (gpu/strokes/id_lines.hpp) and the visibility steps sample.
+// there (gpu/strokes/silhouette_rows.hpp); the decals and hatches too, from their surface
+// points, uploaded once (gpu/strokes/decal_rows.hpp). All are written in the frame's path
+// table, and the GPU writes its header (gpu/strokes/row_counts.hpp TableRows). A frame that
+// sizes the buffers (the first, and any that keeps its lines whole: GpuFrame::whole_lines)
+// reads back the GPU's counts and bounds (RowCounts); the others read nothing back. A frame
+// that keeps its lines whole also reads the silhouettes back and makes the same window paths
+// on the CPU. From the table the GPU expands the lines' quads (gpu/strokes/id_lines.hpp) and
+// the visibility steps sample.
 // Every draw writes both key images (under strokes.crease_under_silhouettes) but the
 // silhouettes', which leave crease_ids as it stood.
 #include "common/strokes/id_image.hpp"
@@ -28,6 +29,7 @@
 #include "gpu/scene/mesh_buffers.hpp"
 #include "gpu/strokes/crease_rows.hpp"
 #include "gpu/strokes/decal.hpp"
+#include "gpu/strokes/decal_rows.hpp"
 #include "gpu/strokes/id_lines.hpp"
 #include "gpu/strokes/row_counts.hpp"
 #include "gpu/strokes/silhouette_points.hpp"
@@ -49,10 +51,12 @@ class IdImagePass : public GpuPass {
         creases_(f.scene, f.get(kLineMeshes), stroke_meshes(f)),
         records_(first_faces(f.scene).back()),
         rows_(records_),
-        counts_(make_buffer(nullptr, sizeof(RowCounts))) {
-    // The decals' surface points, projected once for the renderer's frames (Kalnins et al.
-    // 2002, §3).
-    if (has_decals(f.scene)) decals_ = project_decals_through_gbuffer(f.scene);
+        // The decals' surface points, projected once for the renderer's frames (Kalnins et al.
+        // 2002, §3).
+        decals_(has_decals(f.scene) ? project_decals_through_gbuffer(f.scene) : DecalSurface{}),
+        decal_rows_(f.scene, decals_),
+        styles_(3 + decals_.size()),
+        counts_(make_buffer(nullptr, RowCounts::bytes(styles_))) {
     mobile_.emplace(f.scene, decals_);  // the mobile hatching groups' travel (Kalnins et al. 2002, §6.3)
     first_key_ = first_faces(f.scene);
     for (uint32_t o = 0; o < f.scene.objects.size(); ++o)
@@ -71,16 +75,22 @@ class IdImagePass : public GpuPass {
     const bool whole = f.whole_lines || f.dump;  // a dump reads runs back on the lines
     std::vector<ChainPath> read;                 // none unless the lines stay whole
     if (whole) read = silhouettes_.read(f.scene, meshes, paths);
-    WindowLines lines = window_lines(f.scene, p, LineObjects::Strokes, &meshes,
-                                     has_decals(f.scene) ? &decals_ : nullptr, &read, &*mobile_, whole);
-    const size_t gpu_paths = creases_.points() + records_,
-                 gpu_points = creases_.points() + silhouette_point_rows(records_);
-    table_.put(lines, whole ? made_on_gpu(lines) : 0, gpu_paths, gpu_points);
+    std::optional<SurfaceStrokes> strokes;  // the decals and hatches drawn this frame
+    if (has_decals(f.scene)) strokes = surface_strokes(f.scene, decals_, &*mobile_);
+    WindowLines lines =
+        window_lines(f.scene, p, LineObjects::Strokes, &meshes, strokes ? &*strokes : nullptr, &read, whole);
+    const size_t silhouette_points = silhouette_point_rows(records_),
+                 decal_points = strokes ? DecalRows::points(*strokes) : 0;
+    const size_t gpu_paths = creases_.points() + records_ + decal_points,
+                 gpu_points = creases_.points() + silhouette_points + decal_points;
+    table_.reserve(gpu_paths, gpu_points);
     const RowFrame frame{f.scene.width, f.scene.height, f.scene.camera.near, p.vis_step_px};
     clear_buffer(counts_);
-    creases_(f.scene, frame, table_.cpu_points, counts_, table_);
-    rows_(paths, silhouettes_, frame, table_.cpu_points + uint32_t(creases_.points()), counts_, table_);
-    place_(counts_, table_);
+    creases_(f.scene, frame, 0, counts_, table_);
+    rows_(paths, silhouettes_, frame, uint32_t(creases_.points()), counts_, table_);
+    if (strokes)
+      decal_rows_(f.scene, *strokes, frame, uint32_t(creases_.points() + silhouette_points), counts_, table_);
+    header_(counts_, table_);
     table_.sized = whole || !sized_;
     if (table_.sized) size_by_counts(whole ? &lines : nullptr);
     f.put(kWindowLines, std::move(lines));
@@ -126,23 +136,15 @@ class IdImagePass : public GpuPass {
   // buffers (a frame that keeps its lines whole, or the first), checked against `lines` where
   // they stay whole. The frames after go by those buffers and read nothing back.
   void size_by_counts(const WindowLines* lines) {
-    const RowCounts counts = RowCounts::read(counts_);
+    const RowCounts counts = RowCounts::read(counts_, styles_);
     if (silhouette_base(records_, counts.crease_rows) != counts.silhouette_base)  // refuses keys past 32 bits
       throw std::logic_error("id_image: the GPU's first silhouette key is not the CPU's");
     counts.add_bounds_to(table_);
     sized_ = true;
-    const size_t made = size_t(counts.crease_rows) + counts.silhouette_rows + table_.cpu_paths;
+    const size_t made = size_t(counts.crease_rows) + counts.silhouette_rows + counts.decal_rows;
     if (lines && made != lines->paths.size())
       throw std::logic_error("id_image: the GPU made " + std::to_string(made) + " window paths, the CPU " +
                              std::to_string(lines->paths.size()));
-  }
-
-  // The paths of `lines` the GPU also makes: the creases, borders and silhouettes, which come
-  // first (common/strokes/strokes.hpp WindowLines).
-  static size_t made_on_gpu(const WindowLines& lines) {
-    return size_t(std::count_if(lines.paths.begin(), lines.paths.end(), [](const WindowPath& w) {
-      return w.kind == LineKind::Crease || w.kind == LineKind::Border || w.kind == LineKind::Silhouette;
-    }));
   }
 
   // id_image.crease_ids: the window's size under strokes.crease_under_silhouettes, else 1 x 1
@@ -197,12 +199,14 @@ class IdImagePass : public GpuPass {
   CreaseRows creases_;
   size_t records_;  // face records: the most silhouette paths
   SilhouetteRows rows_;
+  DecalSurface decals_;
+  DecalRows decal_rows_;
+  size_t styles_;        // line styles: 3 and one per decal (PathTable::style_of)
   Buffer counts_;        // RowCounts
-  TableRows place_;      // the CPU's rows after the GPU's, and the header
+  TableRows header_;     // the table's header
   bool sized_ = false;   // whether a frame has sized the buffers (size_by_counts)
   IdLines lines_;        // rules 2 and 3
   UploadedPaths table_;  // this frame's, kept until the next (its buffers across frames)
-  DecalSurface decals_;
   std::optional<MobileHatching> mobile_;
   std::vector<uint32_t> first_key_;  // per object, its first face key less one
   std::vector<MeshBuffers> sketchy_;

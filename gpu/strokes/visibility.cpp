@@ -62,11 +62,11 @@ struct TestedRow {
 static_assert(sizeof(TestedRow) == 24);
 
 // At least the first round's samples of each path of `lines` that `table` has from the CPU
-// (first_round_bound; 0 for the others).
+// (first_round_bound): none where the GPU wrote its rows.
 std::vector<double> first_round_samples(const WindowLines& lines, const UploadedPaths& table, double step) {
-  std::vector<double> bounds(lines.paths.size(), 0.0);
-  for (size_t i = 0; i < lines.paths.size(); ++i)
-    if (table.from_cpu(i)) bounds[i] = first_round_bound(lines.paths[i], step, lines.width, lines.height);
+  std::vector<double> bounds;
+  if (!table.gpu_rows)
+    for (const WindowPath& p : lines.paths) bounds.push_back(first_round_bound(p, step, lines.width, lines.height));
   return bounds;
 }
 
@@ -155,8 +155,7 @@ class VisibilityPass : public GpuPass {
     tables_.listed = {&entries_.buffer, uint32_t(slots + 6)}, tables_.samples = {&entries_.buffer, uint32_t(slots + 7)};
     tables_.bound = uint32_t(2 * n), tables_.sized = table.sized;
     for (size_t i = 0; i < path_samples.size(); ++i)
-      if (table.from_cpu(i))
-        tables_.bounds.push_back(run_bound(lines.paths[i], path_samples[i], lines.width, lines.height));
+      tables_.bounds.push_back(run_bound(lines.paths[i], path_samples[i], lines.width, lines.height));
     tables_.bounds.insert(tables_.bounds.end(), table.gpu.begin(), table.gpu.end());
   }
 

@@ -85,26 +85,24 @@ glm::uvec3 row_groups(uint32_t count) {
 }
 
 UploadedPaths::UploadedPaths(const WindowLines& lines) {
-  put(lines, 0, 0, 0);
-  TableHeader h{cpu_paths, cpu_entries, cpu_silhouette_entry};
+  PathTable table(lines);
+  const size_t point_bytes = table.points.size() * sizeof(PointRow), row_bytes = table.paths.size() * sizeof(PathRow);
+  TableHeader h{uint32_t(table.paths.size()), table.entries, table.silhouette_entry};
   for (int k = 0; k < 3; ++k) h.over_entries[k] = row_groups(h.entries)[k], h.over_paths[k] = row_groups(h.paths)[k];
+  paths.reserve(sizeof h + row_bytes);
+  points.reserve(std::max<size_t>(point_bytes, 1));
   upload(&h, sizeof h, paths);
-  copy_buffer(cpu_rows, paths, size_t(cpu_paths) * sizeof(PathRow), sizeof h);
+  upload(table.paths.data(), row_bytes, paths, sizeof h);
+  upload(table.points.data(), point_bytes, points);
+  path_bound = h.paths, entry_bound = h.entries;
 }
 
-void UploadedPaths::put(const WindowLines& lines, size_t in_lines, size_t more_paths, size_t more_points) {
-  PathTable table(lines, in_lines);
-  const size_t point_bytes = table.points.size() * sizeof(PointRow), row_bytes = table.paths.size() * sizeof(PathRow);
-  paths.reserve(sizeof(TableHeader) + (more_paths + table.paths.size()) * sizeof(PathRow));
-  points.reserve(point_bytes + more_points * sizeof(PointRow));
-  cpu_rows.reserve(std::max<size_t>(row_bytes, 1));
-  upload(table.points.data(), point_bytes, points);
-  upload(table.paths.data(), row_bytes, cpu_rows);
-  gpu_in_lines = uint32_t(in_lines), cpu_points = uint32_t(table.points.size());
-  cpu_paths = uint32_t(table.paths.size()), cpu_entries = table.entries;
-  cpu_silhouette_entry = table.silhouette_entry;
-  path_bound = uint32_t(more_paths + table.paths.size());
-  entry_bound = uint32_t(cpu_entries + more_points + more_paths);  // a path's entries: its points, and one
+void UploadedPaths::reserve(size_t most_paths, size_t most_points) {
+  paths.reserve(sizeof(TableHeader) + most_paths * sizeof(PathRow));
+  points.reserve(std::max<size_t>(most_points, 1) * sizeof(PointRow));
+  gpu_rows = true;
+  path_bound = uint32_t(most_paths);
+  entry_bound = uint32_t(most_points + most_paths);  // a path's entries: its points, and one
   gpu_first_round = 0, gpu.clear();
 }
 

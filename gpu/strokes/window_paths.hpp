@@ -76,31 +76,23 @@ glm::uvec3 row_groups(uint32_t count);
 // A frame's path table on the GPU, put up once: the ID image draws its lines from it
 // (gpu/strokes/id_lines.hpp), the visibility steps sample it, the stroke steps follow it.
 // Its paths are in the order of the window lines (common/strokes/strokes.hpp: creases and
-// borders, silhouettes, decals and hatches). The GPU may write the first ones itself, the
-// creases, borders and silhouettes (gpu/strokes/crease_rows.hpp, silhouette_rows.hpp): their
-// points then follow the CPU's, and the GPU places the CPU's rows after its own and writes the
-// header (gpu/strokes/row_counts.hpp TableRows), so that the CPU knows the table by its bounds
-// alone: the steps over its rows go by the header's dispatches.
+// borders, silhouettes, decals and hatches). Either the CPU puts up every row (the lines a
+// backend was fed: parity), or the GPU writes them (gpu/strokes/crease_rows.hpp,
+// silhouette_rows.hpp, decal_rows.hpp) and the table's header (gpu/strokes/row_counts.hpp
+// TableRows), so that the CPU knows the table by its bounds alone: the steps over its rows go
+// by the header's dispatches.
 struct UploadedPaths {
   UploadedPaths() = default;
   explicit UploadedPaths(const WindowLines& lines);  // every path from the CPU, the header too
-  // Puts up the paths of `lines` but their first `gpu_in_lines` (the GPU's, where the lines
-  // hold them too), with room for `more_paths` paths before them and `more_points` points
-  // after theirs; their rows wait in cpu_rows for TableRows. The buffers are kept where they
-  // hold that.
-  void put(const WindowLines& lines, size_t gpu_in_lines, size_t more_paths, size_t more_points);
-  // Whether path i of the lines put up is one the CPU made.
-  bool from_cpu(size_t i) const { return i >= gpu_in_lines; }
+  // Room for a table the GPU writes: `paths` paths and `points` points at most. The buffers
+  // are kept where they hold that.
+  void reserve(size_t paths, size_t points);
   // A dispatch of the program in use over the table's entries, or over its paths.
   void dispatch_over_entries() const { dispatch(offsetof(TableHeader, over_entries)); }
   void dispatch_over_paths() const { dispatch(offsetof(TableHeader, over_paths)); }
-  ScratchBuffer paths, points;  // paths: the header, then the rows
-  ScratchBuffer cpu_rows;       // the CPU's rows, their entries from 0, for TableRows
-  uint32_t cpu_paths = 0, cpu_entries = 0;
-  uint32_t cpu_silhouette_entry = 0;         // the CPU's creases' and borders' entries
+  ScratchBuffer paths, points;               // paths: the header, then the rows
+  bool gpu_rows = false;                     // whether the GPU writes the rows (reserve)
   uint32_t path_bound = 0, entry_bound = 0;  // the most the table holds: what the steps size by
-  uint32_t gpu_in_lines = 0;                 // the GPU's paths the lines hold too
-  uint32_t cpu_points = 0;                   // the CPU's points, before the GPU's
   // Whether the CPU knows the GPU's paths' bounds this frame (it read them back: a frame that
   // sizes the buffers, gpu/core/pipeline.hpp): their first-round samples' bound, together, and
   // their run bounds, per line style. Else the steps go by the buffers an earlier frame sized.

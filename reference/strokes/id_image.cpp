@@ -3,6 +3,8 @@
 // nearest (largest z = near / d).
 #include "common/strokes/id_image.hpp"
 
+#include <optional>
+
 #include "reference/core/stage.hpp"
 #include "reference/strokes/decal.hpp"
 #include "reference/strokes/raster.hpp"
@@ -101,10 +103,11 @@ Image ambiguity_bound(Image ambiguous) {
 
 PLUMBAGO_REFERENCE_STAGE(id_image, [](ReferenceFrame& f) {
   auto p = f.params<StrokesParams>();
-  DecalSurface decals =
-      has_decals(f.scene) ? project_decals_by_rays(f.scene) : DecalSurface{};  // by rays (Kalnins et al. 2002, §3)
+  DecalSurface decals;  // by rays (Kalnins et al. 2002, §3)
+  std::optional<SurfaceStrokes> strokes;
+  if (has_decals(f.scene)) decals = project_decals_by_rays(f.scene), strokes = surface_strokes(f.scene, decals);
   f.put(kWindowLines,
-        window_lines(f.scene, p, LineObjects::Strokes, &f.get(kLineMeshes), has_decals(f.scene) ? &decals : nullptr));
+        window_lines(f.scene, p, LineObjects::Strokes, &f.get(kLineMeshes), strokes ? &*strokes : nullptr));
   const WindowLines& lines = f.get(kWindowLines);
   IdRaster r = empty_raster(f.scene.width, f.scene.height);
   draw_gbuffer_faces(f.get(kGBuffer), gbuffer_first_keys(f.scene), f.scene.camera.near, r);

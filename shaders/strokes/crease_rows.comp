@@ -91,6 +91,7 @@ dvec2 window_of(uint q) { return scratch[q].window; }
 double depth_of(uint q) { return scratch[q].depth; }
 dvec3 world_of(uint q) { return scratch[q].world.xyz; }
 uvec2 faces_of(uint q) { return scratch[q].faces; }
+double pressure_of(uint q) { return 1.0lf; }
 
 #include "strokes/path_rows.glsl"
 

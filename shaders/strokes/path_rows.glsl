@@ -1,7 +1,7 @@
 // What the GPU's window-path steps share (shaders/strokes/crease_rows.comp,
-// silhouette_rows.comp), after strokes/window_paths.glsl: what they count
-// (strokes/row_counts.glsl), and, where the includer defines window_of, depth_of, world_of
-// and faces_of for its points (and ROWS), how a piece is measured and written.
+// silhouette_rows.comp, decal_rows.comp), after strokes/window_paths.glsl: what they count
+// (strokes/row_counts.glsl), and, where the includer defines window_of, depth_of, world_of,
+// faces_of and pressure_of for its points (and ROWS), how a piece is measured and written.
 #include "strokes/row_counts.glsl"
 
 // Adds v >= 0 to sum `value` of style `style`, carrying where the low word wraps.
@@ -46,7 +46,7 @@ double write_points(uint first, uint count, bool closed, uint at) {
     uint q = first + k, next = first + (k + 1u) % count;
     bool segment = closed || k + 1u < count;
     Point row;
-    row.window = window_of(q), row.s = s, row.pressure = 1.0lf, row.depth = depth_of(q);
+    row.window = window_of(q), row.s = s, row.pressure = pressure_of(q), row.depth = depth_of(q);
     row.faces = segment ? faces_of(q) : uvec2(0u);
     row.world_step = segment ? distance(world_of(q), world_of(next)) : 0.0lf;
     row.pad = 0.0lf;

@@ -42,6 +42,7 @@ dvec2 window_of(uint q) { return dvec2(points[q].x, points[q].y); }
 double depth_of(uint q) { return points[q].depth; }
 dvec3 world_of(uint q) { return worlds[q].xyz; }
 uvec2 faces_of(uint q) { return uvec2(0u); }  // a silhouette's samples test their own key alone
+double pressure_of(uint q) { return 1.0lf; }
 
 #include "strokes/path_rows.glsl"
 

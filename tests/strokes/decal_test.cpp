@@ -265,7 +265,8 @@ TEST_F(DecalStrokes, Parity) {
   for (const char* name : {"sphere", "torus"}) {
     Scene scene = with_drawn_grid(testing::builtin_at(name, 320, 240));
     DecalSurface surface = reference::project_decals_by_rays(scene);
-    WindowLines lines = window_lines(scene, scene.params.get<StrokesParams>(), LineObjects::Strokes, nullptr, &surface);
+    const SurfaceStrokes strokes = surface_strokes(scene, surface);
+    WindowLines lines = window_lines(scene, scene.params.get<StrokesParams>(), LineObjects::Strokes, nullptr, &strokes);
     size_t decals = 0;
     for (const WindowPath& p : lines.paths) decals += p.kind == LineKind::Decal;
     ASSERT_GT(decals, 5u) << name;
@@ -281,7 +282,8 @@ TEST_F(DecalStrokes, Parity) {
 
 // The share of each decal path's length visible in the ID image of `scene`'s reference frame.
 double visible_decal_share(const Scene& scene, const DecalSurface& surface) {
-  WindowLines lines = window_lines(scene, scene.params.get<StrokesParams>(), LineObjects::Strokes, nullptr, &surface);
+  const SurfaceStrokes strokes = surface_strokes(scene, surface);
+  WindowLines lines = window_lines(scene, scene.params.get<StrokesParams>(), LineObjects::Strokes, nullptr, &strokes);
   ImageU32 keys = keys_from_channels(reference::render(scene, FrameOptions{true}).buffers.at(kIds.name));
   int seen = 0, n = 0;
   for (const WindowPath& p : lines.paths)

@@ -249,7 +249,8 @@ TEST_F(HatchingStrokes, Parity) {
   }
   ASSERT_GE(mid, 0) << "no frame in the middle of a transition";
   Scene scene = scene_at_frame(path, mid);
-  WindowLines lines = window_lines(scene, scene.params.get<StrokesParams>(), LineObjects::Strokes, nullptr, &ref);
+  const SurfaceStrokes strokes = surface_strokes(scene, ref);
+  WindowLines lines = window_lines(scene, scene.params.get<StrokesParams>(), LineObjects::Strokes, nullptr, &strokes);
   size_t hatches = 0;
   for (const WindowPath& p : lines.paths) hatches += p.kind == LineKind::Hatching;
   ASSERT_GT(hatches, 7u);

@@ -11,7 +11,9 @@
 #include <vector>
 
 #include "common/scene/scene.hpp"
+#include "common/strokes/decal.hpp"
 #include "gpu/core/pipeline.hpp"
+#include "gpu/strokes/row_counts.hpp"
 #include "tests/support/test_scenes.hpp"
 
 namespace plumbago {
@@ -19,8 +21,8 @@ namespace {
 
 class LeanFrames : public testing::GlTest {};
 
-// Scenes whose frames have every kind of window path: the GPU's creases, borders and
-// silhouettes, the CPU's decals and hatches, moving hatching groups among them.
+// Scenes whose frames have every kind of window path: creases, borders, silhouettes, decals
+// and hatches, moving hatching groups among them.
 std::vector<std::string> scene_files() {
   return {"teapot_decals.json", "hatching_lod.json", "snowman_mobile.json", "storefront_strokes.json",
           "torus_strokes.json"};
@@ -50,13 +52,14 @@ TEST_F(LeanFrames, ReadNothingBackAndDrawWhatTheSizingFrameDrew) {
 }
 
 // The first frame of a renderer sizes the buffers even when it is a lean one, and reads back
-// only what the GPU counted of its paths (gpu/strokes/row_counts.hpp, 144 bytes).
+// only what the GPU counted of its paths (gpu/strokes/row_counts.hpp: 48 bytes, and 32 per
+// line style, one a decal).
 TEST_F(LeanFrames, TheFirstFrameSizesTheBuffers) {
   Scene s = load_scene(PLUMBAGO_SOURCE_DIR "/scenes/teapot_decals.json");
   gpu::Renderer lean_first(s);
   Frame first, second;
   lean_first.render_frame(first);
-  EXPECT_EQ(first.readback_bytes, 144u);
+  EXPECT_EQ(first.readback_bytes, gpu::RowCounts::bytes(3 + decal_samples(s).size()));
   lean_first.render_frame(second);
   EXPECT_EQ(second.readback_bytes, 0u);
   const Image drawn = lean_first.color();

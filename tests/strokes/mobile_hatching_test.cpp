@@ -132,7 +132,8 @@ TEST(MobileHatching, FadesAsTheLightingApproachesTheThreshold) {
   // window_lines draws each copy with the fade's alpha.
   s.params.set("hatching.mobile_fade", 0.1);
   s.params.set("hatching.mobile_threshold", double(float(l - 0.05)));
-  WindowLines lines = window_lines(s, s.params.get<StrokesParams>(), LineObjects::Strokes, nullptr, &surface);
+  const SurfaceStrokes strokes = surface_strokes(s, surface);
+  WindowLines lines = window_lines(s, s.params.get<StrokesParams>(), LineObjects::Strokes, nullptr, &strokes);
   size_t hatches = 0;
   for (const WindowPath& p : lines.paths) {
     if (p.kind != LineKind::Hatching) continue;

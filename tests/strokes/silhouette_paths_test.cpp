@@ -6,11 +6,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "common/mesh/procedural.hpp"
 #include "common/scene/scene.hpp"
+#include "common/strokes/decal.hpp"
 #include "common/strokes/silhouette_paths.hpp"
 #include "common/strokes/strokes.hpp"
 #include "common/strokes/visibility.hpp"
@@ -204,42 +206,42 @@ gpu::PathTable read_rows(const gpu::UploadedPaths& table) {
 
 // The bounds the GPU summed for its paths (gpu/strokes/row_counts.hpp), by which the CPU sizes
 // the visibility and stroke buffers, against the same bounds of the CPU's paths
-// (first_round_bound, gpu::run_bound): at least those, and more by less than 1 a path (the
-// GPU rounds each path's up to an integer).
+// (first_round_bound, gpu::run_bound), per line style: at least those, and more by less than
+// 1 a path (the GPU rounds each path's up to an integer).
 void expect_gpu_bounds(const WindowLines& lines, const gpu::UploadedPaths& table, double step,
                        const std::string& name) {
   double first_round = 0;
-  std::array<gpu::RunBound, 3> cpu{};  // per line style: crease, border, silhouette
-  std::array<double, 3> paths{};
+  std::map<uint32_t, gpu::RunBound> cpu, gpu;  // per line style (gpu::PathTable::style_of)
+  std::map<uint32_t, double> paths;
   for (const WindowPath& p : lines.paths) {
     const uint32_t style = gpu::PathTable::style_of(p);
-    if (style > 2) continue;  // a decal's or hatch's: the CPU's own
     const double s = first_round_bound(p, step, lines.width, lines.height);
     const gpu::RunBound b = gpu::run_bound(p, s, lines.width, lines.height);
     first_round += s, cpu[style].runs += b.runs, cpu[style].length += b.length, cpu[style].points += b.points;
     paths[style] += 1;
   }
-  const double all = paths[0] + paths[1] + paths[2];
   EXPECT_GE(table.gpu_first_round, first_round - 1e-6) << name;
-  EXPECT_LT(table.gpu_first_round, first_round + all) << name;
-  std::array<gpu::RunBound, 3> gpu{};
-  for (const gpu::RunBound& b : table.gpu) gpu.at(b.style) = b;
-  for (size_t style = 0; style < 3; ++style) {
+  EXPECT_LT(table.gpu_first_round, first_round + double(lines.paths.size())) << name;
+  for (const gpu::RunBound& b : table.gpu) gpu[b.style] = b;
+  EXPECT_EQ(gpu.size(), cpu.size()) << name;
+  for (const auto& [style, c] : cpu) {
     const std::string at = name + " style " + std::to_string(style);
-    EXPECT_EQ(gpu[style].runs, cpu[style].runs) << at;
-    EXPECT_EQ(gpu[style].points, cpu[style].points) << at;
-    EXPECT_GE(gpu[style].length, cpu[style].length - 1e-6) << at;
-    EXPECT_LT(gpu[style].length, cpu[style].length + paths[style] + 1e-6) << at;
+    const gpu::RunBound& g = gpu[style];
+    EXPECT_EQ(g.runs, c.runs) << at;
+    EXPECT_EQ(g.points, c.points) << at;
+    EXPECT_GE(g.length, c.length - 1e-6) << at;
+    EXPECT_LT(g.length, c.length + paths[style] + 1e-6) << at;
   }
 }
 
-// The GPU frame writes the window paths of its creases, borders and silhouettes itself
-// (gpu/strokes/crease_rows.hpp, silhouette_rows.hpp; the CPU reads back only their counts and
-// bounds): its path table's rows against those the CPU makes of the same points
-// (common/strokes/strokes.cpp window_lines, which a frame that keeps its lines whole runs
-// too): the same paths, counts, keys, kinds, entries and segment faces exactly; the
-// silhouettes' window points and depths exactly (the same doubles), the creases' within the
-// rounding of a few double operations, as are arc lengths, lengths and world steps.
+// The GPU frame writes the window paths of its creases, borders, silhouettes, decals and
+// hatches itself (gpu/strokes/crease_rows.hpp, silhouette_rows.hpp, decal_rows.hpp; the CPU
+// reads back only their counts and bounds): its path table's rows against those the CPU
+// makes of the same points (common/strokes/strokes.cpp window_lines, which a frame that keeps
+// its lines whole runs too): the same paths, counts, keys, kinds, weights, entries, segment
+// faces and pressures exactly; the silhouettes' window points and depths exactly (the same
+// doubles), the others' within the rounding of a few double operations, as are arc lengths,
+// lengths and world steps.
 TEST_F(SilhouettePaths, GpuWritesTheWindowPathsTheCpuMakesOfItsPoints) {
   std::vector<std::pair<std::string, Scene>> all = scenes();
   all.emplace_back("torus cut by the near plane", torus_cut_by_the_near_plane());
@@ -248,6 +250,7 @@ TEST_F(SilhouettePaths, GpuWritesTheWindowPathsTheCpuMakesOfItsPoints) {
   all.back().second.params.set("strokes.keep_back_facing", 1.0);
   all.emplace_back("sphere with hatches", load_scene(PLUMBAGO_SOURCE_DIR "/scenes/hatching_lod.json"));
   all.emplace_back("teapot with decals", load_scene(PLUMBAGO_SOURCE_DIR "/scenes/teapot_decals.json"));
+  all.emplace_back("snowman with mobile hatching", load_scene(PLUMBAGO_SOURCE_DIR "/scenes/snowman_mobile.json"));
   all.emplace_back("storefront", load_scene(PLUMBAGO_SOURCE_DIR "/scenes/storefront_strokes.json"));
   const auto [behind, crease_paths] = crease_points_behind(cad_cut_by_the_near_plane());
   std::printf("CAD part: %zu of its points on %zu crease and border paths nearer than its near plane\n", behind,
@@ -264,7 +267,7 @@ TEST_F(SilhouettePaths, GpuWritesTheWindowPathsTheCpuMakesOfItsPoints) {
     EXPECT_EQ(gpu_rows.entries, cpu.entries) << name;
     EXPECT_EQ(gpu_rows.silhouette_entry, cpu.silhouette_entry) << name;
     double window = 0, depth = 0, arc = 0, step = 0;
-    size_t made[3] = {0, 0, 0}, cut = 0;  // creases, borders, silhouettes
+    size_t made[4] = {0, 0, 0, 0}, cut = 0;  // creases, borders, silhouettes, decals and hatches
     for (size_t i = 0; i < cpu.paths.size(); ++i) {
       const gpu::PathRow &g = gpu_rows.paths[i], &c = cpu.paths[i];
       const std::string at = name + " path " + std::to_string(i);
@@ -277,12 +280,11 @@ TEST_F(SilhouettePaths, GpuWritesTheWindowPathsTheCpuMakesOfItsPoints) {
       EXPECT_NEAR(g.length_px, c.length_px, kDoubleRelative * std::max(1.0, c.length_px)) << at;
       EXPECT_EQ(g.alpha_scale, c.alpha_scale) << at;
       EXPECT_EQ(g.width_scale, c.width_scale) << at;
-      if (c.style > 2) continue;  // a decal's or hatch's, the CPU's own
-      ++made[c.style], cut += (c.kind & 16u) == 0;
+      ++made[std::min<uint32_t>(c.style, 3)], cut += (c.kind & 16u) == 0;
       for (uint32_t k = 0; k < c.points; ++k) {
         const gpu::PointRow &gp = gpu_rows.points[g.first_point + k], &cp = cpu.points[c.first_point + k];
         EXPECT_EQ(gp.faces, cp.faces) << at << " point " << k;
-        EXPECT_EQ(gp.pressure, 1.0) << at << " point " << k;
+        EXPECT_EQ(gp.pressure, cp.pressure) << at << " point " << k;
         if (c.style == 2) {
           EXPECT_EQ(gp.window, cp.window) << at << " point " << k;
         }
@@ -293,9 +295,12 @@ TEST_F(SilhouettePaths, GpuWritesTheWindowPathsTheCpuMakesOfItsPoints) {
       }
     }
     std::printf(
-        "[GPU rows %s] %zu crease, %zu border, %zu silhouette paths (%zu open); window %.3g px, depth %.3g, arc "
-        "lengths %.3g, world steps %.3g relative\n",
-        name.c_str(), made[0], made[1], made[2], cut, window, depth, arc, step);
+        "[GPU rows %s] %zu crease, %zu border, %zu silhouette, %zu decal and hatch paths (%zu open); window %.3g "
+        "px, depth %.3g, arc lengths %.3g, world steps %.3g relative\n",
+        name.c_str(), made[0], made[1], made[2], made[3], cut, window, depth, arc, step);
+    if (has_decals(s)) {
+      EXPECT_GT(made[3], 0u) << name;
+    }
     EXPECT_GT(made[0] + made[1] + made[2], 0u) << name;
     EXPECT_LT(window, kDoublePointPx) << name;
     EXPECT_LT(depth, kDoubleRelative) << name;
