@@ -31,6 +31,7 @@ ExclusiveScan::ExclusiveScan()
       reduce_(step("STEP_REDUCE")),
       tiles_(step("STEP_TILES")),
       down_(step("STEP_DOWN")),
+      single_(step("STEP_SINGLE")),
       size_buffer_(make_size_buffer()) {}
 
 void ExclusiveScan::reserve_tiles(size_t n) {
@@ -46,7 +47,7 @@ void ExclusiveScan::operator()(const Buffer& values, size_t n) {
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, size_buffer_.id());  // not DSA: OSMesa has no such entry
   glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof size, &size);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, values.id());
-  run();
+  run(n);
 }
 
 void ExclusiveScan::operator()(const Buffer& values, size_t capacity, const Buffer& counts, size_t at, uint32_t scale) {
@@ -61,12 +62,18 @@ void ExclusiveScan::operator()(const Buffer& values, size_t capacity, const Buff
   glUseProgram(size_.id());
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-  run();
+  run(capacity);
 }
 
-void ExclusiveScan::run() {
+void ExclusiveScan::run(size_t most) {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, tile_sums_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, size_buffer_.id());
+  if (most <= kTile) {  // one tile: one workgroup, no tile sums
+    glUseProgram(single_.id());
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    return;
+  }
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, size_buffer_.id());
   for (const Program* p : {&reduce_, &tiles_, &down_}) {
     glUseProgram(p->id());

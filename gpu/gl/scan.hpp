@@ -1,6 +1,7 @@
 // Exclusive prefix sums of a uint buffer on the GPU, in three dispatches (reduce each tile, scan
-// the tiles' sums in one workgroup, then each tile with its offset; shaders/util/scan.comp).
-// The count may stay on the GPU: the dispatches then go over it indirectly.
+// the tiles' sums in one workgroup, then each tile with its offset; shaders/util/scan.comp),
+// or in one where the values fit one tile of 2048. The count may stay on the GPU: the
+// dispatches then go over it indirectly.
 #pragma once
 
 #include <cstddef>
@@ -24,9 +25,9 @@ class ExclusiveScan {
 
  private:
   void reserve_tiles(size_t n);
-  void run();
+  void run(size_t most);  // `most`: the most values, the count's bound
 
-  Program size_, reduce_, tiles_, down_;
+  Program size_, reduce_, tiles_, down_, single_;
   Buffer tile_sums_, size_buffer_;
   size_t tile_capacity_ = 0;
 };

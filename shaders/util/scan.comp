@@ -3,7 +3,8 @@
 //   STEP_SIZE:   one invocation: the count from a buffer on the GPU, the tiles' dispatch;
 //   STEP_REDUCE: per tile of 2048 values, their sum;
 //   STEP_TILES:  one workgroup: the tiles' sums made the sums of the tiles before each;
-//   STEP_DOWN:   per tile, each value replaced by the sum of all values before it.
+//   STEP_DOWN:   per tile, each value replaced by the sum of all values before it;
+//   STEP_SINGLE: one workgroup, the values of one tile at most: STEP_DOWN with no tile before.
 layout(local_size_x = 256) in;
 
 const uint kPerInvocation = 8u, kTile = 2048u;
@@ -64,8 +65,12 @@ void main() {
     tile_sums[k] = before;
     before += own;
   }
-#elif defined(STEP_DOWN)
+#elif defined(STEP_DOWN) || defined(STEP_SINGLE)
+#if defined(STEP_DOWN)
   uint at = tile_sums[gl_WorkGroupID.x] + exclusive_scan(invocation_sum(), total);
+#else
+  uint at = exclusive_scan(invocation_sum(), total);
+#endif
   for (uint k = 0u, i = first_of_invocation(); k < kPerInvocation && i < count; ++k, ++i) {
     uint own = values[i];
     values[i] = at;
