@@ -30,10 +30,6 @@ struct FrameRow {
 };
 static_assert(sizeof(ObjectRow) == 160 && sizeof(ScratchPoint) == 96 && sizeof(FrameRow) == 288);
 
-Program step(const char* name) {
-  return Program::compute("strokes/crease_rows.comp", std::string("#define ") + name + "\n");
-}
-
 // Per crease and border path of `scene`'s stroke objects, in window_lines' order: its first
 // record, its points, and flags (1 closed, 2 a border).
 std::vector<glm::uvec4> path_defs(const Scene& scene, const LineMeshes& meshes) {
@@ -55,13 +51,11 @@ std::vector<glm::uvec4> path_defs(const Scene& scene, const LineMeshes& meshes) 
 }  // namespace
 
 CreaseRows::CreaseRows(const Scene& scene, const LineMeshes& meshes, const StrokeMeshes& shared)
-    : points_step_(step("STEP_POINTS")),
-      pieces_step_(step("STEP_PIECES")),
-      rows_step_(step("STEP_ROWS")),
-      totals_(step("STEP_TOTALS")),
+    : points_step_(Program::compute("strokes/crease_rows.comp", "#define STEP_POINTS\n")),
+      rows_("strokes/crease_rows.comp"),
       meshes_(shared),
       first_face_(first_faces(scene)) {
-  face_count_ = first_face_.back();
+  rows_.set("face_count", first_face_.back());
   std::vector<glm::uvec4> packed, defs = path_defs(scene, meshes);
   std::vector<uint32_t> around;
   for (const CreaseRecord& r : crease_records(scene, meshes)) {
@@ -76,8 +70,6 @@ CreaseRows::CreaseRows(const Scene& scene, const LineMeshes& meshes, const Strok
   around_ = make_buffer(around.data(), around.size() * sizeof(uint32_t));
   defs_ = make_buffer(defs.data(), defs.size() * sizeof(glm::uvec4));
   scratch_ = make_buffer(nullptr, std::max<size_t>(records_, 1) * sizeof(ScratchPoint));
-  pieces_ = make_buffer(nullptr, (paths_ + 1) * sizeof(uint32_t));
-  entries_ = make_buffer(nullptr, (paths_ + 1) * sizeof(uint32_t));
 }
 
 void CreaseRows::place_points(const Scene& scene, const RowFrame& frame) {
@@ -99,41 +91,10 @@ void CreaseRows::place_points(const Scene& scene, const RowFrame& frame) {
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-// A step over the paths, one invocation each (path_rows.glsl path_index).
-void CreaseRows::over_paths(const Program& step) const {
-  const size_t groups = (paths_ + 63) / 64, rows = (groups + 65534) / 65535;
-  glUseProgram(step.id());
-  if (groups > 0) glDispatchCompute(GLuint((groups + rows - 1) / rows), GLuint(rows), 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-}
-
 void CreaseRows::operator()(const Scene& scene, const RowFrame& frame, uint32_t first_point, const Buffer& counts,
                             const UploadedPaths& table) {
   place_points(scene, frame);
-  for (const Program* p : {&pieces_step_, &rows_step_, &totals_}) {
-    glProgramUniform1f(p->id(), p->uniform("near"), frame.near);
-    glProgramUniform1f(p->id(), p->uniform("width"), float(frame.width));
-    glProgramUniform1f(p->id(), p->uniform("height"), float(frame.height));
-    glProgramUniform1f(p->id(), p->uniform("step_px"), frame.step_px);
-    glProgramUniform1ui(p->id(), p->uniform("crease_paths"), GLuint(paths_));
-    glProgramUniform1ui(p->id(), p->uniform("face_count"), face_count_);
-    glProgramUniform1ui(p->id(), p->uniform("first_point"), first_point);
-  }
-  auto bind = [&] {
-    const Buffer* bound[] = {&counts, &defs_, &scratch_, &pieces_, &entries_};
-    for (GLuint b = 0; b < 5; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, table.paths.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, table.points.id());
-  };
-  bind();
-  over_paths(pieces_step_);
-  scan_(pieces_, paths_ + 1);
-  scan_(entries_, paths_ + 1);
-  bind();
-  over_paths(rows_step_);
-  glUseProgram(totals_.id());
-  glDispatchCompute(1, 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  rows_(frame, paths_, first_point, counts, table, {&defs_, &scratch_});
 }
 
 }  // namespace plumbago::gpu

@@ -14,7 +14,7 @@
 
 #include "common/strokes/strokes.hpp"
 #include "gpu/gl/program.hpp"
-#include "gpu/gl/scan.hpp"
+#include "gpu/strokes/piece_rows.hpp"
 #include "gpu/strokes/silhouette_rows.hpp"
 #include "gpu/strokes/stroke_meshes.hpp"
 #include "gpu/strokes/window_paths.hpp"
@@ -34,15 +34,13 @@ class CreaseRows {
 
  private:
   void place_points(const Scene& scene, const RowFrame& frame);
-  void over_paths(const Program& step) const;
 
-  Program points_step_, pieces_step_, rows_step_, totals_;
-  ExclusiveScan scan_;
+  Program points_step_;
+  PieceRows rows_;
   const StrokeMeshes& meshes_;
   size_t records_ = 0, paths_ = 0;
-  uint32_t face_count_ = 0;
   std::vector<uint32_t> first_face_;
-  Buffer records_buffer_, around_, defs_, scratch_, pieces_, entries_;
+  Buffer records_buffer_, around_, defs_, scratch_;
 };
 
 }  // namespace plumbago::gpu

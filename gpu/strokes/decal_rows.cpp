@@ -40,10 +40,6 @@ struct ObjectRow {
 static_assert(sizeof(RecordRow) == 64 && sizeof(StrokeRow) == 48 && sizeof(ScratchPoint) == 96 &&
               sizeof(FrameRow) == 256 && sizeof(ObjectRow) == 160);
 
-Program step(const char* name) {
-  return Program::compute("strokes/decal_rows.comp", std::string("#define ") + name + "\n");
-}
-
 // The points of `decal` in object space (common/strokes/decal.hpp decal_point_local).
 void add_records(const Scene& scene, const ProjectedDecal& decal, std::vector<RecordRow>& out) {
   for (const DecalPoint& p : decal.points) {
@@ -62,10 +58,8 @@ Buffer rows_buffer(std::vector<Row> rows) {
 }  // namespace
 
 DecalRows::DecalRows(const Scene& scene, const DecalSurface& decals)
-    : points_step_(step("STEP_POINTS")),
-      pieces_step_(step("STEP_PIECES")),
-      rows_step_(step("STEP_ROWS")),
-      totals_(step("STEP_TOTALS")),
+    : points_step_(Program::compute("strokes/decal_rows.comp", "#define STEP_POINTS\n")),
+      rows_("strokes/decal_rows.comp"),
       decals_(decals),
       first_key_(first_faces(scene)) {
   std::vector<RecordRow> records;
@@ -111,53 +105,21 @@ void DecalRows::place_points(const Scene& scene, const SurfaceStrokes& drawn, co
   std::memcpy(object_bytes.data() + sizeof view_row, objects.data(), scene.objects.size() * sizeof(ObjectRow));
   const Buffer object_rows = make_buffer(object_bytes.data(), object_bytes.size());
   scratch_.reserve(std::max<uint32_t>(next, 1) * sizeof(ScratchPoint));
-  pieces_.reserve((strokes_ + 1) * sizeof(uint32_t));
-  entries_.reserve((strokes_ + 1) * sizeof(uint32_t));
   const GLuint p = points_step_.id();
   glProgramUniform1f(p, points_step_.uniform("width"), float(frame.width));
   glProgramUniform1f(p, points_step_.uniform("height"), float(frame.height));
-  glProgramUniform1ui(p, points_step_.uniform("stroke_count"), GLuint(strokes_));
+  glProgramUniform1ui(p, points_step_.uniform("source_count"), GLuint(strokes_));
   const std::pair<GLuint, const Buffer*> bound[] = {
       {1, &strokes_buffer_}, {2, &scratch_.buffer}, {5, &fixed_}, {6, &moving_buffer}, {7, &object_rows}};
   for (auto [b, buffer] : bound) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, buffer->id());
-  over_strokes(points_step_);
-}
-
-// A step over the strokes drawn, one invocation each (util/rows.glsl row_index).
-void DecalRows::over_strokes(const Program& step) const {
-  const glm::uvec3 groups = row_groups(uint32_t(strokes_));
-  glUseProgram(step.id());
-  glDispatchCompute(groups.x, groups.y, groups.z);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  over_rows(points_step_, strokes_);
 }
 
 void DecalRows::operator()(const Scene& scene, const SurfaceStrokes& drawn, const RowFrame& frame, uint32_t first_point,
                            const Buffer& counts, const UploadedPaths& table) {
   if (drawn.drawn.empty()) return;  // the counts stay 0
   place_points(scene, drawn, frame);
-  for (const Program* p : {&pieces_step_, &rows_step_, &totals_}) {
-    glProgramUniform1f(p->id(), p->uniform("near"), frame.near);
-    glProgramUniform1f(p->id(), p->uniform("width"), float(frame.width));
-    glProgramUniform1f(p->id(), p->uniform("height"), float(frame.height));
-    glProgramUniform1f(p->id(), p->uniform("step_px"), frame.step_px);
-    glProgramUniform1ui(p->id(), p->uniform("stroke_count"), GLuint(strokes_));
-    glProgramUniform1ui(p->id(), p->uniform("first_point"), first_point);
-  }
-  auto bind = [&] {
-    const Buffer* bound[] = {&counts, &strokes_buffer_, &scratch_.buffer, &pieces_.buffer, &entries_.buffer};
-    for (GLuint b = 0; b < 5; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, table.paths.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, table.points.id());
-  };
-  bind();
-  over_strokes(pieces_step_);
-  scan_(pieces_, strokes_ + 1);
-  scan_(entries_, strokes_ + 1);
-  bind();
-  over_strokes(rows_step_);
-  glUseProgram(totals_.id());
-  glDispatchCompute(1, 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  rows_(frame, strokes_, first_point, counts, table, {&strokes_buffer_, &scratch_.buffer});
 }
 
 }  // namespace plumbago::gpu

@@ -16,7 +16,7 @@
 
 #include "common/strokes/strokes.hpp"
 #include "gpu/gl/program.hpp"
-#include "gpu/gl/scan.hpp"
+#include "gpu/strokes/piece_rows.hpp"
 #include "gpu/strokes/silhouette_rows.hpp"
 #include "gpu/strokes/window_paths.hpp"
 
@@ -36,14 +36,13 @@ class DecalRows {
 
  private:
   void place_points(const Scene& scene, const SurfaceStrokes& drawn, const RowFrame& frame);
-  void over_strokes(const Program& step) const;
 
-  Program points_step_, pieces_step_, rows_step_, totals_;
-  ExclusiveScan scan_;
+  Program points_step_;
+  PieceRows rows_;
   const DecalSurface& decals_;
   std::vector<uint32_t> first_record_, first_key_;  // per decal; per object
   Buffer fixed_, strokes_buffer_;                   // the strokes' points; this frame's strokes
-  ScratchBuffer scratch_, pieces_, entries_;
+  ScratchBuffer scratch_;
   size_t strokes_ = 0;  // drawn this frame
 };
 

@@ -4,7 +4,7 @@
 // window_lines makes of them on the CPU (PathBuilder::add, flush), in double, from their
 // points and the faces around their segments, uploaded once (common/strokes/crease_points.hpp
 // crease_records); and their bounds, summed (strokes/path_rows.glsl). The steps of
-// gpu/strokes/crease_rows.cpp:
+// gpu/strokes/crease_rows.cpp (STEP_POINTS; the others: gpu/strokes/piece_rows.hpp):
 //   STEP_POINTS: per point, its world and window positions and view depth, and the keys of
 //                the first two faces around its segment that face the eye (faces_eye);
 //   STEP_PIECES: per path, its pieces in front of the near plane, each of two points or
@@ -96,13 +96,13 @@ double pressure_of(uint q) { return 1.0lf; }
 #include "strokes/path_rows.glsl"
 
 uniform float near, width, height, step_px;  // exact as doubles
-uniform uint crease_paths, face_count;  // the creases and borders (defs), the faces keyed before them
+uniform uint source_count, face_count;  // the creases and borders (defs), the faces keyed before them
 uniform uint first_point;  // where the points start in the table
 
 #if defined(STEP_PIECES) || defined(STEP_ROWS)
 void main() {
   uint p = row_index();
-  if (p >= crease_paths) return;
+  if (p >= source_count) return;
   uvec4 d = defs[p];
   uint style = (d.w & 2u) != 0u ? 1u : 0u;  // window_paths.hpp PathTable::style_of
   uint count = 0u, start = d.x, made = 0u, made_entries = 0u;
@@ -141,8 +141,8 @@ void main() {
 }
 #elif defined(STEP_TOTALS)
 void main() {
-  crease_rows = pieces[crease_paths];
-  crease_entries = entries[crease_paths];
+  crease_rows = pieces[source_count];
+  crease_entries = entries[source_count];
   silhouette_base = ((face_count + crease_rows) >> 8) + 1u;  // common/strokes/strokes.cpp assign_keys
 }
 #endif

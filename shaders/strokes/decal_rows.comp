@@ -4,7 +4,7 @@
 // makes of them on the CPU (PathBuilder::add_decal, flush), in double, written after the
 // silhouettes' (silhouette_rows.comp), from their points in object space (uploaded once; a
 // mobile hatch's copies each frame); and their bounds, summed per decal (strokes/path_rows.glsl).
-// The steps of gpu/strokes/decal_rows.cpp:
+// The steps of gpu/strokes/decal_rows.cpp (STEP_POINTS; the others: gpu/strokes/piece_rows.hpp):
 //   STEP_POINTS: per surface stroke drawn this frame, its points placed in the world and the
 //                window, where they lie on the surface (and on its hatch's object);
 //   STEP_PIECES: per stroke, its pieces (split where a point missed, where the object
@@ -44,7 +44,7 @@ layout(std430, binding = 2) buffer Scratch { DecalPoint scratch[]; };
 layout(std430, binding = 3) buffer Pieces { uint pieces[]; };    // per stroke its pieces, then prefix sums
 layout(std430, binding = 4) buffer Entries { uint entries[]; };  // per stroke its pieces' entries, then prefix sums
 
-uniform uint stroke_count;
+uniform uint source_count;  // the strokes drawn
 uniform float near, width, height, step_px;  // exact as doubles
 uniform uint first_point;                     // where the points start in the table
 
@@ -84,7 +84,7 @@ DecalPoint placed(Record r, uint object) {
 
 void main() {
   uint s = row_index();
-  if (s >= stroke_count) return;
+  if (s >= source_count) return;
   Stroke st = strokes[s];
   for (uint k = 0u; k < st.count; ++k) {
     uint r = st.first_record + k;
@@ -109,7 +109,7 @@ double pressure_of(uint q) { return scratch[q].pressure; }
 #if defined(STEP_PIECES) || defined(STEP_ROWS)
 void main() {
   uint s = row_index();
-  if (s >= stroke_count) return;
+  if (s >= source_count) return;
   Stroke st = strokes[s];
   // PathBuilder::add_decal: every run of two points or more on one object in front of the
   // near plane.
@@ -145,8 +145,8 @@ void main() {
 }
 #elif defined(STEP_TOTALS)
 void main() {
-  decal_rows = pieces[stroke_count];
-  decal_entries = entries[stroke_count];
+  decal_rows = pieces[source_count];
+  decal_entries = entries[source_count];
 }
 #endif
 #endif
