@@ -12,7 +12,9 @@ Program step(const std::string& shader, const char* name) {
 }  // namespace
 
 PieceRows::PieceRows(const std::string& shader)
-    : pieces_step_(step(shader, "STEP_PIECES")), rows_step_(step(shader, "STEP_ROWS")), totals_(step(shader, "STEP_TOTALS")) {}
+    : pieces_step_(step(shader, "STEP_PIECES")),
+      rows_step_(step(shader, "STEP_ROWS")),
+      totals_(step(shader, "STEP_TOTALS")) {}
 
 void PieceRows::set(const char* name, uint32_t value) const {
   for (const Program* p : {&pieces_step_, &rows_step_, &totals_}) glProgramUniform1ui(p->id(), p->uniform(name), value);
