@@ -1,11 +1,13 @@
 // Silhouette chains on the GPU (Kalnins et al. 2002, §4.5), the twin of
 // reference/strokes/silhouette_chains.cpp: the segments are linked and compacted, then ranked
 // by pointer jumping (Wyllie 1979), twice; the second also sums the window arc lengths.
-// Each round is an indirect dispatch over the compacted segments, whose size the GPU writes:
-// bit_width(records) rounds are issued (enough for a chain through every face), and those
-// past 2^k >= the segments' count (more than any chain needs) dispatch no work, nor do the
-// rounds of either phase after one that changed nothing (shaders/strokes/silhouette_chains.comp
-// says why that is safe). The CPU never learns the count: nothing is read back.
+// Each round is an indirect dispatch whose size the GPU writes: over the compacted segments,
+// or in a ranking round after the first, over those the round before moved a pointer of (the
+// others are done). bit_width(records) rounds are issued (enough for a chain through every
+// face), and those past 2^k >= the segments' count (more than any chain needs) dispatch no
+// work, nor do the rounds of either phase after one that changed nothing
+// (shaders/strokes/silhouette_chains.comp says why that is safe). The CPU never learns the
+// count: nothing is read back.
 #include "common/strokes/silhouette_chains.hpp"
 
 #include <algorithm>
@@ -37,9 +39,10 @@ class SilhouetteChainsPass : public GpuPass {
     slot_links_ = make_buffer(links.data(), n * sizeof(glm::uvec4));
     links_ = make_buffer(nullptr, n * sizeof(glm::uvec4));
     members_ = make_buffer(nullptr, n * sizeof(uint32_t));
-    count_ = make_buffer(nullptr, kRoundArgs + 2 * 32 * 4 * sizeof(uint32_t));
+    count_ = make_buffer(nullptr, kRoundArgs + (2 * 32 * 4 + 32) * sizeof(uint32_t));
     jump_ = make_buffer(nullptr, 2 * n * sizeof(glm::uvec4));  // two halves of `records_` rows
     arc_ = make_buffer(nullptr, 2 * n * sizeof(glm::vec2));
+    active_ = make_buffer(nullptr, 2 * n * sizeof(uint32_t));  // two halves of `records_`
   }
 
   void run(GpuFrame& f) override {
@@ -77,6 +80,7 @@ class SilhouetteChainsPass : public GpuPass {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, count_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, jump_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, arc_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, active_.id());
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, count_.id());
   }
 
@@ -98,7 +102,7 @@ class SilhouetteChainsPass : public GpuPass {
   Program link_, args_, loops_, cut_, rank_, write_;
   uint32_t records_ = 0;
   int rounds_ = 0;
-  Buffer slot_links_, links_, members_, count_, jump_, arc_;
+  Buffer slot_links_, links_, members_, count_, jump_, arc_, active_;
 };
 
 }  // namespace

@@ -13,17 +13,19 @@ layout(std430, binding = 0) readonly buffer SlotLinks { uvec4 slot_links[]; };  
 // Per record: (successor, predecessor, closed, -), kNoLink where none.
 layout(std430, binding = 1) buffer Links { uvec4 links[]; };
 layout(std430, binding = 2) buffer Members { uint members[]; };  // the records that hold a segment
-// How many members, the indirect dispatch over them all, and round k's of each phase: over
-// them all while 2^k < count (a chain is no longer than the count), else none. Over them all
-// is all_x x all_y groups, all_x at most GL's least maximum of 65535 (member() flattens them).
-// Each phase also stops after a round that changed nothing it decides by: ranking, no pointer
-// moved (that round wrote what it read); finding loops, no mark changed (below). Both
-// buffers then hold the result, whichever the steps after it read.
+// How many members, the indirect dispatch over them all, and round k's of each phase: while
+// 2^k < count (a chain is no longer than the count), finding loops over them all, ranking
+// over the members round k - 1 left active (below), all of them in round 0; else none. Over
+// them all is all_x x all_y groups, all_x at most GL's least maximum of 65535 (member()
+// flattens them). Each phase also stops after a round that changed nothing it decides by:
+// ranking, no pointer moved (that round wrote what it read); finding loops, no mark changed
+// (below). Both buffers then hold the result, whichever the steps after it read.
 layout(std430, binding = 3) buffer Count {
   uint count;
   uint all_x, all_y, all_z;  // not a uvec3: std430 would align it to 16 bytes
   uvec4 round_groups[32];
   uvec4 rank_groups[32];
+  uint rank_active[32];  // ranking round k's members (k > 0), listed in Active's half k % 2
 };
 // Pointer jumping between the two halves of each buffer below, each step reading one and
 // writing the other: finding loops, (next, mark, -, -); ranking, (start, rank, end, distance
@@ -38,6 +40,12 @@ layout(std430, binding = 4) buffer Jump { uvec4 jump[]; };  // half h from h * r
 // Ranking's window arc lengths alongside, the same way: (before, after), the lengths of the
 // segments before it and after it in its list.
 layout(std430, binding = 5) buffer Arc { vec2 arc[]; };  // half h from h * records
+// Ranking's active members: those a round moved a pointer of, which the next round works
+// on. A member whose pointers did not move has reached its chain's start and end, and its
+// rank and distances, and arc lengths, are final (nothing is added to them at a start or an
+// end): it wrote the value it read, so both halves hold it, and the rounds after can leave
+// it out and still read it in either half.
+layout(std430, binding = 6) buffer Active { uint actives[]; };  // round k's in half k % 2, from (k % 2) * records
 uniform uint round_index;  // k, of this phase's rounds
 uniform uint rounds;       // issued per phase
 uniform uint records, first_record;
@@ -62,7 +70,10 @@ uint source() {
 struct Halves {
   uint from, to;
 };
-Halves halves() { return Halves(source() * records, (1u - source()) * records); }
+Halves halves() {
+  uint from = source();
+  return Halves(from * records, (1u - from) * records);
+}
 uvec4 src(Halves h, uint i) { return jump[h.from + i]; }
 void put(Halves h, uint i, uvec4 v) { jump[h.to + i] = v; }
 vec2 arc_src(Halves h, uint i) { return arc[h.from + i]; }
@@ -90,10 +101,27 @@ uint linked(uint i, int end) {
   return facing_of(j) == facing_of(i) && slot_of(j, 1 - end) == int(link % 4u) ? j : kNoLink;
 }
 
-// The member this invocation works on, or kNoLink past the count.
+// The member this invocation works on, or kNoLink past the count: of them all, or in a
+// ranking round after the first, of those the round before left active.
 uint member() {
   uint m = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * 64u + gl_LocalInvocationID.x;
+#if defined(STEP_RANK)
+  if (round_index > 0u)
+    return m < rank_active[round_index] ? actives[(round_index % 2u) * records + m] : kNoLink;
+#endif
   return m < count ? members[m] : kNoLink;
+}
+
+const uint kMaxGroups = 65535u;  // GL's least maximum of work groups in x
+
+// Member i is listed active for ranking round k, whose groups grow to cover it.
+void activate(uint i, uint k) {
+  uint at = atomicAdd(rank_active[k], 1u);
+  actives[(k % 2u) * records + at] = i;
+  if (at % 64u != 0u) return;
+  uint groups = at / 64u + 1u;
+  atomicMax(rank_groups[k].x, min(groups, kMaxGroups));
+  atomicMax(rank_groups[k].y, (groups + kMaxGroups - 1u) / kMaxGroups);
 }
 
 void main() {
@@ -112,7 +140,6 @@ void main() {
   put(h, i, next == kNoLink ? uvec4(i, 0u, 0u, 0u) : uvec4(next, i + 1u, 0u, 0u));
 #elif defined(STEP_ARGS)  // one invocation
   if (gl_GlobalInvocationID.x != 0u) return;
-  const uint kMaxGroups = 65535u;
   uint groups = (count + 63u) / 64u;
   all_y = (groups + kMaxGroups - 1u) / kMaxGroups;
   all_x = all_y > 1u ? kMaxGroups : groups;
@@ -120,7 +147,7 @@ void main() {
   for (uint k = 0u; k < 32u; ++k) {
     uint first = k == 0u && count > 1u ? all_x : 0u;  // later ones: STEP_LOOPS, STEP_RANK
     round_groups[k] = uvec4(first, all_y, 1u, 0u);
-    rank_groups[k] = uvec4(first, all_y, 1u, 0u);
+    rank_groups[k] = uvec4(first, first > 0u ? all_y : 0u, 1u, 0u);  // later ones: activate()
   }
 #elif defined(STEP_LOOPS)  // next <- next of next, mark <- the lower of both
   uint i = member();
@@ -151,7 +178,7 @@ void main() {
   // Only a start and an end point at themselves, with rank and distance 0 (and s 0): a
   // member whose pointers did not move is done.
   uint k = round_index + 1u;
-  if (jumped != here && k < 32u && count > (1u << k)) rank_groups[k].x = all_x;
+  if (jumped != here && k < 32u && count > (1u << k)) activate(i, k);
 #elif defined(STEP_WRITE)
   uint i = member();
   if (i == kNoLink) return;
