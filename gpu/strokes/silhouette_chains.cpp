@@ -39,7 +39,7 @@ class SilhouetteChainsPass : public GpuPass {
     slot_links_ = make_buffer(links.data(), n * sizeof(glm::uvec4));
     links_ = make_buffer(nullptr, n * sizeof(glm::uvec4));
     members_ = make_buffer(nullptr, n * sizeof(uint32_t));
-    count_ = make_buffer(nullptr, kRoundArgs + (2 * 32 * 4 + 32) * sizeof(uint32_t));
+    count_ = make_buffer(nullptr, kRoundArgs + (2 * 32 * 4 + 3 * 32) * sizeof(uint32_t));
     jump_ = make_buffer(nullptr, 2 * n * sizeof(glm::uvec4));  // two halves of `records_` rows
     arc_ = make_buffer(nullptr, 2 * n * sizeof(glm::vec2));
     active_ = make_buffer(nullptr, 2 * n * sizeof(uint32_t));  // two halves of `records_`

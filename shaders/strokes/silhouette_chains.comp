@@ -14,18 +14,19 @@ layout(std430, binding = 0) readonly buffer SlotLinks { uvec4 slot_links[]; };  
 layout(std430, binding = 1) buffer Links { uvec4 links[]; };
 layout(std430, binding = 2) buffer Members { uint members[]; };  // the records that hold a segment
 // How many members, the indirect dispatch over them all, and round k's of each phase: while
-// 2^k < count (a chain is no longer than the count), finding loops over them all, ranking
-// over the members round k - 1 left active (below), all of them in round 0; else none. Over
-// them all is all_x x all_y groups, all_x at most GL's least maximum of 65535 (member()
-// flattens them). Each phase also stops after a round that changed nothing it decides by:
-// ranking, no pointer moved (that round wrote what it read); finding loops, no mark changed
-// (below). Both buffers then hold the result, whichever the steps after it read.
+// 2^k < count (a chain is no longer than the count), over the members round k - 1 left
+// active (below), all of them in round 0; else none. Over them all is all_x x all_y groups,
+// all_x at most GL's least maximum of 65535 (member() flattens them). Each phase also stops
+// after a round that changed nothing it decides by: ranking, no pointer moved (that round
+// wrote what it read); finding loops, no mark changed (below: round k works only where
+// round k - 1 marked it). Both buffers then hold the result, whichever the steps after it read.
 layout(std430, binding = 3) buffer Count {
   uint count;
   uint all_x, all_y, all_z;  // not a uvec3: std430 would align it to 16 bytes
   uvec4 round_groups[32];
   uvec4 rank_groups[32];
-  uint rank_active[32];  // ranking round k's members (k > 0), listed in Active's half k % 2
+  uint loop_active[32], rank_active[32];  // round k's members (k > 0), listed in Active's half k % 2
+  uint loop_marked[32];                   // whether round k - 1 changed a mark
 };
 // Pointer jumping between the two halves of each buffer below, each step reading one and
 // writing the other: finding loops, (next, mark, -, -); ranking, (start, rank, end, distance
@@ -40,11 +41,12 @@ layout(std430, binding = 4) buffer Jump { uvec4 jump[]; };  // half h from h * r
 // Ranking's window arc lengths alongside, the same way: (before, after), the lengths of the
 // segments before it and after it in its list.
 layout(std430, binding = 5) buffer Arc { vec2 arc[]; };  // half h from h * records
-// Ranking's active members: those a round moved a pointer of, which the next round works
-// on. A member whose pointers did not move has reached its chain's start and end, and its
-// rank and distances, and arc lengths, are final (nothing is added to them at a start or an
-// end): it wrote the value it read, so both halves hold it, and the rounds after can leave
-// it out and still read it in either half.
+// Each phase's active members: those whose value a round changed, which the next round works
+// on. One whose value did not change is final, wrote the value it read, so both halves hold
+// it, and the rounds after can leave it out and still read it in either half. Ranking: its
+// pointers did not move, so they are at its chain's start and end, and nothing is added to
+// its rank, distance or arc lengths there. Finding loops: its `next` did not move, so that is
+// an open chain's end, which points at itself with mark 0, and its mark, unchanged, is 0.
 layout(std430, binding = 6) buffer Active { uint actives[]; };  // round k's in half k % 2, from (k % 2) * records
 uniform uint round_index;  // k, of this phase's rounds
 uniform uint rounds;       // issued per phase
@@ -101,28 +103,40 @@ uint linked(uint i, int end) {
   return facing_of(j) == facing_of(i) && slot_of(j, 1 - end) == int(link % 4u) ? j : kNoLink;
 }
 
+#if defined(STEP_LOOPS)
+#define ACTIVE loop_active
+#define GROUPS round_groups
+#elif defined(STEP_RANK)
+#define ACTIVE rank_active
+#define GROUPS rank_groups
+#endif
+
 // The member this invocation works on, or kNoLink past the count: of them all, or in a
-// ranking round after the first, of those the round before left active.
+// round after a phase's first, of those the round before left active.
 uint member() {
   uint m = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * 64u + gl_LocalInvocationID.x;
-#if defined(STEP_RANK)
-  if (round_index > 0u)
-    return m < rank_active[round_index] ? actives[(round_index % 2u) * records + m] : kNoLink;
+#if defined(ACTIVE)
+#if defined(STEP_LOOPS)
+  if (round_index > 0u && loop_marked[round_index] == 0u) return kNoLink;
+#endif
+  if (round_index > 0u) return m < ACTIVE[round_index] ? actives[(round_index % 2u) * records + m] : kNoLink;
 #endif
   return m < count ? members[m] : kNoLink;
 }
 
 const uint kMaxGroups = 65535u;  // GL's least maximum of work groups in x
 
-// Member i is listed active for ranking round k, whose groups grow to cover it.
+#if defined(ACTIVE)
+// Member i is listed active for this phase's round k, whose groups grow to cover it.
 void activate(uint i, uint k) {
-  uint at = atomicAdd(rank_active[k], 1u);
+  uint at = atomicAdd(ACTIVE[k], 1u);
   actives[(k % 2u) * records + at] = i;
   if (at % 64u != 0u) return;
   uint groups = at / 64u + 1u;
-  atomicMax(rank_groups[k].x, min(groups, kMaxGroups));
-  atomicMax(rank_groups[k].y, (groups + kMaxGroups - 1u) / kMaxGroups);
+  atomicMax(GROUPS[k].x, min(groups, kMaxGroups));
+  atomicMax(GROUPS[k].y, (groups + kMaxGroups - 1u) / kMaxGroups);
 }
+#endif
 
 void main() {
   Halves h = halves();
@@ -145,18 +159,19 @@ void main() {
   all_x = all_y > 1u ? kMaxGroups : groups;
   all_z = 1u;
   for (uint k = 0u; k < 32u; ++k) {
-    uint first = k == 0u && count > 1u ? all_x : 0u;  // later ones: STEP_LOOPS, STEP_RANK
-    round_groups[k] = uvec4(first, all_y, 1u, 0u);
-    rank_groups[k] = uvec4(first, first > 0u ? all_y : 0u, 1u, 0u);  // later ones: activate()
+    uint first = k == 0u && count > 1u ? all_x : 0u;  // later ones: activate()
+    round_groups[k] = rank_groups[k] = uvec4(first, first > 0u ? all_y : 0u, 1u, 0u);
   }
 #elif defined(STEP_LOOPS)  // next <- next of next, mark <- the lower of both
   uint i = member();
   if (i == kNoLink) return;
   uvec4 here = src(h, i), there = src(h, here.x);
-  uint mark = min(here.y, there.y);
-  put(h, i, uvec4(there.x, mark, 0u, 0u));
+  uvec4 moved = uvec4(there.x, min(here.y, there.y), 0u, 0u);
+  put(h, i, moved);
   uint k = round_index + 1u;
-  if (mark != here.y && k < 32u && count > (1u << k)) round_groups[k].x = all_x;
+  if (moved == here || k >= 32u || count <= (1u << k)) return;
+  activate(i, k);
+  if (moved.y != here.y) loop_marked[k] = 1u;
 #elif defined(STEP_CUT)  // a loop is cut before its lowest record: every chain is a list both ways
   uint i = member();
   if (i == kNoLink) return;
