@@ -6,7 +6,7 @@
 // near / d is interpolated affinely (noperspective) and written as the fragment's depth
 // (strokes/id_image.frag). Once per quad: a vertex shader would place each corner six times.
 layout(points) in;
-layout(triangle_strip, max_vertices = 6) out;
+layout(triangle_strip, max_vertices = 4) out;
 
 #include "strokes/id_lines.glsl"
 
@@ -60,10 +60,8 @@ void main() {
   dvec2 n = dvec2(-along.y, along.x) / length * (width / 2.0lf);
   double da = min(piece.da * keep, piece.da - piece.lift), db = min(piece.db * keep, piece.db - piece.lift);
   dvec2 corners[4] = dvec2[4](piece.a - n, piece.a + n, piece.b + n, piece.b - n);
-  const int order[6] = int[6](0, 1, 2, 0, 2, 3);  // the reference's two triangles
-  for (int v = 0; v < 6; ++v) {
-    emit(corners[order[v]], order[v] < 2 ? da : db, piece.key);
-    if (v == 2) EndPrimitive();
-  }
+  // The reference's two triangles, (0, 1, 2) and (0, 2, 3), as one strip: 4 vertices, not 6.
+  const int order[4] = int[4](1, 0, 2, 3);
+  for (int v = 0; v < 4; ++v) emit(corners[order[v]], order[v] < 2 ? da : db, piece.key);
   EndPrimitive();
 }
