@@ -2,8 +2,9 @@
 // path, in window pixels (origin bottom-left, docs/conventions.md), turned into samples and the
 // triangles of a ribbon through them: the reference makes them here, in double (output float),
 // and draws them with its scalar rasterizer; the GPU makes the same samples in double in a
-// compute shader (1.-5., shaders/strokes/stroke_samples.comp) and expands them into the same
-// triangles in its vertex shader (6., shaders/strokes/common_ribbon.glsl), in float.
+// compute shader (1.-5., shaders/strokes/stroke_samples.comp), there too each sample's normal
+// (6., once a run), and expands them into the same triangles in its vertex shader (6.,
+// shaders/strokes/common_ribbon.glsl), in float.
 //
 // 1. Spline (Kalnins et al. 2002, §4.1). Input points that are not finite are dropped, and repeats (closer
 //    than 1e-6 px) merged; a closed run's last point equal to its first is dropped. A

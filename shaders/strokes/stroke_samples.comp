@@ -2,8 +2,8 @@
 // Stroke samples on the GPU (Kalnins et al. 2002, §4.1, §4.3): steps 1.-5. of
 // common/strokes/base_stroke.hpp, in double as the reference makes them, one invocation per
 // visible run. STEP_COUNT keeps the run's distinct points and counts its samples; after a
-// prefix sum over the counts, STEP_WRITE writes them where shaders/strokes/common_ribbon.glsl
-// reads them; STEP_ARGS writes the indirect draw of their ribbons (six vertices a sample).
+// prefix sum over the counts, STEP_WRITE writes them, and their ribbons' normals, where
+// shaders/strokes/common_ribbon.glsl reads them; STEP_ARGS writes the indirect draw of their ribbons (six vertices a sample).
 layout(local_size_x = 64) in;
 
 #include "strokes/stroke_runs.glsl"
@@ -257,17 +257,8 @@ void main() { draw = uint[4](6u * min(counts[run_args[3]], capacity), 1u, 0u, 0u
 #endif
 
 #ifdef STEP_WRITE
-struct Sample {  // gpu/strokes/stroke.hpp SampleRecord
-  vec2 position;
-  float u, width, alpha;
-  uint run, pen_down_after, pad;
-};
-struct Run {  // gpu/strokes/stroke.hpp RunRecord
-  vec4 color_layer;
-  uint first, count, cyclic, pad;
-};
-layout(std430, binding = 0) writeonly buffer Samples { Sample samples[]; };
-layout(std430, binding = 1) writeonly buffer Runs { Run runs[]; };
+#define RIBBON_NORMALS
+#include "strokes/common_ribbon.glsl"
 // Per sample: its point on the base curve, the base curve's normal there, its arc length.
 struct Base {
   dvec2 point, normal;
@@ -396,7 +387,7 @@ void at_run(uint run) {
   for (uint j = 0u; j < count; ++j) {
     uint at = b + j;
     if (!drawn) {
-      samples[at] = Sample(vec2(0.0), 0.0, 0.0, 0.0, run, 0u, 0u);
+      samples[at] = Sample(vec2(0.0), 0.0, 0.0, 0.0, run, 0u, 0u, vec2(0.0));
       continue;
     }
     Base q = bases[at];
@@ -405,9 +396,10 @@ void at_run(uint run) {
     bool down = j + 1u < count && rubber_stamp(r, 0.5lf * (q.s + bases[at + 1u].s), L).pen_down;
     whole = whole && (down || j + 1u == count);
     samples[at] = Sample(vec2(q.point + q.normal * o.displacement), float(q.s / double(r.period)), float(shape.x),
-                         float(shape.y), run, down ? 1u : 0u, 0u);
+                         float(shape.y), run, down ? 1u : 0u, 0u, vec2(0.0));
   }
   runs[run] = Run(r.color_layer, b, drawn ? count : 0u, c.closed && whole ? 1u : 0u, 0u);
+  put_ribbon_normals(run);  // 6.'s, in float, for the vertex shader
 }
 #endif
 

@@ -35,11 +35,13 @@ class RibbonBuffers {
     std::vector<gpu::RunRecord> runs;
     for (const RunStroke& stroke : strokes) append(stroke, samples, runs);
     vertices_ = 6 * samples.size();
+    runs_count_ = runs.size();
     if (samples.empty()) return;
     samples_ = gpu::make_buffer(samples.data(), samples.size() * sizeof(gpu::SampleRecord));
     runs_ = gpu::make_buffer(runs.data(), runs.size() * sizeof(gpu::RunRecord));
   }
   size_t vertices() const { return vertices_; }  // six a sample
+  size_t runs() const { return runs_count_; }
   void bind() const {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, samples_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, runs_.id());
@@ -60,7 +62,7 @@ class RibbonBuffers {
                          run, x.pen_down_after});
   }
   gpu::Buffer samples_, runs_;
-  size_t vertices_ = 0;
+  size_t vertices_ = 0, runs_count_ = 0;
 };
 
 // One corner as the GPU made it.
@@ -70,17 +72,23 @@ struct GpuCorner {
 };
 
 // Every corner of `strokes`' ribbons, six a sample, computed by common_ribbon.glsl's
-// ribbon_corner in a compute shader over the buffers the stroke pass draws from.
+// ribbon_corner in a compute shader over the buffers the stroke pass draws from, after its
+// put_ribbon_normals over each run (which the stroke samples' step runs).
 std::vector<GpuCorner> gpu_corners(const std::vector<RunStroke>& strokes) {
   RibbonBuffers buffers(strokes);
-  std::string source =
-      "#version 450 core\nlayout(local_size_x = 64) in;\n" + gpu::shader_source("strokes/common_ribbon.glsl") + R"(
+  std::string source = "#version 450 core\nlayout(local_size_x = 64) in;\n#define RIBBON_NORMALS\n" +
+                       gpu::shader_source("strokes/common_ribbon.glsl") + R"(
 struct Captured { vec4 window_uv; vec4 alpha_drawn; };
 layout(std430, binding = 2) writeonly buffer Corners { Captured corners[]; };
 uniform uint count;
+uniform bool normals;  // put_ribbon_normals over the runs, else the corners
 void main() {
   uint k = gl_GlobalInvocationID.x;
   if (k >= count) return;
+  if (normals) {
+    put_ribbon_normals(k);
+    return;
+  }
   Corner c = ribbon_corner(int(k));
   corners[k] = Captured(vec4(c.window, c.uv), vec4(c.alpha, c.drawn ? 1.0 : 0.0, float(c.run), 0.0));
 })";
@@ -98,7 +106,13 @@ void main() {
   buffers.bind();
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, corners.id());
   glUseProgram(program);
-  glProgramUniform1ui(program, glGetUniformLocation(program, "count"), GLuint(count));
+  const GLint count_at = glGetUniformLocation(program, "count"), normals_at = glGetUniformLocation(program, "normals");
+  glProgramUniform1ui(program, count_at, GLuint(buffers.runs()));
+  glProgramUniform1i(program, normals_at, 1);
+  glDispatchCompute(GLuint((buffers.runs() + 63) / 64), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glProgramUniform1ui(program, count_at, GLuint(count));
+  glProgramUniform1i(program, normals_at, 0);
   glDispatchCompute(GLuint((count + 63) / 64), 1, 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   gpu::read_buffer(corners, out.data(), count * sizeof(GpuCorner));
