@@ -164,17 +164,29 @@ std::shared_ptr<const UvChart> patch_chart(const SceneObject& object, const Came
 // l(u) = n_c . n(u) at kMobileSamples samples of the u-line v = c.v, n smoothed over
 // `width` and seen from `to_view` (2. of mobile_hatching.hpp); -inf where the line leaves
 // the surface.
+// A group's u-line (v = c.v): its kMobileSamples samples of u and, at each, the normal
+// smoothed over the group's extent, in object space (zero where none is). They depend on the
+// surface alone, so they are made once, with the group.
+class ULine {
+ public:
+  ULine(const UvChart& chart, glm::dvec2 c, double width) : periodic(chart.periodic()), normals(kMobileSamples) {
+    // A chart of one u (degenerate) still samples a line, of a tiny step.
+    step = std::max(chart.u_span(), 1e-12) / (periodic ? kMobileSamples : kMobileSamples - 1);
+    u0 = chart.u_lowest();
+    for (int i = 0; i < kMobileSamples; ++i) normals[size_t(i)] = smoothed_normal(chart, {u0 + i * step, c.y}, width);
+  }
+  bool periodic;
+  std::vector<glm::dvec3> normals;
+  double step = 1, u0 = 0;
+};
+
+// l(u) = n_c . n(u) along a group's u-line, n(u) in the view space of `to_view`.
 class Profile {
  public:
-  Profile(const UvChart& chart, glm::dvec2 c, double width, glm::dvec3 n_c, const glm::dmat3& to_view)
-      : periodic_(chart.periodic()), l_(kMobileSamples, -INFINITY) {
-    // A chart of one u (degenerate) still samples a line, of a tiny step.
-    step_ = std::max(chart.u_span(), 1e-12) / (periodic_ ? kMobileSamples : kMobileSamples - 1);
-    u0_ = chart.u_lowest();
-    for (int i = 0; i < kMobileSamples; ++i) {
-      glm::dvec3 n = smoothed_normal(chart, {u(i), c.y}, width);
-      if (glm::length(n) > 0) l_[size_t(i)] = glm::dot(n_c, glm::normalize(to_view * n));
-    }
+  Profile(const ULine& line, glm::dvec3 n_c, const glm::dmat3& to_view)
+      : periodic_(line.periodic), l_(kMobileSamples, -INFINITY), step_(line.step), u0_(line.u0) {
+    for (size_t i = 0; i < l_.size(); ++i)
+      if (glm::length(line.normals[i]) > 0) l_[i] = glm::dot(n_c, glm::normalize(to_view * line.normals[i]));
   }
   double u(double i) const { return u0_ + i * step_; }
   int nearest(double u) const { return int(std::lround((u - u0_) / step_)); }
@@ -222,6 +234,7 @@ struct MobileHatching::Group {
   glm::dvec2 c;                          // the centroid of its points' hull in (u, v)
   double width;                          // the hull's extent in u
   glm::dvec3 n_c;                        // the smoothed normal at c, in the view space of the camera it was drawn in
+  ULine line;                            // its u-line's smoothed normals
   Profile drawn;                         // l(u) in that view: its peak at c is the drawn one
 };
 
@@ -275,7 +288,9 @@ std::optional<MobileHatching::Group> MobileHatching::make_group(const Scene& sce
   if (glm::length(n) == 0) refuse("the centroid of a mobile group's (u, v) hull lies off its object's chart");
   const glm::dmat3 drawn_view = normal_to_view(scene.objects[object], file.camera);
   const glm::dvec3 n_c = glm::normalize(drawn_view * n);
-  return Group{index, object, own, std::move(decals), c, width, n_c, Profile(chart, c, width, n_c, drawn_view)};
+  ULine line(chart, c, width);
+  Profile drawn(line, n_c, drawn_view);
+  return Group{index, object, own, std::move(decals), c, width, n_c, std::move(line), std::move(drawn)};
 }
 
 MobileHatching::~MobileHatching() = default;
@@ -292,8 +307,7 @@ bool MobileHatching::moves(size_t decal) const { return group_of(decal) != nullp
 std::vector<MobileHatching::Placement> MobileHatching::place(const Scene& scene, double threshold, double fade) const {
   std::vector<Placement> out(hatching_groups(scene).size());
   for (const Group& g : groups_) {
-    const UvChart& chart = *g.chart;
-    const Profile now(chart, g.c, g.width, g.n_c, normal_to_view(scene.objects[g.object], scene.camera));
+    const Profile now(g.line, g.n_c, normal_to_view(scene.objects[g.object], scene.camera));
     const double drawn_width = g.drawn.peak_width(g.drawn.nearest(g.c.x), threshold);
     Placement& p = out[size_t(g.index)];
     p.c = g.c;
