@@ -161,9 +161,6 @@ std::shared_ptr<const UvChart> patch_chart(const SceneObject& object, const Came
   return std::make_shared<const UvChart>(mesh, patch_uvs(mesh, seeds, 0.375 * double(mesh.bbox_diagonal()), along));
 }
 
-// l(u) = n_c . n(u) at kMobileSamples samples of the u-line v = c.v, n smoothed over
-// `width` and seen from `to_view` (2. of mobile_hatching.hpp); -inf where the line leaves
-// the surface.
 // A group's u-line (v = c.v): its kMobileSamples samples of u and, at each, the normal
 // smoothed over the group's extent, in object space (zero where none is). They depend on the
 // surface alone, so they are made once, with the group.
@@ -180,7 +177,8 @@ class ULine {
   double step = 1, u0 = 0;
 };
 
-// l(u) = n_c . n(u) along a group's u-line, n(u) in the view space of `to_view`.
+// l(u) = n_c . n(u) at the samples of a group's u-line, n(u) its smoothed normals seen from
+// `to_view` (2. of mobile_hatching.hpp); -inf where the line leaves the surface.
 class Profile {
  public:
   Profile(const ULine& line, glm::dvec3 n_c, const glm::dmat3& to_view)
@@ -232,7 +230,6 @@ struct MobileHatching::Group {
   std::shared_ptr<const UvChart> chart;  // its object's own (u, v), or the patch's under it
   std::vector<size_t> decals;            // its surface strokes
   glm::dvec2 c;                          // the centroid of its points' hull in (u, v)
-  double width;                          // the hull's extent in u
   glm::dvec3 n_c;                        // the smoothed normal at c, in the view space of the camera it was drawn in
   ULine line;                            // its u-line's smoothed normals
   Profile drawn;                         // l(u) in that view: its peak at c is the drawn one
@@ -290,7 +287,7 @@ std::optional<MobileHatching::Group> MobileHatching::make_group(const Scene& sce
   const glm::dvec3 n_c = glm::normalize(drawn_view * n);
   ULine line(chart, c, width);
   Profile drawn(line, n_c, drawn_view);
-  return Group{index, object, own, std::move(decals), c, width, n_c, std::move(line), std::move(drawn)};
+  return Group{index, object, own, std::move(decals), c, n_c, std::move(line), std::move(drawn)};
 }
 
 MobileHatching::~MobileHatching() = default;

@@ -3,7 +3,8 @@
 // common/strokes/base_stroke.hpp, in double as the reference makes them, one invocation per
 // visible run. STEP_COUNT keeps the run's distinct points and counts its samples; after a
 // prefix sum over the counts, STEP_WRITE writes them, and their ribbons' normals, where
-// shaders/strokes/common_ribbon.glsl reads them; STEP_ARGS writes the indirect draw of their ribbons (six vertices a sample).
+// shaders/strokes/common_ribbon.glsl reads them; STEP_ARGS writes the indirect draw of their
+// ribbons (six vertices a sample).
 layout(local_size_x = 64) in;
 
 #include "strokes/stroke_runs.glsl"
