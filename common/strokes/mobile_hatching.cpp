@@ -10,102 +10,9 @@
 
 #include "common/mesh/patch_parameterization.hpp"
 #include "common/strokes/hatching.hpp"
+#include "common/strokes/uv_chart.hpp"
 
 namespace plumbago {
-
-// Which face of a mesh holds a point of its (u, v) chart, and where: a uniform grid of
-// buckets over the chart, each listing the faces whose (u, v) box meets it.
-class UvChart {
- public:
-  struct Hit {
-    uint32_t face;
-    glm::dvec3 bary;
-  };
-
-  // `uvs` per face corner of `mesh` (Mesh::uvs, or a patch's: non-finite on the faces off it).
-  UvChart(const Mesh& mesh, std::vector<glm::vec2> uvs) : mesh_(mesh), uvs_(std::move(uvs)) {
-    for (uint32_t f = 0; f < mesh.triangles.size(); ++f)
-      for (int k = 0; k < 3 && charted(f); ++k) lo_ = glm::min(lo_, corner(f, k)), hi_ = glm::max(hi_, corner(f, k));
-    cells_ = std::clamp(int(std::sqrt(double(mesh.triangles.size()) / 2)), 1, 1024);
-    buckets_.resize(size_t(cells_) * size_t(cells_));
-    for (uint32_t f = 0; f < mesh.triangles.size(); ++f) {
-      if (!charted(f)) continue;
-      glm::dvec2 a(INFINITY), b(-INFINITY);
-      for (int k = 0; k < 3; ++k) a = glm::min(a, corner(f, k)), b = glm::max(b, corner(f, k));
-      glm::ivec2 c0 = cell(a), c1 = cell(b);
-      for (int j = c0.y; j <= c1.y; ++j)
-        for (int i = c0.x; i <= c1.x; ++i) buckets_[size_t(j) * size_t(cells_) + size_t(i)].push_back(f);
-    }
-    const std::optional<Hit> first = locate({lo_.x, (lo_.y + hi_.y) / 2}),
-                             next = locate({lo_.x + 1, (lo_.y + hi_.y) / 2});
-    periodic_ =
-        first && next && glm::distance(position(*first), position(*next)) <= 1e-5 * double(mesh.bbox_diagonal());
-  }
-
-  // The face holding `uv`, the one it lies deepest in where several do (an edge); on a
-  // periodic chart u is taken modulo 1 first, then 1 further (a face across the seam).
-  std::optional<Hit> locate(glm::dvec2 uv) const {
-    if (periodic_) uv.x = lo_.x + (uv.x - lo_.x - std::floor(uv.x - lo_.x));
-    std::optional<Hit> hit = locate_in_chart(uv);
-    if (!hit && periodic_) hit = locate_in_chart({uv.x + 1, uv.y});
-    return hit;
-  }
-
-  glm::dvec3 position(const Hit& h) const {
-    return interpolate(h, [&](uint32_t v) { return mesh_.positions[v]; });
-  }
-  glm::dvec3 normal(const Hit& h) const {
-    return interpolate(h, [&](uint32_t v) { return mesh_.normals[v]; });
-  }
-  glm::dvec2 uv(uint32_t face, const glm::dvec3& bary) const {
-    return bary.x * corner(face, 0) + bary.y * corner(face, 1) + bary.z * corner(face, 2);
-  }
-  bool periodic() const { return periodic_; }
-  double u_lowest() const { return lo_.x; }
-  double u_span() const { return periodic_ ? 1.0 : hi_.x - lo_.x; }
-
- private:
-  glm::dvec2 corner(uint32_t f, int k) const { return glm::dvec2(uvs_[3 * size_t(f) + size_t(k)]); }
-  bool charted(uint32_t f) const {
-    for (int k = 0; k < 3; ++k)
-      if (!std::isfinite(corner(f, k).x) || !std::isfinite(corner(f, k).y)) return false;
-    return true;
-  }
-
-  glm::ivec2 cell(glm::dvec2 uv) const {
-    glm::dvec2 t = (uv - lo_) / glm::max(hi_ - lo_, glm::dvec2(1e-300)) * double(cells_);
-    return glm::clamp(glm::ivec2(glm::floor(t)), glm::ivec2(0), glm::ivec2(cells_ - 1));
-  }
-
-  std::optional<Hit> locate_in_chart(glm::dvec2 uv) const {
-    if (uv.x < lo_.x || uv.y < lo_.y || uv.x > hi_.x || uv.y > hi_.y) return std::nullopt;
-    glm::ivec2 c = cell(uv);
-    std::optional<Hit> best;
-    double deepest = -1e-9;
-    for (uint32_t f : buckets_[size_t(c.y) * size_t(cells_) + size_t(c.x)]) {
-      glm::dvec2 a = corner(f, 0), e1 = corner(f, 1) - a, e2 = corner(f, 2) - a, d = uv - a;
-      double det = e1.x * e2.y - e1.y * e2.x;
-      if (det == 0) continue;
-      double b1 = (d.x * e2.y - d.y * e2.x) / det, b2 = (e1.x * d.y - e1.y * d.x) / det;
-      double depth = std::min({1 - b1 - b2, b1, b2});
-      if (depth >= deepest) deepest = depth, best = Hit{f, {1 - b1 - b2, b1, b2}};
-    }
-    return best;
-  }
-
-  template <class Of>
-  glm::dvec3 interpolate(const Hit& h, Of of) const {
-    const glm::uvec3& t = mesh_.triangles[h.face];
-    return h.bary.x * glm::dvec3(of(t[0])) + h.bary.y * glm::dvec3(of(t[1])) + h.bary.z * glm::dvec3(of(t[2]));
-  }
-
-  const Mesh& mesh_;
-  std::vector<glm::vec2> uvs_;
-  glm::dvec2 lo_{INFINITY}, hi_{-INFINITY};
-  int cells_ = 1;
-  std::vector<std::vector<uint32_t>> buckets_;
-  bool periodic_ = false;
-};
 
 namespace {
 
@@ -293,6 +200,11 @@ std::optional<MobileHatching::Group> MobileHatching::make_group(const Scene& sce
 MobileHatching::~MobileHatching() = default;
 MobileHatching::MobileHatching(MobileHatching&&) noexcept = default;
 
+MobileHatching::Travel MobileHatching::travel(size_t decal) const {
+  const Group* g = group_of(decal);
+  return g ? Travel{g->chart.get(), g->object} : Travel{};
+}
+
 const MobileHatching::Group* MobileHatching::group_of(size_t decal) const {
   for (const Group& g : groups_)
     if (std::find(g.decals.begin(), g.decals.end(), decal) != g.decals.end()) return &g;
@@ -326,20 +238,19 @@ std::vector<MobileHatching::Copy> MobileHatching::copies(const DecalSurface& sur
   const UvChart& chart = *g->chart;
   const Placement& p = placements.at(size_t(g->index));
   for (size_t m = 0; m < p.u.size(); ++m) {
-    ProjectedDecal moved = surface[decal];
-    for (DecalPoint& point : moved.points) {
+    ProjectedDecal copy = surface[decal];
+    for (DecalPoint& point : copy.points) {
       if (point.object != g->object) {
         point.object = kMissed;
         continue;
       }
-      glm::dvec2 uv = chart.uv(point.face, point.bary);
-      std::optional<UvChart::Hit> hit = chart.locate({p.u[m] + p.scale[m] * (uv.x - g->c.x), uv.y});
+      std::optional<UvChart::Hit> hit = chart.locate(moved(p, m, chart.uv(point.face, point.bary)));
       if (hit)
         point.face = hit->face, point.bary = hit->bary;
       else
         point.object = kMissed;
     }
-    out.push_back({std::move(moved), p.alpha[m]});
+    out.push_back({std::move(copy), p.alpha[m]});
   }
   return out;
 }

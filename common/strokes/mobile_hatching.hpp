@@ -74,6 +74,19 @@ class MobileHatching {
     double alpha;
   };
   std::vector<Copy> copies(const DecalSurface& surface, size_t decal, const std::vector<Placement>& placements) const;
+  // Where copy m of placement `p` moves a point at `uv` of its group's chart: to
+  // (u_m + scale_m (u - c.u), v).
+  static glm::dvec2 moved(const Placement& p, size_t m, glm::dvec2 uv) {
+    return {p.u[m] + p.scale[m] * (uv.x - p.c.x), uv.y};
+  }
+
+  // The chart mobile surface stroke `decal`'s group travels on, and the object it lies on
+  // (its points elsewhere are missed in a copy); for any other stroke no chart.
+  struct Travel {
+    const UvChart* chart = nullptr;
+    uint32_t object = kMissed;
+  };
+  Travel travel(size_t decal) const;
 
  private:
   struct Group;

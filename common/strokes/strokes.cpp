@@ -301,15 +301,15 @@ const FeatureLineMesh* line_mesh(const LineMeshes& meshes, size_t object) {
   return mesh && !mesh->corner_normals().empty() ? &*mesh : nullptr;
 }
 
-SurfaceStrokes surface_strokes(const Scene& scene, const DecalSurface& decals, const MobileHatching* mobile) {
+SurfaceStrokes surface_strokes(const Scene& scene, const DecalSurface& decals, const MobileHatching* mobile,
+                               bool move_copies) {
   SurfaceStrokes out;
   const auto hatching = scene.params.get<HatchingParams>();
   out.hatching = hatch_states(scene, decals, hatching);
   std::vector<HatchWeight> weights = hatch_weights(out.hatching, decals);
   std::optional<MobileHatching> own_mobile;
   if (!mobile) mobile = &own_mobile.emplace(scene, decals);
-  const std::vector<MobileHatching::Placement> placed =
-      mobile->place(scene, given_value(hatching.mobile_threshold), given_value(hatching.mobile_fade));
+  out.placed = mobile->place(scene, given_value(hatching.mobile_threshold), given_value(hatching.mobile_fade));
   for (uint32_t d = 0; d < decals.size(); ++d) {
     out.styles.push_back(decals[d].style);
     int group = decals[d].hatch.group;
@@ -319,12 +319,15 @@ SurfaceStrokes surface_strokes(const Scene& scene, const DecalSurface& decals, c
       out.drawn.push_back({&decals[d], d, weights[d], object});
       continue;
     }
-    for (MobileHatching::Copy& copy : mobile->copies(decals, d, placed)) {
+    const MobileHatching::Placement& at = out.placed[size_t(group)];
+    std::vector<MobileHatching::Copy> moved;
+    if (move_copies) moved = mobile->copies(decals, d, out.placed);
+    for (size_t m = 0; m < at.u.size(); ++m) {
       HatchWeight weight = weights[d];
-      weight.alpha *= copy.alpha;
+      weight.alpha *= at.alpha[m];
       if (weight.alpha == 0) continue;
-      out.copies.push_back(std::move(copy.decal));
-      out.drawn.push_back({&out.copies.back(), d, weight, object});
+      if (move_copies) out.copies.push_back(std::move(moved[m].decal));
+      out.drawn.push_back({move_copies ? &out.copies.back() : &decals[d], d, weight, object, int(m)});
     }
   }
   return out;

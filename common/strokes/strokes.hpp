@@ -35,6 +35,7 @@
 #include "common/scene/scene.hpp"
 #include "common/strokes/feature_lines.hpp"
 #include "common/strokes/hatching.hpp"
+#include "common/strokes/mobile_hatching.hpp"
 
 namespace plumbago {
 
@@ -152,35 +153,37 @@ struct ChainPath {
   std::vector<glm::dvec3> window = {};
 };
 
-struct ProjectedDecal;
-using DecalSurface = std::vector<ProjectedDecal>;  // common/strokes/decal.hpp
-class MobileHatching;
-
 // One surface stroke as a frame draws it (Kalnins et al. 2002, §3, §6): a decal, a hatch, or
 // one of this frame's copies of a mobile hatch; its index in the DecalSurface (its style's in
 // WindowLines::decal_styles), its weight this frame (a copy's alpha times its hatch's), and
-// the object its hatch's group lies on (its points elsewhere count as missed), else kMissed.
+// the object its hatch's group lies on (its points elsewhere count as missed), else kMissed;
+// a copy's placement among its group's (SurfaceStrokes::placed), else -1.
 struct SurfaceStroke {
   const ProjectedDecal* decal;
   uint32_t index;
   HatchWeight weight;
   uint32_t object;
+  int copy = -1;
 };
-// A frame's surface strokes: the hatching groups' levels of detail, every stroke's style, and
-// the strokes drawn (weight alpha above 0), in the order window_lines places them: by index, a
-// mobile hatch as its copies. Move-only: `drawn` points into `copies`.
+// A frame's surface strokes: the hatching groups' levels of detail and the mobile groups'
+// placements, every stroke's style, and the strokes drawn (weight alpha above 0), in the
+// order window_lines places them: by index, a mobile hatch as its copies. Move-only: `drawn`
+// points into `copies`.
 struct SurfaceStrokes {
   SurfaceStrokes() = default;
   SurfaceStrokes(SurfaceStrokes&&) = default;
   SurfaceStrokes& operator=(SurfaceStrokes&&) = default;
   std::vector<HatchGroupState> hatching;
+  std::vector<MobileHatching::Placement> placed;  // per hatching group
   std::vector<StrokeStyle> styles;
   std::vector<SurfaceStroke> drawn;
   std::deque<ProjectedDecal> copies;  // a deque: its elements stay where they are
 };
 // `decals`' strokes this frame; `mobile`: its mobile hatching groups (common/strokes/mobile_hatching.hpp),
-// made once by a backend that keeps its decals; none: made here.
-SurfaceStrokes surface_strokes(const Scene& scene, const DecalSurface& decals, const MobileHatching* mobile = nullptr);
+// made once by a backend that keeps its decals; none: made here. `move_copies` false: a mobile
+// hatch's copies keep its points, unmoved (a backend that moves them itself, from `placed`).
+SurfaceStrokes surface_strokes(const Scene& scene, const DecalSurface& decals, const MobileHatching* mobile = nullptr,
+                               bool move_copies = true);
 
 // `prepared` (from line_meshes with the same scene, parameters and `which`) or none;
 // `surface`: the decals and hatches (surface_strokes), placed after the feature lines, or

@@ -5,9 +5,11 @@
 // surface (or lies off its hatch's object), where the object changes and at the near plane,
 // its pieces' arc lengths, rows and points' rows written in the frame's path table after the
 // silhouettes' and placed by prefix sums; and their bounds summed per decal
-// (gpu/strokes/row_counts.hpp). The strokes' points go up once, in object space; a mobile
-// hatch's copies (common/strokes/mobile_hatching.hpp, placed on the CPU) each frame with the
-// strokes drawn and their weights. Nothing is read back.
+// (gpu/strokes/row_counts.hpp). The strokes' points go up once, in object space, with the
+// charts the mobile hatching groups travel on (common/strokes/uv_chart.hpp); each frame only
+// the strokes drawn, their weights and, for a mobile hatch's copy, its placement (per group:
+// common/strokes/mobile_hatching.hpp), by which the GPU moves the hatch's points itself.
+// Nothing is read back.
 #pragma once
 
 #include <cstddef>
@@ -24,8 +26,8 @@ namespace plumbago::gpu {
 
 class DecalRows {
  public:
-  // Uploads the points of `decals` (kept as long as this) on `scene`'s objects.
-  DecalRows(const Scene& scene, const DecalSurface& decals);
+  // Uploads the points of `decals` on `scene`'s objects, and the charts of `mobile` (its groups).
+  DecalRows(const Scene& scene, const DecalSurface& decals, const MobileHatching& mobile);
   // The points of the strokes `drawn` this frame: at most as many pieces.
   static size_t points(const SurfaceStrokes& drawn);
   // Writes the rows of the strokes `drawn` (of this DecalSurface) after the silhouettes' in
@@ -39,9 +41,9 @@ class DecalRows {
 
   Program points_step_;
   PieceRows rows_;
-  const DecalSurface& decals_;
-  std::vector<uint32_t> first_record_, first_key_;  // per decal; per object
-  Buffer fixed_, strokes_buffer_;                   // the strokes' points; this frame's strokes
+  std::vector<uint32_t> first_record_, chart_, first_key_;  // per decal (its group's chart); per object
+  Buffer fixed_, charts_, chart_faces_, buckets_;           // the strokes' points; the charts (uv_chart.glsl)
+  Buffer strokes_buffer_;                                   // this frame's strokes
   ScratchBuffer scratch_;
   size_t strokes_ = 0;  // drawn this frame
 };

@@ -54,10 +54,10 @@ class IdImagePass : public GpuPass {
         // The decals' surface points, projected once for the renderer's frames (Kalnins et al.
         // 2002, §3).
         decals_(has_decals(f.scene) ? project_decals_through_gbuffer(f.scene) : DecalSurface{}),
-        decal_rows_(f.scene, decals_),
+        mobile_(f.scene, decals_),
+        decal_rows_(f.scene, decals_, mobile_),
         styles_(3 + decals_.size()),
         counts_(make_buffer(nullptr, RowCounts::bytes(styles_))) {
-    mobile_.emplace(f.scene, decals_);  // the mobile hatching groups' travel (Kalnins et al. 2002, §6.3)
     first_key_ = first_faces(f.scene);
     for (uint32_t o = 0; o < f.scene.objects.size(); ++o)
       if (f.scene.objects[o].style == Style::Sketchy) sketchy_.push_back(upload_mesh(f.scene, o));
@@ -76,7 +76,7 @@ class IdImagePass : public GpuPass {
     std::vector<ChainPath> read;                 // none unless the lines stay whole
     if (whole) read = silhouettes_.read(f.scene, meshes, paths);
     std::optional<SurfaceStrokes> strokes;  // the decals and hatches drawn this frame
-    if (has_decals(f.scene)) strokes = surface_strokes(f.scene, decals_, &*mobile_);
+    if (has_decals(f.scene)) strokes = surface_strokes(f.scene, decals_, &mobile_, whole);  // copies moved: decal_rows_
     WindowLines lines =
         window_lines(f.scene, p, LineObjects::Strokes, &meshes, strokes ? &*strokes : nullptr, &read, whole);
     const size_t silhouette_points = silhouette_point_rows(records_),
@@ -200,14 +200,14 @@ class IdImagePass : public GpuPass {
   size_t records_;  // face records: the most silhouette paths
   SilhouetteRows rows_;
   DecalSurface decals_;
+  MobileHatching mobile_;  // the mobile hatching groups' travel (Kalnins et al. 2002, §6.3)
   DecalRows decal_rows_;
-  size_t styles_;        // line styles: 3 and one per decal (PathTable::style_of)
-  Buffer counts_;        // RowCounts
-  TableRows header_;     // the table's header
-  bool sized_ = false;   // whether a frame has sized the buffers (size_by_counts)
-  IdLines lines_;        // rules 2 and 3
-  UploadedPaths table_;  // this frame's, kept until the next (its buffers across frames)
-  std::optional<MobileHatching> mobile_;
+  size_t styles_;                    // line styles: 3 and one per decal (PathTable::style_of)
+  Buffer counts_;                    // RowCounts
+  TableRows header_;                 // the table's header
+  bool sized_ = false;               // whether a frame has sized the buffers (size_by_counts)
+  IdLines lines_;                    // rules 2 and 3
+  UploadedPaths table_;              // this frame's, kept until the next (its buffers across frames)
   std::vector<uint32_t> first_key_;  // per object, its first face key less one
   std::vector<MeshBuffers> sketchy_;
   Buffer gbuffer_first_keys_;  // gbuffer_first_keys

@@ -3,10 +3,11 @@
 // frame's path table (strokes/window_paths.glsl) that common/strokes/strokes.cpp window_lines
 // makes of them on the CPU (PathBuilder::add_decal, flush), in double, written after the
 // silhouettes' (silhouette_rows.comp), from their points in object space (uploaded once; a
-// mobile hatch's copies each frame); and their bounds, summed per decal (strokes/path_rows.glsl).
+// mobile hatch's copies moved here, along their chart's u-line, common/strokes/mobile_hatching.hpp);
+// and their bounds, summed per decal (strokes/path_rows.glsl).
 // The steps of gpu/strokes/decal_rows.cpp (STEP_POINTS; the others: gpu/strokes/piece_rows.hpp):
-//   STEP_POINTS: per surface stroke drawn this frame, its points placed in the world and the
-//                window, where they lie on the surface (and on its hatch's object);
+//   STEP_POINTS: per surface stroke drawn this frame, its points (a copy's moved) placed in the
+//                world and the window, where they lie on the surface (and on its hatch's object);
 //   STEP_PIECES: per stroke, its pieces (split where a point missed, where the object
 //                changes and at the near plane), each of two points or more, their
 //                entries, and their bounds;
@@ -27,9 +28,11 @@ const uint kMissed = 0xffffffffu;  // common/strokes/decal.hpp: the point lies o
 struct Stroke {  // gpu/strokes/decal_rows.cpp StrokeRow
   uint first_record, count, first_point, style;
   uint object;  // its hatch's group's object, else kMissed
-  uint flags;   // 1: its records are this frame's (a mobile copy's); 2: a hatch
-  uint pad0, pad1;
+  uint flags;   // 1: a mobile hatch's copy; 2: a hatch
+  uint chart;   // a copy's: its group's chart (Charts)
+  uint pad0;
   double alpha, width;  // its weight this frame (common/strokes/hatching.hpp HatchWeight)
+  double copy_u, copy_scale, c_u;  // a copy's: u at its maximum, its scale in u, its group's c.u
 };
 struct DecalPoint {  // gpu/strokes/decal_rows.cpp ScratchPoint
   dvec4 world;
@@ -41,8 +44,6 @@ struct DecalPoint {  // gpu/strokes/decal_rows.cpp ScratchPoint
 };
 layout(std430, binding = 1) readonly buffer Strokes { Stroke strokes[]; };
 layout(std430, binding = 2) buffer Scratch { DecalPoint scratch[]; };
-layout(std430, binding = 3) buffer Pieces { uint pieces[]; };    // per stroke its pieces, then prefix sums
-layout(std430, binding = 4) buffer Entries { uint entries[]; };  // per stroke its pieces' entries, then prefix sums
 
 uniform uint source_count;  // the strokes drawn
 uniform float near, width, height, step_px;  // exact as doubles
@@ -52,9 +53,10 @@ uniform uint first_point;                     // where the points start in the t
 struct Record {  // gpu/strokes/decal_rows.cpp RecordRow
   dvec4 local;   // object space (common/strokes/decal.hpp decal_point_local), w: its pressure
   uvec4 at;      // its object (kMissed: none), its face
+  dvec2 uv;      // a mobile hatch's point on its group's object: its (u, v) in the group's chart
 };
-layout(std430, binding = 5) readonly buffer Fixed { Record fixed_records[]; };    // the strokes', once
-layout(std430, binding = 6) readonly buffer Moving { Record moving_records[]; };  // this frame's copies
+layout(std430, binding = 5) readonly buffer Fixed { Record records[]; };  // the strokes', once
+#include "strokes/uv_chart.glsl"
 struct Object {  // gpu/strokes/decal_rows.cpp ObjectRow
   dmat4 model;
   uint first_key, pad0, pad1, pad2;  // its first face's key less one
@@ -82,16 +84,33 @@ DecalPoint placed(Record r, uint object) {
   return p;
 }
 
+// common/strokes/mobile_hatching.cpp MobileHatching::copies: record r of the hatch that copy
+// `st` moves, moved along its chart's u-line (MobileHatching::moved) and put back on the
+// surface where it lands on a face; missed elsewhere, and where it lay off the group's object.
+Record moved(Record r, Stroke st) {
+  Chart chart = charts[st.chart];
+  UvHit hit;
+  if (r.at.x != chart.object || !locate(chart, dvec2(st.copy_u + st.copy_scale * (r.uv.x - st.c_u), r.uv.y), hit)) {
+    r.at.x = kMissed;
+    return r;
+  }
+  r.at.y = hit.face;
+  r.local.xyz = position(chart, hit);
+  return r;
+}
+
 void main() {
   uint s = row_index();
   if (s >= source_count) return;
   Stroke st = strokes[s];
   for (uint k = 0u; k < st.count; ++k) {
     uint r = st.first_record + k;
-    scratch[st.first_point + k] = placed((st.flags & 1u) != 0u ? moving_records[r] : fixed_records[r], st.object);
+    scratch[st.first_point + k] = placed((st.flags & 1u) != 0u ? moved(records[r], st) : records[r], st.object);
   }
 }
 #else
+layout(std430, binding = 3) buffer Pieces { uint pieces[]; };    // per stroke its pieces, then prefix sums
+layout(std430, binding = 4) buffer Entries { uint entries[]; };  // per stroke its pieces' entries, then prefix sums
 #define PATHS_BINDING 6
 #define POINTS_BINDING 7
 #define POINTS_ACCESS  // written here

@@ -11,6 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "common/mesh/procedural.hpp"
+#include "common/scene/animation.hpp"
 #include "common/scene/scene.hpp"
 #include "common/strokes/decal.hpp"
 #include "common/strokes/silhouette_paths.hpp"
@@ -38,6 +39,12 @@ Scene turned_unnormalized() {
   m = glm::scale(m, glm::vec3(1.3f, 0.8f, 1.1f));
   s.params.set("strokes.silhouette_normalized", 0.0);
   return s;
+}
+
+// `mesh` without its (u, v).
+std::shared_ptr<const Mesh> without_uvs(Mesh mesh) {
+  mesh.uvs.clear();
+  return std::make_shared<const Mesh>(std::move(mesh));
 }
 
 std::vector<std::pair<std::string, Scene>> scenes() {
@@ -251,6 +258,12 @@ TEST_F(SilhouettePaths, GpuWritesTheWindowPathsTheCpuMakesOfItsPoints) {
   all.emplace_back("sphere with hatches", load_scene(PLUMBAGO_SOURCE_DIR "/scenes/hatching_lod.json"));
   all.emplace_back("teapot with decals", load_scene(PLUMBAGO_SOURCE_DIR "/scenes/teapot_decals.json"));
   all.emplace_back("snowman with mobile hatching", load_scene(PLUMBAGO_SOURCE_DIR "/scenes/snowman_mobile.json"));
+  // Its orbit's last frame, the copies moved along their u-lines on the GPU; then the same with
+  // the trees' cones stripped of their (u, v): the groups travel on LSCM patches.
+  all.emplace_back("snowman, orbit's end", scene_at_frame(all.back().second, all.back().second.animation->frames - 1));
+  all.emplace_back("snowman, orbit's end, patch charts", all.back().second);
+  for (SceneObject& o : all.back().second.objects)
+    if (o.mesh->name.find("cone") != std::string::npos) o.mesh = without_uvs(*o.mesh);
   all.emplace_back("storefront", load_scene(PLUMBAGO_SOURCE_DIR "/scenes/storefront_strokes.json"));
   const auto [behind, crease_paths] = crease_points_behind(cad_cut_by_the_near_plane());
   std::printf("CAD part: %zu of its points on %zu crease and border paths nearer than its near plane\n", behind,
