@@ -69,11 +69,12 @@ std::shared_ptr<const UvChart> patch_chart(const SceneObject& object, const Came
 }
 
 // A group's u-line (v = c.v): its kMobileSamples samples of u and, at each, the normal
-// smoothed over the group's extent, in object space (zero where none is). They depend on the
-// surface alone, so they are made once, with the group.
+// smoothed over the group's extent `width`, in object space (zero where none is). They depend
+// on the surface alone, so they are made once, with the group.
 class ULine {
  public:
-  ULine(const UvChart& chart, glm::dvec2 c, double width) : periodic(chart.periodic()), normals(kMobileSamples) {
+  ULine(const UvChart& chart, glm::dvec2 c, double width)
+      : periodic(chart.periodic()), normals(kMobileSamples), extent(width) {
     // A chart of one u (degenerate) still samples a line, of a tiny step.
     step = std::max(chart.u_span(), 1e-12) / (periodic ? kMobileSamples : kMobileSamples - 1);
     u0 = chart.u_lowest();
@@ -81,7 +82,7 @@ class ULine {
   }
   bool periodic;
   std::vector<glm::dvec3> normals;
-  double step = 1, u0 = 0;
+  double extent, step = 1, u0 = 0;
 };
 
 // l(u) = n_c . n(u) at the samples of a group's u-line, n(u) its smoothed normals seen from
@@ -89,7 +90,12 @@ class ULine {
 class Profile {
  public:
   Profile(const ULine& line, glm::dvec3 n_c, const glm::dmat3& to_view)
-      : periodic_(line.periodic), l_(kMobileSamples, -INFINITY), step_(line.step), u0_(line.u0) {
+      : periodic_(line.periodic),
+        l_(kMobileSamples, -INFINITY),
+        step_(line.step),
+        u0_(line.u0),
+        // half the group's extent in samples: at least 1, less than half the line
+        reach_(int(std::clamp(std::floor(line.extent / (2 * line.step)), 1.0, kMobileSamples / 2.0 - 1))) {
     for (size_t i = 0; i < l_.size(); ++i)
       if (glm::length(line.normals[i]) > 0) l_[i] = glm::dot(n_c, glm::normalize(to_view * line.normals[i]));
   }
@@ -101,16 +107,24 @@ class Profile {
     return i < 0 || i >= kMobileSamples ? -INFINITY : l_[size_t(i)];
   }
   // The maxima at or over `threshold`, as (fractional sample, l): each refined by the
-  // parabola through it and its neighbours; a plateau counts once, at its first sample.
+  // parabola through it and its neighbours; a plateau counts once, at its first sample; and
+  // of maxima within half the group's extent of each other (copies that would overlap), the
+  // highest, the first of equals.
   std::vector<std::pair<double, double>> maxima(double threshold) const {
     std::vector<std::pair<double, double>> out;
     for (int i = periodic_ ? 0 : 1; i < (periodic_ ? kMobileSamples : kMobileSamples - 1); ++i) {
       const double a = at(i - 1), b = at(i), c = at(i + 1);
-      if (!(b >= threshold && b > a && b >= c)) continue;
+      if (!(b >= threshold && b > a && b >= c) || overtopped(i)) continue;
       const double curve = a - 2 * b + c;
       out.emplace_back(i + (std::isfinite(a) && std::isfinite(c) && curve < 0 ? 0.5 * (a - c) / curve : 0.0), b);
     }
     return out;
+  }
+  // Whether a sample within reach of maximum i stands higher (on its left: as high).
+  bool overtopped(int i) const {
+    for (int j = 2; j <= reach_; ++j)
+      if (at(i - j) >= at(i) || at(i + j) > at(i)) return true;
+    return false;
   }
   // The width in u of the peak at or next to sample i (climbed to its top first): the
   // samples on each side while l falls and stays at or over `threshold` (at least one).
@@ -127,6 +141,7 @@ class Profile {
   bool periodic_;
   std::vector<double> l_;
   double step_ = 1, u0_ = 0;
+  int reach_;
 };
 
 }  // namespace

@@ -19,10 +19,11 @@
 //    smoothed the same way), give l(u) = n_c . n(u). The smoothing is in object space, so
 //    the smoothed normals are sampled once, with the group; a frame turns them into its view. At each local maximum of
 //    l (refined by the parabola through it and its neighbours) with l >= T (hatching.mobile_threshold, the paper's 1/2)
-//    a copy of the group is placed: its points moved by u* - c.u in (u, v) and put back on the surface where (u, v)
-//    lies on a face (elsewhere missed, which splits a hatch as a decal's miss does). Its alpha is multiplied by
-//    clamp((l - T) / hatching.mobile_fade, 0, 1): the fade "as l(u) approaches T". Its
-//    "extent is governed by the width of the peak": its points' u about c is scaled by the
+//    and no higher l within w/2 of it (copies nearer than that would overlap; on a coarse
+//    mesh's LSCM patch l(u) ripples, and each ripple would be a copy), a copy of the group is placed: its points moved
+//    by u* - c.u in (u, v) and put back on the surface where (u, v) lies on a face (elsewhere missed, which splits a
+//    hatch as a decal's miss does). Its alpha is multiplied by clamp((l - T) / hatching.mobile_fade, 0, 1): the fade
+//    "as l(u) approaches T". Its "extent is governed by the width of the peak": its points' u about c is scaled by the
 //    peak's width over the drawn peak's (l in the view it was drawn in, at c), clamped to
 //    [1/4, 4]; a peak's width is the samples about its maximum while l falls and stays at
 //    or over T.

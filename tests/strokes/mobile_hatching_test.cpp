@@ -204,6 +204,41 @@ TEST(MobileHatching, ADegenerateChartIsRefused) {
   EXPECT_THROW(MobileHatching(s, surface), SceneError);
 }
 
+// The snowman's trees with their cones stripped of (u, v): each group travels on an LSCM patch
+// of a coarse cone, where l(u) ripples from sample to sample (the smoothing's samples cross
+// faces). Seen from where they were drawn each group places one copy, as on the cones' own
+// (u, v) (near where it was drawn: the ripples move the peak a few samples); at the orbit's
+// end at most one (a patch does not reach round the cone, so its peak may have left it).
+TEST(MobileHatching, RipplesOfLOnACoarsePatchPlaceNoCopies) {
+  Scene path = load_scene(std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/snowman_mobile.json");
+  for (SceneObject& o : path.objects)
+    if (o.mesh->name.find("cone") != std::string::npos) {
+      Mesh stripped = *o.mesh;
+      stripped.uvs.clear();
+      o.mesh = std::make_shared<const Mesh>(std::move(stripped));
+    }
+  DecalSurface surface = reference::project_decals_by_rays(path);
+  MobileHatching mobile(path, surface);
+  const HatchingParams p = path.params.get<HatchingParams>();
+  const std::vector<HatchGroup> groups = hatching_groups(path);
+  for (int frame : {0, path.animation->frames - 1}) {
+    size_t moving = 0;
+    const auto placed = mobile.place(scene_at_frame(path, frame), p.mobile_threshold, p.mobile_fade);
+    for (size_t k = 0; k < placed.size(); ++k) {
+      const MobileHatching::Placement& g = placed[k];
+      if (!groups[k].mobile) continue;
+      ++moving;
+      std::printf("[snowman, patch charts, frame %d] a mobile group: %zu copies, the first at u %+.4f from c\n", frame,
+                  g.u.size(), g.u.empty() ? 0.0 : g.u[0] - g.c.x);
+      EXPECT_LE(g.u.size(), 1u) << frame;
+      if (frame == 0) {
+        EXPECT_EQ(g.u.size(), 1u);
+      }
+    }
+    EXPECT_EQ(moving, 4u) << "the trees' four groups";
+  }
+}
+
 class MobileHatchingStrokes : public testing::GlTest {};
 
 // A free mobile group on the sphere, the view orbited 30 degrees: both backends place it
