@@ -89,8 +89,9 @@ DecalPoint placed(Record r, uint object) {
 // surface where it lands on a face; missed elsewhere, and where it lay off the group's object.
 Record moved(Record r, Stroke st) {
   Chart chart = charts[st.chart];
+  precise double u = st.copy_u + st.copy_scale * (r.uv.x - st.c_u);  // rounded as the CPU rounds it: unfused
   UvHit hit;
-  if (r.at.x != chart.object || !locate(chart, dvec2(st.copy_u + st.copy_scale * (r.uv.x - st.c_u), r.uv.y), hit)) {
+  if (r.at.x != chart.object || !locate(chart, dvec2(u, r.uv.y), hit)) {
     r.at.x = kMissed;
     return r;
   }
