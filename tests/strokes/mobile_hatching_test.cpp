@@ -210,13 +210,7 @@ TEST(MobileHatching, ADegenerateChartIsRefused) {
 // (u, v) (near where it was drawn: the ripples move the peak a few samples); at the orbit's
 // end at most one (a patch does not reach round the cone, so its peak may have left it).
 TEST(MobileHatching, RipplesOfLOnACoarsePatchPlaceNoCopies) {
-  Scene path = load_scene(std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/snowman_mobile.json");
-  for (SceneObject& o : path.objects)
-    if (o.mesh->name.find("cone") != std::string::npos) {
-      Mesh stripped = *o.mesh;
-      stripped.uvs.clear();
-      o.mesh = std::make_shared<const Mesh>(std::move(stripped));
-    }
+  Scene path = testing::cones_without_uvs(load_scene(std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/snowman_mobile.json"));
   DecalSurface surface = reference::project_decals_by_rays(path);
   MobileHatching mobile(path, surface);
   const HatchingParams p = path.params.get<HatchingParams>();

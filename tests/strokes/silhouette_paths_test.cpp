@@ -41,12 +41,6 @@ Scene turned_unnormalized() {
   return s;
 }
 
-// `mesh` without its (u, v).
-std::shared_ptr<const Mesh> without_uvs(Mesh mesh) {
-  mesh.uvs.clear();
-  return std::make_shared<const Mesh>(std::move(mesh));
-}
-
 std::vector<std::pair<std::string, Scene>> scenes() {
   return {{"torus", testing::drawn_with_strokes(testing::builtin_at("torus", 320, 240))},
           {"sphere", testing::drawn_with_strokes(testing::builtin_at("sphere", 320, 240))},
@@ -261,9 +255,7 @@ TEST_F(SilhouettePaths, GpuWritesTheWindowPathsTheCpuMakesOfItsPoints) {
   // Its orbit's last frame, the copies moved along their u-lines on the GPU; then the same with
   // the trees' cones stripped of their (u, v): the groups travel on LSCM patches.
   all.emplace_back("snowman, orbit's end", scene_at_frame(all.back().second, all.back().second.animation->frames - 1));
-  all.emplace_back("snowman, orbit's end, patch charts", all.back().second);
-  for (SceneObject& o : all.back().second.objects)
-    if (o.mesh->name.find("cone") != std::string::npos) o.mesh = without_uvs(*o.mesh);
+  all.emplace_back("snowman, orbit's end, patch charts", testing::cones_without_uvs(all.back().second));
   all.emplace_back("storefront", load_scene(PLUMBAGO_SOURCE_DIR "/scenes/storefront_strokes.json"));
   const auto [behind, crease_paths] = crease_points_behind(cad_cut_by_the_near_plane());
   std::printf("CAD part: %zu of its points on %zu crease and border paths nearer than its near plane\n", behind,

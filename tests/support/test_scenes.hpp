@@ -51,6 +51,18 @@ inline Scene one_stroke_object(Mesh mesh, glm::vec3 eye, int width = 320, int he
   return drawn_with_strokes(s);
 }
 
+// `s` with its cones (procedural) stripped of their (u, v): a mobile hatching group on one
+// travels on an LSCM patch under it (common/strokes/mobile_hatching.hpp).
+inline Scene cones_without_uvs(Scene s) {
+  for (SceneObject& o : s.objects)
+    if (o.mesh->name.find("cone") != std::string::npos) {
+      Mesh stripped = *o.mesh;
+      stripped.uvs.clear();
+      o.mesh = std::make_shared<const Mesh>(std::move(stripped));
+    }
+  return s;
+}
+
 // A small square seen face-on and a torus, 240 x 180 (the blocks of 8 x 8 pixels do not fit
 // its height): the GPU's skipped-pixel rectangles are exact around the square.
 inline Scene square_and_torus(const std::string& background_pairs) {
