@@ -236,13 +236,13 @@ void expect_gpu_bounds(const WindowLines& lines, const gpu::UploadedPaths& table
 }
 
 // The GPU frame writes the window paths of its creases, borders, silhouettes, decals and
-// hatches itself (gpu/strokes/crease_rows.hpp, silhouette_rows.hpp, decal_rows.hpp; the CPU
-// reads back only their counts and bounds): its path table's rows against those the CPU
-// makes of the same points (common/strokes/strokes.cpp window_lines, which a frame that keeps
-// its lines whole runs too): the same paths, counts, keys, kinds, weights, entries, segment
-// faces and pressures exactly; the silhouettes' window points and depths exactly (the same
-// doubles), the others' within the rounding of a few double operations, as are arc lengths,
-// lengths and world steps.
+// hatches itself (gpu/strokes/crease_rows.hpp, silhouette_rows.hpp, decal_rows.hpp, the last
+// with a mobile hatch's copies moved in its group's chart; the crease and decal rows' pieces
+// and rows by piece_rows.hpp; the CPU reads back only their counts and bounds): its path
+// table's rows against those the CPU makes of the same points (common/strokes/strokes.cpp
+// window_lines, which a frame that keeps its lines whole runs too): the same paths, counts, keys, kinds, weights,
+// entries, segment faces and pressures exactly; the silhouettes' window points and depths exactly (the same doubles),
+// the others' within the rounding of a few double operations, as are arc lengths, lengths and world steps.
 TEST_F(SilhouettePaths, GpuWritesTheWindowPathsTheCpuMakesOfItsPoints) {
   std::vector<std::pair<std::string, Scene>> all = scenes();
   all.emplace_back("torus cut by the near plane", torus_cut_by_the_near_plane());
