@@ -152,9 +152,9 @@ void print_text(const std::vector<BenchResult>& results) {
   for (const auto& r : results) {
     std::printf("%s [%s]: %.2f ms/frame = %.1f fps\n", r.scene.c_str(), r.backend.c_str(), r.frame_ms,
                 1000 / r.frame_ms);
-    if (r.backend == "gpu" && !r.path_frames)
-      std::printf("  host %.2f ms (CPU time of the GL thread), read back %zu bytes a frame\n", r.host_ms,
-                  r.readback_bytes);
+    if (r.backend == "gpu")
+      std::printf("  host %.2f ms (CPU time of the GL thread), read back %zu bytes a frame%s\n", r.host_ms,
+                  r.readback_bytes, r.path_frames ? " (a path's frame is its renderer's first)" : "");
     std::string counts;
     for (const char* name : {"segments", "chains", "paths", "samples", "strokes"})
       if (auto it = r.counts.find(name); it != r.counts.end())

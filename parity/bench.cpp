@@ -100,7 +100,7 @@ BenchResult bench_path(const Scene& scene, const std::string& backend, int cap, 
   for (const auto& p : first.ran)
     if (is_preprocessing(p.name)) r.preprocessing[p.name] = p.ms;
   set_counts(r, first);
-  std::vector<double> ms, setup;
+  std::vector<double> ms, setup, host;
   std::vector<int> timed = timed_path_frames(path.count(), cap);
   r.path_frames = path.count();
   r.timed_path_frames = int(timed.size());
@@ -109,12 +109,15 @@ BenchResult bench_path(const Scene& scene, const std::string& backend, int cap, 
     double setup_ms = 0;
     ms.push_back(path.timed(i, f, setup_ms));
     setup.push_back(setup_ms);
+    host.push_back(f.host_ms);
+    r.readback_bytes = std::max(r.readback_bytes, f.readback_bytes);
     add_pass_times(f, int(timed.size()), r);
     r.path_ms += ms.back();
     r.slowest_ms = std::max(r.slowest_ms, ms.back());
   }
   r.frame_ms = median(ms);
   r.setup_ms = median(setup);
+  r.host_ms = median(host);
   if (keep) keep(kept_buffers(path.render(0, FrameOptions{true})), r);
   return r;
 }
@@ -135,7 +138,7 @@ nlohmann::json result_json(const BenchResult& r) {
   nlohmann::json j{{"scene", r.scene},       {"backend", r.backend},        {"faces", r.faces},
                    {"strokes", r.strokes},   {"size", {r.width, r.height}}, {"fps", 1000 / r.frame_ms},
                    {"frame_ms", r.frame_ms}, {"stages", r.stages},          {"preprocessing", r.preprocessing}};
-  if (r.backend == "gpu" && !r.path_frames) j["host_ms"] = r.host_ms, j["readback_bytes"] = r.readback_bytes;
+  if (r.backend == "gpu") j["host_ms"] = r.host_ms, j["readback_bytes"] = r.readback_bytes;
   if (!r.counts.empty()) j["counts"] = r.counts;
   if (!r.limits.empty()) {
     j["limits"] = r.limits;
