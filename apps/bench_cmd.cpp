@@ -154,7 +154,8 @@ void print_text(const std::vector<BenchResult>& results) {
                 1000 / r.frame_ms);
     if (r.backend == "gpu")
       std::printf("  host %.2f ms (CPU time of the GL thread), read back %zu bytes a frame%s\n", r.host_ms,
-                  r.readback_bytes, r.path_frames ? " (a path's frame is its renderer's first)" : "");
+                  r.readback_bytes,
+                  r.path_frames && r.readback_bytes ? " (a path's frame sizes the stroke buffers again)" : "");
     std::string counts;
     for (const char* name : {"segments", "chains", "paths", "samples", "strokes"})
       if (auto it = r.counts.find(name); it != r.counts.end())
@@ -162,7 +163,7 @@ void print_text(const std::vector<BenchResult>& results) {
     if (!counts.empty()) std::printf("  counts: %s\n", counts.c_str());
     if (r.path_frames)
       std::printf(
-          "  camera path: %d of its %d frames in %.1f ms, slowest %.2f ms; making a frame's renderer %.2f ms "
+          "  camera path: %d of its %d frames in %.1f ms, slowest %.2f ms; moving the renderer there %.2f ms "
           "(not in the frame)\n",
           r.timed_path_frames, r.path_frames, r.path_ms, r.slowest_ms, r.setup_ms);
     for (const auto& [name, ms] : r.stages) {

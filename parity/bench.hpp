@@ -36,7 +36,7 @@ struct BenchResult {
   // A camera path (Scene::animation): some of its frames (timed_path_frames) timed once, in order.
   int path_frames = 0, timed_path_frames = 0;
   double path_ms = 0, slowest_ms = 0;    // the timed frames' sum and the slowest
-  double setup_ms = 0;                   // median per frame: making its renderer (GPU)
+  double setup_ms = 0;                   // median per frame: moving the renderer there (GPU)
   std::map<std::string, double> limits;  // bench --limits: each probe's ms at the scene's size (GPU)
 };
 

@@ -1,6 +1,6 @@
 // The frames of a scene's camera path (Scene::animation) on one backend, for `render -o DIR`,
-// `bench` and the Python module (python/). The GPU backend builds a renderer per frame (a
-// renderer draws the camera it was made with), sharing the preprocessing the first one made.
+// `bench` and the Python module (python/). The GPU backend makes one renderer, on the first
+// frame asked for, and moves it along the path (gpu::Renderer::camera_moved).
 #pragma once
 
 #include <memory>
@@ -10,23 +10,31 @@
 #include "common/scene/scene.hpp"
 
 namespace plumbago {
-struct Preprocessed;
+namespace gpu {
+class Renderer;
+}
 
 class PathFrames {
  public:
-  PathFrames(const Scene& scene, std::string backend) : scene_(scene), backend_(std::move(backend)) {}
+  PathFrames(const Scene& scene, std::string backend);
+  ~PathFrames();
   int count() const { return scene_.animation ? scene_.animation->frames : 1; }
   // Frame i, read back.
   Frame render(int frame, const FrameOptions& options = {});
   // Frame i without readback: the wall-clock ms of its passes (GPU: to glFinish), with
-  // their times in `timing.ran`; `setup_ms` the time to make its renderer (GPU: uploads of
-  // the frame's geometry, lights and camera; 0 for the reference).
+  // their times in `timing.ran`; `setup_ms` the time to make the renderer or move it there
+  // (GPU: on the first frame asked for, the uploads of the geometry; after it, what the
+  // camera move makes again; 0 for the reference).
   double timed(int frame, Frame& timing, double& setup_ms);
 
  private:
+  // The GPU renderer at `frame`, made on first use.
+  gpu::Renderer& gpu_at(int frame);
+
   const Scene& scene_;
   std::string backend_;
-  std::shared_ptr<const Preprocessed> preprocessed_;
+  Scene at_;  // the GPU renderer's scene, at the frame it last drew
+  std::unique_ptr<gpu::Renderer> renderer_;
 };
 
 }  // namespace plumbago

@@ -37,7 +37,7 @@ Session::~Session() {
 void Session::camera_moved() {
   scene_.camera = orbit_.camera();
   if (scene_.lights_follow_camera) scene_.lights = default_lights(scene_.camera);
-  stale_ = true;
+  moved_ = true;
 }
 
 void Session::replace(Scene scene, bool keep_camera) {
@@ -141,7 +141,11 @@ bool Session::render() {
   try {
     if (stale_ && !preprocessed_ready()) return false;
     gpu.emplace(window_);
-    if (std::exchange(stale_, false)) make_renderer();
+    if (std::exchange(stale_, false))
+      make_renderer();
+    else if (moved_ && renderer_)
+      renderer_->camera_moved();
+    moved_ = false;
     if (!renderer_) return false;
     Stopwatch watch;
     frame_ = renderer_->render(FrameOptions{keep_buffers_});
@@ -150,7 +154,7 @@ bool Session::render() {
     return true;
   } catch (const std::exception& e) {
     if (gpu) renderer_.reset();  // in its own context, or (none to be had) left alone
-    stale_ = false;              // tried again after the next change
+    stale_ = moved_ = false;     // tried again after the next change
     error_ = e.what();
     return false;
   }

@@ -1,7 +1,8 @@
 // The scene being viewed and edited, and the GPU renderer that draws it.
 //
 // gpu::Renderer reads a scene when it is made (the objects each pipeline draws, what the
-// passes set up), so every change makes a new renderer. Its preprocessing (pencil
+// passes set up), so every change but a camera move makes a new renderer; a camera move keeps
+// it (gpu::Renderer::camera_moved). Its preprocessing (pencil
 // textures, paper, curvature: most of the setup time on llvmpipe; CPU only) is kept
 // across a camera move and a change to a parameter no preprocessing step reads, and made
 // anew in a worker thread: the last frame stays until it is done.
@@ -47,7 +48,7 @@ class Session {
 
   // Whether frames keep their intermediate buffers (Frame::buffers: the stage view).
   void keep_buffers(bool on);
-  bool stale() const { return stale_; }
+  bool stale() const { return stale_ || moved_; }
   // Whether preprocessing runs in the background; how long it has, and what the last one
   // took (0 before the first).
   bool preprocessing() const { return pending_.valid(); }
@@ -89,6 +90,7 @@ class Session {
   Stopwatch pending_since_;
   double last_preprocessing_s_ = 0;
   bool stale_ = true;
+  bool moved_ = false;  // the camera moved since the last frame (the renderer kept)
   bool keep_buffers_ = false;
   Frame frame_;
   std::string error_;

@@ -54,12 +54,24 @@ std::vector<Camera> path_cameras(const Scene& scene) {
 
 Scene scene_at_frame(const Scene& scene, int frame) {
   Scene s = scene;
-  if (!scene.animation) return s;
-  s.path_start = scene.frame > 0 ? scene.path_start : scene.camera;
-  s.camera = frame_camera(scene, frame);
+  move_along_path(s, frame);
+  return s;
+}
+
+void move_along_path(Scene& s, int frame) {
+  if (!s.animation) return;
+  const Camera camera = frame_camera(s, frame);  // from the path's start as `s` has it
+  if (s.frame == 0) s.path_start = s.camera;
+  s.camera = camera;
   s.frame = frame;
   if (s.lights_follow_camera) s.lights = default_lights(s.camera);
-  return s;
+}
+
+void take_view(Scene& to, const Scene& from) {
+  to.camera = from.camera;
+  to.lights = from.lights;
+  to.frame = from.frame;
+  to.path_start = from.path_start;
 }
 
 }  // namespace plumbago

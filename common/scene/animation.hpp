@@ -37,6 +37,11 @@ Camera camera_at(const Camera& c, const Animation& a, int frame, glm::vec3 cente
 // camera; Scene::frame says which frame it is. The scene itself when it has no animation.
 // `scene` may itself be a frame of the path.
 Scene scene_at_frame(const Scene& scene, int frame);
+// The same in place: `scene` (its path's first frame, or any other) moved to frame i.
+void move_along_path(Scene& scene, int frame);
+// `to` takes the view of `from`, all that scene_at_frame changes: camera, lights, frame and
+// path start.
+void take_view(Scene& to, const Scene& from);
 
 // The camera of frame i of the path `scene` lies on (its own camera without an animation).
 Camera frame_camera(const Scene& scene, int frame);

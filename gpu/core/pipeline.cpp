@@ -73,6 +73,13 @@ Renderer::Renderer(const Scene& scene, std::shared_ptr<const Preprocessed> prepr
 
 Renderer::~Renderer() = default;
 
+void Renderer::camera_moved() {
+  GpuFrame& f = state_->frame;
+  f.camera_moved();
+  for (auto& pass : state_->passes) pass->moved(f, f.scene.lights_follow_camera);
+  Context::get().check_errors("moving the GPU renderer's camera");
+}
+
 double Renderer::render_frame(Frame& timing) {
   Stopwatch watch;
   ThreadClock host;

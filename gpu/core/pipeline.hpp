@@ -26,6 +26,10 @@ class Renderer {
   // a camera move or a change to a per-frame parameter).
   explicit Renderer(const Scene& scene, std::shared_ptr<const Preprocessed> preprocessed = nullptr);
   ~Renderer();
+  // The scene's view changed (common/scene/animation.hpp take_view: its camera, the lights
+  // where they follow it, a path's frame): what the passes made of the old one is made again,
+  // the rest kept; the next frame sizes the stroke buffers again (it reads their counts back).
+  void camera_moved();
   // Renders one frame and reads it back. `ran` holds the preprocessing steps that made
   // its data (once, possibly by an earlier renderer) and the GPU times per pass, plus
   // "readback" (CPU wall time of downloading the image).
@@ -34,9 +38,10 @@ class Renderer {
   // and fills `timing.ran` with the GPU time of each pass, `host_ms` and `readback_bytes`
   // (what its passes read back). Its strokes' lines are not kept whole on the CPU, and once
   // a frame has sized the buffers the stroke steps size theirs by (the renderer's first
-  // frame, and every render()), it reads nothing back: its buffers are as those frames sized
-  // them, which hold the same frame's; where a frame needs more (a per-frame parameter
-  // changed since), the strokes past them are left out until render() sizes them again.
+  // frame, the first after camera_moved(), and every render()), it reads nothing back: its
+  // buffers are as those frames sized them, which hold the same frame's; where a frame needs
+  // more (a per-frame parameter changed since), the strokes past them are left out until
+  // render() sizes them again.
   double render_frame(Frame& timing);
   // The last frame's image (RGB, row 0 = bottom), read back.
   Image color() const;

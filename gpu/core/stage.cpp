@@ -4,6 +4,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "common/scene/animation.hpp"
 #include "common/sketchy/sketchy.hpp"
 #include "common/sketchy/sketchy_gbuffer.hpp"
 
@@ -34,6 +35,12 @@ GpuFrame::GpuFrame(const Scene& s, const Preprocessed& p, std::vector<std::strin
 PixelRect GpuFrame::filter_rect(int radius) const {
   if (!ordinary_bounds_) ordinary_bounds_ = window_bounds(ordinary, ordinary.width, ordinary.height);
   return plumbago::filter_rect(*ordinary_bounds_, ordinary, radius);
+}
+
+void GpuFrame::camera_moved() {
+  take_view(ordinary, scene);
+  take_view(sketchy, scene);
+  ordinary_bounds_.reset();
 }
 
 bool GpuFrame::ran(const std::string& stage) const {
@@ -99,10 +106,20 @@ void GpuFrame::read_region(GBufferSlot gbuffer, PixelRect region) {
   read_gbuffer(gbuffer.name, c);
 }
 
+void GpuFrame::read_near_objects(GBufferSlot gbuffer, int radius) {
+  read_region(gbuffer, PixelRect{});  // the channels' entry, its region made per camera
+  int& r = gbuffer_radii_.emplace(gbuffer.name, radius).first->second;
+  r = std::max(r, radius);
+}
+
 GBufferChannels GpuFrame::gbuffer_channels(const std::string& stage) const {
   if (dump) return {};
   auto it = gbuffer_reads_.find(stage);
-  return it == gbuffer_reads_.end() ? GBufferChannels::none() : it->second;
+  if (it == gbuffer_reads_.end()) return GBufferChannels::none();
+  GBufferChannels c = it->second;
+  if (auto r = gbuffer_radii_.find(stage); r != gbuffer_radii_.end())
+    c.read_region = bounding(c.read_region, filter_rect(r->second));
+  return c;
 }
 
 void GpuPass::dump(GpuFrame& f, const std::vector<std::string>& stages, std::map<std::string, Image>& out) {

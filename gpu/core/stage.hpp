@@ -53,9 +53,12 @@ class GpuFrame : public FrameData {
   StageConfig config() const { return {scene.params, scene.effects}; }
   // Whether `stage` runs in this frame; throws std::logic_error for a name no stage has.
   bool ran(const std::string& stage) const;
-  // filter_rect(ordinary, radius) (common/scene/scene.hpp), its vertices projected once: the
-  // renderer's scene and camera do not change between its frames.
+  // filter_rect(ordinary, radius) (common/scene/scene.hpp), its vertices projected once a
+  // camera.
   PixelRect filter_rect(int radius) const;
+  // `scene`'s view changed (common/scene/animation.hpp take_view): both pipelines' objects
+  // take it.
+  void camera_moved();
 
   // An output's render target, made on first use at the window's size in the declared
   // format; an output drawn over another (Output::draws_over) is that one's target where
@@ -95,6 +98,8 @@ class GpuFrame : public FrameData {
   // says where it reads them when it is made. The G-buffer writes only that (a dump: everything).
   void read_gbuffer(const std::string& stage, const GBufferChannels& channels);
   void read_region(GBufferSlot gbuffer, PixelRect region);
+  // The region within `radius` pixels of the ordinary objects (filter_rect), for every camera.
+  void read_near_objects(GBufferSlot gbuffer, int radius);
   GBufferChannels gbuffer_channels(const std::string& stage) const;
 
  private:
@@ -102,6 +107,7 @@ class GpuFrame : public FrameData {
   std::map<std::string, Texture> textures_;
   std::map<std::string, std::any> shared_;
   std::map<std::string, GBufferChannels> gbuffer_reads_;
+  std::map<std::string, int> gbuffer_radii_;  // read_near_objects: the largest radius a G-buffer
 };
 
 class GpuPass {
@@ -111,6 +117,9 @@ class GpuPass {
   // Downloads what it wrote of `stages`' outputs (a dump): by default each written
   // output's texture.
   virtual void dump(GpuFrame& f, const std::vector<std::string>& stages, std::map<std::string, Image>& out);
+  // After the frame's camera moved (GpuFrame::camera_moved), and with it the lights where
+  // `lights_moved`: what the pass made once of them is made again. By default nothing.
+  virtual void moved(GpuFrame&, bool /*lights_moved*/) {}
 };
 
 struct GpuPassDef {

@@ -41,7 +41,7 @@ namespace {
 class EdgeAndLightPass : public GpuPass {
  public:
   explicit EdgeAndLightPass(GpuFrame& f) {
-    f.read_region(kGBuffer, f.filter_rect(2));  // the filter runs within 1 pixel and reads 1 more
+    f.read_near_objects(kGBuffer, 2);  // the filter runs within 1 pixel and reads 1 more
     if (f.ran("multi_contour")) {
       marks_ = make_contour_block_marks(f.scene.width, f.scene.height);
       f.put(kContourBlockMarks, marks_);

@@ -46,7 +46,7 @@ class InteriorPass : public GpuPass {
       : stack_(upload_texture_3d(f.get(kPencilStack), GL_R32F)),
         paper_normal_(f.get(maybe(kPaperNormal)) ? upload_texture(f.get(kPaperNormal), GL_RGBA32F)
                                                  : make_texture(1, 1, GL_RGBA32F)) {
-    f.read_region(kGBuffer, f.filter_rect(0));
+    f.read_near_objects(kGBuffer, 0);
   }
   void run(GpuFrame& f) override {
     std::vector<Light> lights = view_space_lights(f.scene);

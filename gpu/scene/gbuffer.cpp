@@ -212,6 +212,18 @@ GBufferPass::GBufferPass(const Scene& scene, const std::vector<Curvature>& curva
   triangle_angles_.first_triangle = make_buffer(first_triangle.data(), first_triangle.size() * sizeof(GLuint));
 }
 
+void GBufferPass::relight(const Scene& scene) {
+  std::vector<WorldObject> objects = world_geometry(scene, {});
+  for (size_t i = 0; i < objects.size(); ++i) {
+    std::vector<Corner> soup = triangle_soup(objects[i]);
+    Batch& b = batches_[i];
+    b.vertices = make_buffer(soup.data(), soup.size() * sizeof(Corner));  // immutable storage: made anew
+    glBindVertexArray(b.layout.id());
+    glBindVertexBuffer(0, b.vertices.id(), 0, sizeof(Corner));
+  }
+  glBindVertexArray(0);
+}
+
 const Program& GBufferPass::program_for(const GBufferChannels& c) {
   return programs_.get({c.normal, c.face_normal, c.bary, c.gouraud, c.theta_min, c.theta_max, c.depth});
 }
@@ -374,6 +386,7 @@ class GBufferStagePass : public GpuPass {
  public:
   GBufferStagePass(GpuFrame& f, GBufferSlot stage, const Scene& objects, const std::vector<Curvature>& curvature)
       : stage_(stage),
+        objects_(objects),
         pass_(objects, curvature),
         targets_(make_gbuffer_targets(f.scene.width, f.scene.height, f.params<GBufferParams>().normal_format)) {
     f.put(stage_, targets_);
@@ -382,12 +395,16 @@ class GBufferStagePass : public GpuPass {
     f.put(kTriangleAngles, pass_.triangle_angles());
   }
   void run(GpuFrame& f) override { pass_.render(f.scene, targets_, f.gbuffer_channels(stage_.name)); }
+  void moved(GpuFrame&, bool lights_moved) override {
+    if (lights_moved) pass_.relight(objects_);
+  }
   void dump(GpuFrame&, const std::vector<std::string>&, std::map<std::string, Image>& out) override {
     add_gbuffer_buffers(download_gbuffer(targets_), out, stage_.name);
   }
 
  private:
   GBufferSlot stage_;
+  const Scene& objects_;  // the frame's ordinary or sketchy objects, which move with it
   GBufferPass pass_;
   GBufferTargets targets_;
 };

@@ -69,6 +69,8 @@ class GBufferPass {
   // `curvature`: one per object for the corner angles of Lee et al. 2006, §5.3, or none.
   explicit GBufferPass(const Scene& scene, const std::vector<Curvature>& curvature = {});
   void render(const Scene& scene, GBufferTargets& targets, const GBufferChannels& channels = {});
+  // The Gouraud intensities again, under `scene`'s lights (the objects the pass was made with).
+  void relight(const Scene& scene);
   // The depth buffer of the last render: what later geometry (a depth sprite) is tested against.
   const Renderbuffer& depth_buffer() const { return depth_test_; }
   // The corner angles of the last render that wrote angles or TriangleAngles.

@@ -14,14 +14,13 @@ class BaseCoatPass : public GpuPass {
   explicit BaseCoatPass(GpuFrame& f)
       : program_("util/fullscreen.vert", "strokes/basecoat.frag", glsl_params<BaseCoatParams>()) {
     auto p = f.params<BaseCoatParams>();
-    TriangleShades shades = triangle_shades(f.ordinary, p);
-    if (shades.corners.empty()) shades.corners.push_back(glm::vec4(0.0f));
-    if (shades.first_triangle.empty()) shades.first_triangle.push_back(0);
-    corners_ = make_buffer(shades.corners.data(), shades.corners.size() * sizeof(glm::vec4));
-    first_ = make_buffer(shades.first_triangle.data(), shades.first_triangle.size() * sizeof(uint32_t));
+    shade(f);
     texture_ = upload_texture(basecoat_texture(p), GL_RGBA32F);
     set_sampling(texture_, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
-    f.read_region(kGBuffer, f.filter_rect(0));
+    f.read_near_objects(kGBuffer, 0);
+  }
+  void moved(GpuFrame& f, bool lights_moved) override {
+    if (lights_moved) shade(f);
   }
   void run(GpuFrame& f) override {
     const GBufferTargets& g = f.get(kGBuffer);
@@ -33,6 +32,15 @@ class BaseCoatPass : public GpuPass {
   }
 
  private:
+  // The corners' shades under the frame's lights.
+  void shade(const GpuFrame& f) {
+    TriangleShades shades = triangle_shades(f.ordinary, f.params<BaseCoatParams>());
+    if (shades.corners.empty()) shades.corners.push_back(glm::vec4(0.0f));
+    if (shades.first_triangle.empty()) shades.first_triangle.push_back(0);
+    corners_ = make_buffer(shades.corners.data(), shades.corners.size() * sizeof(glm::vec4));
+    first_ = make_buffer(shades.first_triangle.data(), shades.first_triangle.size() * sizeof(uint32_t));
+  }
+
   Program program_;
   FullscreenPass pass_;
   Buffer corners_, first_;

@@ -125,6 +125,10 @@ class IdImagePass : public GpuPass {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
 
+  // A new camera makes other paths: the next frame sizes the buffers by its counts again.
+  // The decals stay where their strokes' own cameras placed them.
+  void moved(GpuFrame&, bool) override { sized_ = false; }
+
  private:
   // The silhouette segments' meshes, or (the segments computed elsewhere: parity) its own.
   const StrokeMeshes& stroke_meshes(GpuFrame& f) {
