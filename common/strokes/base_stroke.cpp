@@ -230,9 +230,16 @@ Shape shape_at(double s, double L, bool has_ends, const StrokeRun& run, const St
   return {w, a};
 }
 
+// The length of the polyline through p (a loop's closing segment included).
+double polyline_length(const std::vector<glm::dvec2>& p, bool closed) {
+  double length = closed ? glm::distance(p.back(), p.front()) : 0.0;
+  for (size_t j = 0; j + 1 < p.size(); ++j) length += glm::distance(p[j], p[j + 1]);
+  return length;
+}
+
 std::vector<StrokeSample> ribbon_samples(const StrokeRun& run, const StrokeStyle& style, const DenseCurve& curve,
-                                         bool closed) {
-  double L = curve.length();
+                                         double polyline_px, bool closed) {
+  double L = curve.length(), polyline_per_spline = run.brush.empty() ? 1.0 : polyline_px / L;
   std::vector<double> s = sample_arc_lengths(L, style);
   std::vector<glm::dvec2> base = points_at(curve, s);
   std::vector<glm::dvec2> normals = vertex_normals(base, closed);
@@ -245,7 +252,8 @@ std::vector<StrokeSample> ribbon_samples(const StrokeRun& run, const StrokeStyle
     StampedOffset o = stamp(s[j]);
     Shape shape = shape_at(s[j], L, !closed, run, style, o.pressure);
     bool down = j + 1 < s.size() && stamp(0.5 * (s[j] + s[j + 1])).pen_down;
-    out.push_back({base[j] + normals[j] * o.displacement_px, base[j], s[j], shape.width, shape.alpha, down});
+    out.push_back({base[j] + normals[j] * o.displacement_px, base[j], s[j],
+                   brush_t(run.brush, s[j] * polyline_per_spline), shape.width, shape.alpha, down});
   }
   return out;
 }
@@ -265,8 +273,8 @@ void append_strip(const std::vector<StrokeSample>& samples, size_t a, size_t b, 
   for (size_t j = a; j <= b; ++j) {
     const StrokeSample& q = samples[j];
     glm::dvec2 half = n[j - a] * (q.width / 2);
-    strip.push_back(vertex(q.position - half, q.s / period, 0.0, q.alpha));
-    strip.push_back(vertex(q.position + half, q.s / period, 1.0, q.alpha));
+    strip.push_back(vertex(q.position - half, q.t / period, 0.0, q.alpha));
+    strip.push_back(vertex(q.position + half, q.t / period, 1.0, q.alpha));
   }
   for (size_t k = 0; k + 2 < strip.size(); ++k) {  // GL's strip order: odd triangles swap their first two
     if (k % 2 == 0)
@@ -288,6 +296,14 @@ std::vector<glm::dvec2> catmull_rom_resample(const std::vector<glm::dvec2>& poin
   std::vector<double> s = even_arc_lengths(curve.length(), spacing_px);
   if (loop) s.pop_back();  // the first sample again
   return points_at(curve, s);
+}
+
+double brush_t(const BrushParameter& knots, double s) {
+  if (knots.size() < 2) return s;
+  auto it = std::upper_bound(knots.begin(), knots.end(), s, [](double x, const glm::dvec2& k) { return x < k.x; });
+  size_t k = std::clamp(size_t(it - knots.begin()), size_t(1), knots.size() - 1) - 1;
+  const glm::dvec2 &a = knots[k], &b = knots[k + 1];
+  return a.y + (s - a.x) * (b.y - a.y) / (b.x - a.x);
 }
 
 StampedOffset rubber_stamp(const OffsetExample& example, double s, double run_length) {
@@ -321,7 +337,7 @@ BaseStrokeSamples base_stroke_samples(const StrokeRun& run, const StrokeStyle& s
   if (p.size() < 2) return {};
   bool closed = run.closed && p.size() >= 3;
   DenseCurve curve = dense_curve(catmull_rom_spans(p, closed));
-  return {ribbon_samples(run, style, curve, closed), curve.length(), closed};
+  return {ribbon_samples(run, style, curve, polyline_length(p, closed), closed), curve.length(), closed};
 }
 
 Ribbon ribbon(const BaseStrokeSamples& stroke, const StrokeStyle& style) {

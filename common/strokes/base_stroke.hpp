@@ -57,9 +57,11 @@
 //    around); a degenerate segment, or a hairpin whose two normals cancel, takes the
 //    previous normal; a piece with no segment of nonzero length draws nothing. Sample p
 //    of width w gives p - n w/2 (v = 0, right of the direction of travel) and p + n w/2
-//    (v = 1, left), u = s / texture_period_px. Consecutive samples make a GL triangle strip
-//    R0 L0 R1 L1 ...; its triangles, in GL's order and winding ((R_j, L_j, R_{j+1}),
-//    (R_{j+1}, L_j, L_{j+1})), are the output.
+//    (v = 1, left), u = t / texture_period_px, t the brush parameter at s: s itself, or
+//    where the run carries one, its coherent parameter (Kalnins et al. 2003,
+//    common/strokes/coherent_silhouettes.hpp) at s scaled to its polyline's length. Consecutive samples make a GL
+//    triangle strip R0 L0 R1 L1 ...; its triangles, in GL's order and winding ((R_j, L_j, R_{j+1}), (R_{j+1}, L_j,
+//    L_{j+1})), are the output.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -69,17 +71,25 @@
 
 namespace plumbago {
 
+// A run's brush parameter: knots (s, t), s the arc length along its polyline (px,
+// ascending); none: t = s.
+using BrushParameter = std::vector<glm::dvec2>;
+
+// t at s: linear between knots, extrapolated along the end intervals; s itself without knots.
+double brush_t(const BrushParameter& knots, double s);
+
 // A visible run of a path, window px. occluded_start / occluded_end: that end is where
 // the path goes behind something (it gets the halo); both are ignored when closed.
 struct StrokeRun {
   std::vector<glm::dvec2> points;
   bool closed = false;
   bool occluded_start = false, occluded_end = false;
+  BrushParameter brush;  // t over its polyline's arc length (6. above); none: t = s
 };
 
 struct RibbonVertex {
   glm::vec2 position;  // window px
-  glm::vec2 uv;        // u along (arc length / texture_period_px), v across (0..1)
+  glm::vec2 uv;        // u along (brush parameter / texture_period_px), v across (0..1)
   float alpha;
 };
 
@@ -105,10 +115,10 @@ StampedOffset rubber_stamp(const OffsetExample& example, double s, double run_le
 
 // One sample of a run's ribbon (3.-5. above): its position (offset applied, window px) and
 // the base curve's point under it, its arc length s along the spline from the run's start
-// (px; u = s / texture_period_px), its width and alpha.
+// (px), its brush parameter t (px; u = t / texture_period_px, 6. above), its width and alpha.
 struct StrokeSample {
   glm::dvec2 position, base;
-  double s, width, alpha;
+  double s, t, width, alpha;
   bool pen_down_after;  // the segment to the next sample is drawn
 };
 

@@ -155,11 +155,14 @@ std::vector<StyledRun> styled_runs(const WindowLines& lines, const Visibility& v
 }
 
 std::vector<RunStroke> run_strokes(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
-                                   uint32_t seed) {
+                                   uint32_t seed, const std::vector<BrushParameter>& brushes) {
   check_stroke_memory(lines, visibility, styles);
   std::vector<RunStroke> out;
-  for (StyledRun& r : styled_runs(lines, visibility, styles, seed))
-    out.push_back({r.style, base_stroke_samples(r.run, r.style)});
+  std::vector<StyledRun> runs = styled_runs(lines, visibility, styles, seed);
+  for (size_t i = 0; i < runs.size(); ++i) {
+    if (i < brushes.size()) runs[i].run.brush = brushes[i];
+    out.push_back({runs[i].style, base_stroke_samples(runs[i].run, runs[i].style)});
+  }
   return out;
 }
 

@@ -100,9 +100,11 @@ struct RunStroke {
 };
 
 // Every visible run's stroke, in drawing order (visibility.runs' order): what
-// stroke_triangles draws, and what experiments/temporal_coherence measures.
+// stroke_triangles draws, and what experiments/temporal_coherence measures. Run i takes
+// brushes[i] as its brush parameter where there is one (Kalnins et al. 2003,
+// common/strokes/coherent_silhouettes.hpp), else t = s.
 std::vector<RunStroke> run_strokes(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
-                                   uint32_t seed);
+                                   uint32_t seed, const std::vector<BrushParameter>& brushes = {});
 
 // The ribbons of every visible run (run_strokes), three vertices a triangle, in drawing order; `seed`
 // (the scene's) seeds the offsets a style synthesizes (Kalnins et al. 2002, §4.3, §5, App. A).

@@ -37,15 +37,21 @@ Scene study_scene(const std::string& path, const std::vector<std::string>& sets,
   return s;
 }
 
-StrokeFrame render_stroke_frame(const Scene& study, int t) {
+StrokeFrame render_stroke_frame(const Scene& study, int t, CoherentCarry* coherent) {
   Scene s = scene_at_frame(study, t);
   std::vector<PassTime> ran;
   reference::ReferenceFrame f = reference::run_stages(s, ran);
   const Visibility* visibility = f.get(maybe(kVisibleRuns));
   if (!visibility) throw std::logic_error("the stroke stages did not run");
   const WindowLines& lines = f.get(kWindowLines);
-  std::vector<RunStroke> strokes = run_strokes(lines, *visibility, s.strokes, s.seed);
-  return {frame_strokes(s.camera, s.width, s.height, lines, *visibility, strokes), f.get(kStrokeColor),
+  std::vector<BrushParameter> brushes;
+  if (coherent) {
+    brushes = coherent_parameters(coherent->previous, s.camera, lines, *visibility, coherent->params);
+    coherent->previous = brush_samples(lines, *visibility, brushes, coherent->params);
+  }
+  std::vector<RunStroke> strokes = run_strokes(lines, *visibility, s.strokes, s.seed, brushes);
+  return {frame_strokes(s.camera, s.width, s.height, lines, *visibility, strokes),
+          coherent ? Image() : f.get(kStrokeColor),
           shower_door::surface_points(world_geometry(f.ordinary), f.get(kGBuffer))};
 }
 

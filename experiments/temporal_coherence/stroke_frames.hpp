@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/scene/scene.hpp"
+#include "common/strokes/coherent_silhouettes.hpp"
 #include "experiments/temporal_coherence/stroke_track.hpp"
 
 namespace plumbago::temporal_coherence {
@@ -22,11 +23,21 @@ Scene study_scene(const std::string& path, const std::vector<std::string>& sets,
 
 struct StrokeFrame {
   FrameStrokes strokes;
-  Image layer;   // RGB: stroke.color, the strokes over the page (the paper's grain included)
+  Image layer;   // RGB: stroke.color, the strokes over the page (the paper's grain included); empty: not drawn
   Image points;  // shower_door::surface_points of the frame's G-buffer: the surface seen at each pixel
 };
 
-// Frame t of the study scene's camera path.
-StrokeFrame render_stroke_frame(const Scene& study, int t);
+// The coherent strokes' state from frame to frame (Kalnins et al. 2003,
+// common/strokes/coherent_silhouettes.hpp): the last frame's brush samples.
+struct CoherentCarry {
+  CoherenceParams params;
+  std::vector<BrushSample> previous;
+};
+
+// Frame t of the study scene's camera path. With `coherent`, the silhouettes' brush
+// parameters are propagated from its samples (frame t - 1's, none before the first frame),
+// which it then holds frame t's; the layer is then left empty, as the reference's stroke
+// stage draws the 2002 paper's parameter.
+StrokeFrame render_stroke_frame(const Scene& study, int t, CoherentCarry* coherent = nullptr);
 
 }  // namespace plumbago::temporal_coherence

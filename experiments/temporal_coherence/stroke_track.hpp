@@ -18,12 +18,14 @@ namespace plumbago::temporal_coherence {
 
 // One base-stroke sample and the point of its path under it.
 struct TrackedSample {
-  glm::dvec3 world;        // the path's world point (world_at) at the sample's arc length
-  glm::dvec2 window;       // that point in this frame's window (px)
-  double depth;            // its linear view depth in this frame
-  double s, width, alpha;  // as drawn: arc length from the stroke's start (px; u x period), width (px), alpha
-  glm::dvec2 offset;       // as drawn: the position minus the base curve's (px), the offsets of Kalnins et al. 2002,
-                           // §4.3, §5, App. A
+  glm::dvec3 world;   // the path's world point (world_at) at the sample's arc length
+  glm::dvec2 window;  // that point in this frame's window (px)
+  double depth;       // its linear view depth in this frame
+  // As drawn: s the brush parameter (px; u x period: the arc length from the stroke's start, or
+  // its coherent parameter, common/strokes/coherent_silhouettes.hpp), width (px), alpha.
+  double s, width, alpha;
+  glm::dvec2 offset;  // as drawn: the position minus the base curve's (px), the offsets of Kalnins et al. 2002,
+                      // §4.3, §5, App. A
 };
 
 // A visible run that draws something (2 samples or more).

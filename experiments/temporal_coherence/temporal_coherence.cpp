@@ -31,6 +31,7 @@ struct Options {
   std::vector<std::string> sets;
   std::optional<double> orbit_step_deg;
   int frames = 0;
+  bool coherent = false;
   MatchParams match;
   shower_door::MotionParams motion;
 };
@@ -125,16 +126,20 @@ void run(const Options& o) {
   csv << kScene << ',' << kPairColumns << ',' << kStats << ',' << kLayerColumns << '\n';
   Pooled pooled;
   StrokeFrame prev;
+  CoherentCarry carry;
   for (int t = 0; t < frames; ++t) {
     auto start = std::chrono::steady_clock::now();
-    StrokeFrame next = render_stroke_frame(scene, t);
+    StrokeFrame next = render_stroke_frame(scene, t, o.coherent ? &carry : nullptr);
     if (t > 0) {
-      Image motion = shower_door::surface_motion(prev.strokes.camera, prev.points, next.points, o.motion);
-      shower_door::Residuals layer =
-          shower_door::residuals(prev.layer, next.layer, motion, shower_door::Sampling::Bilinear);
-      if (!std::isnan(layer.coherence())) pooled.layer.push_back(layer.coherence());
+      std::optional<shower_door::Residuals> layer;
+      if (!o.coherent) {
+        Image motion = shower_door::surface_motion(prev.strokes.camera, prev.points, next.points, o.motion);
+        layer = shower_door::residuals(prev.layer, next.layer, motion, shower_door::Sampling::Bilinear);
+        if (!std::isnan(layer->coherence())) pooled.layer.push_back(layer->coherence());
+      }
       for (const auto& [kind, m] : pair_measures(prev.strokes, next.strokes, o.match)) {
-        csv << scene_columns << ',' << t - 1 << pair_row(kind, m, kind == "all" ? &layer : nullptr) << '\n';
+        const shower_door::Residuals* scored = kind == "all" && layer ? &*layer : nullptr;
+        csv << scene_columns << ',' << t - 1 << pair_row(kind, m, scored) << '\n';
         pooled.add(kind, m);
       }
     }
@@ -159,6 +164,9 @@ int main(int argc, char** argv) {
   app.add_option("--frames", o.frames, "frames of that orbit (default: the scene's, else 36)")
       ->check(CLI::Range(2, 3600));
   app.add_option("--set", o.sets, "stage.param=value, as for plumbago render");
+  app.add_flag("--coherent", o.coherent,
+               "silhouettes' brush parameters carried from frame to frame (Kalnins et al. 2003); the stroke layer "
+               "is not scored");
   app.add_option("--match-px", o.match.radius_px, "a reprojected sample lands on a stroke at most this far (px)");
   app.add_option("--depth-tolerance", o.match.depth_tolerance, "and at a depth within this share of its own");
   app.add_option("--min-motion", o.motion.min_motion_px, "stroke layer: pixels whose surface moved less are left out");

@@ -179,7 +179,7 @@ RunStroke from_samples(const std::vector<glm::dvec2>& p, bool closed, double wid
   RunStroke out{style(width), {{}, 0.0, closed}};
   for (size_t j = 0; j < p.size(); ++j) {
     bool down = j + 1 < p.size() && std::find(lifts.begin(), lifts.end(), j) == lifts.end();
-    out.samples.samples.push_back({p[j], p[j], 10.0 * double(j), width, 0.8, down});
+    out.samples.samples.push_back({p[j], p[j], 10.0 * double(j), 10.0 * double(j), width, 0.8, down});
   }
   return out;
 }

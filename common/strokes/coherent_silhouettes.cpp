@@ -1,0 +1,195 @@
+// Coherent stylized silhouettes (Kalnins et al. 2003): see common/strokes/coherent_silhouettes.hpp.
+#include "common/strokes/coherent_silhouettes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+
+#include <Eigen/Dense>
+
+#include "common/strokes/strokes.hpp"
+
+namespace plumbago {
+
+namespace {
+
+// A piece of a visible silhouette run of the new frame: window ends, s at them (from the
+// run's start) and their linear view depths.
+struct RunPiece {
+  uint32_t run;
+  glm::dvec2 a, b;
+  double sa, sb, da, db;
+};
+
+// The pieces of the new frame's visible silhouette runs on a grid of `cell` px.
+class PieceGrid {
+ public:
+  PieceGrid(const WindowLines& lines, const Visibility& visibility, const WindowProjection& project, double cell)
+      : cell_(cell) {
+    for (uint32_t r = 0; r < visibility.runs.size(); ++r) {
+      const VisibleRun& run = visibility.runs[r];
+      const WindowPath& path = lines.paths[run.path];
+      if (path.kind != LineKind::Silhouette || run.window.size() < 2) continue;
+      double s = 0, d = project(world_at(path, run.s0)).z;
+      for (size_t j = 0; j + 1 < run.window.size(); ++j) {
+        double next_s = s + glm::distance(run.window[j], run.window[j + 1]);
+        double next_d = project(world_at(path, run.s0 + next_s)).z;
+        add({r, run.window[j], run.window[j + 1], s, next_s, d, next_d});
+        s = next_s, d = next_d;
+      }
+    }
+  }
+
+  // The nearest point within `radius` of q on a piece whose depth there agrees with q.z.
+  std::optional<BrushVote> nearest(glm::dvec3 q, double radius, double depth_tolerance) const {
+    std::optional<BrushVote> best;
+    double best_distance = radius;
+    glm::ivec2 lo = cell_of(glm::dvec2(q) - radius), hi = cell_of(glm::dvec2(q) + radius);
+    for (int y = lo.y; y <= hi.y; ++y)
+      for (int x = lo.x; x <= hi.x; ++x) {
+        auto it = cells_.find(key(x, y));
+        if (it == cells_.end()) continue;
+        for (uint32_t i : it->second) {
+          const RunPiece& piece = pieces_[i];
+          glm::dvec2 d = piece.b - piece.a;
+          double len2 = glm::dot(d, d);
+          double f = len2 > 0 ? std::clamp(glm::dot(glm::dvec2(q) - piece.a, d) / len2, 0.0, 1.0) : 0.0;
+          double distance = glm::distance(piece.a + f * d, glm::dvec2(q));
+          double depth = std::lerp(piece.da, piece.db, f);
+          if (distance > best_distance || std::abs(depth - q.z) > depth_tolerance * q.z) continue;
+          best_distance = distance;
+          best = BrushVote{piece.run, std::lerp(piece.sa, piece.sb, f), 0.0, 0};
+        }
+      }
+    return best;
+  }
+
+ private:
+  static int64_t key(int x, int y) { return (int64_t(x) << 32) ^ int64_t(uint32_t(y)); }
+  glm::ivec2 cell_of(glm::dvec2 p) const {
+    return {int(std::floor(std::clamp(p.x / cell_, -1e9, 1e9))), int(std::floor(std::clamp(p.y / cell_, -1e9, 1e9)))};
+  }
+  void add(const RunPiece& piece) {
+    glm::ivec2 lo = cell_of(glm::min(piece.a, piece.b)), hi = cell_of(glm::max(piece.a, piece.b));
+    if (int64_t(hi.x - lo.x + 1) * (hi.y - lo.y + 1) > 4096) return;  // a piece thousands of px long: off the window
+    for (int y = lo.y; y <= hi.y; ++y)
+      for (int x = lo.x; x <= hi.x; ++x) cells_[key(x, y)].push_back(uint32_t(pieces_.size()));
+    pieces_.push_back(piece);
+  }
+
+  double cell_;
+  std::vector<RunPiece> pieces_;
+  std::unordered_map<int64_t, std::vector<uint32_t>> cells_;
+};
+
+// 3. The votes of one run, in order of s, split into groups; the largest.
+std::vector<BrushVote> largest_group(std::vector<BrushVote> votes, const CoherenceParams& p) {
+  std::sort(votes.begin(), votes.end(), [](const BrushVote& a, const BrushVote& b) { return a.s < b.s; });
+  std::vector<std::vector<BrushVote>> groups;
+  std::map<uint32_t, size_t> open;  // per stroke voting, its group still growing
+  for (const BrushVote& v : votes) {
+    auto it = open.find(v.stroke);
+    if (it != open.end()) {
+      const BrushVote& last = groups[it->second].back();
+      double ds = v.s - last.s;
+      if (ds <= 3 * p.sample_px && std::abs(std::abs(v.t - last.t) - ds) <= p.jump_px) {
+        groups[it->second].push_back(v);
+        continue;
+      }
+    }
+    open[v.stroke] = groups.size();
+    groups.push_back({v});
+  }
+  auto largest =
+      std::max_element(groups.begin(), groups.end(), [](const auto& a, const auto& b) { return a.size() < b.size(); });
+  return largest == groups.end() ? std::vector<BrushVote>{} : *largest;
+}
+
+// σ of 4.: the sign of the least-squares slope of t over s.
+double direction(const std::vector<BrushVote>& votes) {
+  double ms = 0, mt = 0;
+  for (const BrushVote& v : votes) ms += v.s, mt += v.t;
+  ms /= double(votes.size()), mt /= double(votes.size());
+  double covariance = 0;
+  for (const BrushVote& v : votes) covariance += (v.s - ms) * (v.t - mt);
+  return covariance < 0 ? -1.0 : 1.0;
+}
+
+// Adds weight (row . x - target)^2 to the normal equations (M, b).
+void add_term(Eigen::MatrixXd& m, Eigen::VectorXd& b, const std::vector<std::pair<int, double>>& row, double target,
+              double weight) {
+  for (auto [i, ci] : row) {
+    b[i] += weight * ci * target;
+    for (auto [j, cj] : row) m(i, j) += weight * ci * cj;
+  }
+}
+
+}  // namespace
+
+std::vector<BrushSample> brush_samples(const WindowLines& lines, const Visibility& visibility,
+                                       const std::vector<BrushParameter>& parameters, const CoherenceParams& p) {
+  std::vector<BrushSample> out;
+  for (uint32_t i = 0; i < visibility.runs.size(); ++i) {
+    const VisibleRun& run = visibility.runs[i];
+    const WindowPath& path = lines.paths[run.path];
+    if (path.kind != LineKind::Silhouette) continue;
+    double length = run.s1 - run.s0;
+    int n = std::max(1, int(std::ceil(length / p.sample_px)));
+    const BrushParameter none;
+    const BrushParameter& knots = i < parameters.size() ? parameters[i] : none;
+    for (int j = 0; j <= n - (run.closed ? 1 : 0); ++j) {
+      double s = length * j / n;
+      out.push_back({world_at(path, run.s0 + s), brush_t(knots, s), i});
+    }
+  }
+  return out;
+}
+
+std::vector<BrushVote> brush_votes(const std::vector<BrushSample>& previous, const Camera& camera,
+                                   const WindowLines& lines, const Visibility& visibility, const CoherenceParams& p) {
+  WindowProjection project(camera, lines.width, lines.height);
+  PieceGrid grid(lines, visibility, project, std::max(4.0, 2 * p.search_px));
+  std::vector<BrushVote> out;
+  for (const BrushSample& b : previous) {
+    glm::dvec3 seen = project(b.world);
+    if (!(seen.z > 0)) continue;
+    if (std::optional<BrushVote> v = grid.nearest(seen, p.search_px, p.depth_tolerance))
+      out.push_back({v->run, v->s, b.t, b.stroke});
+  }
+  return out;
+}
+
+BrushParameter fit_brush_parameter(std::vector<BrushVote> votes, double length_px, const CoherenceParams& p) {
+  std::vector<BrushVote> group = largest_group(std::move(votes), p);
+  if (group.size() < 2 || !(length_px > 0)) return {};
+  const int n = std::max(1, int(std::lround(length_px / p.knot_px)));
+  const double h = length_px / n, sigma = direction(group);
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n + 1, n + 1);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(n + 1);
+  for (const BrushVote& v : group) {  // coherence
+    double at = std::clamp(v.s / h, 0.0, double(n));
+    int k = std::min(int(at), n - 1);
+    add_term(m, b, {{k, k + 1 - at}, {k + 1, at - k}}, v.t, 1.0);
+  }
+  for (int k = 0; k < n; ++k) add_term(m, b, {{k, -1.0}, {k + 1, 1.0}}, sigma * h, p.scale_weight);  // uniformity
+  for (int k = 1; k < n; ++k) add_term(m, b, {{k - 1, 1.0}, {k, -2.0}, {k + 1, 1.0}}, 0.0, p.distort_weight);
+  Eigen::VectorXd t = m.ldlt().solve(b);
+  if (!t.allFinite()) return {};
+  BrushParameter out;
+  for (int k = 0; k <= n; ++k) out.push_back({k * h, t[k]});
+  return out;
+}
+
+std::vector<BrushParameter> coherent_parameters(const std::vector<BrushSample>& previous, const Camera& camera,
+                                                const WindowLines& lines, const Visibility& visibility,
+                                                const CoherenceParams& p) {
+  std::vector<std::vector<BrushVote>> per_run(visibility.runs.size());
+  for (const BrushVote& v : brush_votes(previous, camera, lines, visibility, p)) per_run[v.run].push_back(v);
+  std::vector<BrushParameter> out;
+  for (size_t r = 0; r < per_run.size(); ++r)
+    out.push_back(fit_brush_parameter(std::move(per_run[r]), visibility.runs[r].s1 - visibility.runs[r].s0, p));
+  return out;
+}
+
+}  // namespace plumbago

@@ -1,0 +1,80 @@
+// Coherent stylized silhouettes (Kalnins, Davidson, Markosian and Finkelstein 2003): each
+// silhouette stroke's brush parameter t (px: u = t / texture_period_px) is carried over the
+// surface from frame to frame, where the 2002 paper restarts it at each visible run's start
+// (common/strokes/base_stroke.hpp 6.), so that a stroke's texture stays where it was drawn.
+//
+// 1. Brush samples. The silhouette strokes of a frame are sampled every `sample_px` of
+//    window arc length along each visible run: the surface point drawn there and its t.
+// 2. Votes. In the next frame each brush sample is projected; the nearest point of a visible
+//    silhouette run within `search_px` whose linear view depth agrees within
+//    `depth_tolerance` (relative) takes its vote (s from the run's start, t, the stroke it came
+//    from). The paper walks the new ID image along the projected normal for the nearest
+//    silhouette pixel; the visible runs are what that image's test leaves visible.
+// 3. Groups. A run's votes in order of s join the group of the stroke they came from while
+//    they follow its last vote within 3 sample_px of s and their t changes by |Δs| within
+//    `jump_px`; else they start a new group (the paper's brush paths split at gaps and at
+//    jumps of t). The group with the most votes parameterizes the run; with fewer than 2,
+//    none does (t = s, the 2002 paper's arc length from the run's start).
+// 4. Fit (the paper's optimization of coherence against uniformity). t is piecewise linear
+//    over the run on n = max(1, round(L / knot_px)) equal intervals of length h, knots t_k:
+//      E = sum_i (t(s_i) - t_i)^2                              coherence: the votes
+//        + scale_weight   sum_k (t_{k+1} - t_k - σ h)^2        uniformity: rate σ = ±1 in the image
+//        + distort_weight sum_k (t_{k-1} - 2 t_k + t_{k+1})^2  smooth stretching
+//    σ the sign of the votes' slope (a path may be traced the other way round this frame).
+//    The normal equations are solved by Eigen's LDLT. Beyond its votes the fit runs on at
+//    rate σ: the run is covered whole.
+//
+// Defaults are those of jot, the authors' system (votes searched within 6 px, samples every
+// 8 px, knots every 48 px, unit weights).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "common/scene/camera.hpp"
+#include "common/strokes/base_stroke.hpp"
+#include "common/strokes/visibility.hpp"
+
+namespace plumbago {
+
+struct CoherenceParams {
+  double sample_px = 8, search_px = 6, depth_tolerance = 0.01, jump_px = 4, knot_px = 48;
+  double scale_weight = 1, distort_weight = 1;
+};
+
+// 1. A surface point a silhouette stroke drew, with its t and the stroke's index among its
+// frame's runs.
+struct BrushSample {
+  glm::dvec3 world;
+  double t;
+  uint32_t stroke;
+};
+
+// Every `sample_px` along each visible silhouette run (runs[i] parameterized by
+// parameters[i]; a run past the end of `parameters` by t = s).
+std::vector<BrushSample> brush_samples(const WindowLines& lines, const Visibility& visibility,
+                                       const std::vector<BrushParameter>& parameters, const CoherenceParams& p);
+
+// 2. A vote for run `run` of the new frame: at its s, t, from the previous frame's `stroke`.
+struct BrushVote {
+  uint32_t run;
+  double s, t;
+  uint32_t stroke;
+};
+
+std::vector<BrushVote> brush_votes(const std::vector<BrushSample>& previous, const Camera& camera,
+                                   const WindowLines& lines, const Visibility& visibility, const CoherenceParams& p);
+
+// 3.-4. One run's parameter from its votes (any order), L its window length: the fit of its
+// largest group; none for fewer than 2 votes there.
+BrushParameter fit_brush_parameter(std::vector<BrushVote> votes, double length_px, const CoherenceParams& p);
+
+// Each visible run's parameter in the new frame (none where no group votes for it).
+std::vector<BrushParameter> coherent_parameters(const std::vector<BrushSample>& previous, const Camera& camera,
+                                                const WindowLines& lines, const Visibility& visibility,
+                                                const CoherenceParams& p);
+
+}  // namespace plumbago

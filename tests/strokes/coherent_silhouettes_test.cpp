@@ -1,0 +1,112 @@
+// Coherent stylized silhouettes (Kalnins et al. 2003, common/strokes/coherent_silhouettes.hpp):
+// the fit recovers a parameter the votes carry, in either direction and beyond the votes,
+// weighs coherence against uniformity, follows the largest group; a run draws its texture
+// at the parameter; and along an orbit of the torus, whose closed silhouettes' seams drift
+// under the 2002 paper's arc length, the propagated parameter stays on the surface.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "common/strokes/coherent_silhouettes.hpp"
+#include "experiments/temporal_coherence/measures.hpp"
+#include "experiments/temporal_coherence/stroke_frames.hpp"
+
+namespace plumbago {
+namespace {
+
+// Votes of `stroke` every 8 px from s0 to s1, carrying t(s).
+template <class F>
+std::vector<BrushVote> votes(double s0, double s1, F t, uint32_t stroke = 0) {
+  std::vector<BrushVote> out;
+  for (double s = s0; s <= s1; s += 8) out.push_back({0, s, t(s), stroke});
+  return out;
+}
+
+// The largest departure of the fitted t from `want` over the run, every px.
+template <class F>
+double worst(const BrushParameter& knots, double length, F want) {
+  double e = 0;
+  for (double s = 0; s <= length; s += 1) e = std::max(e, std::abs(brush_t(knots, s) - want(s)));
+  return e;
+}
+
+TEST(CoherentSilhouettes, FitCarriesAShiftedParameterOverTheWholeRun) {
+  auto shifted = [](double s) { return s + 37.0; };
+  BrushParameter knots = fit_brush_parameter(votes(100, 200, shifted), 300, {});
+  ASSERT_GE(knots.size(), 2u);
+  EXPECT_LT(worst(knots, 300, shifted), 1e-6);  // beyond the votes too: uniformity runs on at rate 1
+}
+
+TEST(CoherentSilhouettes, FitFollowsAPathTracedTheOtherWay) {
+  auto reversed = [](double s) { return 500.0 - s; };
+  EXPECT_LT(worst(fit_brush_parameter(votes(0, 240, reversed), 240, {}), 240, reversed), 1e-6);
+}
+
+TEST(CoherentSilhouettes, UniformityPullsAStretchedParameterTowardsRateOne) {
+  auto stretched = [](double s) { return 1.5 * s; };
+  CoherenceParams free;
+  free.scale_weight = 0;
+  EXPECT_LT(worst(fit_brush_parameter(votes(0, 288, stretched), 288, free), 288, stretched), 1e-6);
+  BrushParameter balanced = fit_brush_parameter(votes(0, 288, stretched), 288, {});
+  double rate = (brush_t(balanced, 288) - brush_t(balanced, 0)) / 288;
+  EXPECT_GT(rate, 1.0);
+  EXPECT_LT(rate, 1.5);
+}
+
+TEST(CoherentSilhouettes, FitFollowsTheLargestGroup) {
+  // Two strokes voted for the run; then one stroke whose t jumps (another seam) mid-way.
+  std::vector<BrushVote> two = votes(
+      0, 96, [](double s) { return s + 10; }, 1);
+  for (const BrushVote& v : votes(
+           104, 300, [](double s) { return s + 300; }, 2))
+    two.push_back(v);
+  EXPECT_LT(worst(fit_brush_parameter(two, 300, {}), 300, [](double s) { return s + 300; }), 1e-6);
+  std::vector<BrushVote> jump = votes(0, 200, [](double s) { return s < 150 ? s : s + 250; });
+  EXPECT_LT(worst(fit_brush_parameter(jump, 300, {}), 300, [](double s) { return s; }), 1e-6);
+}
+
+TEST(CoherentSilhouettes, TooFewVotesLeaveTheArcLength) {
+  EXPECT_TRUE(fit_brush_parameter(votes(0, 0, [](double s) { return s + 5; }), 100, {}).empty());
+  EXPECT_EQ(brush_t({}, 42.0), 42.0);
+}
+
+TEST(CoherentSilhouettes, TheTextureRunsAtTheBrushParameter) {
+  StrokeStyle style = default_stroke_style();
+  StrokeRun run{{{10, 10}, {110, 10}}, false, false, false, {{0, 50}, {100, 150}}};
+  BaseStrokeSamples b = base_stroke_samples(run, style);
+  ASSERT_GE(b.samples.size(), 2u);
+  for (const StrokeSample& q : b.samples) EXPECT_NEAR(q.t, q.s + 50, 1e-9);
+  Ribbon r = ribbon(b, style);
+  ASSERT_FALSE(r.triangles.empty());
+  EXPECT_NEAR(r.triangles[0].uv.x, 50.0 / style.texture_period_px, 1e-6);
+}
+
+// The torus's silhouette slide along an orbit, median and p95 (px a frame pair).
+std::pair<double, double> torus_slide(bool coherent) {
+  using namespace temporal_coherence;
+  Scene scene = study_scene(PLUMBAGO_SOURCE_DIR "/scenes/torus_strokes.json", {}, -2.0, 4);
+  CoherentCarry carry;
+  std::vector<double> slide;
+  StrokeFrame prev = render_stroke_frame(scene, 0, coherent ? &carry : nullptr);
+  for (int t = 1; t < 4; ++t) {
+    StrokeFrame next = render_stroke_frame(scene, t, coherent ? &carry : nullptr);
+    for (const auto& [kind, m] : pair_measures(prev.strokes, next.strokes))
+      if (kind == "silhouette") slide.insert(slide.end(), m.slide_px.begin(), m.slide_px.end());
+    prev = std::move(next);
+  }
+  Stats s = stats(slide);
+  return {s.median, s.p95};
+}
+
+TEST(CoherentSilhouettes, TheParameterStaysOnTheTorusAlongAnOrbit) {
+  auto [base_median, base_p95] = torus_slide(false);
+  auto [median, p95] = torus_slide(true);
+  std::printf("torus silhouette slide, median / p95 px: arc length %.3f / %.3f, coherent %.3f / %.3f\n", base_median,
+              base_p95, median, p95);
+  EXPECT_LT(median, 0.5);  // within the sub-pixel drift of a silhouette over the surface
+  EXPECT_LT(p95, 2.0);
+  EXPECT_GT(base_p95, 5 * p95);  // the seams' drift the coherent parameter removes
+}
+
+}  // namespace
+}  // namespace plumbago
