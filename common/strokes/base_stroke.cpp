@@ -303,7 +303,7 @@ double brush_t(const BrushParameter& knots, double s) {
   auto it = std::upper_bound(knots.begin(), knots.end(), s, [](double x, const glm::dvec2& k) { return x < k.x; });
   size_t k = std::clamp(size_t(it - knots.begin()), size_t(1), knots.size() - 1) - 1;
   const glm::dvec2 &a = knots[k], &b = knots[k + 1];
-  return a.y + (s - a.x) * (b.y - a.y) / (b.x - a.x);
+  return b.x > a.x ? a.y + (s - a.x) * (b.y - a.y) / (b.x - a.x) : b.y;  // two knots at one s: a jump
 }
 
 StampedOffset rubber_stamp(const OffsetExample& example, double s, double run_length) {

@@ -72,7 +72,7 @@
 namespace plumbago {
 
 // A run's brush parameter: knots (s, t), s the arc length along its polyline (px,
-// ascending); none: t = s.
+// ascending; two knots at one s: t jumps there); none: t = s.
 using BrushParameter = std::vector<glm::dvec2>;
 
 // t at s: linear between knots, extrapolated along the end intervals; s itself without knots.

@@ -83,8 +83,8 @@ class PieceGrid {
   std::unordered_map<int64_t, std::vector<uint32_t>> cells_;
 };
 
-// 3. The votes of one run, in order of s, split into groups; the largest.
-std::vector<BrushVote> largest_group(std::vector<BrushVote> votes, const CoherenceParams& p) {
+// 3. The votes of one run, in order of s, split into groups.
+std::vector<std::vector<BrushVote>> vote_groups(std::vector<BrushVote> votes, const CoherenceParams& p) {
   std::sort(votes.begin(), votes.end(), [](const BrushVote& a, const BrushVote& b) { return a.s < b.s; });
   std::vector<std::vector<BrushVote>> groups;
   std::map<uint32_t, size_t> open;  // per stroke voting, its group still growing
@@ -101,9 +101,47 @@ std::vector<BrushVote> largest_group(std::vector<BrushVote> votes, const Coheren
     open[v.stroke] = groups.size();
     groups.push_back({v});
   }
-  auto largest =
-      std::max_element(groups.begin(), groups.end(), [](const auto& a, const auto& b) { return a.size() < b.size(); });
-  return largest == groups.end() ? std::vector<BrushVote>{} : *largest;
+  return groups;
+}
+
+// A stretch [from, to] of the run and the votes of the group that parameterizes it.
+struct Section {
+  double from, to;
+  std::vector<BrushVote> votes;
+};
+
+// The votes of `group` from a to b.
+std::vector<BrushVote> votes_within(const std::vector<BrushVote>& group, double a, double b) {
+  std::vector<BrushVote> out;
+  for (const BrushVote& v : group)
+    if (v.s >= a && v.s <= b) out.push_back(v);
+  return out;
+}
+
+// 3. The groups, largest first, each claim what of their span (first to last vote) no
+// larger group claimed, where 2 of their votes lie; gaps between claims go half to either
+// side, the run's ends to the nearest claim. In order of s.
+std::vector<Section> sections(std::vector<std::vector<BrushVote>> groups, double length_px) {
+  std::stable_sort(groups.begin(), groups.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
+  std::vector<Section> claims;
+  for (const std::vector<BrushVote>& g : groups) {
+    std::vector<std::pair<double, double>> free{{g.front().s, g.back().s}};
+    for (const Section& c : claims) {
+      std::vector<std::pair<double, double>> left;
+      for (auto [a, b] : free) {
+        if (c.from > a) left.push_back({a, std::min(b, c.from)});
+        if (c.to < b) left.push_back({std::max(a, c.to), b});
+      }
+      free = left;
+    }
+    for (auto [a, b] : free)
+      if (std::vector<BrushVote> own = votes_within(g, a, b); own.size() >= 2) claims.push_back({a, b, own});
+  }
+  std::sort(claims.begin(), claims.end(), [](const Section& a, const Section& b) { return a.from < b.from; });
+  for (size_t i = 0; i + 1 < claims.size(); ++i)
+    claims[i].to = claims[i + 1].from = 0.5 * (claims[i].to + claims[i + 1].from);
+  if (!claims.empty()) claims.front().from = 0, claims.back().to = length_px;
+  return claims;
 }
 
 // σ of 4.: the sign of the least-squares slope of t over s.
@@ -123,6 +161,27 @@ void add_term(Eigen::MatrixXd& m, Eigen::VectorXd& b, const std::vector<std::pai
     b[i] += weight * ci * target;
     for (auto [j, cj] : row) m(i, j) += weight * ci * cj;
   }
+}
+
+// 4. One section's fit.
+BrushParameter fit_section(const Section& section, const CoherenceParams& p) {
+  const double length = section.to - section.from;
+  const int n = std::max(1, int(std::lround(length / p.knot_px)));
+  const double h = length / n, sigma = direction(section.votes);
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n + 1, n + 1);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(n + 1);
+  for (const BrushVote& v : section.votes) {  // coherence
+    double at = h > 0 ? std::clamp((v.s - section.from) / h, 0.0, double(n)) : 0.0;
+    int k = std::min(int(at), n - 1);
+    add_term(m, b, {{k, k + 1 - at}, {k + 1, at - k}}, v.t, 1.0);
+  }
+  for (int k = 0; k < n; ++k) add_term(m, b, {{k, -1.0}, {k + 1, 1.0}}, sigma * h, p.scale_weight);  // uniformity
+  for (int k = 1; k < n; ++k) add_term(m, b, {{k - 1, 1.0}, {k, -2.0}, {k + 1, 1.0}}, 0.0, p.distort_weight);
+  Eigen::VectorXd t = m.ldlt().solve(b);
+  if (!t.allFinite()) return {};
+  BrushParameter out;
+  for (int k = 0; k <= n; ++k) out.push_back({section.from + k * h, t[k]});
+  return out;
 }
 
 }  // namespace
@@ -161,23 +220,13 @@ std::vector<BrushVote> brush_votes(const std::vector<BrushSample>& previous, con
 }
 
 BrushParameter fit_brush_parameter(std::vector<BrushVote> votes, double length_px, const CoherenceParams& p) {
-  std::vector<BrushVote> group = largest_group(std::move(votes), p);
-  if (group.size() < 2 || !(length_px > 0)) return {};
-  const int n = std::max(1, int(std::lround(length_px / p.knot_px)));
-  const double h = length_px / n, sigma = direction(group);
-  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(n + 1, n + 1);
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(n + 1);
-  for (const BrushVote& v : group) {  // coherence
-    double at = std::clamp(v.s / h, 0.0, double(n));
-    int k = std::min(int(at), n - 1);
-    add_term(m, b, {{k, k + 1 - at}, {k + 1, at - k}}, v.t, 1.0);
-  }
-  for (int k = 0; k < n; ++k) add_term(m, b, {{k, -1.0}, {k + 1, 1.0}}, sigma * h, p.scale_weight);  // uniformity
-  for (int k = 1; k < n; ++k) add_term(m, b, {{k - 1, 1.0}, {k, -2.0}, {k + 1, 1.0}}, 0.0, p.distort_weight);
-  Eigen::VectorXd t = m.ldlt().solve(b);
-  if (!t.allFinite()) return {};
+  if (!(length_px > 0) || votes.empty()) return {};
   BrushParameter out;
-  for (int k = 0; k <= n; ++k) out.push_back({k * h, t[k]});
+  for (const Section& section : sections(vote_groups(std::move(votes), p), length_px)) {
+    BrushParameter knots = fit_section(section, p);
+    if (knots.empty()) return {};
+    out.insert(out.end(), knots.begin(), knots.end());
+  }
   return out;
 }
 

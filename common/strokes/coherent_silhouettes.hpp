@@ -13,16 +13,20 @@
 // 3. Groups. A run's votes in order of s join the group of the stroke they came from while
 //    they follow its last vote within 3 sample_px of s and their t changes by |Δs| within
 //    `jump_px`; else they start a new group (the paper's brush paths split at gaps and at
-//    jumps of t). The group with the most votes parameterizes the run; with fewer than 2,
-//    none does (t = s, the 2002 paper's arc length from the run's start).
-// 4. Fit (the paper's optimization of coherence against uniformity). t is piecewise linear
-//    over the run on n = max(1, round(L / knot_px)) equal intervals of length h, knots t_k:
+//    jumps of t). Largest first, each group claims what of its span (first to last vote) no
+//    larger group claimed, where 2 of its votes lie; gaps between claims go half to either
+//    side, the run's ends to the nearest claim. Each section follows its group, and t jumps
+//    between sections (one run, several brush paths). A run with no claim has none: t = s,
+//    the 2002 paper's arc length from the run's start.
+// 4. Fit (the paper's optimization of coherence against uniformity), per section of length
+//    L: t is piecewise linear on n = max(1, round(L / knot_px)) equal intervals of length h,
+//    knots t_k, fitted to the section's votes:
 //      E = sum_i (t(s_i) - t_i)^2                              coherence: the votes
 //        + scale_weight   sum_k (t_{k+1} - t_k - σ h)^2        uniformity: rate σ = ±1 in the image
 //        + distort_weight sum_k (t_{k-1} - 2 t_k + t_{k+1})^2  smooth stretching
 //    σ the sign of the votes' slope (a path may be traced the other way round this frame).
 //    The normal equations are solved by Eigen's LDLT. Beyond its votes the fit runs on at
-//    rate σ: the run is covered whole.
+//    rate σ: the section is covered whole.
 //
 // Defaults are those of jot, the authors' system (votes searched within 6 px, samples every
 // 8 px, knots every 48 px, unit weights).
@@ -68,8 +72,8 @@ struct BrushVote {
 std::vector<BrushVote> brush_votes(const std::vector<BrushSample>& previous, const Camera& camera,
                                    const WindowLines& lines, const Visibility& visibility, const CoherenceParams& p);
 
-// 3.-4. One run's parameter from its votes (any order), L its window length: the fit of its
-// largest group; none for fewer than 2 votes there.
+// 3.-4. One run's parameter from its votes (any order), L its window length: its sections'
+// fits; none where no group claims a section.
 BrushParameter fit_brush_parameter(std::vector<BrushVote> votes, double length_px, const CoherenceParams& p);
 
 // Each visible run's parameter in the new frame (none where no group votes for it).

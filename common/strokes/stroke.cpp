@@ -168,8 +168,12 @@ std::vector<RunStroke> run_strokes(const WindowLines& lines, const Visibility& v
 
 std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visibility& visibility,
                                            const StrokeStyles& styles, uint32_t seed) {
+  return stroke_triangles(run_strokes(lines, visibility, styles, seed));
+}
+
+std::vector<StrokeVertex> stroke_triangles(const std::vector<RunStroke>& strokes) {
   std::vector<StrokeVertex> out;
-  for (const RunStroke& stroke : run_strokes(lines, visibility, styles, seed)) {
+  for (const RunStroke& stroke : strokes) {
     Ribbon r = ribbon(stroke.samples, stroke.style);
     for (const RibbonVertex& v : r.triangles)
       out.push_back({v.position, v.uv, v.alpha, r.color, float(int(stroke.style.texture))});

@@ -106,6 +106,9 @@ struct RunStroke {
 std::vector<RunStroke> run_strokes(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
                                    uint32_t seed, const std::vector<BrushParameter>& brushes = {});
 
+// The ribbons of `strokes`, three vertices a triangle, in their order.
+std::vector<StrokeVertex> stroke_triangles(const std::vector<RunStroke>& strokes);
+
 // The ribbons of every visible run (run_strokes), three vertices a triangle, in drawing order; `seed`
 // (the scene's) seeds the offsets a style synthesizes (Kalnins et al. 2002, §4.3, §5, App. A).
 std::vector<StrokeVertex> stroke_triangles(const WindowLines& lines, const Visibility& visibility,

@@ -164,7 +164,7 @@ def shower_door_table(rs):
 def temporal_coherence_tables(c):
     sys.path.insert(0, str(c.root / "experiments" / "temporal_coherence"))
     import report
-    return report.tables(pc.read_csv(c.results / "temporal_coherence" / "summary.csv"))
+    return report.summary_lines(c.results / "temporal_coherence")
 
 
 def results_folder(c, name, recorded=None):

@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""The temporal-coherence study's table and figure (README.md), from its CSV files in DIR:
-summary.csv -> summary.md (the table README.md and docs/accuracy-vs-time.md show),
+"""The temporal-coherence study's tables and figure (README.md), from its CSV files in DIR:
+summary.csv -> summary.md (the tables README.md and docs/accuracy-vs-time.md show), with
+coherent_summary.csv the silhouettes under both parameterizations side by side,
 results.csv -> temporal_coherence.png (every measure per frame pair).
 
   report.py DIR
@@ -61,6 +62,39 @@ def tables(rows):
         ["", "Changes at the samples that matched, per pair (pooled over the pairs):", ""] + table(rows, CHANGES)
 
 
+def ratio(a, b):
+    return "%.1fx" % (a / b) if isinstance(a, float) and isinstance(b, float) and b > 0 else "-"
+
+
+def lower(base, coherent, key, digits):
+    """The coherent value and, in parentheses, how many times lower it is."""
+    return "%s (%s)" % (fmt(coherent[key], digits), ratio(base[key], coherent[key]))
+
+
+def compared(base, coherent):
+    """Markdown lines: per scene, the silhouettes' slide and births under the 2002 paper's arc
+    length and coherent (Kalnins et al. 2003), and the coherent stages' time a frame."""
+    by_scene = {(r["scene"], r["kind"]): r for r in coherent}
+    layers = {r["scene"]: r for r in base if r["kind"] == "all"}
+    head = ["scene", "slide median px: arc length", "coherent", "p95: arc length", "coherent", "max: arc length",
+            "coherent", "born + died / pair: arc length", "coherent", "stroke layer coherence: arc length",
+            "coherent", "coherent stages, ms / frame (reference)"]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for b in base:
+        c, total = by_scene.get((b["scene"], b["kind"])), by_scene.get((b["scene"], "all"))
+        if b["kind"] != "silhouette" or not c:
+            continue
+        lines.append("| " + " | ".join([
+            b["scene"], fmt(b["slide_median_px"]), lower(b, c, "slide_median_px", 2),
+            fmt(b["slide_p95_px"], 1), lower(b, c, "slide_p95_px", 1),
+            fmt(b["slide_max_px"], 0), fmt(c["slide_max_px"], 0),
+            fmt(b["born_per_pair"] + b["died_per_pair"]), fmt(c["born_per_pair"] + c["died_per_pair"]),
+            fmt(layers[b["scene"]]["image_coherence_mean"], 3), fmt(total["image_coherence_mean"], 3) if total else "-",
+            fmt(total["coherence_ms"]) if total else "-"]) + " |")
+    return ["Silhouettes, arc length (Kalnins et al. 2002) and coherent (Kalnins et al. 2003), per pair (pooled "
+            "over the pairs; in parentheses, how many times lower):", ""] + lines
+
+
 # Per panel: the column, its title, the y scale, and a second column drawn dashed.
 MEASURES = [("image_coherence", "stroke layer coherence B / (A + B)", "linear", None),
             ("slide_mean_px", "texture slide, mean px", "log", None),
@@ -108,9 +142,19 @@ def plot(rows, out):
     pc.save_figure(fig, out, "temporal_coherence.png")
 
 
+def summary_lines(folder):
+    """The tables of a run in `folder`: both of summary.csv, and the silhouettes in both modes
+    where it has coherent_summary.csv."""
+    base = pc.read_csv(folder / "summary.csv")
+    lines = tables(base)
+    if (folder / "coherent_summary.csv").exists():
+        lines += [""] + compared(base, pc.read_csv(folder / "coherent_summary.csv"))
+    return lines
+
+
 def main(folder):
     folder = pathlib.Path(folder)
-    (folder / "summary.md").write_text("\n".join(tables(pc.read_csv(folder / "summary.csv"))) + "\n")
+    (folder / "summary.md").write_text("\n".join(summary_lines(folder)) + "\n")
     plot(pc.read_csv(folder / "results.csv"), folder)
 
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "common/core/frame.hpp"
 #include "common/scene/animation.hpp"
 #include "common/scene/gbuffer.hpp"
 #include "common/strokes/id_image.hpp"
@@ -10,6 +11,7 @@
 #include "common/strokes/visibility.hpp"
 #include "experiments/shower_door/surface_motion.hpp"
 #include "reference/core/pipeline.hpp"
+#include "reference/strokes/stroke.hpp"
 
 namespace plumbago::temporal_coherence {
 
@@ -46,12 +48,17 @@ StrokeFrame render_stroke_frame(const Scene& study, int t, CoherentCarry* cohere
   const WindowLines& lines = f.get(kWindowLines);
   std::vector<BrushParameter> brushes;
   if (coherent) {
+    Stopwatch watch;
     brushes = coherent_parameters(coherent->previous, s.camera, lines, *visibility, coherent->params);
     coherent->previous = brush_samples(lines, *visibility, brushes, coherent->params);
+    coherent->ms.push_back(watch.ms());
   }
   std::vector<RunStroke> strokes = run_strokes(lines, *visibility, s.strokes, s.seed, brushes);
-  return {frame_strokes(s.camera, s.width, s.height, lines, *visibility, strokes),
-          coherent ? Image() : f.get(kStrokeColor),
+  Image layer = coherent ? reference::draw_strokes(stroke_triangles(strokes), s.seed, f.get(kPage), f.get(kPaperHeight),
+                                                   s.params.get<StrokePaperParams>())
+                               .color
+                         : f.get(kStrokeColor);
+  return {frame_strokes(s.camera, s.width, s.height, lines, *visibility, strokes), std::move(layer),
           shower_door::surface_points(world_geometry(f.ordinary), f.get(kGBuffer))};
 }
 

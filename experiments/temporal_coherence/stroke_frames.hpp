@@ -23,7 +23,7 @@ Scene study_scene(const std::string& path, const std::vector<std::string>& sets,
 
 struct StrokeFrame {
   FrameStrokes strokes;
-  Image layer;   // RGB: stroke.color, the strokes over the page (the paper's grain included); empty: not drawn
+  Image layer;   // RGB: stroke.color, the strokes over the page (the paper's grain included)
   Image points;  // shower_door::surface_points of the frame's G-buffer: the surface seen at each pixel
 };
 
@@ -32,12 +32,13 @@ struct StrokeFrame {
 struct CoherentCarry {
   CoherenceParams params;
   std::vector<BrushSample> previous;
+  std::vector<double> ms;  // per frame: the votes, fits and brush samples (wall time)
 };
 
 // Frame t of the study scene's camera path. With `coherent`, the silhouettes' brush
 // parameters are propagated from its samples (frame t - 1's, none before the first frame),
-// which it then holds frame t's; the layer is then left empty, as the reference's stroke
-// stage draws the 2002 paper's parameter.
+// which it then holds frame t's, and the layer is drawn from those strokes by the
+// reference's stroke raster (reference/strokes/stroke.hpp).
 StrokeFrame render_stroke_frame(const Scene& study, int t, CoherentCarry* coherent = nullptr);
 
 }  // namespace plumbago::temporal_coherence

@@ -16,6 +16,7 @@
 #include <map>
 #include <sstream>
 
+#include "common/util/image.hpp"
 #include "experiments/shower_door/coherence.hpp"
 #include "experiments/shower_door/surface_motion.hpp"
 #include "experiments/temporal_coherence/measures.hpp"
@@ -27,11 +28,12 @@ using namespace plumbago::temporal_coherence;
 namespace {
 
 struct Options {
-  std::string scene_path, out = "temporal_coherence.csv", summary;
+  std::string scene_path, out = "temporal_coherence.csv", summary, layers;
   std::vector<std::string> sets;
   std::optional<double> orbit_step_deg;
   int frames = 0;
   bool coherent = false;
+  CoherenceParams coherence;
   MatchParams match;
   shower_door::MotionParams motion;
 };
@@ -48,7 +50,7 @@ const char* kLayerColumns = "image_pixels,image_A,image_B,image_coherence";
 const char* kSummaryColumns =
     "pairs,kind,strokes_per_frame,length_per_frame_px,born_per_pair,died_per_pair,"
     "born_px_per_pair,died_px_per_pair,samples,matched";
-const char* kSummaryLayer = "image_coherence_mean,image_coherence_min,image_coherence_max";
+const char* kSummaryLayer = "image_coherence_mean,image_coherence_min,image_coherence_max,coherence_ms";
 
 // ",v" with 6 significant digits, or "," for NaN (nothing measured).
 std::string cell(double v) {
@@ -86,16 +88,18 @@ std::string pair_row(const std::string& kind, const PairMeasures& m, const showe
   return s.str();
 }
 
-// The measures of one kind pooled over `pairs` pairs; the layer's scores on "all" only.
-std::string summary_row(const std::string& kind, const PairMeasures& m, int pairs, const std::vector<double>& layer) {
+// The measures of one kind pooled over `pairs` pairs; the layer's scores and the coherent
+// silhouettes' time a frame (median ms, NaN: not coherent) on "all" only.
+std::string summary_row(const std::string& kind, const PairMeasures& m, int pairs, const std::vector<double>& layer,
+                        double coherence_ms) {
   std::ostringstream s;
   double n = pairs;
   s << ',' << pairs << ',' << kind << cell(double(m.runs_next) / n) << cell(m.length_next_px / n)
     << cell(double(m.born) / n) << cell(double(m.died) / n) << cell(m.born_px / n) << cell(m.died_px / n) << ','
     << m.samples << ',' << m.matched << stat_cells(m);
-  if (kind != "all") return s.str() + ",,,";
+  if (kind != "all") return s.str() + ",,,,";
   double least = layer.empty() ? NAN : *std::min_element(layer.begin(), layer.end());
-  s << cell(stats(layer).mean) << cell(least) << cell(stats(layer).max);
+  s << cell(stats(layer).mean) << cell(least) << cell(stats(layer).max) << cell(coherence_ms);
   return s.str();
 }
 
@@ -108,12 +112,20 @@ struct Pooled {
   void add(const std::string& kind, const PairMeasures& m) { accumulate(kind == "all" ? all : kinds[kind], m); }
 };
 
-void write_summary(const Options& o, const std::string& scene, const Pooled& pooled, int pairs) {
+void write_summary(const Options& o, const std::string& scene, const Pooled& pooled, int pairs, double coherence_ms) {
   std::ofstream csv(o.summary);
   if (!csv) throw std::runtime_error("cannot write " + o.summary);
   csv << kScene << ',' << kSummaryColumns << ',' << kStats << ',' << kSummaryLayer << '\n';
-  for (const auto& [kind, m] : pooled.kinds) csv << scene << summary_row(kind, m, pairs, pooled.layer) << '\n';
-  csv << scene << summary_row("all", pooled.all, pairs, pooled.layer) << '\n';
+  for (const auto& [kind, m] : pooled.kinds)
+    csv << scene << summary_row(kind, m, pairs, pooled.layer, coherence_ms) << '\n';
+  csv << scene << summary_row("all", pooled.all, pairs, pooled.layer, coherence_ms) << '\n';
+}
+
+// A frame's stroke layer's file name: frame_007.png.
+std::string frame_name(int t) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%03d.png", t);
+  return name;
 }
 
 void run(const Options& o) {
@@ -123,31 +135,34 @@ void run(const Options& o) {
   std::printf("scene %s, %dx%d, %d frames\n", o.scene_path.c_str(), scene.width, scene.height, frames);
   std::ofstream csv(o.out);
   if (!csv) throw std::runtime_error("cannot write " + o.out);
+  if (!o.layers.empty()) std::filesystem::create_directories(o.layers);
   csv << kScene << ',' << kPairColumns << ',' << kStats << ',' << kLayerColumns << '\n';
   Pooled pooled;
   StrokeFrame prev;
-  CoherentCarry carry;
+  CoherentCarry carry{o.coherence, {}, {}};
   for (int t = 0; t < frames; ++t) {
     auto start = std::chrono::steady_clock::now();
     StrokeFrame next = render_stroke_frame(scene, t, o.coherent ? &carry : nullptr);
     if (t > 0) {
-      std::optional<shower_door::Residuals> layer;
-      if (!o.coherent) {
-        Image motion = shower_door::surface_motion(prev.strokes.camera, prev.points, next.points, o.motion);
-        layer = shower_door::residuals(prev.layer, next.layer, motion, shower_door::Sampling::Bilinear);
-        if (!std::isnan(layer->coherence())) pooled.layer.push_back(layer->coherence());
-      }
+      Image motion = shower_door::surface_motion(prev.strokes.camera, prev.points, next.points, o.motion);
+      shower_door::Residuals layer =
+          shower_door::residuals(prev.layer, next.layer, motion, shower_door::Sampling::Bilinear);
+      if (!std::isnan(layer.coherence())) pooled.layer.push_back(layer.coherence());
       for (const auto& [kind, m] : pair_measures(prev.strokes, next.strokes, o.match)) {
-        const shower_door::Residuals* scored = kind == "all" && layer ? &*layer : nullptr;
-        csv << scene_columns << ',' << t - 1 << pair_row(kind, m, scored) << '\n';
+        csv << scene_columns << ',' << t - 1 << pair_row(kind, m, kind == "all" ? &layer : nullptr) << '\n';
         pooled.add(kind, m);
       }
     }
+    if (!o.layers.empty()) write_image(next.layer, (std::filesystem::path(o.layers) / frame_name(t)).string());
     prev = std::move(next);
     double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::fprintf(stderr, "frame %d/%d: %zu strokes, %.2f s\n", t + 1, frames, prev.strokes.runs.size(), s);
   }
-  if (!o.summary.empty()) write_summary(o, scene_columns, pooled, frames - 1);
+  double coherence_ms = o.coherent ? stats(carry.ms).median : NAN;
+  if (o.coherent)
+    std::printf("coherent silhouettes (votes, fits, brush samples): %.2f ms a frame (median; reference, wall)\n",
+                coherence_ms);
+  if (!o.summary.empty()) write_summary(o, scene_columns, pooled, frames - 1, coherence_ms);
   std::printf("wrote %s%s (%d frame pairs)\n", o.out.c_str(), o.summary.empty() ? "" : (" and " + o.summary).c_str(),
               frames - 1);
 }
@@ -165,8 +180,14 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(2, 3600));
   app.add_option("--set", o.sets, "stage.param=value, as for plumbago render");
   app.add_flag("--coherent", o.coherent,
-               "silhouettes' brush parameters carried from frame to frame (Kalnins et al. 2003); the stroke layer "
-               "is not scored");
+               "silhouettes' brush parameters carried from frame to frame (Kalnins et al. 2003)");
+  app.add_option("--layers", o.layers, "folder for each frame's stroke layer, frame_000.png on");
+  app.add_option("--coherent-sample-px", o.coherence.sample_px, "brush samples this far apart (px)");
+  app.add_option("--coherent-search-px", o.coherence.search_px, "a vote lands at most this far (px)");
+  app.add_option("--coherent-jump-px", o.coherence.jump_px, "a group splits where t departs from s by more (px)");
+  app.add_option("--coherent-knot-px", o.coherence.knot_px, "the fit's knots this far apart (px)");
+  app.add_option("--coherent-scale-weight", o.coherence.scale_weight, "the fit's uniformity weight");
+  app.add_option("--coherent-distort-weight", o.coherence.distort_weight, "the fit's distortion weight");
   app.add_option("--match-px", o.match.radius_px, "a reprojected sample lands on a stroke at most this far (px)");
   app.add_option("--depth-tolerance", o.match.depth_tolerance, "and at a depth within this share of its own");
   app.add_option("--min-motion", o.motion.min_motion_px, "stroke layer: pixels whose surface moved less are left out");

@@ -1,8 +1,7 @@
 // The stroke raster, CPU reference (Kalnins et al. 2002, §4.1; formula in common/strokes/stroke.hpp): the
 // ribbons' triangles through the scalar rasterizer, each fragment blended in order.
-#include "common/strokes/stroke.hpp"
+#include "reference/strokes/stroke.hpp"
 
-#include "common/strokes/stroke_paper.hpp"
 #include "reference/core/stage.hpp"
 #include "reference/strokes/raster.hpp"
 #include "reference/util/sampler.hpp"
@@ -22,46 +21,46 @@ T interpolated(const StrokeVertex* t, glm::dvec3 w, T StrokeVertex::*field) {
   return T(float(w[0]) * t[0].*field + float(w[1]) * t[1].*field + float(w[2]) * t[2].*field);
 }
 
-// Per pixel: the fragments blended there, and 1 where a triangle's edge passes within a
-// subpixel of its center (another rasterizer's rounding may decide its coverage).
-struct FragmentCounts {
-  Image fragments, edge;
-};
-
-// One triangle of a ribbon over `out`, rows [y0, y1).
-void draw(const StrokeVertex* t, const StrokeInputs& in, Image& out, FragmentCounts& counts, int y0, int y1) {
+// One triangle of a ribbon over `out.color`, rows [y0, y1).
+void draw(const StrokeVertex* t, const StrokeInputs& in, StrokeRaster& out, int y0, int y1) {
   const SamplerState along{Filter::Linear, Wrap::Repeat, Wrap::ClampToEdge};
   const Image& texture = in.textures[size_t(t[0].layer)];
   const double subpixel = 1.0 / double(1 << kSubpixelBits);
-  rasterize_triangle(t[0].position, t[1].position, t[2].position, {0, y0, out.width, y1}, subpixel,
+  Image& color = out.color;
+  rasterize_triangle(t[0].position, t[1].position, t[2].position, {0, y0, color.width, y1}, subpixel,
                      [&](int x, int y, glm::dvec3 w, bool edge) {
-                       if (edge) counts.edge.at(x, y) = 1;
+                       if (edge) out.edges.at(x, y) = 1;
                        if (!(w[0] >= 0 && w[1] >= 0 && w[2] >= 0)) return;  // just outside: only the edge's mark
                        float a = interpolated(t, w, &StrokeVertex::alpha) *
                                  sample(texture, interpolated(t, w, &StrokeVertex::uv), along).x;
-                       glm::vec3 under(out.at(x, y, 0), out.at(x, y, 1), out.at(x, y, 2));
+                       glm::vec3 under(color.at(x, y, 0), color.at(x, y, 1), color.at(x, y, 2));
                        glm::vec3 c = over_paper(glm::vec4(t[0].color, a), under,
                                                 in.height.at(x % in.height.width, y % in.height.height), in.paper);
-                       for (int ch = 0; ch < 3; ++ch) out.at(x, y, ch) = c[ch];
-                       counts.fragments.at(x, y) += 1;
+                       for (int ch = 0; ch < 3; ++ch) color.at(x, y, ch) = c[ch];
+                       out.fragments.at(x, y) += 1;
                      });
 }
 
 }  // namespace
 
-PLUMBAGO_REFERENCE_STAGE(stroke, [](ReferenceFrame& f) {
-  std::vector<StrokeVertex> v =
-      stroke_triangles(f.get(kWindowLines), f.get(kVisibleRuns), f.scene.strokes, f.scene.seed);
-  std::vector<Image> textures = stroke_texture_layers(f.scene.seed);
-  StrokeInputs in{textures, f.get(kPaperHeight), f.params<StrokePaperParams>()};
-  Image out = f.get(kPage);
-  FragmentCounts counts{Image(out.width, out.height, 1), Image(out.width, out.height, 1)};
+StrokeRaster draw_strokes(const std::vector<StrokeVertex>& triangles, uint32_t seed, const Image& page,
+                          const Image& paper_height, const StrokePaperParams& paper) {
+  std::vector<Image> textures = stroke_texture_layers(seed);
+  StrokeInputs in{textures, paper_height, paper};
+  StrokeRaster out{page, Image(page.width, page.height, 1), Image(page.width, page.height, 1)};
   draw_in_bands(
-      v, out.height, [](const StrokeVertex& x) { return x.position; },
-      [&](const StrokeVertex* t, int y0, int y1) { draw(t, in, out, counts, y0, y1); });
-  f.put(kStrokeColor, std::move(out));
-  f.put(kStrokeFragments, std::move(counts.fragments));
-  f.put(kRibbonEdges, std::move(counts.edge));
+      triangles, page.height, [](const StrokeVertex& x) { return x.position; },
+      [&](const StrokeVertex* t, int y0, int y1) { draw(t, in, out, y0, y1); });
+  return out;
+}
+
+PLUMBAGO_REFERENCE_STAGE(stroke, [](ReferenceFrame& f) {
+  StrokeRaster r =
+      draw_strokes(stroke_triangles(f.get(kWindowLines), f.get(kVisibleRuns), f.scene.strokes, f.scene.seed),
+                   f.scene.seed, f.get(kPage), f.get(kPaperHeight), f.params<StrokePaperParams>());
+  f.put(kStrokeColor, std::move(r.color));
+  f.put(kStrokeFragments, std::move(r.fragments));
+  f.put(kRibbonEdges, std::move(r.edges));
 });
 
 // What the GPU may add to each fragment (derived, not fitted): its alpha comes from a

@@ -1,6 +1,7 @@
 // Coherent stylized silhouettes (Kalnins et al. 2003, common/strokes/coherent_silhouettes.hpp):
 // the fit recovers a parameter the votes carry, in either direction and beyond the votes,
-// weighs coherence against uniformity, follows the largest group; a run draws its texture
+// weighs coherence against uniformity, gives each group of votes its section of the run;
+// a run draws its texture
 // at the parameter; and along an orbit of the torus, whose closed silhouettes' seams drift
 // under the 2002 paper's arc length, the propagated parameter stays on the surface.
 #include <gtest/gtest.h>
@@ -53,16 +54,39 @@ TEST(CoherentSilhouettes, UniformityPullsAStretchedParameterTowardsRateOne) {
   EXPECT_LT(rate, 1.5);
 }
 
-TEST(CoherentSilhouettes, FitFollowsTheLargestGroup) {
-  // Two strokes voted for the run; then one stroke whose t jumps (another seam) mid-way.
-  std::vector<BrushVote> two = votes(
-      0, 96, [](double s) { return s + 10; }, 1);
-  for (const BrushVote& v : votes(
-           104, 300, [](double s) { return s + 300; }, 2))
-    two.push_back(v);
-  EXPECT_LT(worst(fit_brush_parameter(two, 300, {}), 300, [](double s) { return s + 300; }), 1e-6);
-  std::vector<BrushVote> jump = votes(0, 200, [](double s) { return s < 150 ? s : s + 250; });
-  EXPECT_LT(worst(fit_brush_parameter(jump, 300, {}), 300, [](double s) { return s; }), 1e-6);
+// The largest departure of the fitted t from `want` over the run, every px, leaving out
+// 8 px either side of `seam`.
+template <class F>
+double worst_off_seam(const BrushParameter& knots, double length, double seam, F want) {
+  double e = 0;
+  for (double s = 0; s <= length; s += 1)
+    if (std::abs(s - seam) > 8) e = std::max(e, std::abs(brush_t(knots, s) - want(s)));
+  return e;
+}
+
+// The votes of two strokes: `first` from s = 0 to a, `second` from b to `end`.
+template <class F, class G>
+std::vector<BrushVote> two_strokes(F first, double a, G second, double b, double end) {
+  std::vector<BrushVote> out = votes(0, a, first, 1);
+  for (const BrushVote& v : votes(b, end, second, 2)) out.push_back(v);
+  return out;
+}
+
+TEST(CoherentSilhouettes, EachGroupParameterizesItsSectionOfTheRun) {
+  auto low = [](double s) { return s + 10; };
+  auto high = [](double s) { return s + 300; };
+  // Two strokes voted for the run: it follows each on its side of their votes' midpoint.
+  auto merged = [&](double s) { return s < 100 ? low(s) : high(s); };
+  BrushParameter both = fit_brush_parameter(two_strokes(low, 96, high, 104, 300), 300, {});
+  EXPECT_LT(worst_off_seam(both, 300, 100, merged), 1e-6);
+  // One stroke whose t jumps (its seam) mid-way: two brush paths.
+  auto jumps = [](double s) { return s < 148 ? s : s + 250; };
+  EXPECT_LT(worst_off_seam(fit_brush_parameter(votes(0, 200, jumps), 300, {}), 300, 148, jumps), 1e-6);
+  // A small group inside a larger one's span claims nothing.
+  auto same = [](double s) { return s; };
+  auto shifted = [](double s) { return s + 90; };
+  std::vector<BrushVote> inside = two_strokes(same, 296, shifted, 120, 136);
+  EXPECT_LT(worst(fit_brush_parameter(inside, 300, {}), 300, same), 1e-6);
 }
 
 TEST(CoherentSilhouettes, TooFewVotesLeaveTheArcLength) {
