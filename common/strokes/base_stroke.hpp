@@ -59,9 +59,9 @@
 //    of width w gives p - n w/2 (v = 0, right of the direction of travel) and p + n w/2
 //    (v = 1, left), u = t / texture_period_px, t the brush parameter at s: s itself, or
 //    where the run carries one, its coherent parameter (Kalnins et al. 2003,
-//    common/strokes/coherent_silhouettes.hpp) at s scaled to its polyline's length. Consecutive samples make a GL
-//    triangle strip R0 L0 R1 L1 ...; its triangles, in GL's order and winding ((R_j, L_j, R_{j+1}), (R_{j+1}, L_j,
-//    L_{j+1})), are the output.
+//    common/strokes/coherent_silhouettes.hpp) at s scaled to its polyline's length.
+//    Consecutive samples make a GL triangle strip R0 L0 R1 L1 ...; its triangles, in GL's
+//    order and winding ((R_j, L_j, R_{j+1}), (R_{j+1}, L_j, L_{j+1})), are the output.
 #pragma once
 
 #include <glm/glm.hpp>
