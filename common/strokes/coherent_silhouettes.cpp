@@ -4,11 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <unordered_map>
 
 #include <Eigen/Dense>
 
 #include "common/strokes/strokes.hpp"
+#include "common/util/segment_grid.hpp"
 
 namespace plumbago {
 
@@ -26,7 +26,7 @@ struct RunPiece {
 class PieceGrid {
  public:
   PieceGrid(const WindowLines& lines, const Visibility& visibility, const WindowProjection& project, double cell)
-      : cell_(cell) {
+      : grid_(lines.width, lines.height, cell) {
     for (uint32_t r = 0; r < visibility.runs.size(); ++r) {
       const VisibleRun& run = visibility.runs[r];
       const WindowPath& path = lines.paths[run.path];
@@ -35,7 +35,8 @@ class PieceGrid {
       for (size_t j = 0; j + 1 < run.window.size(); ++j) {
         double next_s = s + glm::distance(run.window[j], run.window[j + 1]);
         double next_d = project(world_at(path, run.s0 + next_s)).z;
-        add({r, run.window[j], run.window[j + 1], s, next_s, d, next_d});
+        grid_.add(run.window[j], run.window[j + 1], uint32_t(pieces_.size()));
+        pieces_.push_back({r, run.window[j], run.window[j + 1], s, next_s, d, next_d});
         s = next_s, d = next_d;
       }
     }
@@ -45,42 +46,20 @@ class PieceGrid {
   std::optional<BrushVote> nearest(glm::dvec3 q, double radius, double depth_tolerance) const {
     std::optional<BrushVote> best;
     double best_distance = radius;
-    glm::ivec2 lo = cell_of(glm::dvec2(q) - radius), hi = cell_of(glm::dvec2(q) + radius);
-    for (int y = lo.y; y <= hi.y; ++y)
-      for (int x = lo.x; x <= hi.x; ++x) {
-        auto it = cells_.find(key(x, y));
-        if (it == cells_.end()) continue;
-        for (uint32_t i : it->second) {
-          const RunPiece& piece = pieces_[i];
-          glm::dvec2 d = piece.b - piece.a;
-          double len2 = glm::dot(d, d);
-          double f = len2 > 0 ? std::clamp(glm::dot(glm::dvec2(q) - piece.a, d) / len2, 0.0, 1.0) : 0.0;
-          double distance = glm::distance(piece.a + f * d, glm::dvec2(q));
-          double depth = std::lerp(piece.da, piece.db, f);
-          if (distance > best_distance || std::abs(depth - q.z) > depth_tolerance * q.z) continue;
-          best_distance = distance;
-          best = BrushVote{piece.run, std::lerp(piece.sa, piece.sb, f), 0.0, 0};
-        }
-      }
+    grid_.near(glm::dvec2(q) - radius, glm::dvec2(q) + radius, [&](uint32_t i) {
+      const RunPiece& piece = pieces_[i];
+      auto [f, distance] = nearest_on(piece.a, piece.b, glm::dvec2(q));
+      double depth = std::lerp(piece.da, piece.db, f);
+      if (distance > best_distance || std::abs(depth - q.z) > depth_tolerance * q.z) return;
+      best_distance = distance;
+      best = BrushVote{piece.run, std::lerp(piece.sa, piece.sb, f), 0.0, 0};
+    });
     return best;
   }
 
  private:
-  static int64_t key(int x, int y) { return (int64_t(x) << 32) ^ int64_t(uint32_t(y)); }
-  glm::ivec2 cell_of(glm::dvec2 p) const {
-    return {int(std::floor(std::clamp(p.x / cell_, -1e9, 1e9))), int(std::floor(std::clamp(p.y / cell_, -1e9, 1e9)))};
-  }
-  void add(const RunPiece& piece) {
-    glm::ivec2 lo = cell_of(glm::min(piece.a, piece.b)), hi = cell_of(glm::max(piece.a, piece.b));
-    if (int64_t(hi.x - lo.x + 1) * (hi.y - lo.y + 1) > 4096) return;  // a piece thousands of px long: off the window
-    for (int y = lo.y; y <= hi.y; ++y)
-      for (int x = lo.x; x <= hi.x; ++x) cells_[key(x, y)].push_back(uint32_t(pieces_.size()));
-    pieces_.push_back(piece);
-  }
-
-  double cell_;
+  SegmentGrid grid_;
   std::vector<RunPiece> pieces_;
-  std::unordered_map<int64_t, std::vector<uint32_t>> cells_;
 };
 
 // 3. The votes of one run, in order of s, split into groups.

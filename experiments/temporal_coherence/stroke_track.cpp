@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common/util/random.hpp"
+#include "common/util/segment_grid.hpp"
 
 namespace plumbago::temporal_coherence {
 
@@ -51,54 +52,25 @@ struct Piece {
   size_t run, k;
 };
 
-// The pieces of a frame's strokes on a grid of `cell` px cells over its window; a piece is
-// in every cell its bounding box touches, and what lies outside the window is in the
-// border cells.
-class PieceGrid {
- public:
-  PieceGrid(const FrameStrokes& f, double cell)
-      : cell_(cell),
-        columns_(int(std::ceil(f.width / cell)) + 1),
-        rows_(int(std::ceil(f.height / cell)) + 1),
-        cells_(size_t(columns_) * size_t(rows_)) {
+// The pieces of a frame's strokes, and a grid of `cell` px over its window holding them.
+struct PieceGrid {
+  PieceGrid(const FrameStrokes& f, double cell) : grid(f.width, f.height, cell) {
     for (size_t r = 0; r < f.runs.size(); ++r)
       for (size_t k = 0; k + 1 < f.runs[r].samples.size(); ++k) {
-        glm::dvec2 a = f.runs[r].samples[k].window, b = f.runs[r].samples[k + 1].window;
-        for (size_t c : cells(glm::min(a, b), glm::max(a, b))) cells_[c].push_back({r, k});
+        grid.add(f.runs[r].samples[k].window, f.runs[r].samples[k + 1].window, uint32_t(pieces.size()));
+        pieces.push_back({r, k});
       }
   }
 
-  // Calls visit(piece) for the pieces in the cells that the box [lo, hi] touches (a piece
-  // may come more than once).
+  // Calls visit(piece) for the pieces near the box [lo, hi] (SegmentGrid::near).
   template <class Visit>
   void near(glm::dvec2 lo, glm::dvec2 hi, const Visit& visit) const {
-    for (size_t c : cells(lo, hi))
-      for (const Piece& p : cells_[c]) visit(p);
+    grid.near(lo, hi, [&](uint32_t i) { visit(pieces[i]); });
   }
 
- private:
-  int index(double v, int n) const { return std::clamp(int(std::floor(v / cell_)), 0, n - 1); }
-
-  std::vector<size_t> cells(glm::dvec2 lo, glm::dvec2 hi) const {
-    std::vector<size_t> out;
-    for (int y = index(lo.y, rows_); y <= index(hi.y, rows_); ++y)
-      for (int x = index(lo.x, columns_); x <= index(hi.x, columns_); ++x)
-        out.push_back(size_t(y) * size_t(columns_) + size_t(x));
-    return out;
-  }
-
-  double cell_;
-  int columns_, rows_;
-  std::vector<std::vector<Piece>> cells_;
+  std::vector<Piece> pieces;
+  SegmentGrid grid;
 };
-
-// The nearest point to `q` of the piece from a to b: its share t along it and its distance.
-std::pair<double, double> nearest_on(glm::dvec2 a, glm::dvec2 b, glm::dvec2 q) {
-  glm::dvec2 d = b - a;
-  double len2 = glm::dot(d, d);
-  double t = len2 > 0 ? std::clamp(glm::dot(q - a, d) / len2, 0.0, 1.0) : 0.0;
-  return {t, glm::distance(a + t * d, q)};
-}
 
 // Whether landing a beats b: nearer, or (at a point two pieces share, such as a loop's
 // seam, where s = 0 and s = length meet) as near and nearer in s to the sample's own.
