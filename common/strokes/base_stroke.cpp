@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace plumbago {
 
@@ -118,20 +119,57 @@ std::vector<glm::dvec2> points_at(const DenseCurve& c, const std::vector<double>
   return out;
 }
 
+// 4. Where the offsets are stamped along a run: at s itself, or, where the run carries a
+// brush parameter and the example repeats, at the brush parameter t(s) (Kalnins et al. 2003:
+// the offsets follow the texture over the surface). An example made to span its run stays on s.
+struct StampParameter {
+  const BrushParameter* knots = nullptr;  // t over polyline arc length; null: s
+  double polyline_per_spline = 1.0;
+
+  double at(double s) const { return knots ? brush_t(*knots, s * polyline_per_spline) : s; }
+
+  // The range of at(s) over s in [0, L]: its ends' and the knots' between.
+  std::pair<double, double> range(double L) const {
+    double lo = std::min(at(0), at(L)), hi = std::max(at(0), at(L));
+    for (const glm::dvec2& k : knots ? *knots : BrushParameter{})
+      if (k.x > 0 && k.x < L * polyline_per_spline) lo = std::min(lo, k.y), hi = std::max(hi, k.y);
+    return {lo, hi};
+  }
+
+  // The arc lengths where at(s) = c: on each piece of the knots (brush_t's, the first and last
+  // extended), where it crosses c.
+  std::vector<double> where(double c) const {
+    if (!knots) return {c};
+    std::vector<double> out;
+    const BrushParameter& k = *knots;
+    const double inf = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i + 1 < k.size(); ++i) {
+      if (!(k[i + 1].x > k[i].x) || k[i + 1].y == k[i].y) continue;  // a jump, or flat: no crossing
+      double x = k[i].x + (c - k[i].y) * (k[i + 1].x - k[i].x) / (k[i + 1].y - k[i].y);
+      double from = i == 0 ? -inf : k[i].x, to = i + 2 == k.size() ? inf : k[i + 1].x;  // [from, to)
+      if (x >= from && x < to) out.push_back(x / polyline_per_spline);
+    }
+    return out;
+  }
+};
+
 // 4. The arc lengths in (0, L) where the pen lifts or lands: the ends of each lift of
-// nonzero length, (k + t_i) L_drawn to (k + t_next) L_drawn, in every period k (an example
-// that does not repeat: k = 0, and a lift from its last offset does not end).
-std::vector<double> pen_changes(const OffsetExample& e, double length) {
+// nonzero length, (k + t_i) L_drawn to (k + t_next) L_drawn, in every period k over the
+// stamp parameter's range (an example that does not repeat: k = 0, and a lift from its last
+// offset does not end), each where the stamp parameter takes it.
+std::vector<double> pen_changes(const OffsetExample& e, double length, const StampParameter& stamp) {
   std::vector<double> out;
   const auto& o = e.offsets;
-  double first = e.repeats ? -1 : 0, last = e.repeats ? std::floor(length / e.length_px) : 0;
+  auto [lo, hi] = stamp.range(length);
+  double first = e.repeats ? std::floor(lo / e.length_px) - 1 : 0, last = e.repeats ? std::floor(hi / e.length_px) : 0;
   double after_last = e.repeats ? o[0].t + 1 : std::numeric_limits<double>::infinity();  // held: no end
   for (double k = first; k <= last; ++k)
     for (size_t i = 0; i < o.size(); ++i) {
       double next_t = i + 1 < o.size() ? o[i + 1].t : after_last;
       if (!o[i].pen_up || !(next_t > o[i].t)) continue;
-      for (double s : {(k + o[i].t) * e.length_px, (k + next_t) * e.length_px})
-        if (s > 0 && s < length) out.push_back(s);
+      for (double c : {(k + o[i].t) * e.length_px, (k + next_t) * e.length_px})
+        for (double s : stamp.where(c))
+          if (s > 0 && s < length) out.push_back(s);
     }
   return out;
 }
@@ -144,10 +182,10 @@ bool near_any(double s, const std::vector<double>& changes) {
 
 // 3. and 4.: the even samples plus the pen changes, sorted, without repeats; an even sample
 // near a change gives way to it, a change near an end of the run to the end.
-std::vector<double> sample_arc_lengths(double length, const StrokeStyle& style) {
+std::vector<double> sample_arc_lengths(double length, const StrokeStyle& style, const StampParameter& stamp) {
   std::vector<double> s = even_arc_lengths(length, style.sample_px);
   if (!style.offsets) return s;
-  std::vector<double> changes = pen_changes(*style.offsets, length);
+  std::vector<double> changes = pen_changes(*style.offsets, length, stamp);
   std::erase_if(changes, [&](double c) { return c < kNearPenChange || c > length - kNearPenChange; });
   std::sort(changes.begin(), changes.end());
   std::erase_if(s, [&](double at) { return at > 0 && at < length && near_any(at, changes); });
@@ -239,21 +277,24 @@ double polyline_length(const std::vector<glm::dvec2>& p, bool closed) {
 
 std::vector<StrokeSample> ribbon_samples(const StrokeRun& run, const StrokeStyle& style, const DenseCurve& curve,
                                          double polyline_px, bool closed) {
-  double L = curve.length(), polyline_per_spline = run.brush.empty() ? 1.0 : polyline_px / L;
-  std::vector<double> s = sample_arc_lengths(L, style);
+  double L = curve.length();
+  bool brushed = run.brush.size() >= 2;  // fewer knots: t = s (brush_t)
+  StampParameter brush{brushed ? &run.brush : nullptr, brushed ? polyline_px / L : 1.0};
+  StampParameter along = style.offsets && style.offsets->repeats ? brush : StampParameter{};
+  std::vector<double> s = sample_arc_lengths(L, style, along);
   std::vector<glm::dvec2> base = points_at(curve, s);
   std::vector<glm::dvec2> normals = vertex_normals(base, closed);
   if (normals.empty()) return {};
   auto stamp = [&](double at) {
-    return style.offsets ? rubber_stamp(*style.offsets, at, L) : StampedOffset{0.0, 1.0, true};
+    return style.offsets ? rubber_stamp(*style.offsets, along.at(at), L) : StampedOffset{0.0, 1.0, true};
   };
   std::vector<StrokeSample> out;
   for (size_t j = 0; j < s.size(); ++j) {
     StampedOffset o = stamp(s[j]);
     Shape shape = shape_at(s[j], L, !closed, run, style, o.pressure);
     bool down = j + 1 < s.size() && stamp(0.5 * (s[j] + s[j + 1])).pen_down;
-    out.push_back({base[j] + normals[j] * o.displacement_px, base[j], s[j],
-                   brush_t(run.brush, s[j] * polyline_per_spline), shape.width, shape.alpha, down});
+    out.push_back(
+        {base[j] + normals[j] * o.displacement_px, base[j], s[j], brush.at(s[j]), shape.width, shape.alpha, down});
   }
   return out;
 }

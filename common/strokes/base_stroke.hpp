@@ -41,7 +41,11 @@
 //    synthesized example, whose L_drawn is the run's window length while its spline may be
 //    a little longer) does not wrap: t = s / L_drawn is held in [0, 1], the first offset
 //    before it and the last (its lift too) after it.
-//    Samples move along the base curve's normal by the displacement.
+//    Samples move along the base curve's normal by the displacement. Where the run carries a
+//    brush parameter (6.) and the example repeats, the example is stamped at t(s) instead of
+//    s, its lifts and landings placed where t takes them (on each linear piece of t), so
+//    that the offsets stay on the surface with the texture (Kalnins et al. 2003); an example
+//    made to span its run stays on s.
 // 5. Width and alpha per sample, dl = min(s, L - s) the distance to the nearer end (a closed
 //    run has no ends: none of these apply):
 //      taper  w x sqrt(1 - ((T - dl)/T)^2)             dl < T = taper_px

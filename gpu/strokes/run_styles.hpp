@@ -22,7 +22,8 @@ struct RunInput {
   uint32_t first_point, point_count, first_offset, offset_count;
   double example_length;
   float width, alpha, taper, fade, halo, flare, sample_px, period;
-  uint32_t flags, pad = 0;
+  uint32_t flags;
+  uint32_t knot_count = 0;  // its brush parameter's knots, after its points (none: t = s)
 };
 struct OffsetInput {
   double t, displacement, pressure;

@@ -49,9 +49,12 @@ struct StrokeSamples::Inputs : Sizes {
   explicit Inputs(const Sizes& sizes) : Sizes(sizes) {}
   explicit Inputs(const std::vector<StyledRun>& runs) {
     for (const StyledRun& r : runs) {
-      add(r.run, r.style, polyline_length(r.run));
-      runs_in.back().first_point = uint32_t(points.size()), runs_in.back().point_count = uint32_t(r.run.points.size());
+      add(r.run, r.style);
+      RunInput& in = runs_in.back();
+      in.first_point = uint32_t(points.size()), in.point_count = uint32_t(r.run.points.size());
+      in.knot_count = r.run.brush.size() >= 2 ? uint32_t(r.run.brush.size()) : 0u;
       points.insert(points.end(), r.run.points.begin(), r.run.points.end());
+      points.insert(points.end(), r.run.brush.begin(), r.run.brush.begin() + in.knot_count);
     }
     point_bound = double(points.size()), this->runs = runs.size(), offset_rows = offsets.size();
   }
@@ -74,7 +77,7 @@ struct StrokeSamples::Inputs : Sizes {
   std::vector<OffsetInput> offsets;  // given
 
  private:
-  void add(const StrokeRun& run, const StrokeStyle& s, double length) {
+  void add(const StrokeRun& run, const StrokeStyle& s) {
     const auto& example = s.offsets;
     RunInput in{};
     put_style(s, in);
@@ -84,8 +87,7 @@ struct StrokeSamples::Inputs : Sizes {
     runs_in.push_back(in);
     if (example)
       for (const StrokeOffset& o : example->offsets) offsets.push_back(offset_input(o));
-    bound +=
-        sample_bound(length, 1, s.sample_px, example ? example->length_px : 0.0, example ? pen_lifts(*example) : 0.0);
+    bound += sample_bound(StyledRun{run, s});
   }
 };
 
@@ -110,6 +112,17 @@ void check_memory(size_t runs, double bound, double points) {
     throw std::length_error(std::string(what) + ": more than 2^29 samples or 2^32 points");
 }
 
+// How far t runs over polyline arc lengths [0, P] (the first and last intervals extended,
+// brush_t's): the sum over its pieces of |dt/ds| times their part of [0, P].
+double brush_variation(const BrushParameter& k, double P) {
+  double v = 0;
+  for (size_t i = 0; i + 1 < k.size(); ++i) {
+    double from = i == 0 ? 0.0 : std::max(0.0, k[i].x), to = i + 2 == k.size() ? P : std::min(P, k[i + 1].x);
+    if (k[i + 1].x > k[i].x && to > from) v += std::abs(k[i + 1].y - k[i].y) / (k[i + 1].x - k[i].x) * (to - from);
+  }
+  return v;
+}
+
 }  // namespace
 
 double pen_lifts(const OffsetExample& e) {
@@ -128,7 +141,14 @@ double sample_bound(double polyline_length, double runs, double sample_px, doubl
 
 double sample_bound(const StyledRun& r) {
   const auto& e = r.style.offsets;
-  return sample_bound(polyline_length(r.run), 1, r.style.sample_px, e ? e->length_px : 0.0, e ? pen_lifts(*e) : 0.0);
+  double length = polyline_length(r.run), lifts = e ? pen_lifts(*e) : 0.0;
+  if (!e || !e->repeats || r.run.brush.size() < 2)
+    return sample_bound(length, 1, r.style.sample_px, e ? e->length_px : 0.0, lifts);
+  // Stamped along the brush parameter: each of its pieces walks the periods its t spans, and
+  // one or two more at either end.
+  double pieces = double(r.run.brush.size() - 1);
+  double periods = std::floor(brush_variation(r.run.brush, length * (1 + 1e-9) + 1e-6) / e->length_px) + 3 * pieces;
+  return sample_bound(length, 1, r.style.sample_px, 0.0, 0.0) + 2 * lifts * periods;
 }
 
 StrokeSamples::StrokeSamples()

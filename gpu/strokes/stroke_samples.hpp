@@ -3,7 +3,9 @@
 // (shaders/strokes/stroke_samples.comp). A frame's runs are the visibility steps', on the GPU
 // (gpu/strokes/window_paths.hpp): step 0 (shaders/strokes/run_inputs.comp) gives each its
 // window polyline and its style, with its offsets stamped or synthesized, from the scene's
-// style tables (gpu/strokes/run_styles.hpp); tests may give the polylines and styles instead.
+// style tables (gpu/strokes/run_styles.hpp); tests may give the polylines and styles instead,
+// and with them a brush parameter per run (Kalnins et al. 2003, common/strokes/base_stroke.hpp
+// 4., 6.: knots after the run's points), which the frame's own runs do not have yet.
 // The GPU then keeps each run's distinct points, counts its samples, places them by a prefix
 // sum and writes them, with each run's record, where shaders/strokes/common_ribbon.glsl reads
 // them, and the indirect draw of their ribbons. Every step goes over the runs the GPU

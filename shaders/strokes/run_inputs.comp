@@ -220,7 +220,7 @@ RunIn run_input(Style st, Run r, Path p, uint run, uint points_at, uint point_co
   made.width = float(double(st.width) * p.width_scale), made.alpha = float(double(st.alpha) * p.alpha_scale);
   made.taper = st.taper, made.fade = st.fade, made.halo = st.halo, made.flare = st.flare;
   made.sample_px = st.sample_px, made.period = st.period;
-  made.flags = (r.flags & (kClosed | kOccludedStart | kOccludedEnd)) | st.flags, made.pad = 0u;
+  made.flags = (r.flags & (kClosed | kOccludedStart | kOccludedEnd)) | st.flags, made.knot_count = 0u;
   made.first_offset = 0u, made.offset_count = 0u, made.example_length = 0.0lf;
   if (st.offsets == kOwn || st.offsets == kDrawn) {
     Example e = stamped_example(st, p, run);

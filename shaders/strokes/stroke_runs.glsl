@@ -6,7 +6,8 @@ struct RunIn {  // gpu/strokes/run_styles.hpp RunInput
   uint first_point, point_count, first_offset, offset_count;
   double example_length;  // the offsets example's L_drawn (no offsets: offset_count 0)
   float width, alpha, taper, fade, halo, flare, sample_px, period;
-  uint flags, pad;  // kClosed | kOccludedStart | kOccludedEnd | kPressureWidth | kPressureAlpha | kRepeats
+  uint flags;       // kClosed | kOccludedStart | kOccludedEnd | kPressureWidth | kPressureAlpha | kRepeats
+  uint knot_count;  // its brush parameter's knots, after its points (none: t = s)
 };
 struct Offset {  // gpu/strokes/run_styles.hpp OffsetInput
   double t, displacement, pressure;

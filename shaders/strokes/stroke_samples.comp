@@ -146,41 +146,129 @@ dvec2 point_at(inout Walk w, double at) {
   return piece > 0.0lf ? mix(w.a, w.b, (at - w.sa) / piece) : w.a;
 }
 
-// 4. The arc lengths where the pen lifts or lands, in increasing order: the ends of each lift
-// of nonzero length, (k + t_i) L_drawn to (k + t_next) L_drawn, in every period k (an example
-// that does not repeat: k = 0, and a lift from its last offset does not end), kept in
-// [kNearPenChange, L - kNearPenChange].
-struct Changes {
-  RunIn r;
-  double length;
-  int k, periods;
-  uint i, end;  // end: 0 the lift's start is next, 1 its end
-};
+// The length of the polyline through the run's distinct points (a loop's closing segment
+// first, as the reference sums it).
+double polyline_length(Curve c) {
+  double length = c.closed ? distance(point(c, c.n - 1u), point(c, 0u)) : 0.0lf;
+  for (uint j = 0u; j + 1u < c.n; ++j) length += distance(point(c, j), point(c, j + 1u));
+  return length;
+}
+
+// 6. The run's brush parameter (Kalnins et al. 2003): knots (s, t) over its polyline's arc
+// length, kept after its points; with fewer than 2, t = s.
+dvec2 knot(RunIn r, uint k) { return points[r.first_point + r.point_count + k]; }
+bool has_brush(RunIn r) { return r.knot_count >= 2u; }
+
+// t at polyline arc length s: linear between knots, extrapolated along the end intervals.
+double brush_t(RunIn r, double s) {
+  if (!has_brush(r)) return s;
+  uint count = 0u;  // knots with x <= s
+  for (uint lo = 0u, hi = r.knot_count; lo < hi;) {
+    uint mid = (lo + hi) / 2u;
+    if (knot(r, mid).x <= s) lo = count = mid + 1u; else hi = mid;
+  }
+  uint k = clamp(count, 1u, r.knot_count - 1u) - 1u;
+  dvec2 a = knot(r, k), b = knot(r, k + 1u);
+  return b.x > a.x ? a.y + (s - a.x) * (b.y - a.y) / (b.x - a.x) : b.y;  // two knots at one s: a jump
+}
 
 bool repeats(RunIn r) { return (r.flags & kRepeats) != 0u; }
 
-Changes start_changes(RunIn r, double length) {
-  if (r.offset_count == 0u) return Changes(r, length, 0, -1, 0u, 0u);
-  if (!repeats(r)) return Changes(r, length, 0, 0, 0u, 0u);
-  return Changes(r, length, -1, int(floor(length / r.example_length)), 0u, 0u);
+// 4. Where the offsets are stamped: at the brush parameter t(s) where the run has one and the
+// example repeats, else at s. per_spline: the polyline's arc length per px of the spline's.
+struct Stamp {
+  bool brushed;
+  double per_spline;
+};
+
+Stamp stamp_of(RunIn r, Curve c, double length) {
+  bool brushed = has_brush(r) && repeats(r);
+  return Stamp(brushed, has_brush(r) ? polyline_length(c) / length : 1.0lf);
+}
+
+double stamp_at(RunIn r, Stamp st, double s) { return st.brushed ? brush_t(r, s * st.per_spline) : s; }
+
+// 4. The arc lengths where the pen lifts or lands, in increasing order: the ends of each lift
+// of nonzero length, (k + t_i) L_drawn to (k + t_next) L_drawn, in every period k (an example
+// that does not repeat: k = 0, and a lift from its last offset does not end), kept in
+// [kNearPenChange, L - kNearPenChange]. Under a brush parameter, each linear piece of t in
+// turn (the first and last extended, brush_t's) gives the arc lengths where t takes them,
+// its periods walked the way t runs, so that s increases.
+const double kInfinite = 1e300lf;
+
+struct Changes {
+  RunIn r;
+  Stamp stamp;
+  double length;
+  uint piece, pieces;  // the pieces of t (t = s: one)
+  dvec2 a, b;          // the piece's line through (s, t) points; [from, to) its polyline arc lengths
+  double from, to;
+  int k, k_end, dir;   // its periods, from k to k_end in steps of dir
+  uint i, e;           // the offset; the lift's end, counted in the walk's direction
+};
+
+uint first_offset_walked(Changes c) { return c.dir > 0 ? 0u : c.r.offset_count - 1u; }
+
+// Starts piece p (or the next that has one) of the walk; c.piece == c.pieces when none is left.
+void start_piece(inout Changes c, uint p) {
+  for (c.piece = p; c.piece < c.pieces; ++c.piece) {
+    double lo = 0.0lf, hi = c.length;  // t over the piece's part of [0, L]
+    if (c.stamp.brushed) {
+      c.a = knot(c.r, c.piece), c.b = knot(c.r, c.piece + 1u);
+      if (!(c.b.x > c.a.x) || c.b.y == c.a.y) continue;  // a jump, or flat: no crossing
+      c.from = c.piece == 0u ? -kInfinite : c.a.x, c.to = c.piece + 1u == c.pieces ? kInfinite : c.b.x;
+      double x0 = max(c.from, 0.0lf), x1 = min(c.to, c.length * c.stamp.per_spline);
+      if (!(x1 > x0)) continue;
+      double t0 = c.a.y + (x0 - c.a.x) * (c.b.y - c.a.y) / (c.b.x - c.a.x);
+      double t1 = c.a.y + (x1 - c.a.x) * (c.b.y - c.a.y) / (c.b.x - c.a.x);
+      lo = min(t0, t1), hi = max(t0, t1);
+    } else {
+      c.a = dvec2(0.0lf), c.b = dvec2(1.0lf), c.from = -kInfinite, c.to = kInfinite;
+    }
+    int first = repeats(c.r) ? int(floor(lo / c.r.example_length)) - 1 : 0;
+    int last = repeats(c.r) ? int(floor(hi / c.r.example_length)) : 0;
+    c.dir = c.b.y > c.a.y ? 1 : -1;
+    c.k = c.dir > 0 ? first : last, c.k_end = c.dir > 0 ? last : first;
+    c.i = first_offset_walked(c), c.e = 0u;
+    return;
+  }
+}
+
+Changes start_changes(RunIn r, Curve curve, double length) {
+  Changes c;
+  c.r = r, c.stamp = stamp_of(r, curve, length), c.length = length;
+  c.pieces = r.offset_count == 0u ? 0u : c.stamp.brushed ? r.knot_count - 1u : 1u;
+  start_piece(c, 0u);
+  return c;
+}
+
+// The arc length where the piece's t is `t`, or a negative number outside the piece.
+double piece_arc_length(Changes c, double t) {
+  double x = c.a.x + (t - c.a.y) * (c.b.x - c.a.x) / (c.b.y - c.a.y);
+  return x >= c.from && x < c.to ? (c.stamp.brushed ? x / c.stamp.per_spline : x) : -1.0lf;
 }
 
 // The next change, or a negative number when there is none.
 double next_change(inout Changes c) {
-  for (; c.k <= c.periods; ++c.k, c.i = 0u) {
-    for (; c.i < c.r.offset_count; ++c.i, c.end = 0u) {
-      Offset o = offsets[c.r.first_offset + c.i];
-      bool last = c.i + 1u == c.r.offset_count;
-      double next_t = !last ? offsets[c.r.first_offset + c.i + 1u].t : offsets[c.r.first_offset].t + 1.0lf;
-      if (o.pen_up == 0u || !(next_t > o.t)) continue;
-      for (; c.end < (last && !repeats(c.r) ? 1u : 2u); ++c.end) {  // a held last lift does not end
-        double s = (double(c.k) + (c.end == 0u ? o.t : next_t)) * c.r.example_length;
-        if (s > 0.0lf && s < c.length && s >= kNearPenChange && s <= c.length - kNearPenChange) {
-          ++c.end;
-          return s;
+  while (c.piece < c.pieces) {
+    for (; c.dir > 0 ? c.k <= c.k_end : c.k >= c.k_end; c.k += c.dir, c.i = first_offset_walked(c)) {
+      for (; c.i < c.r.offset_count; c.i += uint(c.dir), c.e = 0u) {
+        Offset o = offsets[c.r.first_offset + c.i];
+        bool last = c.i + 1u == c.r.offset_count;
+        double next_t = !last ? offsets[c.r.first_offset + c.i + 1u].t : offsets[c.r.first_offset].t + 1.0lf;
+        if (o.pen_up == 0u || !(next_t > o.t)) continue;
+        uint ends = last && !repeats(c.r) ? 1u : 2u;  // a held last lift does not end
+        for (; c.e < ends; ++c.e) {
+          uint end = c.dir > 0 ? c.e : ends - 1u - c.e;
+          double s = piece_arc_length(c, (double(c.k) + (end == 0u ? o.t : next_t)) * c.r.example_length);
+          if (s > 0.0lf && s < c.length && s >= kNearPenChange && s <= c.length - kNearPenChange) {
+            ++c.e;
+            return s;
+          }
         }
       }
     }
+    start_piece(c, c.piece + 1u);
   }
   return -1.0lf;
 }
@@ -196,12 +284,12 @@ struct Merge {
   bool any;
 };
 
-Merge start_merge(RunIn r, double length) {
+Merge start_merge(RunIn r, Curve c, double length) {
   Merge m;
   m.length = length;
   m.n = max(1, int(ceil(length / double(r.sample_px) - 1e-9lf)));
   m.k = 0;
-  m.changes = start_changes(r, length);
+  m.changes = start_changes(r, c, length);
   m.previous_change = -1.0lf;
   m.next_change = next_change(m.changes);
   m.any = false;
@@ -242,9 +330,10 @@ void at_run(uint run) {
   RunIn r = runs_in[run];
   uint n = keep_distinct_points(r);
   uint count = 0u;
-  double L = n >= 2u ? curve_length(curve_of(r, n)) : 0.0lf;
+  Curve c = curve_of(r, n);
+  double L = n >= 2u ? curve_length(c) : 0.0lf;
   if (n >= 2u) {
-    Merge m = start_merge(r, L);
+    Merge m = start_merge(r, c, L);
     while (next_sample(m) >= 0.0lf) ++count;
   }
   states[run] = RunState(L, n, 0u);
@@ -369,7 +458,7 @@ bool base_normals(uint b, uint count, bool cyclic) {
 
 // The run's base points at its sample arc lengths, from `b`; their count.
 uint write_bases(RunIn r, Curve c, double length, uint b) {
-  Merge m = start_merge(r, length);
+  Merge m = start_merge(r, c, length);
   Walk w = start_walk(c);
   uint count = 0u;
   for (double s = next_sample(m); s >= 0.0lf && b + count < capacity; s = next_sample(m), ++count)
@@ -384,6 +473,7 @@ void at_run(uint run) {
   Curve c = curve_of(r, state.distinct_count);
   double L = state.length;
   bool drawn = count >= 2u && write_bases(r, c, L, b) == count && base_normals(b, count, c.closed);
+  Stamp stamp = drawn ? stamp_of(r, c, L) : Stamp(false, 1.0lf);
   bool whole = true;
   for (uint j = 0u; j < count; ++j) {
     uint at = b + j;
@@ -392,11 +482,12 @@ void at_run(uint run) {
       continue;
     }
     Base q = bases[at];
-    Stamped o = rubber_stamp(r, q.s, L);
+    Stamped o = rubber_stamp(r, stamp_at(r, stamp, q.s), L);
     dvec2 shape = shape_at(r, q.s, L, !c.closed, o.pressure);
-    bool down = j + 1u < count && rubber_stamp(r, 0.5lf * (q.s + bases[at + 1u].s), L).pen_down;
+    bool down = j + 1u < count && rubber_stamp(r, stamp_at(r, stamp, 0.5lf * (q.s + bases[at + 1u].s)), L).pen_down;
     whole = whole && (down || j + 1u == count);
-    samples[at] = Sample(vec2(q.point + q.normal * o.displacement), float(q.s / double(r.period)), float(shape.x),
+    double t = has_brush(r) ? brush_t(r, q.s * stamp.per_spline) : q.s;  // 6.
+    samples[at] = Sample(vec2(q.point + q.normal * o.displacement), float(t / double(r.period)), float(shape.x),
                          float(shape.y), run, down ? 1u : 0u, 0u, vec2(0.0));
   }
   runs[run] = Run(r.color_layer, b, drawn ? count : 0u, c.closed && whole ? 1u : 0u, 0u);

@@ -429,6 +429,62 @@ TEST(BaseStroke, PenChangesNearOtherSamplesLeaveNoSegmentUnder005Px) {
   EXPECT_TRUE(std::any_of(q.begin(), q.end(), [](const StrokeSample& x) { return std::abs(x.s - 40.01) < 1e-9; }));
 }
 
+// The drawn pieces of a run's samples: [s, s] from a sample whose pen goes down to the
+// sample where it lifts again.
+std::vector<std::pair<double, double>> drawn_pieces(const std::vector<StrokeSample>& q) {
+  std::vector<std::pair<double, double>> out;
+  for (size_t j = 0; j + 1 < q.size(); ++j) {
+    if (!q[j].pen_down_after) continue;
+    if (j == 0 || !q[j - 1].pen_down_after) out.push_back({q[j].s, q[j].s});
+    out.back().second = q[j + 1].s;
+  }
+  return out;
+}
+
+// With a brush parameter t (Kalnins et al. 2003), a repeating example is stamped at t, and
+// its lifts lie where t takes them: shifted, reversed, or on either side of a jump of t.
+TEST(BaseStroke, RepeatingOffsetsFollowTheBrushParameter) {
+  StrokeStyle st = plain_style();
+  st.offsets = OffsetExample{40, {{0, 0, 1, false}, {0.5, 3, 1, true}, {0.75, -2, 1, false}}};  // lifts t in (20, 30)
+  struct Case {
+    BrushParameter brush;
+    std::vector<std::pair<double, double>> pieces;
+  };
+  for (const Case& c : {Case{{{0, 15}, {140, 155}}, {{0, 5}, {15, 45}, {55, 85}, {95, 125}, {135, 140}}},
+                        Case{{{0, 200}, {140, 60}}, {{0, 10}, {20, 50}, {60, 90}, {100, 130}}},
+                        Case{{{0, 0}, {70, 70}, {70, 300}, {140, 370}}, {{0, 20}, {30, 60}, {80, 110}, {120, 140}}}}) {
+    StrokeRun run = horizontal(140);
+    run.brush = c.brush;
+    std::vector<StrokeSample> q = base_stroke_samples(run, st).samples;
+    auto pieces = drawn_pieces(q);
+    ASSERT_EQ(pieces.size(), c.pieces.size()) << "brush from t = " << c.brush[0].y;
+    for (size_t i = 0; i < pieces.size(); ++i) {
+      EXPECT_NEAR(pieces[i].first, c.pieces[i].first, 1e-6);
+      EXPECT_NEAR(pieces[i].second, c.pieces[i].second, 1e-6);
+    }
+    for (const StrokeSample& x : q) {
+      EXPECT_NEAR(x.t, brush_t(c.brush, x.s), 1e-9);
+      EXPECT_NEAR(x.position.y - x.base.y, rubber_stamp(*st.offsets, x.t, 140).displacement_px, 1e-9) << "s " << x.s;
+    }
+  }
+}
+
+// An example made to span its run (a synthesized one) stays on arc length under a brush.
+TEST(BaseStroke, OffsetsMadeForTheirRunStayOnArcLength) {
+  StrokeStyle st = plain_style();
+  st.offsets = OffsetExample{140, {{0, 0, 1, false}, {0.5, 3, 1, true}, {0.75, -2, 1, false}}, false};
+  StrokeRun run = horizontal(140);
+  std::vector<StrokeSample> plain = base_stroke_samples(run, st).samples;
+  run.brush = {{0, 15}, {140, 155}};
+  std::vector<StrokeSample> brushed = base_stroke_samples(run, st).samples;
+  ASSERT_EQ(plain.size(), brushed.size());
+  for (size_t j = 0; j < plain.size(); ++j) {
+    EXPECT_EQ(plain[j].position, brushed[j].position);
+    EXPECT_EQ(plain[j].pen_down_after, brushed[j].pen_down_after);
+    EXPECT_NEAR(brushed[j].t, plain[j].s + 15, 1e-9);
+  }
+}
+
 TEST(BaseStroke, PressureScalesWidthAndOptionallyAlpha) {
   StrokeStyle st = plain_style();
   st.offsets = OffsetExample{40, {{0, 0, 0.5, false}}};

@@ -62,7 +62,7 @@ Tally compare(const std::vector<StyledRun>& runs, const gpu::StrokeSamples& gpu_
     for (size_t j = 0; j < q.size(); ++j) {
       const gpu::SampleRecord& s = samples.at(g.first + j);
       glm::vec2 p(q[j].position);
-      float u = float(q[j].s / style.texture_period_px), w = float(q[j].width), a = float(q[j].alpha);
+      float u = float(q[j].t / style.texture_period_px), w = float(q[j].width), a = float(q[j].alpha);
       bool same = s.position == p && s.u == u && s.width == w && s.alpha == a;
       t.differing += same ? 0 : 1;
       EXPECT_TRUE(within_one_ulp(s.position.x, p.x) && within_one_ulp(s.position.y, p.y))
@@ -105,9 +105,10 @@ using testing::arc;
 struct Cases {
   std::vector<StyledRun> runs;
   void add(std::vector<glm::dvec2> p, bool closed, const StrokeStyle& s, bool occluded_start = false,
-           bool occluded_end = false) {
+           bool occluded_end = false, BrushParameter brush = {}) {
     StyledRun r;
     r.run.points = std::move(p);
+    r.run.brush = std::move(brush);
     r.run.closed = closed, r.run.occluded_start = occluded_start, r.run.occluded_end = occluded_end;
     r.style = s;
     runs.push_back(std::move(r));
@@ -155,6 +156,14 @@ std::vector<StyledRun> hard_cases() {
   c.add({{70, 70}, {70, 70}}, false, style(4));                         // one distinct point: nothing
   c.add({{10, 300}, {10.5, 300}, {10, 300}}, false, style(4));          // there and back in one step: nothing
   c.add(arc({3800, 2900}, 25, 20, 0.7), false, style(7));               // far from the origin
+  // Brush parameters (Kalnins et al. 2003): the texture and a repeating example's offsets and
+  // lifts follow t; an example made for its run stays on s.
+  c.add(wave, false, lifted, false, false, {{0, 37}, {100, 137}});                           // shifted, extended
+  c.add(wave, false, lifted, false, false, {{0, 500}, {100, 400}, {100, 40}, {400, -260}});  // reversed, a jump
+  c.add(wave, false, lifted, false, false, {{0, 0}, {60, 80}, {120, 120}, {200, 250}});      // stretched unevenly
+  c.add(arc({420, 380}, 50, 30, 1), true, lifted, false, false, {{0, 10}, {150, 170}, {300, 300}});  // a loop
+  c.add({{100, 200}, {140, 215}, {175, 200}}, false, made, false, false, {{0, 20}, {50, 80}});
+  c.add(wave, false, lifted, false, false, {{30, 7}});  // one knot: t = s
   return c.runs;
 }
 
