@@ -184,6 +184,8 @@ int main(int argc, char** argv) {
   app.add_option("--layers", o.layers, "folder for each frame's stroke layer, frame_000.png on");
   app.add_option("--coherent-sample-px", o.coherence.sample_px, "brush samples this far apart (px)");
   app.add_option("--coherent-search-px", o.coherence.search_px, "a vote lands at most this far (px)");
+  app.add_option("--coherent-depth-tolerance", o.coherence.depth_tolerance,
+                 "a vote's depth agrees within this share of its own");
   app.add_option("--coherent-jump-px", o.coherence.jump_px, "a group splits where t departs from s by more (px)");
   app.add_option("--coherent-knot-px", o.coherence.knot_px, "the fit's knots this far apart (px)");
   app.add_option("--coherent-scale-weight", o.coherence.scale_weight, "the fit's uniformity weight");
