@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
 
 #include <Eigen/Dense>
 
@@ -62,9 +63,12 @@ class PieceGrid {
   std::vector<RunPiece> pieces_;
 };
 
-// 3. The votes of one run, in order of s, split into groups.
+// 3. The votes of one run, in order of s (then of stroke and t), split into groups.
 std::vector<std::vector<BrushVote>> vote_groups(std::vector<BrushVote> votes, const CoherenceParams& p) {
-  std::sort(votes.begin(), votes.end(), [](const BrushVote& a, const BrushVote& b) { return a.s < b.s; });
+  // A total order: votes tie in s where they clamp to an end of the run.
+  std::sort(votes.begin(), votes.end(), [](const BrushVote& a, const BrushVote& b) {
+    return std::tie(a.s, a.stroke, a.t) < std::tie(b.s, b.stroke, b.t);
+  });
   std::vector<std::vector<BrushVote>> groups;
   std::map<uint32_t, size_t> open;  // per stroke voting, its group still growing
   for (const BrushVote& v : votes) {
@@ -98,9 +102,9 @@ std::vector<BrushVote> votes_within(const std::vector<BrushVote>& group, double 
 }
 
 // 3. The groups, largest first, each claim what of their span (first to last vote) no
-// larger group claimed, where 2 of their votes lie; gaps between claims go half to either
-// side, the run's ends to the nearest claim. In order of s.
-std::vector<Section> sections(std::vector<std::vector<BrushVote>> groups, double length_px) {
+// larger group claimed, where claim_votes of their votes lie; gaps between claims go half to
+// either side, the run's ends to the nearest claim. In order of s.
+std::vector<Section> sections(std::vector<std::vector<BrushVote>> groups, double length_px, size_t claim_votes) {
   std::stable_sort(groups.begin(), groups.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
   std::vector<Section> claims;
   for (const std::vector<BrushVote>& g : groups) {
@@ -114,16 +118,17 @@ std::vector<Section> sections(std::vector<std::vector<BrushVote>> groups, double
       free = left;
     }
     for (auto [a, b] : free)
-      if (std::vector<BrushVote> own = votes_within(g, a, b); own.size() >= 2) claims.push_back({a, b, own});
+      if (std::vector<BrushVote> own = votes_within(g, a, b); own.size() >= claim_votes) claims.push_back({a, b, own});
   }
-  std::sort(claims.begin(), claims.end(), [](const Section& a, const Section& b) { return a.from < b.from; });
+  std::sort(claims.begin(), claims.end(),
+            [](const Section& a, const Section& b) { return std::tie(a.from, a.to) < std::tie(b.from, b.to); });
   for (size_t i = 0; i + 1 < claims.size(); ++i)
     claims[i].to = claims[i + 1].from = 0.5 * (claims[i].to + claims[i + 1].from);
   if (!claims.empty()) claims.front().from = 0, claims.back().to = length_px;
   return claims;
 }
 
-// σ of 4.: the sign of the least-squares slope of t over s.
+// σ of 4.: the sign of the least-squares slope of t over s (+1 for a single vote).
 double direction(const std::vector<BrushVote>& votes) {
   double ms = 0, mt = 0;
   for (const BrushVote& v : votes) ms += v.s, mt += v.t;
@@ -201,7 +206,8 @@ std::vector<BrushVote> brush_votes(const std::vector<BrushSample>& previous, con
 BrushParameter fit_brush_parameter(std::vector<BrushVote> votes, double length_px, const CoherenceParams& p) {
   if (!(length_px > 0) || votes.empty()) return {};
   BrushParameter out;
-  for (const Section& section : sections(vote_groups(std::move(votes), p), length_px)) {
+  for (const Section& section :
+       sections(vote_groups(std::move(votes), p), length_px, size_t(std::max(1, p.claim_votes)))) {
     BrushParameter knots = fit_section(section, p);
     if (knots.empty()) return {};
     out.insert(out.end(), knots.begin(), knots.end());

@@ -14,7 +14,8 @@
 //    they follow its last vote within 3 sample_px of s and their t changes by |Δs| within
 //    `jump_px`; else they start a new group (the paper's brush paths split at gaps and at
 //    jumps of t). Largest first, each group claims what of its span (first to last vote) no
-//    larger group claimed, where 2 of its votes lie; gaps between claims go half to either
+//    larger group claimed, where `claim_votes` of its votes lie (one vote fixes t's phase;
+//    with fewer than 2 the rate is σ = +1, 4.); gaps between claims go half to either
 //    side, the run's ends to the nearest claim. Each section follows its group, and t jumps
 //    between sections (one run, several brush paths). A run with no claim has none: t = s,
 //    the 2002 paper's arc length from the run's start.
@@ -24,12 +25,14 @@
 //      E = sum_i (t(s_i) - t_i)^2                              coherence: the votes
 //        + scale_weight   sum_k (t_{k+1} - t_k - σ h)^2        uniformity: rate σ = ±1 in the image
 //        + distort_weight sum_k (t_{k-1} - 2 t_k + t_{k+1})^2  smooth stretching
-//    σ the sign of the votes' slope (a path may be traced the other way round this frame).
+//    σ the sign of the votes' slope (a path may be traced the other way round this frame;
+//    +1 for a single vote).
 //    The normal equations are solved by Eigen's LDLT. Beyond its votes the fit runs on at
 //    rate σ: the section is covered whole.
 //
 // Defaults are those of jot, the authors' system (votes searched within 6 px, samples every
-// 8 px, knots every 48 px, unit weights).
+// 8 px, knots every 48 px, unit weights), and a claim needs 2 votes (1: measured in
+// experiments/temporal_coherence, lower slide p95 on the statue, higher on the torus and cup).
 #pragma once
 
 #include <cstdint>
@@ -47,6 +50,7 @@ namespace plumbago {
 struct CoherenceParams {
   double sample_px = 8, search_px = 6, depth_tolerance = 0.01, jump_px = 4, knot_px = 48;
   double scale_weight = 1, distort_weight = 1;
+  int claim_votes = 2;
 };
 
 // 1. A surface point a silhouette stroke drew, with its t and the stroke's index among its

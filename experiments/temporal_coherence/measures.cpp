@@ -32,7 +32,7 @@ void accumulate(PairMeasures& into, const PairMeasures& m) {
   into.died_px += m.died_px, into.born_px += m.born_px;
   into.samples += m.samples, into.matched += m.matched;
   for (auto field : {&PairMeasures::slide_px, &PairMeasures::alpha_change, &PairMeasures::width_change_px,
-                     &PairMeasures::offset_change_px})
+                     &PairMeasures::offset_change_px, &PairMeasures::stretch})
     (into.*field).insert((into.*field).end(), (m.*field).begin(), (m.*field).end());
 }
 
@@ -52,6 +52,10 @@ std::vector<std::pair<std::string, PairMeasures>> pair_measures(const FrameStrok
     PairMeasures& m = kinds[run.kind];
     ++m.runs_prev, m.length_prev_px += run.length_px, m.samples += run.samples.size();
     if (died[r]) ++m.died, m.died_px += run.length_px;
+    for (size_t j = 0; j + 1 < run.samples.size(); ++j) {
+      const TrackedSample &a = run.samples[j], &b = run.samples[j + 1];
+      if (b.arc_px > a.arc_px) m.stretch.push_back(std::abs(std::abs(b.s - a.s) / (b.arc_px - a.arc_px) - 1));
+    }
     for (size_t j = 0; j < run.samples.size(); ++j) {
       if (!forward[r][j]) continue;
       const Landing& l = *forward[r][j];

@@ -24,6 +24,10 @@ struct PairMeasures {
   // stroke (slide()), and |alpha_next - alpha_prev|, |width_next - width_prev| (px) and
   // |offset_next - offset_prev| (px, window vectors: the displacement of Kalnins et al. 2002, §4.3) there.
   std::vector<double> slide_px, alpha_change, width_change_px, offset_change_px;
+  // Per piece between consecutive samples of a stroke of prev: how far the texture is
+  // stretched or squeezed in the image, ||Δs| / Δarc - 1| (0 under arc length: the
+  // uniformity that Kalnins et al. 2003 trade against coherence).
+  std::vector<double> stretch;
 };
 
 // How far the texture slid along the stroke at the point where `sample` of `from` lands on

@@ -73,12 +73,13 @@ def lower(base, coherent, key, digits):
 
 def compared(base, coherent):
     """Markdown lines: per scene, the silhouettes' slide, offset change and births under the
-    2002 paper's arc length and coherent (Kalnins et al. 2003), and the coherent stages' time a
-    frame."""
+    2002 paper's arc length and coherent (Kalnins et al. 2003), the texture's stretch that
+    coherence costs (none under arc length), and the coherent stages' time a frame."""
     by_scene = {(r["scene"], r["kind"]): r for r in coherent}
     layers = {r["scene"]: r for r in base if r["kind"] == "all"}
     head = ["scene", "slide median px: arc length", "coherent", "p95: arc length", "coherent", "max: arc length",
-            "coherent", "offset change p95 px: arc length", "coherent", "born + died / pair: arc length", "coherent",
+            "coherent", "offset change p95 px: arc length", "coherent", "stretch median: coherent", "p95",
+            "born + died / pair: arc length", "coherent",
             "stroke layer coherence: arc length",
             "coherent", "coherent stages, ms / frame (reference)"]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
@@ -91,6 +92,7 @@ def compared(base, coherent):
             fmt(b["slide_p95_px"], 1), lower(b, c, "slide_p95_px", 1),
             fmt(b["slide_max_px"], 0), fmt(c["slide_max_px"], 0),
             fmt(b["offset_change_p95_px"], 3), lower(b, c, "offset_change_p95_px", 3),
+            fmt(c["stretch_median"], 3), fmt(c["stretch_p95"], 3),
             fmt(b["born_per_pair"] + b["died_per_pair"]), fmt(c["born_per_pair"] + c["died_per_pair"]),
             fmt(layers[b["scene"]]["image_coherence_mean"], 3), fmt(total["image_coherence_mean"], 3) if total else "-",
             fmt(total["coherence_ms"]) if total else "-"]) + " |")

@@ -37,7 +37,7 @@ FrameStrokes frame_strokes(const Camera& camera, int width, int height, const Wi
     for (const StrokeSample& q : b.samples) {
       glm::dvec3 world = world_at(path, run.s0 + q.s * path_per_spline);
       glm::dvec3 seen = project(world);
-      tracked.samples.push_back({world, glm::dvec2(seen), seen.z, q.t, q.width, q.alpha, q.position - q.base});
+      tracked.samples.push_back({world, glm::dvec2(seen), seen.z, q.t, q.width, q.alpha, q.position - q.base, q.s});
     }
     out.runs.push_back(std::move(tracked));
   }

@@ -26,6 +26,8 @@ struct TrackedSample {
   double s, width, alpha;
   glm::dvec2 offset;  // as drawn: the position minus the base curve's (px), the offsets of Kalnins et al. 2002,
                       // §4.3, §5, App. A
+  double arc_px = 0;  // its arc length along the run's spline from the stroke's start (s = arc_px without a
+                      // brush parameter)
 };
 
 // A visible run that draws something (2 samples or more).

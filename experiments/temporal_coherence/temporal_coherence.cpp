@@ -42,7 +42,7 @@ struct Options {
 const char* kScene = "scene,width,height,path,step";
 const char* kStats =
     "slide_mean_px,slide_median_px,slide_p95_px,slide_max_px,alpha_change_p95,alpha_change_max,"
-    "width_change_p95_px,width_change_max_px,offset_change_mean_px,offset_change_p95_px";
+    "width_change_p95_px,width_change_max_px,offset_change_mean_px,offset_change_p95_px,stretch_median,stretch_p95";
 const char* kPairColumns =
     "pair,kind,runs_prev,runs_next,length_prev_px,length_next_px,born,died,born_px,died_px,"
     "samples,matched";
@@ -70,9 +70,10 @@ std::string scene_cells(const Scene& scene, const std::string& name) {
 
 std::string stat_cells(const PairMeasures& m) {
   Stats slide = stats(m.slide_px), alpha = stats(m.alpha_change), width = stats(m.width_change_px),
-        offset = stats(m.offset_change_px);
+        offset = stats(m.offset_change_px), stretch = stats(m.stretch);
   return cell(slide.mean) + cell(slide.median) + cell(slide.p95) + cell(slide.max) + cell(alpha.p95) + cell(alpha.max) +
-         cell(width.p95) + cell(width.max) + cell(offset.mean) + cell(offset.p95);
+         cell(width.p95) + cell(width.max) + cell(offset.mean) + cell(offset.p95) + cell(stretch.median) +
+         cell(stretch.p95);
 }
 
 // The measures of one kind in one pair; the stroke layer's residuals on the "all" row only.
@@ -186,6 +187,7 @@ int main(int argc, char** argv) {
   app.add_option("--coherent-search-px", o.coherence.search_px, "a vote lands at most this far (px)");
   app.add_option("--coherent-depth-tolerance", o.coherence.depth_tolerance,
                  "a vote's depth agrees within this share of its own");
+  app.add_option("--coherent-claim-votes", o.coherence.claim_votes, "a group claims a section with this many votes");
   app.add_option("--coherent-jump-px", o.coherence.jump_px, "a group splits where t departs from s by more (px)");
   app.add_option("--coherent-knot-px", o.coherence.knot_px, "the fit's knots this far apart (px)");
   app.add_option("--coherent-scale-weight", o.coherence.scale_weight, "the fit's uniformity weight");

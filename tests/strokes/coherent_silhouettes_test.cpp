@@ -89,9 +89,15 @@ TEST(CoherentSilhouettes, EachGroupParameterizesItsSectionOfTheRun) {
   EXPECT_LT(worst(fit_brush_parameter(inside, 300, {}), 300, same), 1e-6);
 }
 
-TEST(CoherentSilhouettes, TooFewVotesLeaveTheArcLength) {
-  EXPECT_TRUE(fit_brush_parameter(votes(0, 0, [](double s) { return s + 5; }), 100, {}).empty());
+// A claim needs 2 votes: a single one leaves the arc length. Asked to take one, it fixes the
+// phase of t over the whole run at rate +1.
+TEST(CoherentSilhouettes, OneVoteLeavesTheArcLengthOrFixesThePhase) {
+  auto shifted = [](double s) { return s + 5; };
+  EXPECT_TRUE(fit_brush_parameter(votes(40, 40, shifted), 100, {}).empty());
   EXPECT_EQ(brush_t({}, 42.0), 42.0);
+  CoherenceParams one;
+  one.claim_votes = 1;
+  EXPECT_LT(worst(fit_brush_parameter(votes(40, 40, shifted), 100, one), 100, shifted), 1e-6);
 }
 
 TEST(CoherentSilhouettes, TheTextureRunsAtTheBrushParameter) {

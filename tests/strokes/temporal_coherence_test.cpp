@@ -33,7 +33,7 @@ TrackedRun stroke(const Camera& c, LineKind kind, double x0, double x1, double y
     glm::dvec3 world(std::lerp(x0, x1, double(k) / (count - 1)), y, 0), seen = project(world);
     double s = k == 0 ? 0 : run.length_px + glm::distance(glm::dvec2(seen), run.samples.back().window);
     run.length_px = s;
-    run.samples.push_back({world, glm::dvec2(seen), seen.z, s, 4.0, 0.5, glm::dvec2(0)});
+    run.samples.push_back({world, glm::dvec2(seen), seen.z, s, 4.0, 0.5, glm::dvec2(0), s});
   }
   for (TrackedSample& q : run.samples) q.s += s_shift;
   run.length_px += s_shift;
@@ -73,7 +73,22 @@ TEST(TemporalCoherence, KnownShiftAlongTheStrokeIsItsSlide) {
   EXPECT_NEAR(stats(m.alpha_change).max, 0.25, 1e-9);
   EXPECT_NEAR(stats(m.width_change_px).max, 1.5, 1e-9);
   EXPECT_NEAR(stats(m.offset_change_px).max, 1.0, 1e-9);
+  EXPECT_NEAR(stats(m.stretch).max, 0.0, 1e-9);  // under arc length, whatever its shift
   EXPECT_EQ(of(all, "all").matched, 60u);
+}
+
+// A texture parameter that runs 1.5 times as fast as arc length, or backwards at 0.5, is
+// stretched by 0.5 everywhere.
+TEST(TemporalCoherence, StretchIsTheParametersRateOffOne) {
+  Camera c = front_camera();
+  for (double rate : {1.5, -0.5}) {
+    TrackedRun run = stroke(c, LineKind::Silhouette, -1, 1, 0, 30);
+    for (TrackedSample& q : run.samples) q.s = 100 + rate * q.arc_px;
+    PairMeasures m = of(pair_measures(frame({run}), frame({run})), "silhouette");
+    ASSERT_EQ(m.stretch.size(), 29u);
+    EXPECT_NEAR(stats(m.stretch).median, 0.5, 1e-9);
+    EXPECT_NEAR(stats(m.stretch).max, 0.5, 1e-9);
+  }
 }
 
 TEST(TemporalCoherence, LoopSlidesTheShorterWayAroundItsSeam) {
