@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <tuple>
 
@@ -43,16 +44,19 @@ class PieceGrid {
     }
   }
 
-  // The nearest point within `radius` of q on a piece whose depth there agrees with q.z.
+  // The nearest point within `radius` of q on a piece whose depth there agrees with q.z;
+  // among equals, the first piece's (in run order, then along the run).
   std::optional<BrushVote> nearest(glm::dvec3 q, double radius, double depth_tolerance) const {
     std::optional<BrushVote> best;
     double best_distance = radius;
+    uint32_t best_piece = std::numeric_limits<uint32_t>::max();
     grid_.near(glm::dvec2(q) - radius, glm::dvec2(q) + radius, [&](uint32_t i) {
       const RunPiece& piece = pieces_[i];
       auto [f, distance] = nearest_on(piece.a, piece.b, glm::dvec2(q));
       double depth = std::lerp(piece.da, piece.db, f);
-      if (distance > best_distance || std::abs(depth - q.z) > depth_tolerance * q.z) return;
-      best_distance = distance;
+      bool nearer = distance < best_distance || (distance == best_distance && i < best_piece);
+      if (!nearer || std::abs(depth - q.z) > depth_tolerance * q.z) return;
+      best_distance = distance, best_piece = i;
       best = BrushVote{piece.run, std::lerp(piece.sa, piece.sb, f), 0.0, 0};
     });
     return best;

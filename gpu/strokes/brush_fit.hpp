@@ -1,8 +1,9 @@
 // The fit of coherent silhouettes on the GPU (Kalnins et al. 2003): steps 3. and 4. of
 // common/strokes/coherent_silhouettes.hpp (groups, sections, and each section's t fitted on
 // its knots), in double, one invocation per run (shaders/strokes/brush_fit.comp), the twin of
-// fit_brush_parameter. Its votes are given per run; the step that makes them on the GPU, and
-// the stage that puts both in a frame, are not built yet.
+// fit_brush_parameter. Its votes are given per run: gpu/strokes/brush_votes.hpp makes them
+// per sample on the GPU; bucketing them by run there, and the stage that puts samples, votes
+// and fit in a frame, are not built yet.
 #pragma once
 
 #include <vector>

@@ -16,6 +16,8 @@ layout(local_size_x = 64) in;
 #define PATHS_BINDING 0
 #define POINTS_BINDING 1
 #include "strokes/window_paths.glsl"
+#include "strokes/run_walk.glsl"
+#include "util/lerp.glsl"
 
 struct Style {  // gpu/strokes/run_styles.hpp StyleRow
   vec4 color_layer;
@@ -76,14 +78,6 @@ uint stream_key(uint a, uint b, uint c) { return hash32(hash32(hash32(a) ^ b) ^ 
 uint stream_key(uint a, uint b, uint c, uint d) { return hash32(stream_key(a, b, c) ^ d); }
 double uniform_at(uint key, uint k) { return double(hash32(key ^ hash32(k)) >> 8) * (1.0lf / 16777216.0lf); }
 
-// libstdc++'s std::lerp for t in [0, 1], as the reference calls it.
-double lerp(double a, double b, double t) {
-  if ((a <= 0.0lf && b >= 0.0lf) || (a >= 0.0lf && b <= 0.0lf)) return t * b + (1.0lf - t) * a;
-  if (t == 1.0lf) return b;
-  double x = a + t * (b - a);
-  return (t > 1.0lf) == (b > a) ? max(b, x) : min(b, x);
-}
-
 // The run's place among its path's runs (common/strokes/stroke.cpp run_ordinals): a path's
 // runs are listed together, in order.
 uint ordinal(uint run) {
@@ -105,17 +99,9 @@ uint polyline_point(uint at, uint n, dvec2 p) {
 
 uint run_polyline(Run r, Path p, uint at) {
   uint n = 0u;
-  if ((r.flags & kClosed) != 0u) {
-    for (uint k = 0u; k < p.points; ++k) n = polyline_point(at, n, point(p, k).window);
-    return n;
-  }
-  n = polyline_point(at, n, window_at(p, r.s0));
-  for (uint lap = 0u; lap < (is_closed(p) ? 2u : 1u); ++lap)
-    for (uint k = 0u; k < p.points; ++k) {
-      double s = point(p, k).s + double(lap) * p.length_px;
-      if (s > r.s0 && s < r.s1) n = polyline_point(at, n, point(p, k).window);
-    }
-  return polyline_point(at, n, window_at(p, r.s1));
+  RunWalk w = start_run_walk(r, p);
+  for (RunPoint q; next_run_point(w, q);) n = polyline_point(at, n, q.window);
+  return n;
 }
 
 uint put_offset(uint at, uint n, double t, double displacement, double pressure) {

@@ -84,6 +84,15 @@ dvec2 window_at(Path p, double s) {
   return a + along(p, k, s) * (b - a);
 }
 
+// The linear view depth at arc length s (a closed path wraps), perspective-correct between
+// the segment's ends, as common/strokes/visibility.cpp world_at weighs its world points.
+double depth_at(Path p, double s) {
+  s = wrapped(p, s);
+  uint k = segment_at(p, s);
+  double t = along(p, k, s), wa = (1.0lf - t) / point(p, k).depth, wb = t / point(p, k + 1u).depth;
+  return 1.0lf / (wa + wb);
+}
+
 // common/strokes/strokes.cpp clip_to_window: the part [t0, t1] of segment a -> b within
 // `margin` px of a window of `size`.
 bool clip_to_window(dvec2 a, dvec2 b, dvec2 size, double margin, out double t0, out double t1) {

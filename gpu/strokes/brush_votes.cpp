@@ -1,0 +1,69 @@
+// The votes of coherent silhouettes on the GPU: see gpu/strokes/brush_votes.hpp.
+#include "gpu/strokes/brush_votes.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "common/strokes/strokes.hpp"
+#include "common/util/memory_budget.hpp"
+
+namespace plumbago::gpu {
+
+namespace {
+
+// The records of shaders/strokes/brush_votes.comp (std430).
+struct SampleRecord {
+  double x, y, z, t;
+  uint32_t stroke, pad = 0;
+};
+struct VoteRecord {
+  double s, t;
+  uint32_t run, stroke;
+};
+struct FrameRecord {
+  glm::dmat4 clip, view;
+  double width, height, search_px, depth_tolerance;
+};
+static_assert(sizeof(SampleRecord) == 40 && sizeof(VoteRecord) == 24 && sizeof(FrameRecord) == 288,
+              "std430 layouts of brush_votes.comp");
+constexpr uint32_t kNoVote = 0xffffffffu;
+
+}  // namespace
+
+BrushVotes::BrushVotes() : vote_(Program::compute("strokes/brush_votes.comp")) {}
+
+void BrushVotes::operator()(const std::vector<BrushSample>& previous, const Camera& camera, int width, int height,
+                            const RunTables& tables, const CoherenceParams& p) {
+  sample_count_ = previous.size();
+  if (previous.empty()) return;
+  check_memory_budget("the brush votes of " + std::to_string(previous.size()) + " samples on the GPU",
+                      double(previous.size()) * double(sizeof(SampleRecord) + sizeof(VoteRecord)));
+  std::vector<SampleRecord> samples;
+  for (const BrushSample& b : previous) samples.push_back({b.world.x, b.world.y, b.world.z, b.t, b.stroke});
+  samples_ = {make_buffer(samples.data(), samples.size() * sizeof(SampleRecord)),
+              samples.size() * sizeof(SampleRecord)};
+  votes_.reserve(samples.size() * sizeof(VoteRecord));
+  WindowProjection project(camera, width, height);
+  const FrameRecord frame{project.clip, project.view, double(width), double(height), p.search_px, p.depth_tolerance};
+  frame_ = {make_buffer(&frame, sizeof frame), sizeof frame};
+  glProgramUniform1ui(vote_.id(), vote_.uniform("sample_count"), GLuint(samples.size()));
+  glProgramUniform1ui(vote_.id(), vote_.uniform("listed_at"), tables.listed.at);
+  const Buffer* bound[] = {tables.paths,     tables.points,  tables.runs,   tables.listed.buffer,
+                           &samples_.buffer, &votes_.buffer, &frame_.buffer};
+  for (GLuint b = 0; b < 7; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
+  glUseProgram(vote_.id());
+  glDispatchCompute(GLuint(std::clamp<size_t>((samples.size() + 63) / 64, 1, 65535)), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+std::vector<BrushVote> BrushVotes::votes() const {
+  std::vector<VoteRecord> records(sample_count_);
+  if (records.empty()) return {};
+  read_buffer(votes_, records.data(), records.size() * sizeof(VoteRecord));
+  std::vector<BrushVote> out;
+  for (const VoteRecord& v : records)
+    if (v.run != kNoVote) out.push_back({v.run, v.s, v.t, v.stroke});
+  return out;
+}
+
+}  // namespace plumbago::gpu

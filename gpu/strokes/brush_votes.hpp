@@ -1,0 +1,34 @@
+// The votes of coherent silhouettes on the GPU (Kalnins et al. 2003): step 2. of
+// common/strokes/coherent_silhouettes.hpp, in double, one invocation per brush sample of the
+// last frame (shaders/strokes/brush_votes.comp), the twin of brush_votes: over this frame's
+// visible silhouette runs as the visibility steps leave them on the GPU (RunTables). The
+// brush samples are given; the step that makes them on the GPU, and the stage that puts the
+// votes, the fit (gpu/strokes/brush_fit.hpp) and the samples in a frame, are not built yet.
+#pragma once
+
+#include <vector>
+
+#include "common/strokes/coherent_silhouettes.hpp"
+#include "gpu/gl/gl_objects.hpp"
+#include "gpu/gl/program.hpp"
+#include "gpu/strokes/window_paths.hpp"
+
+namespace plumbago::gpu {
+
+class BrushVotes {
+ public:
+  BrushVotes();
+  // Each of `previous` seen by `camera` in a width x height window votes for a run of
+  // `tables`; the votes stay on the GPU until the next call, one slot a sample.
+  void operator()(const std::vector<BrushSample>& previous, const Camera& camera, int width, int height,
+                  const RunTables& tables, const CoherenceParams& p);
+  // Read back, for tests: the votes in the order of the samples that made one.
+  std::vector<BrushVote> votes() const;
+
+ private:
+  Program vote_;
+  ScratchBuffer samples_, votes_, frame_;
+  size_t sample_count_ = 0;
+};
+
+}  // namespace plumbago::gpu

@@ -1,0 +1,46 @@
+// A visible run's window polyline, point by point (common/strokes/visibility.cpp run_along),
+// after strokes/window_paths.glsl: a whole closed path's points; else the point at s0, the
+// path's points strictly between s0 and s1 (a closed path's past its seam on their next
+// lap), and the point at s1. Each with its linear view depth: a path point's own, the ends'
+// perspective-correct (depth_at).
+struct RunWalk {
+  Run r;
+  Path p;
+  uint lap, k, stage;  // stage 0: the start; 1: the path's points; 2: the end; 3: done
+};
+
+struct RunPoint {
+  dvec2 window;
+  double depth;
+};
+
+const uint kWholeRun = 1u;  // Run.flags: the whole closed path
+
+RunWalk start_run_walk(Run r, Path p) { return RunWalk(r, p, 0u, 0u, (r.flags & kWholeRun) != 0u ? 1u : 0u); }
+
+// The walk's next point; false after the last.
+bool next_run_point(inout RunWalk w, out RunPoint q) {
+  bool whole = (w.r.flags & kWholeRun) != 0u;
+  if (w.stage == 0u) {
+    w.stage = 1u;
+    q = RunPoint(window_at(w.p, w.r.s0), depth_at(w.p, w.r.s0));
+    return true;
+  }
+  while (w.stage == 1u) {
+    if (w.k == w.p.points) {
+      w.k = 0u, ++w.lap;
+      if (whole || w.lap == (is_closed(w.p) ? 2u : 1u)) w.stage = whole ? 3u : 2u;
+      continue;
+    }
+    Point at = point(w.p, w.k++);
+    double s = at.s + double(w.lap) * w.p.length_px;
+    if (whole || (s > w.r.s0 && s < w.r.s1)) {
+      q = RunPoint(at.window, at.depth);
+      return true;
+    }
+  }
+  if (w.stage != 2u) return false;
+  w.stage = 3u;
+  q = RunPoint(window_at(w.p, w.r.s1), depth_at(w.p, w.r.s1));
+  return true;
+}

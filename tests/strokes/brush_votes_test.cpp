@@ -1,0 +1,60 @@
+// The GPU's votes of coherent silhouettes (shaders/strokes/brush_votes.comp) against the
+// reference's brush_votes (common/strokes/coherent_silhouettes.hpp 2.): the last frame's
+// brush samples of the procedural scenes' silhouettes, projected into the next frame of an
+// orbit, vote for the same runs, in the same order, carrying the same t and stroke, at the
+// same s within 1e-6 px (the same double formulas; the pieces' depths come from the path's
+// points on the GPU and from its world points on the reference, which agree to rounding,
+// far inside the depth test's 1%).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "common/scene/animation.hpp"
+#include "common/scene/scene.hpp"
+#include "gpu/strokes/brush_votes.hpp"
+#include "parity/lines.hpp"
+#include "tests/support/test_scenes.hpp"
+
+namespace plumbago {
+namespace {
+
+class BrushVotesParity : public testing::GlTest {};
+
+TEST_F(BrushVotesParity, OrbitSamplesVoteAsTheReference) {
+  for (const char* name : {"torus_strokes.json", "snowman_strokes.json", "cup_strokes.json"}) {
+    Scene scene = load_scene(std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/" + name);
+    scene.animation = Animation{.kind = Animation::Kind::Orbit, .amount = -8.0, .frames = 3};
+    CoherenceParams p;
+    std::vector<BrushSample> previous;
+    std::vector<BrushParameter> fitted;
+    size_t votes = 0;
+    double worst = 0;
+    gpu::BrushVotes gpu_votes;
+    for (int frame = 0; frame < 3; ++frame) {
+      Scene at = scene_at_frame(scene, frame);
+      SceneLines found = scene_lines(at, "reference");
+      if (frame > 0) {
+        std::vector<BrushVote> ref = brush_votes(previous, at.camera, found.lines, found.visibility, p);
+        gpu::UploadedRuns tables(found.lines, found.visibility);
+        gpu_votes(previous, at.camera, at.width, at.height, tables.tables(), p);
+        std::vector<BrushVote> gpu = gpu_votes.votes();
+        ASSERT_EQ(gpu.size(), ref.size()) << name << " frame " << frame;
+        for (size_t i = 0; i < ref.size(); ++i) {
+          EXPECT_EQ(gpu[i].run, ref[i].run) << name << " vote " << i;
+          EXPECT_EQ(gpu[i].t, ref[i].t) << name << " vote " << i;
+          EXPECT_EQ(gpu[i].stroke, ref[i].stroke) << name << " vote " << i;
+          EXPECT_NEAR(gpu[i].s, ref[i].s, 1e-6) << name << " vote " << i;
+          worst = std::max(worst, std::abs(gpu[i].s - ref[i].s));
+        }
+        votes += ref.size();
+        fitted = coherent_parameters(previous, at.camera, found.lines, found.visibility, p);
+      }
+      previous = brush_samples(found.lines, found.visibility, fitted, p);
+    }
+    EXPECT_GT(votes, 20u) << name;
+    std::printf("brush votes, %s orbit: %zu votes, s within %.3g px\n", name, votes, worst);
+  }
+}
+
+}  // namespace
+}  // namespace plumbago
