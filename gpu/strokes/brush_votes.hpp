@@ -2,8 +2,9 @@
 // common/strokes/coherent_silhouettes.hpp, in double, one invocation per brush sample of the
 // last frame (shaders/strokes/brush_votes.comp), the twin of brush_votes: over this frame's
 // visible silhouette runs as the visibility steps leave them on the GPU (RunTables). The
-// brush samples are given; the step that makes them on the GPU, and the stage that puts the
-// votes, the fit (gpu/strokes/brush_fit.hpp) and the samples in a frame, are not built yet.
+// brush samples are given (gpu/strokes/brush_samples.hpp makes them on the GPU); the stage
+// that puts samples, votes and the fit (gpu/strokes/brush_fit.hpp) in a frame is not built
+// yet.
 #pragma once
 
 #include <vector>

@@ -156,21 +156,11 @@ double polyline_length(Curve c) {
 
 // 6. The run's brush parameter (Kalnins et al. 2003): knots (s, t) over its polyline's arc
 // length, kept after its points; with fewer than 2, t = s.
+dvec2 brush_knot(uint i) { return points[i]; }
+#include "strokes/brush_parameter.glsl"
 dvec2 knot(RunIn r, uint k) { return points[r.first_point + r.point_count + k]; }
 bool has_brush(RunIn r) { return r.knot_count >= 2u; }
-
-// t at polyline arc length s: linear between knots, extrapolated along the end intervals.
-double brush_t(RunIn r, double s) {
-  if (!has_brush(r)) return s;
-  uint count = 0u;  // knots with x <= s
-  for (uint lo = 0u, hi = r.knot_count; lo < hi;) {
-    uint mid = (lo + hi) / 2u;
-    if (knot(r, mid).x <= s) lo = count = mid + 1u; else hi = mid;
-  }
-  uint k = clamp(count, 1u, r.knot_count - 1u) - 1u;
-  dvec2 a = knot(r, k), b = knot(r, k + 1u);
-  return b.x > a.x ? a.y + (s - a.x) * (b.y - a.y) / (b.x - a.x) : b.y;  // two knots at one s: a jump
-}
+double brush_t(RunIn r, double s) { return brush_t_at(r.first_point + r.point_count, r.knot_count, s); }
 
 bool repeats(RunIn r) { return (r.flags & kRepeats) != 0u; }
 
