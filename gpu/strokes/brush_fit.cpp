@@ -49,11 +49,29 @@ double knot_bound(double length_px, size_t votes, const CoherenceParams& p) {
   return std::floor(length_px / p.knot_px) + 4.0 * double(votes) + 2;
 }
 
-BrushFit::BrushFit() : fit_(Program::compute("strokes/brush_fit.comp")) {}
+namespace {
+
+Program bucket_step(const char* name) {
+  return Program::compute("strokes/brush_buckets.comp", std::string("#define ") + name + "\n");
+}
+
+ParamsRecord params_record(const CoherenceParams& p, size_t runs) {
+  return {p.sample_px,   p.jump_px, p.knot_px, p.scale_weight, p.distort_weight, uint32_t(std::max(1, p.claim_votes)),
+          uint32_t(runs)};
+}
+
+}  // namespace
+
+BrushFit::BrushFit()
+    : fit_(Program::compute("strokes/brush_fit.comp")),
+      count_(bucket_step("STEP_COUNT")),
+      scatter_(bucket_step("STEP_SCATTER")),
+      bounds_(bucket_step("STEP_BOUNDS")),
+      runs_step_(bucket_step("STEP_RUNS")) {}
 
 void BrushFit::operator()(const std::vector<std::vector<BrushVote>>& votes, const std::vector<double>& lengths,
                           const CoherenceParams& p) {
-  run_count_ = votes.size();
+  run_count_ = votes.size(), listed_ = {};
   std::vector<VoteRecord> vote_records;
   std::vector<RunRecord> runs;
   double knots = 0;
@@ -62,16 +80,57 @@ void BrushFit::operator()(const std::vector<std::vector<BrushVote>>& votes, cons
     for (const BrushVote& v : votes[r]) vote_records.push_back({v.s, v.t, v.stroke});
     knots += votes[r].empty() ? 0.0 : knot_bound(lengths[r], votes[r].size(), p);
   }
-  size_t n = vote_records.size();
-  check_memory_budget("the brush fit of " + std::to_string(n) + " votes on the GPU",
-                      double(n) * double(sizeof(VoteRecord) + sizeof(GroupRecord) + 2 * sizeof(ClaimRecord)) +
-                          knots * double(sizeof(RowRecord) + sizeof(glm::dvec2)));
+  reserve(vote_records.size(), knots);
   upload(votes_, vote_records);
   upload(runs_, runs);
-  upload(params_, std::vector<ParamsRecord>{{p.sample_px, p.jump_px, p.knot_px, p.scale_weight, p.distort_weight,
-                                             uint32_t(std::max(1, p.claim_votes)), uint32_t(run_count_)}});
-  groups_.reserve(n * sizeof(GroupRecord)), claims_.reserve(2 * n * sizeof(ClaimRecord));
-  rows_.reserve(size_t(knots) * sizeof(RowRecord)), knots_.reserve(size_t(knots) * sizeof(glm::dvec2));
+  upload(params_, std::vector<ParamsRecord>{params_record(p, run_count_)});
+  fit();
+}
+
+void BrushFit::operator()(const BrushVotes& votes, const RunTables& tables, const CoherenceParams& p) {
+  run_count_ = tables.bound, listed_ = tables.listed;
+  if (run_count_ == 0) return;
+  double length = 0;  // of the runs, together
+  for (const RunBound& b : tables.bounds) length += b.length + 2 * b.runs * p.knot_px;
+  reserve(votes.slots(), std::floor(length / p.knot_px) + 4.0 * double(votes.slots()) + 1);
+  votes_.reserve(std::max<size_t>(votes.slots(), 1) * sizeof(VoteRecord));
+  runs_.reserve(run_count_ * sizeof(RunRecord));
+  upload(params_, std::vector<ParamsRecord>{params_record(p, 0)});
+  counts_.reserve((run_count_ + 1) * sizeof(uint32_t)), fill_.reserve((run_count_ + 1) * sizeof(uint32_t));
+  clear_buffer(counts_), clear_buffer(fill_);
+  for (const Program* s : {&count_, &scatter_, &bounds_, &runs_step_}) {
+    glProgramUniform1ui(s->id(), s->uniform("vote_slots"), GLuint(votes.slots()));
+    glProgramUniform1ui(s->id(), s->uniform("listed_at"), tables.listed.at);
+  }
+  auto step = [&](const Program& s, size_t over) {
+    const Buffer* bound[] = {&votes.buffer(), &counts_.buffer, &fill_.buffer,        &votes_.buffer,
+                             &runs_.buffer,   tables.runs,     tables.listed.buffer, &params_.buffer};
+    for (GLuint b = 0; b < 8; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
+    glUseProgram(s.id());
+    glDispatchCompute(GLuint(std::clamp<size_t>((over + 63) / 64, 1, 65535)), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  };
+  step(count_, votes.slots());
+  scan_(counts_, run_count_ + 1, *tables.listed.buffer, tables.listed.at, 1);
+  step(scatter_, votes.slots());
+  step(bounds_, run_count_);
+  scan_(fill_, run_count_ + 1, *tables.listed.buffer, tables.listed.at, 1);
+  step(runs_step_, run_count_);
+  fit();
+}
+
+void BrushFit::reserve(size_t votes, double knots) {
+  check_memory_budget("the brush fit of " + std::to_string(votes) + " votes on the GPU",
+                      double(votes) * double(sizeof(VoteRecord) + sizeof(GroupRecord) + 2 * sizeof(ClaimRecord)) +
+                          knots * double(sizeof(RowRecord) + sizeof(glm::dvec2)));
+  groups_.reserve(std::max<size_t>(votes, 1) * sizeof(GroupRecord));
+  claims_.reserve(std::max<size_t>(2 * votes, 1) * sizeof(ClaimRecord));
+  rows_.reserve(std::max<size_t>(size_t(knots), 1) * sizeof(RowRecord));
+  knots_.reserve(std::max<size_t>(size_t(knots), 1) * sizeof(glm::dvec2));
+}
+
+// 3.-4. over the runs' records, as many as the parameters' run_count (at most run_count_).
+void BrushFit::fit() {
   const ScratchBuffer* bound[] = {&votes_, &runs_, &groups_, &claims_, &rows_, &knots_, &params_};
   for (GLuint b = 0; b < 7; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
   glUseProgram(fit_.id());
@@ -80,7 +139,7 @@ void BrushFit::operator()(const std::vector<std::vector<BrushVote>>& votes, cons
 }
 
 std::vector<BrushParameter> BrushFit::parameters() const {
-  std::vector<RunRecord> runs(run_count_);
+  std::vector<RunRecord> runs(listed_.buffer ? listed_.read() : run_count_);
   if (runs.empty()) return {};
   read_buffer(runs_, runs.data(), runs.size() * sizeof(RunRecord));
   std::vector<BrushParameter> out;

@@ -1,9 +1,8 @@
 // The fit of coherent silhouettes on the GPU (Kalnins et al. 2003): steps 3. and 4. of
 // common/strokes/coherent_silhouettes.hpp (groups, sections, and each section's t fitted on
 // its knots), in double, one invocation per run (shaders/strokes/brush_fit.comp), the twin of
-// fit_brush_parameter. Its votes are given per run: gpu/strokes/brush_votes.hpp makes them
-// per sample on the GPU; bucketing them by run there, and the stage that puts samples, votes
-// and fit in a frame, are not built yet.
+// fit_brush_parameter: from votes given per run, or from those gpu/strokes/brush_votes.hpp
+// left on the GPU. The stage that puts samples, votes and fit in a frame is not built yet.
 #pragma once
 
 #include <vector>
@@ -11,6 +10,8 @@
 #include "common/strokes/coherent_silhouettes.hpp"
 #include "gpu/gl/gl_objects.hpp"
 #include "gpu/gl/program.hpp"
+#include "gpu/gl/scan.hpp"
+#include "gpu/strokes/brush_votes.hpp"
 
 namespace plumbago::gpu {
 
@@ -25,13 +26,23 @@ class BrushFit {
   // its window length; the knots stay on the GPU until the next call.
   void operator()(const std::vector<std::vector<BrushVote>>& votes, const std::vector<double>& lengths,
                   const CoherenceParams& p);
-  // Read back, for tests: each run's knots (none where it has no claim, as the reference).
+  // The same from the votes `votes` left on the GPU, for the runs of `tables` (a run's
+  // length: s1 - s0), however many it lists: the votes bucketed by run there
+  // (shaders/strokes/brush_buckets.comp), each run's knots placed by its knot_bound.
+  void operator()(const BrushVotes& votes, const RunTables& tables, const CoherenceParams& p);
+  // Read back, for tests (while the tables live): each run's knots (none where it has no
+  // claim, as the reference).
   std::vector<BrushParameter> parameters() const;
 
  private:
-  Program fit_;
-  ScratchBuffer votes_, runs_, groups_, claims_, rows_, knots_, params_;
+  void reserve(size_t votes, double knots);
+  void fit();
+
+  Program fit_, count_, scatter_, bounds_, runs_step_;
+  ExclusiveScan scan_;
+  ScratchBuffer votes_, runs_, groups_, claims_, rows_, knots_, params_, counts_, fill_;
   size_t run_count_ = 0;
+  GpuCount listed_;  // the runs listed, where the tables' (else run_count_)
 };
 
 }  // namespace plumbago::gpu

@@ -25,6 +25,9 @@ class BrushVotes {
                   const RunTables& tables, const CoherenceParams& p);
   // Read back, for tests: the votes in the order of the samples that made one.
   std::vector<BrushVote> votes() const;
+  // One slot a sample (shaders/strokes/brush_votes.comp Vote): what the fit buckets by run.
+  const Buffer& buffer() const { return votes_.buffer; }
+  size_t slots() const { return sample_count_; }
 
  private:
   Program vote_;

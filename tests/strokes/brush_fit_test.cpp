@@ -14,6 +14,7 @@
 #include "common/scene/animation.hpp"
 #include "common/scene/scene.hpp"
 #include "gpu/strokes/brush_fit.hpp"
+#include "gpu/strokes/brush_votes.hpp"
 #include "parity/lines.hpp"
 #include "tests/support/test_scenes.hpp"
 
@@ -140,6 +141,47 @@ TEST_F(BrushFitParity, OrbitVotesMatchTheReference) {
     Tally t = compare(runs, lengths, {});
     std::printf("brush fit, %s orbit: %zu runs voted for, %zu knots in %zu runs, t within %.3g px\n", name, voted,
                 t.knots, t.runs, t.worst);
+  }
+}
+
+// The whole of a frame's coherence on the GPU but its brush samples: the last frame's samples
+// vote over the runs on the GPU (gpu/strokes/brush_votes.hpp), the votes are bucketed by run
+// there and fitted: each run's knots as coherent_parameters gives them.
+TEST_F(BrushFitParity, VotesLeftOnTheGpuFitAsTheReference) {
+  for (const char* name : {"torus_strokes.json", "snowman_strokes.json", "cup_strokes.json"}) {
+    Scene scene = load_scene(std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/" + name);
+    scene.animation = Animation{.kind = Animation::Kind::Orbit, .amount = -8.0, .frames = 3};
+    CoherenceParams p;
+    std::vector<BrushSample> previous;
+    gpu::BrushVotes votes;
+    gpu::BrushFit fit;
+    Tally t;
+    for (int frame = 0; frame < 3; ++frame) {
+      Scene at = scene_at_frame(scene, frame);
+      SceneLines found = scene_lines(at, "reference");
+      std::vector<BrushParameter> ref;
+      if (frame > 0) {
+        ref = coherent_parameters(previous, at.camera, found.lines, found.visibility, p);
+        gpu::UploadedRuns tables(found.lines, found.visibility);
+        votes(previous, at.camera, at.width, at.height, tables.tables(), p);
+        fit(votes, tables.tables(), p);
+        std::vector<BrushParameter> gpu = fit.parameters();
+        ASSERT_EQ(gpu.size(), ref.size()) << name;
+        for (size_t r = 0; r < ref.size(); ++r) {
+          ASSERT_EQ(gpu[r].size(), ref[r].size()) << name << " run " << r;
+          t.runs += ref[r].empty() ? 0 : 1, t.knots += ref[r].size();
+          for (size_t k = 0; k < ref[r].size(); ++k) {
+            EXPECT_EQ(gpu[r][k].x, ref[r][k].x) << name << " run " << r << " knot " << k;
+            EXPECT_NEAR(gpu[r][k].y, ref[r][k].y, kKnotTolerance) << name << " run " << r << " knot " << k;
+            t.worst = std::max(t.worst, std::abs(gpu[r][k].y - ref[r][k].y));
+          }
+        }
+      }
+      previous = brush_samples(found.lines, found.visibility, ref, p);
+    }
+    EXPECT_GT(t.runs, 2u) << name;
+    std::printf("brush fit of the GPU's votes, %s orbit: %zu knots in %zu runs, t within %.3g px\n", name, t.knots,
+                t.runs, t.worst);
   }
 }
 
