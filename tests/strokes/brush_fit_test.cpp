@@ -130,9 +130,8 @@ void orbit_votes(const Scene& scene, std::vector<std::vector<BrushVote>>& runs, 
 }
 
 TEST_F(BrushFitParity, OrbitVotesMatchTheReference) {
-  for (const char* name : {"torus_strokes.json", "snowman_strokes.json", "cup_strokes.json"}) {
-    Scene scene = load_scene(std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/" + name);
-    scene.animation = Animation{.kind = Animation::Kind::Orbit, .amount = -8.0, .frames = 3};
+  for (const char* name : testing::kOrbitScenes) {
+    Scene scene = testing::orbit_scene(name, 3);
     std::vector<std::vector<BrushVote>> runs;
     std::vector<double> lengths;
     orbit_votes(scene, runs, lengths);
@@ -148,9 +147,8 @@ TEST_F(BrushFitParity, OrbitVotesMatchTheReference) {
 // vote over the runs on the GPU (gpu/strokes/brush_votes.hpp), the votes are bucketed by run
 // there and fitted: each run's knots as coherent_parameters gives them.
 TEST_F(BrushFitParity, VotesLeftOnTheGpuFitAsTheReference) {
-  for (const char* name : {"torus_strokes.json", "snowman_strokes.json", "cup_strokes.json"}) {
-    Scene scene = load_scene(std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/" + name);
-    scene.animation = Animation{.kind = Animation::Kind::Orbit, .amount = -8.0, .frames = 3};
+  for (const char* name : testing::kOrbitScenes) {
+    Scene scene = testing::orbit_scene(name, 3);
     CoherenceParams p;
     std::vector<BrushSample> previous;
     gpu::BrushVotes votes;

@@ -21,9 +21,8 @@ namespace {
 class BrushSamplesParity : public testing::GlTest {};
 
 TEST_F(BrushSamplesParity, SilhouetteRunsSampleAsTheReference) {
-  for (const char* name : {"torus_strokes.json", "snowman_strokes.json", "cup_strokes.json"}) {
-    Scene scene = load_scene(std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/" + name);
-    scene.animation = Animation{.kind = Animation::Kind::Orbit, .amount = -8.0, .frames = 2};
+  for (const char* name : testing::kOrbitScenes) {
+    Scene scene = testing::orbit_scene(name, 2);
     CoherenceParams p;
     std::vector<BrushSample> previous;
     size_t compared = 0;

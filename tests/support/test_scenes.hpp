@@ -9,6 +9,7 @@
 #include "common/core/params.hpp"
 #include "common/mesh/mesh.hpp"
 #include "common/pencil/distortion.hpp"
+#include "common/scene/animation.hpp"
 #include "common/scene/scene.hpp"
 #include "gpu/gl/context.hpp"
 
@@ -73,6 +74,15 @@ inline Scene square_and_torus(const std::string& background_pairs) {
     "params": {"edge.background_pairs": ")" +
                      background_pairs + R"("}})";
   return parse_scene(json, "test:skipped", ".");
+}
+
+// The procedural stroke scenes whose silhouettes the coherence tests follow (Kalnins et al.
+// 2003), and a scene of scenes/ on an orbit of `frames` frames 4 degrees apart.
+inline const char* const kOrbitScenes[] = {"torus_strokes.json", "snowman_strokes.json", "cup_strokes.json"};
+inline Scene orbit_scene(const std::string& name, int frames) {
+  Scene s = load_scene(std::string(PLUMBAGO_SOURCE_DIR) + "/scenes/" + name);
+  s.animation = Animation{.kind = Animation::Kind::Orbit, .amount = -4.0 * (frames - 1), .frames = frames};
+  return s;
 }
 
 // Multiple-contour parameters without the contour texture: each copy lays down alpha d'.
