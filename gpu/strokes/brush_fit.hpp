@@ -33,6 +33,11 @@ class BrushFit {
   // Read back, for tests (while the tables live): each run's knots (none where it has no
   // claim, as the reference).
   std::vector<BrushParameter> parameters() const;
+  // On the GPU (shaders/strokes/brush_fit.comp): per run its record (its knots' first and
+  // count), the knots, and how many knots the buffer holds.
+  const Buffer& runs_buffer() const { return runs_.buffer; }
+  const Buffer& knots_buffer() const { return knots_.buffer; }
+  double knot_capacity() const { return double(knots_.bytes / sizeof(glm::dvec2)); }
 
  private:
   void reserve(size_t votes, double knots);

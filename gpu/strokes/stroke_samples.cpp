@@ -155,23 +155,29 @@ StrokeSamples::StrokeSamples()
     : inputs_args_(step("run_inputs", "STEP_ARGS")),
       inputs_count_(step("run_inputs", "STEP_COUNT")),
       inputs_write_(step("run_inputs", "STEP_WRITE")),
+      knots_count_(step("run_knots", "STEP_COUNT")),
+      knots_copy_(step("run_knots", "STEP_COPY")),
       count_(step("stroke_samples", "STEP_COUNT")),
       write_(step("stroke_samples", "STEP_WRITE")),
       args_(step("stroke_samples", "STEP_ARGS")) {}
 
-void StrokeSamples::operator()(const std::vector<StyledRun>& runs) { run(Inputs(runs), nullptr, nullptr); }
+void StrokeSamples::operator()(const std::vector<StyledRun>& runs) { run(Inputs(runs), nullptr, nullptr, nullptr); }
 
-void StrokeSamples::operator()(const RunTables& tables, const RunStyleTables& styles, uint32_t seed) {
+void StrokeSamples::operator()(const RunTables& tables, const RunStyleTables& styles, uint32_t seed,
+                               const BrushFit* brushes) {
   for (const Program* p : {&inputs_args_, &inputs_count_, &inputs_write_}) {
     glProgramUniform1ui(p->id(), p->uniform("seed"), seed);
     glProgramUniform1ui(p->id(), p->uniform("own_offsets"), styles.own_offsets());
     glProgramUniform1ui(p->id(), p->uniform("listed_at"), tables.listed.at);
   }
   if (tables.sized) sized_ = Inputs(tables, styles);
-  run(Inputs(sized_), &tables, &styles);
+  Inputs in(sized_);
+  if (brushes) in.point_bound += brushes->knot_capacity();  // each run's knots after its points
+  run(in, &tables, &styles, brushes);
 }
 
-void StrokeSamples::run(const Inputs& in, const RunTables* tables, const RunStyleTables* styles) {
+void StrokeSamples::run(const Inputs& in, const RunTables* tables, const RunStyleTables* styles,
+                        const BrushFit* brushes) {
   runs_ = uint32_t(in.runs);
   if (runs_ == 0) return;
   check_memory(runs_, in.bound, in.point_bound);
@@ -204,7 +210,7 @@ void StrokeSamples::run(const Inputs& in, const RunTables* tables, const RunStyl
                           &draw_.buffer,    &bases_.buffer,    &run_args_};
     for (GLuint k = 0; k < 11; ++k) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k, at[k]->id());
   };
-  if (tables) make_inputs(*tables, *styles);
+  if (tables) make_inputs(*tables, *styles, brushes);
   bind_all();
   over_runs(count_);
   scan_(counts_, size_t(runs_) + 1, run_args_, 3, 1);  // over the runs listed
@@ -217,7 +223,7 @@ void StrokeSamples::run(const Inputs& in, const RunTables* tables, const RunStyl
 
 // 0. Each run's polyline and style (run_inputs.comp): its points and the offsets it makes
 // counted, placed by prefix sums, written into points_, offsets_ and runs_in_.
-void StrokeSamples::make_inputs(const RunTables& tables, const RunStyleTables& styles) {
+void StrokeSamples::make_inputs(const RunTables& tables, const RunStyleTables& styles, const BrushFit* brushes) {
   styles.copy_offsets(offsets_);
   point_counts_.reserve((size_t(runs_) + 1) * sizeof(uint32_t));
   offset_counts_.reserve((size_t(runs_) + 1) * sizeof(uint32_t));
@@ -234,10 +240,20 @@ void StrokeSamples::make_inputs(const RunTables& tables, const RunStyleTables& s
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
   over_runs(inputs_count_);
+  if (brushes) over_knots(knots_count_, *brushes);
   scan_(point_counts_, size_t(runs_) + 1, run_args_, 3, 1);
   scan_(offset_counts_, size_t(runs_) + 1, run_args_, 3, 1);
   bind_all();
   over_runs(inputs_write_);
+  if (brushes) over_knots(knots_copy_, *brushes);
+}
+
+// A step of run_knots.comp over the runs listed: the fit's knots into the runs' inputs.
+void StrokeSamples::over_knots(const Program& step, const BrushFit& brushes) const {
+  const Buffer* at[] = {&brushes.runs_buffer(), &brushes.knots_buffer(), &point_counts_.buffer,
+                        &runs_in_.buffer,       &points_.buffer,         &run_args_};
+  for (GLuint k = 0; k < 6; ++k) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k, at[k]->id());
+  over_runs(step);
 }
 
 // A step over the runs listed, dispatched as run_args_ says.

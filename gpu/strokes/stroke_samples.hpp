@@ -5,7 +5,8 @@
 // window polyline and its style, with its offsets stamped or synthesized, from the scene's
 // style tables (gpu/strokes/run_styles.hpp); tests may give the polylines and styles instead,
 // and with them a brush parameter per run (Kalnins et al. 2003, common/strokes/base_stroke.hpp
-// 4., 6.: knots after the run's points), which the frame's own runs do not have yet.
+// 4., 6.: knots after the run's points); the frame's own runs take theirs from the GPU's fit
+// (gpu/strokes/brush_fit.hpp, shaders/strokes/run_knots.comp) where one is given.
 // The GPU then keeps each run's distinct points, counts its samples, places them by a prefix
 // sum and writes them, with each run's record, where shaders/strokes/common_ribbon.glsl reads
 // them, and the indirect draw of their ribbons. Every step goes over the runs the GPU
@@ -21,6 +22,7 @@
 #include "common/strokes/stroke.hpp"
 #include "gpu/gl/program.hpp"
 #include "gpu/gl/scan.hpp"
+#include "gpu/strokes/brush_fit.hpp"
 #include "gpu/strokes/run_styles.hpp"
 #include "gpu/strokes/stroke.hpp"
 #include "gpu/strokes/window_paths.hpp"
@@ -45,7 +47,10 @@ class StrokeSamples {
   // polylines and styles made on the GPU (`styles`; `seed`, the scene's), the buffers sized
   // from the paths' run bounds, or (tables not sized: RunTables::sized) as the last sized call
   // sized them.
-  void operator()(const RunTables& tables, const RunStyleTables& styles, uint32_t seed);
+  // With `brushes`, each run takes the brush parameter the GPU fitted for it (Kalnins et al.
+  // 2003, gpu/strokes/brush_fit.hpp; shaders/strokes/run_knots.comp), else t = s.
+  void operator()(const RunTables& tables, const RunStyleTables& styles, uint32_t seed,
+                  const BrushFit* brushes = nullptr);
   // The samples and runs to SSBO bindings 0 and 1, as common_ribbon.glsl reads them.
   void bind() const;
   // The ribbons' draw (DrawArraysIndirectCommand, GL_TRIANGLES); none without runs.
@@ -63,11 +68,12 @@ class StrokeSamples {
     double bound = 0, point_bound = 0;
   };
   struct Inputs;
-  void run(const Inputs& in, const RunTables* tables, const RunStyleTables* styles);
-  void make_inputs(const RunTables& tables, const RunStyleTables& styles);
+  void run(const Inputs& in, const RunTables* tables, const RunStyleTables* styles, const BrushFit* brushes);
+  void make_inputs(const RunTables& tables, const RunStyleTables& styles, const BrushFit* brushes);
+  void over_knots(const Program& step, const BrushFit& brushes) const;
   void over_runs(const Program& step) const;
 
-  Program inputs_args_, inputs_count_, inputs_write_, count_, write_, args_;
+  Program inputs_args_, inputs_count_, inputs_write_, knots_count_, knots_copy_, count_, write_, args_;
   ExclusiveScan scan_;
   // Kept across frames: the steps write every row of the runs listed, and the prefix sums
   // read only the rows before each.

@@ -21,6 +21,8 @@
 
 #include "common/scene/animation.hpp"
 #include "common/scene/scene.hpp"
+#include "gpu/strokes/brush_fit.hpp"
+#include "gpu/strokes/brush_votes.hpp"
 #include "gpu/strokes/stroke_samples.hpp"
 #include "parity/lines.hpp"
 #include "tests/support/stroke_cases.hpp"
@@ -168,6 +170,46 @@ std::vector<StyledRun> hard_cases() {
 }
 
 class StrokeSamplesParity : public testing::GlTest {};
+
+// Coherent silhouettes (Kalnins et al. 2003) all on the GPU: along an orbit, the last frame's
+// brush samples vote over this frame's runs, the votes are fitted, and the stroke samples
+// take each run's knots from the fit (shaders/strokes/run_knots.comp): sample by sample as
+// the reference draws the runs with the parameters coherent_parameters gives them.
+TEST_F(StrokeSamplesParity, CoherentParametersFittedOnTheGpuDrawAsTheReference) {
+  for (const char* name : testing::kOrbitScenes) {
+    Scene scene = testing::orbit_scene(name, 3);
+    CoherenceParams p;
+    std::vector<BrushSample> previous;
+    gpu::BrushVotes votes;
+    gpu::BrushFit fit;
+    Tally t;
+    size_t brushed = 0;
+    for (int frame = 0; frame < 3; ++frame) {
+      Scene at = scene_at_frame(scene, frame);
+      SceneLines found = scene_lines(at, "reference");
+      std::vector<BrushParameter> brushes;
+      if (frame > 0) {
+        brushes = coherent_parameters(previous, at.camera, found.lines, found.visibility, p);
+        std::vector<StyledRun> runs = styled_runs(found.lines, found.visibility, at.strokes, at.seed);
+        for (size_t r = 0; r < runs.size(); ++r) runs[r].run.brush = brushes.at(r), brushed += brushes[r].size() >= 2;
+        gpu::UploadedRuns tables(found.lines, found.visibility);
+        gpu::RunStyleTables styles(at.strokes, found.lines.decal_styles);
+        votes(previous, at.camera, at.width, at.height, tables.tables(), p);
+        fit(votes, tables.tables(), p);
+        gpu::StrokeSamples gpu_samples;
+        gpu_samples(tables.tables(), styles, at.seed, &fit);
+        Tally frame_tally = compare(runs, gpu_samples);
+        t.samples += frame_tally.samples, t.runs += frame_tally.runs, t.differing += frame_tally.differing;
+      }
+      previous = brush_samples(found.lines, found.visibility, brushes, p);
+    }
+    EXPECT_GT(brushed, 2u) << name;
+    std::printf(
+        "stroke samples, %s, coherent: %zu samples in %zu runs (%zu with a fitted parameter), %zu not "
+        "bit-equal (within one float ulp)\n",
+        name, t.samples, t.runs, brushed, t.differing);
+  }
+}
 
 TEST_F(StrokeSamplesParity, HardCasesMatchTheReference) {
   Tally t = compare(hard_cases());
