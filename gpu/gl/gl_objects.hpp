@@ -97,6 +97,11 @@ struct ScratchBuffer {
   GLuint id() const { return buffer.id(); }
   operator const Buffer&() const { return buffer; }
 };
+// A scratch buffer holding `records`, for one use.
+template <class T>
+ScratchBuffer scratch_of(const std::vector<T>& records) {
+  return {make_buffer(records.data(), records.size() * sizeof(T)), records.size() * sizeof(T)};
+}
 // Sets every uint32 of `buffer` to 0, on the GPU.
 void clear_buffer(const Buffer& buffer);
 // Copies `bytes` from the start of `from` into `to` from byte `offset`, on the GPU.

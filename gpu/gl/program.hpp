@@ -137,6 +137,11 @@ void set_lights(const Program& program, const std::vector<Light>& view_lights);
 // gets each chunk's first invocation.
 void dispatch_in_chunks(const Program& program, size_t count, const char* first);
 
+// Dispatches a compute program whose work groups are 64 wide and whose invocations each go
+// over every (groups x 64)th of `count` items: ceil(count / 64) groups, at least 1 and at
+// most 65535; then a barrier, so that what follows reads what it wrote to storage buffers.
+void dispatch_strided(const Program& program, size_t count);
+
 // Reads shaders/<file> (PLUMBAGO_SHADER_DIR, overridable by the environment variable of
 // the same name), expanding includes.
 std::string shader_source(const std::string& file);

@@ -38,11 +38,6 @@ static_assert(sizeof(VoteRecord) == 24 && sizeof(RunRecord) == 24 && sizeof(Grou
                   sizeof(ClaimRecord) == 40 && sizeof(RowRecord) == 32 && sizeof(ParamsRecord) == 48,
               "std430 layouts of brush_fit.comp");
 
-template <class T>
-void upload(ScratchBuffer& to, const std::vector<T>& records) {
-  to = {make_buffer(records.data(), records.size() * sizeof(T)), records.size() * sizeof(T)};
-}
-
 }  // namespace
 
 double knot_bound(double length_px, size_t votes, const CoherenceParams& p) {
@@ -81,9 +76,8 @@ void BrushFit::operator()(const std::vector<std::vector<BrushVote>>& votes, cons
     knots += votes[r].empty() ? 0.0 : knot_bound(lengths[r], votes[r].size(), p);
   }
   reserve(vote_records.size(), knots);
-  upload(votes_, vote_records);
-  upload(runs_, runs);
-  upload(params_, std::vector<ParamsRecord>{params_record(p, run_count_)});
+  votes_ = scratch_of(vote_records), runs_ = scratch_of(runs);
+  params_ = scratch_of(std::vector<ParamsRecord>{params_record(p, run_count_)});
   fit();
 }
 
@@ -95,7 +89,7 @@ void BrushFit::operator()(const BrushVotes& votes, const RunTables& tables, cons
   reserve(votes.slots(), std::floor(length / p.knot_px) + 4.0 * double(votes.slots()) + 1);
   votes_.reserve(std::max<size_t>(votes.slots(), 1) * sizeof(VoteRecord));
   runs_.reserve(run_count_ * sizeof(RunRecord));
-  upload(params_, std::vector<ParamsRecord>{params_record(p, 0)});
+  params_ = scratch_of(std::vector<ParamsRecord>{params_record(p, 0)});
   counts_.reserve((run_count_ + 1) * sizeof(uint32_t)), fill_.reserve((run_count_ + 1) * sizeof(uint32_t));
   clear_buffer(counts_), clear_buffer(fill_);
   for (const Program* s : {&count_, &scatter_, &bounds_, &runs_step_}) {
@@ -106,9 +100,7 @@ void BrushFit::operator()(const BrushVotes& votes, const RunTables& tables, cons
     const Buffer* bound[] = {&votes.buffer(), &counts_.buffer, &fill_.buffer,        &votes_.buffer,
                              &runs_.buffer,   tables.runs,     tables.listed.buffer, &params_.buffer};
     for (GLuint b = 0; b < 8; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
-    glUseProgram(s.id());
-    glDispatchCompute(GLuint(std::clamp<size_t>((over + 63) / 64, 1, 65535)), 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    dispatch_strided(s, over);
   };
   step(count_, votes.slots());
   scan_(counts_, run_count_ + 1, *tables.listed.buffer, tables.listed.at, 1);
@@ -133,9 +125,7 @@ void BrushFit::reserve(size_t votes, double knots) {
 void BrushFit::fit() {
   const ScratchBuffer* bound[] = {&votes_, &runs_, &groups_, &claims_, &rows_, &knots_, &params_};
   for (GLuint b = 0; b < 7; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
-  glUseProgram(fit_.id());
-  glDispatchCompute(GLuint(std::clamp<size_t>((run_count_ + 63) / 64, 1, 65535)), 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  dispatch_strided(fit_, run_count_);
 }
 
 std::vector<BrushParameter> BrushFit::parameters() const {

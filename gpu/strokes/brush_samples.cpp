@@ -31,11 +31,6 @@ Program step(const char* name) {
   return Program::compute("strokes/brush_samples.comp", std::string("#define ") + name + "\n");
 }
 
-template <class T>
-void upload(ScratchBuffer& to, const std::vector<T>& records) {
-  to = {make_buffer(records.data(), records.size() * sizeof(T)), records.size() * sizeof(T)};
-}
-
 }  // namespace
 
 BrushSamples::BrushSamples() : count_(step("STEP_COUNT")), write_(step("STEP_WRITE")) {}
@@ -55,12 +50,12 @@ void BrushSamples::operator()(const RunTables& tables, const Camera& camera, int
     knots.insert(knots.end(), k.begin(), k.end());
   }
   run_knots.resize(std::max<size_t>(runs_, 1), RunKnots{0, 0});
-  upload(run_knots_, run_knots), upload(knots_, knots);
+  run_knots_ = scratch_of(run_knots), knots_ = scratch_of(knots);
   WindowProjection project(camera, width, height);
   glm::dmat4 projection = glm::dmat4(camera.projection(float(width) / float(height)));
   const FrameRecord frame{
       project.clip, glm::inverse(project.clip), project.view, projection, double(width), double(height), p.sample_px};
-  frame_ = {make_buffer(&frame, sizeof frame), sizeof frame};
+  frame_ = scratch_of(std::vector<FrameRecord>{frame});
   counts_.reserve((size_t(runs_) + 1) * sizeof(uint32_t)), samples_.reserve(capacity_ * sizeof(SampleRecord));
   for (const Program* s : {&count_, &write_}) {
     glProgramUniform1ui(s->id(), s->uniform("listed_at"), tables.listed.at);
@@ -72,9 +67,7 @@ void BrushSamples::operator()(const RunTables& tables, const Camera& camera, int
                                 tables.listed.buffer, &counts_.buffer,  &run_knots_.buffer,
                                 &knots_.buffer,       &samples_.buffer, &frame_.buffer};
     for (GLuint b = 0; b < 9; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound_at[b]->id());
-    glUseProgram(s.id());
-    glDispatchCompute(GLuint(std::clamp<size_t>((runs_ + 63) / 64, 1, 65535)), 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    dispatch_strided(s, runs_);
   };
   if (runs_ == 0) return;
   over_runs(count_);

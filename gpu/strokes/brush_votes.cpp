@@ -40,20 +40,17 @@ void BrushVotes::operator()(const std::vector<BrushSample>& previous, const Came
                       double(previous.size()) * double(sizeof(SampleRecord) + sizeof(VoteRecord)));
   std::vector<SampleRecord> samples;
   for (const BrushSample& b : previous) samples.push_back({b.world.x, b.world.y, b.world.z, b.t, b.stroke});
-  samples_ = {make_buffer(samples.data(), samples.size() * sizeof(SampleRecord)),
-              samples.size() * sizeof(SampleRecord)};
+  samples_ = scratch_of(samples);
   votes_.reserve(samples.size() * sizeof(VoteRecord));
   WindowProjection project(camera, width, height);
   const FrameRecord frame{project.clip, project.view, double(width), double(height), p.search_px, p.depth_tolerance};
-  frame_ = {make_buffer(&frame, sizeof frame), sizeof frame};
+  frame_ = scratch_of(std::vector<FrameRecord>{frame});
   glProgramUniform1ui(vote_.id(), vote_.uniform("sample_count"), GLuint(samples.size()));
   glProgramUniform1ui(vote_.id(), vote_.uniform("listed_at"), tables.listed.at);
   const Buffer* bound[] = {tables.paths,     tables.points,  tables.runs,   tables.listed.buffer,
                            &samples_.buffer, &votes_.buffer, &frame_.buffer};
   for (GLuint b = 0; b < 7; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
-  glUseProgram(vote_.id());
-  glDispatchCompute(GLuint(std::clamp<size_t>((samples.size() + 63) / 64, 1, 65535)), 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  dispatch_strided(vote_, samples.size());
 }
 
 std::vector<BrushVote> BrushVotes::votes() const {
