@@ -1,6 +1,9 @@
 // The frames of a scene's camera path (Scene::animation) on one backend, for `render -o DIR`,
 // `bench` and the Python module (python/). The GPU backend makes one renderer, on the first
-// frame asked for, and moves it along the path (gpu::Renderer::camera_moved).
+// frame asked for, and moves it along the path (gpu::Renderer::camera_moved). Where a frame
+// reads the one before it (coherent silhouettes, common/strokes/brush_parameters.hpp), the
+// reference's carry goes from frame to frame, and the frames before the one asked for that
+// were not drawn just before it are drawn first: frame k is the same asked for alone or in order.
 #pragma once
 
 #include <memory>
@@ -30,11 +33,17 @@ class PathFrames {
  private:
   // The GPU renderer at `frame`, made on first use.
   gpu::Renderer& gpu_at(int frame);
+  // Draws the frames before `frame` that it follows and that were not drawn last, where the
+  // scene's frames read the one before.
+  void draw_before(int frame);
 
   const Scene& scene_;
   std::string backend_;
   Scene at_;  // the GPU renderer's scene, at the frame it last drew
   std::unique_ptr<gpu::Renderer> renderer_;
+  bool chained_;    // frames read the one before
+  int drawn_ = -1;  // the frame drawn last
+  Carry carry_;     // the reference's, from the frame drawn last
 };
 
 }  // namespace plumbago

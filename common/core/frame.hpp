@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "common/core/handle.hpp"
 #include "common/util/image.hpp"
 
 namespace plumbago {
@@ -50,8 +51,21 @@ std::shared_ptr<const T> kept(const T* value) {
   return value ? std::make_shared<const T>(*value) : nullptr;
 }
 
+// What a reference frame of a camera path hands the next one: its stages' CPU data (a
+// stage reads what it made itself the frame before: FrameData::before), and the path frame it
+// came from. A GPU renderer keeps its own on the GPU, across its frames.
+struct Carry {
+  int frame = -1;  // none
+  DataTable data;
+  // The data, where the frame `frame` follows the one it came from; else null.
+  const DataTable* before(int next) const { return frame >= 0 && frame + 1 == next ? &data : nullptr; }
+};
+
 struct FrameOptions {
   bool keep_buffers = false;  // fill Frame::buffers (for --dump-stages and compare)
+  // The reference: the frame reads the carry where it follows the frame it came from, then
+  // holds this frame's (PathFrames keeps one along a path). Null: none.
+  Carry* carry = nullptr;
 };
 
 // The middle value of timings (the upper one of an even count); `ms` must not be empty.

@@ -37,9 +37,18 @@ class FrameData {
     throw std::logic_error(std::string("frame: no stage made '") + slot.name + "'");
   }
 
+  // What a running stage made of its own `slot` in the path's previous frame, where this
+  // frame follows it (Carry); null otherwise.
+  template <class T>
+  const T* before(Slot<T> slot) const {
+    checked(slot.name);
+    return previous ? previous->find(slot) : nullptr;
+  }
+
   Preprocessed pre;
-  DataTable data;                    // the frame's CPU data
-  std::vector<std::string> running;  // the stages running now (none: the pipeline or parity)
+  DataTable data;                       // the frame's CPU data
+  const DataTable* previous = nullptr;  // the previous frame's (Carry::before)
+  std::vector<std::string> running;     // the stages running now (none: the pipeline or parity)
 
  protected:
   // A read or write of a running stage must be one its descriptor declares.

@@ -23,6 +23,7 @@
 #include "common/sketchy/sketchy_maps.hpp"
 #include "common/sketchy/sketchy_noise.hpp"
 #include "common/strokes/basecoat.hpp"
+#include "common/strokes/brush_parameters.hpp"
 #include "common/strokes/crease_points.hpp"
 #include "common/strokes/id_image.hpp"
 #include "common/strokes/line_meshes.hpp"
@@ -68,6 +69,7 @@ using AllStages = TypeList<
     CreasePointsStage,
     IdImageStage,
     VisibilityStage,
+    BrushParametersStage,
     StrokeStage>;
 // clang-format on
 

@@ -22,6 +22,7 @@
 
 #include "common/core/stage.hpp"
 #include "common/strokes/base_stroke.hpp"
+#include "common/strokes/brush_parameters.hpp"
 #include "common/strokes/offset_synthesis.hpp"
 #include "common/strokes/stroke_paper.hpp"
 #include "common/strokes/visibility.hpp"
@@ -137,7 +138,12 @@ struct StrokeStage {
         .kind = StageKind::Frame,
         .doc = "stylized strokes of the visible feature lines (Kalnins et al. 2002, §4.1)",
         .params = {"stroke_paper"},
-        .inputs = {{.handle = kWindowLines}, {.handle = kVisibleRuns}, {.handle = kPage}, {.handle = kPaperHeight}},
+        .inputs = {{.handle = kWindowLines},
+                   {.handle = kVisibleRuns},
+                   {.handle = kPage},
+                   {.handle = kPaperHeight},
+                   // Made only in a frame that runs the stage (parity feeds none: both draw t = s).
+                   {.handle = kBrushParameters, .used = when::strokes_coherent, .fed_in_parity = false}},
         .outputs = {{.handle = kStrokeColor,
                      .channels = 3,
                      .texel = Texel::Unorm8,

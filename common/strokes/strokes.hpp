@@ -42,7 +42,7 @@ namespace plumbago {
 struct StrokesParams {
   static constexpr const char* stage = "strokes";
   float crease_deg;
-  bool silhouette_normalized, keep_back_facing, crease_under_silhouettes;
+  bool silhouette_normalized, keep_back_facing, crease_under_silhouettes, coherent;
   float id_crease_px, id_silhouette_px, id_depth_bias, id_silhouette_lift, id_crease_depth_bias, vis_step_px;
   template <class V>
   void visit(V& v) {
@@ -75,6 +75,9 @@ struct StrokesParams {
     v.real(vis_step_px, "vis_step_px", 2.0, 0.25, 64.0,
            "visibility samples along a path, pixels apart (Kalnins et al. "
            "2002, §4.6)");
+    v.boolean(coherent, "coherent", false,
+              "silhouette brush parameters carried over the surface from each frame of a camera path to the next "
+              "(Kalnins et al. 2003; false: restarted at each visible run, Kalnins et al. 2002, §4.1)");
   }
 };
 

@@ -16,10 +16,6 @@ struct VoteRecord {
   double s, t;
   uint32_t stroke, group = 0;
 };
-struct RunRecord {
-  double length;
-  uint32_t first_vote, vote_count, first_knot, knot_count = 0;
-};
 struct GroupRecord {
   uint32_t stroke, first, last, size, order, pad;
 };
@@ -34,7 +30,7 @@ struct ParamsRecord {
   double sample_px, jump_px, knot_px, scale_weight, distort_weight;
   uint32_t claim_votes, run_count;
 };
-static_assert(sizeof(VoteRecord) == 24 && sizeof(RunRecord) == 24 && sizeof(GroupRecord) == 24 &&
+static_assert(sizeof(VoteRecord) == 24 && sizeof(FitRunRecord) == 24 && sizeof(GroupRecord) == 24 &&
                   sizeof(ClaimRecord) == 40 && sizeof(RowRecord) == 32 && sizeof(ParamsRecord) == 48,
               "std430 layouts of brush_fit.comp");
 
@@ -68,7 +64,7 @@ void BrushFit::operator()(const std::vector<std::vector<BrushVote>>& votes, cons
                           const CoherenceParams& p) {
   run_count_ = votes.size(), listed_ = {};
   std::vector<VoteRecord> vote_records;
-  std::vector<RunRecord> runs;
+  std::vector<FitRunRecord> runs;
   double knots = 0;
   for (size_t r = 0; r < votes.size(); ++r) {
     runs.push_back({lengths.at(r), uint32_t(vote_records.size()), uint32_t(votes[r].size()), uint32_t(knots)});
@@ -88,7 +84,7 @@ void BrushFit::operator()(const BrushVotes& votes, const RunTables& tables, cons
   for (const RunBound& b : tables.bounds) length += b.length + 2 * b.runs * p.knot_px;
   reserve(votes.slots(), std::floor(length / p.knot_px) + 4.0 * double(votes.slots()) + 1);
   votes_.reserve(std::max<size_t>(votes.slots(), 1) * sizeof(VoteRecord));
-  runs_.reserve(run_count_ * sizeof(RunRecord));
+  runs_.reserve(run_count_ * sizeof(FitRunRecord));
   params_ = scratch_of(std::vector<ParamsRecord>{params_record(p, 0)});
   counts_.reserve((run_count_ + 1) * sizeof(uint32_t)), fill_.reserve((run_count_ + 1) * sizeof(uint32_t));
   clear_buffer(counts_), clear_buffer(fill_);
@@ -129,11 +125,11 @@ void BrushFit::fit() {
 }
 
 std::vector<BrushParameter> BrushFit::parameters() const {
-  std::vector<RunRecord> runs(listed_.buffer ? listed_.read() : run_count_);
+  std::vector<FitRunRecord> runs(listed_.buffer ? listed_.read() : run_count_);
   if (runs.empty()) return {};
-  read_buffer(runs_, runs.data(), runs.size() * sizeof(RunRecord));
+  read_buffer(runs_, runs.data(), runs.size() * sizeof(FitRunRecord));
   std::vector<BrushParameter> out;
-  for (const RunRecord& r : runs) {
+  for (const FitRunRecord& r : runs) {
     out.emplace_back(r.knot_count);
     if (r.knot_count > 0)
       read_buffer(knots_, out.back().data(), r.knot_count * sizeof(glm::dvec2), r.first_knot * sizeof(glm::dvec2));

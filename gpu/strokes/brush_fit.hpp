@@ -2,7 +2,7 @@
 // common/strokes/coherent_silhouettes.hpp (groups, sections, and each section's t fitted on
 // its knots), in double, one invocation per run (shaders/strokes/brush_fit.comp), the twin of
 // fit_brush_parameter: from votes given per run, or from those gpu/strokes/brush_votes.hpp
-// left on the GPU. The stage that puts samples, votes and fit in a frame is not built yet.
+// left on the GPU (gpu/strokes/brush_parameters.hpp puts samples, votes and fit in a frame).
 #pragma once
 
 #include <vector>
@@ -19,6 +19,13 @@ namespace plumbago::gpu {
 // at most two sections a vote.
 double knot_bound(double length_px, size_t votes, const CoherenceParams& p);
 
+// A run's record in BrushFit::runs_buffer() (std430, shaders/strokes/fit_run.glsl FitRun):
+// its window length, its votes, and its knots in knots_buffer().
+struct FitRunRecord {
+  double length;
+  uint32_t first_vote, vote_count, first_knot, knot_count = 0;
+};
+
 class BrushFit {
  public:
   BrushFit();
@@ -33,8 +40,8 @@ class BrushFit {
   // Read back, for tests (while the tables live): each run's knots (none where it has no
   // claim, as the reference).
   std::vector<BrushParameter> parameters() const;
-  // On the GPU (shaders/strokes/brush_fit.comp): per run its record (its knots' first and
-  // count), the knots, and how many knots the buffer holds.
+  // On the GPU (shaders/strokes/brush_fit.comp): per run its FitRunRecord, the knots, and
+  // how many knots the buffer holds.
   const Buffer& runs_buffer() const { return runs_.buffer; }
   const Buffer& knots_buffer() const { return knots_.buffer; }
   double knot_capacity() const { return double(knots_.bytes / sizeof(glm::dvec2)); }

@@ -14,6 +14,8 @@
 
 namespace plumbago::gpu {
 
+class BrushFit;  // gpu/strokes/brush_fit.hpp
+
 class BrushSamples {
  public:
   BrushSamples();
@@ -22,15 +24,28 @@ class BrushSamples {
   // stay on the GPU until the next call, as many as the runs' bounds hold.
   void operator()(const RunTables& tables, const Camera& camera, int width, int height,
                   const std::vector<BrushParameter>& parameters, const CoherenceParams& p);
-  // Read back, for tests, while the tables live: the samples, in the order of their runs.
+  // The same, run i parameterized by the GPU's fit for the same tables (null: t = s): nothing
+  // goes through the CPU but the tables' bounds.
+  void operator()(const RunTables& tables, const Camera& camera, int width, int height, const BrushFit* fit,
+                  const CoherenceParams& p);
+  // Read back, for tests: the samples, in the order of their runs.
   std::vector<BrushSample> samples() const;
+  // On the GPU (shaders/strokes/brush_samples.comp Sample), what the next frame's votes read
+  // (gpu/strokes/brush_votes.hpp): the samples, how many were written (one uint), and how
+  // many the buffer holds.
+  const Buffer& buffer() const { return samples_.buffer; }
+  const Buffer& total() const { return total_.buffer; }
+  uint32_t capacity() const { return capacity_; }
 
  private:
+  // Samples every run of `tables`, its knots where `fit_runs` is given.
+  void sample(const RunTables& tables, const Camera& camera, int width, int height, const Buffer* fit_runs,
+              const Buffer& knots, const CoherenceParams& p);
+
   Program count_, write_;
   ExclusiveScan scan_;
-  ScratchBuffer counts_, run_knots_, knots_, samples_, frame_;
-  uint32_t capacity_ = 0, runs_ = 0;
-  GpuCount listed_;  // the runs listed: the tables' (tests read it back)
+  ScratchBuffer counts_, fit_runs_, knots_, samples_, frame_, total_;
+  uint32_t capacity_ = 0;
 };
 
 }  // namespace plumbago::gpu

@@ -6,6 +6,7 @@
 
 #include "common/strokes/strokes.hpp"
 #include "common/util/memory_budget.hpp"
+#include "gpu/strokes/brush_samples.hpp"
 
 namespace plumbago::gpu {
 
@@ -34,27 +35,38 @@ BrushVotes::BrushVotes() : vote_(Program::compute("strokes/brush_votes.comp")) {
 
 void BrushVotes::operator()(const std::vector<BrushSample>& previous, const Camera& camera, int width, int height,
                             const RunTables& tables, const CoherenceParams& p) {
-  sample_count_ = previous.size();
-  if (previous.empty()) return;
-  check_memory_budget("the brush votes of " + std::to_string(previous.size()) + " samples on the GPU",
-                      double(previous.size()) * double(sizeof(SampleRecord) + sizeof(VoteRecord)));
   std::vector<SampleRecord> samples;
   for (const BrushSample& b : previous) samples.push_back({b.world.x, b.world.y, b.world.z, b.t, b.stroke});
   samples_ = scratch_of(samples);
-  votes_.reserve(samples.size() * sizeof(VoteRecord));
+  total_ = scratch_of(std::vector<uint32_t>{uint32_t(samples.size())});
+  vote(samples_, total_, samples.size(), camera, width, height, tables, p);
+}
+
+void BrushVotes::operator()(const BrushSamples& previous, const Camera& camera, int width, int height,
+                            const RunTables& tables, const CoherenceParams& p) {
+  vote(previous.buffer(), previous.total(), previous.capacity(), camera, width, height, tables, p);
+}
+
+void BrushVotes::vote(const Buffer& samples, const Buffer& total, size_t slots, const Camera& camera, int width,
+                      int height, const RunTables& tables, const CoherenceParams& p) {
+  slots_ = slots;
+  if (slots == 0) return;
+  check_memory_budget("the brush votes of " + std::to_string(slots) + " samples on the GPU",
+                      double(slots) * double(sizeof(VoteRecord)));
+  votes_.reserve(slots * sizeof(VoteRecord));
   WindowProjection project(camera, width, height);
   const FrameRecord frame{project.clip, project.view, double(width), double(height), p.search_px, p.depth_tolerance};
   frame_ = scratch_of(std::vector<FrameRecord>{frame});
-  glProgramUniform1ui(vote_.id(), vote_.uniform("sample_count"), GLuint(samples.size()));
+  glProgramUniform1ui(vote_.id(), vote_.uniform("slots"), GLuint(slots));
   glProgramUniform1ui(vote_.id(), vote_.uniform("listed_at"), tables.listed.at);
-  const Buffer* bound[] = {tables.paths,     tables.points,  tables.runs,   tables.listed.buffer,
-                           &samples_.buffer, &votes_.buffer, &frame_.buffer};
-  for (GLuint b = 0; b < 7; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
-  dispatch_strided(vote_, samples.size());
+  const Buffer* bound[] = {tables.paths, tables.points,  tables.runs,    tables.listed.buffer,
+                           &samples,     &votes_.buffer, &frame_.buffer, &total};
+  for (GLuint b = 0; b < 8; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
+  dispatch_strided(vote_, slots);
 }
 
 std::vector<BrushVote> BrushVotes::votes() const {
-  std::vector<VoteRecord> records(sample_count_);
+  std::vector<VoteRecord> records(slots_);
   if (records.empty()) return {};
   read_buffer(votes_, records.data(), records.size() * sizeof(VoteRecord));
   std::vector<BrushVote> out;

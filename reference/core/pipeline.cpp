@@ -10,10 +10,11 @@
 
 namespace plumbago::reference {
 
-ReferenceFrame run_stages(const Scene& scene, std::vector<PassTime>& ran) {
+ReferenceFrame run_stages(const Scene& scene, std::vector<PassTime>& ran, const DataTable* previous) {
   check_implementations();
   std::vector<std::string> all = passes_for(scene.effects, scene.params);
   ReferenceFrame f(scene, preprocess(scene, all), frame_stages(all));
+  f.previous = previous;
   ran = f.pre.ran;
   for (const std::string& name : f.stages) {
     Stopwatch watch;
@@ -25,7 +26,9 @@ ReferenceFrame run_stages(const Scene& scene, std::vector<PassTime>& ran) {
 
 Frame render(const Scene& scene, const FrameOptions& options) {
   Frame frame;
-  ReferenceFrame f = run_stages(scene, frame.ran);
+  ReferenceFrame f = run_stages(scene, frame.ran, options.carry ? options.carry->before(scene.frame) : nullptr);
+  f.previous = nullptr;
+  if (options.carry) *options.carry = {scene.frame, f.data};
   std::string color = frame_color_buffer(f.stages);  // none without effects: the blank page
   frame.color = color.empty() ? Image(scene.width, scene.height, 3, 1.0f) : f.images.at(color);
   if (options.keep_buffers) {

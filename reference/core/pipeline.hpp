@@ -11,7 +11,8 @@ namespace plumbago::reference {
 Frame render(const Scene& scene, const FrameOptions& options = {});
 
 // The frame with every buffer its stages made (parity reads its stages' inputs there);
-// `ran` gets what ran with its time.
-ReferenceFrame run_stages(const Scene& scene, std::vector<PassTime>& ran);
+// `ran` gets what ran with its time. `previous`: the data of the path's previous frame
+// (Carry::before), where it follows one.
+ReferenceFrame run_stages(const Scene& scene, std::vector<PassTime>& ran, const DataTable* previous = nullptr);
 
 }  // namespace plumbago::reference

@@ -55,9 +55,11 @@ StrokeRaster draw_strokes(const std::vector<StrokeVertex>& triangles, uint32_t s
 }
 
 PLUMBAGO_REFERENCE_STAGE(stroke, [](ReferenceFrame& f) {
-  StrokeRaster r =
-      draw_strokes(stroke_triangles(f.get(kWindowLines), f.get(kVisibleRuns), f.scene.strokes, f.scene.seed),
-                   f.scene.seed, f.get(kPage), f.get(kPaperHeight), f.params<StrokePaperParams>());
+  const std::vector<BrushParameter>* brushes = f.get(maybe(kBrushParameters));
+  std::vector<RunStroke> strokes = run_strokes(f.get(kWindowLines), f.get(kVisibleRuns), f.scene.strokes, f.scene.seed,
+                                               brushes ? *brushes : std::vector<BrushParameter>{});
+  StrokeRaster r = draw_strokes(stroke_triangles(strokes), f.scene.seed, f.get(kPage), f.get(kPaperHeight),
+                                f.params<StrokePaperParams>());
   f.put(kStrokeColor, std::move(r.color));
   f.put(kStrokeFragments, std::move(r.fragments));
   f.put(kRibbonEdges, std::move(r.edges));

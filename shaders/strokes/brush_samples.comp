@@ -7,19 +7,18 @@
 // (the run's knots; none: t = s). The world point is the window point at s0 + s unprojected
 // at its depth (window_paths.glsl depth_at): the point of the world segment that projects
 // there, which the reference's world_at interpolates. STEP_COUNT counts each run's
-// samples; after a prefix sum over the counts, STEP_WRITE writes them.
+// samples; after a prefix sum over the counts, STEP_WRITE writes them and how many it wrote
+// (what the next frame's votes read: shaders/strokes/brush_votes.comp).
 layout(local_size_x = 64) in;
 
 #define PATHS_BINDING 0
 #define POINTS_BINDING 1
 #include "strokes/window_paths.glsl"
+#include "strokes/fit_run.glsl"
 
 struct Sample {  // gpu/strokes/brush_samples.cpp SampleRecord (shaders/strokes/brush_votes.comp Sample)
   double x, y, z, t;
   uint stroke, pad;
-};
-struct RunKnots {  // a run's knots in Knots[]
-  uint first, count;
 };
 struct Frame {  // world to clip and back, world to view, view to clip; the window; the spacing
   dmat4 clip, unclip, view, projection;
@@ -29,10 +28,11 @@ struct Frame {  // world to clip and back, world to view, view to clip; the wind
 layout(std430, binding = 2) readonly buffer RunRows { Run run_rows[]; };
 layout(std430, binding = 3) readonly buffer Listed { uint listed[]; };  // the runs listed, at listed_at
 layout(std430, binding = 4) buffer Counts { uint counts[]; };          // per run listed, then (scanned) its first
-layout(std430, binding = 5) readonly buffer RunKnotRows { RunKnots run_knots[]; };
+layout(std430, binding = 5) readonly buffer FitRuns { FitRun fit_runs[]; };  // per run: its knots
 layout(std430, binding = 6) readonly buffer Knots { dvec2 knots[]; };
 layout(std430, binding = 7) writeonly buffer Samples { Sample samples[]; };
 layout(std430, binding = 8) readonly buffer FrameBlock { Frame f; };
+layout(std430, binding = 9) writeonly buffer Total { uint total; };  // the samples written
 
 uniform uint listed_at, capacity, with_knots;
 
@@ -67,16 +67,19 @@ void at_run(uint r) {
   Run run = run_rows[r];
   Path p = paths[run.path];
   uint count = sample_count(run), n = sample_intervals(run), at = counts[r];
-  RunKnots k = with_knots != 0u ? run_knots[r] : RunKnots(0u, 0u);
+  FitRun k = with_knots != 0u ? fit_runs[r] : FitRun(0.0lf, 0u, 0u, 0u, 0u);
   double length = run.s1 - run.s0;
   for (uint j = 0u; j < count && at + j < capacity; ++j) {
     double s = length * double(j) / double(n);
     dvec3 world = unproject(window_at(p, run.s0 + s), depth_at(p, run.s0 + s));
-    samples[at + j] = Sample(world.x, world.y, world.z, brush_t_at(k.first, k.count, s), r, 0u);
+    samples[at + j] = Sample(world.x, world.y, world.z, brush_t_at(k.first_knot, k.knot_count, s), r, 0u);
   }
 }
 #endif
 
 void main() {
+#ifdef STEP_WRITE
+  if (gl_GlobalInvocationID.x == 0u) total = min(counts[listed[listed_at]], capacity);
+#endif
   for (uint r = gl_GlobalInvocationID.x; r < listed[listed_at]; r += gl_NumWorkGroups.x * 64u) at_run(r);
 }

@@ -1,11 +1,12 @@
 #version 450 core
 // Coherent silhouettes' votes on the GPU (Kalnins et al. 2003): step 2. of
 // common/strokes/coherent_silhouettes.hpp, in double as the reference makes them, one
-// invocation per brush sample of the last frame: its world point projected with this
-// frame's camera votes for the nearest point, within search_px, of a visible silhouette run
-// of this frame (the runs' window polylines as strokes/run_walk.glsl walks them, the pieces'
-// depths linear between their ends) whose depth agrees within depth_tolerance of its own;
-// the nearest, among equals the first in run and piece order, as the reference takes it.
+// invocation per brush sample of the last frame (the first `total` of `slots`; a slot past
+// them has no vote): its world point projected with this frame's camera votes for the
+// nearest point, within search_px, of a visible silhouette run of this frame (the runs'
+// window polylines as strokes/run_walk.glsl walks them, the pieces' depths linear between
+// their ends) whose depth agrees within depth_tolerance of its own; the nearest, among
+// equals the first in run and piece order, as the reference takes it.
 layout(local_size_x = 64) in;
 
 #define PATHS_BINDING 0
@@ -32,8 +33,9 @@ layout(std430, binding = 3) readonly buffer Listed { uint listed[]; };  // the r
 layout(std430, binding = 4) readonly buffer Samples { Sample samples[]; };
 layout(std430, binding = 5) writeonly buffer Votes { Vote votes[]; };
 layout(std430, binding = 6) readonly buffer FrameBlock { Frame f; };
+layout(std430, binding = 7) readonly buffer Total { uint total; };  // the samples (brush_samples.comp)
 
-uniform uint sample_count, listed_at;
+uniform uint slots, listed_at;
 
 const uint kNoVote = 0xffffffffu, kSilhouette = 1u;  // SampleKind
 
@@ -72,7 +74,11 @@ void vote_on_run(uint r, dvec3 q, inout double best, inout Vote vote) {
 }
 
 void main() {
-  for (uint i = gl_GlobalInvocationID.x; i < sample_count; i += gl_NumWorkGroups.x * 64u) {
+  for (uint i = gl_GlobalInvocationID.x; i < slots; i += gl_NumWorkGroups.x * 64u) {
+    if (i >= total) {
+      votes[i] = Vote(0.0lf, 0.0lf, kNoVote, 0u);
+      continue;
+    }
     Sample x = samples[i];
     dvec3 q = project(dvec3(x.x, x.y, x.z));
     Vote vote = Vote(0.0lf, x.t, kNoVote, x.stroke);

@@ -6,12 +6,8 @@
 // write, copies them after the run's polyline. A run of fewer than 2 knots keeps t = s.
 layout(local_size_x = 64) in;
 
+#include "strokes/fit_run.glsl"
 #include "strokes/stroke_runs.glsl"
-
-struct FitRun {  // shaders/strokes/brush_fit.comp Run
-  double length;
-  uint first_vote, vote_count, first_knot, knot_count;
-};
 
 layout(std430, binding = 0) readonly buffer FitRuns { FitRun fit_runs[]; };
 layout(std430, binding = 1) readonly buffer Knots { dvec2 knots[]; };

@@ -11,6 +11,7 @@
 
 #include "common/scene/animation.hpp"
 #include "common/scene/scene.hpp"
+#include "gpu/strokes/brush_fit.hpp"
 #include "gpu/strokes/brush_votes.hpp"
 #include "parity/lines.hpp"
 #include "tests/support/test_scenes.hpp"
@@ -52,6 +53,49 @@ TEST_F(BrushVotesParity, OrbitSamplesVoteAsTheReference) {
     }
     EXPECT_GT(votes, 20u) << name;
     std::printf("brush votes, %s orbit: %zu votes, s within %.3g px\n", name, votes, worst);
+  }
+}
+
+// Nothing through the CPU: the samples the GPU left last frame (their count on the GPU, one
+// slot each its buffer holds) vote as the same samples read back and given, and the GPU's fit
+// of those votes samples as the same knots read back and given.
+TEST_F(BrushVotesParity, SamplesLeftOnTheGpuVoteAsThoseReadBack) {
+  for (const char* name : testing::kOrbitScenes) {
+    Scene scene = testing::orbit_scene(name, 3);
+    CoherenceParams p;
+    gpu::BrushSamples left, given;
+    gpu::BrushVotes from_gpu, from_cpu;
+    gpu::BrushFit fit;
+    size_t votes = 0, samples = 0;
+    for (int frame = 0; frame < 3; ++frame) {
+      Scene at = scene_at_frame(scene, frame);
+      SceneLines found = scene_lines(at, "reference");
+      gpu::UploadedRuns tables(found.lines, found.visibility);
+      from_cpu(left.samples(), at.camera, at.width, at.height, tables.tables(), p);
+      from_gpu(left, at.camera, at.width, at.height, tables.tables(), p);
+      std::vector<BrushVote> cpu = from_cpu.votes(), gpu = from_gpu.votes();
+      ASSERT_EQ(gpu.size(), cpu.size()) << name << " frame " << frame;
+      EXPECT_GE(from_gpu.slots(), from_cpu.slots()) << name;
+      for (size_t i = 0; i < cpu.size(); ++i) {
+        EXPECT_EQ(gpu[i].run, cpu[i].run) << name << " vote " << i;
+        EXPECT_EQ(gpu[i].s, cpu[i].s) << name << " vote " << i;
+        EXPECT_EQ(gpu[i].t, cpu[i].t) << name << " vote " << i;
+      }
+      votes += cpu.size();
+      fit(from_gpu, tables.tables(), p);
+      left(tables.tables(), at.camera, at.width, at.height, &fit, p);
+      given(tables.tables(), at.camera, at.width, at.height, fit.parameters(), p);
+      std::vector<BrushSample> a = left.samples(), b = given.samples();
+      ASSERT_EQ(a.size(), b.size()) << name << " frame " << frame;
+      for (size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a[i].t, b[i].t) << name << " sample " << i;
+        EXPECT_EQ(a[i].world, b[i].world) << name << " sample " << i;
+      }
+      samples += a.size();
+    }
+    EXPECT_GT(votes, 20u) << name;
+    std::printf("brush votes, %s orbit, samples left on the GPU: %zu votes and %zu samples as those read back\n", name,
+                votes, samples);
   }
 }
 

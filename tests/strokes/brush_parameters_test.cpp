@@ -1,0 +1,145 @@
+// Coherent silhouettes (Kalnins et al. 2003) as a stage of both renderers, under
+// strokes.coherent (common/strokes/brush_parameters.hpp): along a camera path each frame's
+// silhouette brush parameters come from the frame before; a frame that follows none draws the
+// 2002 paper's arc length; frame k is the same drawn alone or in order; and the GPU renderer,
+// which keeps its samples, votes and fit on the GPU, carries them as the reference does.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "common/scene/animation.hpp"
+#include "common/strokes/brush_parameters.hpp"
+#include "common/util/image_compare.hpp"
+#include "gpu/core/pipeline.hpp"
+#include "gpu/core/stage.hpp"
+#include "gpu/strokes/brush_parameters.hpp"
+#include "parity/path_frames.hpp"
+#include "reference/core/pipeline.hpp"
+#include "tests/support/test_scenes.hpp"
+
+namespace plumbago {
+namespace {
+
+constexpr int kFrames = 4;
+
+Scene coherent(Scene s, bool on) {
+  s.params.set("strokes.coherent", on ? 1.0 : 0.0);
+  return s;
+}
+
+// The torus orbit's silhouettes turn over the surface: their arc-length texture slides.
+TEST(BrushParameters, FramesFollowTheFrameBeforeAndOnlyIt) {
+  Scene on = coherent(testing::orbit_scene("torus_strokes.json", kFrames), true);
+  Scene off = coherent(on, false);
+  PathFrames in_order(on, "reference");
+  std::vector<Image> drawn;
+  for (int k = 0; k < kFrames; ++k) drawn.push_back(in_order.render(k).color);
+  // The first frame follows none: arc length, as without the stage.
+  EXPECT_EQ(drawn[0].data, PathFrames(off, "reference").render(0).color.data);
+  // The last, asked for alone, draws the frames before it first.
+  EXPECT_EQ(PathFrames(on, "reference").render(kFrames - 1).color.data, drawn.back().data);
+  // Drawn alone by a renderer that draws nothing before it: arc length.
+  Image alone = reference::render(scene_at_frame(on, kFrames - 1)).color;
+  EXPECT_EQ(alone.data, reference::render(scene_at_frame(off, kFrames - 1)).color.data);
+  ImageDiff moved = compare_images(drawn.back(), alone, tolerance::kByte);
+  std::printf("torus orbit, frame %d: coherent against arc length: %s\n", kFrames - 1,
+              format_diff("stroke.color", moved).c_str());
+  EXPECT_GT(moved.over_tolerance * double(moved.compared), 100.0) << "the carried parameters changed no stroke";
+}
+
+// A reference brush sample and its arc length from its run's start (the t it would have
+// without the carry).
+struct Sampled {
+  BrushSample sample;
+  double s;
+};
+
+// The reference's frames along a path with their carry; per frame its brush samples.
+std::vector<std::vector<Sampled>> reference_samples(const Scene& path) {
+  std::vector<std::vector<Sampled>> out;
+  Carry carry;
+  for (int k = 0; k < kFrames; ++k) {
+    std::vector<PassTime> ran;
+    Scene at = scene_at_frame(path, k);
+    reference::ReferenceFrame f = reference::run_stages(at, ran, carry.before(k));
+    const std::vector<BrushSample>& carried = f.get(kBrushSamples);
+    std::vector<BrushSample> arc = brush_samples(f.get(kWindowLines), f.get(kVisibleRuns), {}, CoherenceParams{});
+    out.emplace_back();
+    for (size_t i = 0; i < carried.size(); ++i) out.back().push_back({carried[i], arc.at(i).t});
+    carry = {k, f.data};
+  }
+  return out;
+}
+
+class BrushParametersParity : public testing::GlTest {};
+
+// Each backend finds its own visible runs (their ends within 1 px of each other: the
+// visibility stage's tolerance), so samples are matched by place: each reference sample to
+// the GPU's nearest in the window, of the same run where the runs match. A run end 1 px
+// apart moves a sample by at most 2 px (its start and its spacing: s = L j / n) and its s,
+// so its t, by at most 2 px; the reference's t and the GPU's are compared there.
+TEST_F(BrushParametersParity, TheGpuRendererCarriesAsTheReference) {
+  for (const char* name : testing::kOrbitScenes) {
+    Scene path = coherent(testing::orbit_scene(name, kFrames), true);
+    std::vector<std::vector<Sampled>> ref = reference_samples(path);
+    Scene at = scene_at_frame(path, 0);
+    gpu::Renderer renderer(at);
+    size_t compared = 0, unmatched = 0, carried = 0;
+    double worst_t = 0;
+    for (int k = 0; k < kFrames; ++k) {
+      if (k > 0) move_along_path(at, k), renderer.camera_moved();
+      renderer.render();
+      std::vector<BrushSample> gpu = renderer.frame().get(gpu::kGpuBrushSamples).samples();
+      WindowProjection project(at.camera, at.width, at.height);
+      for (const Sampled& r : ref[k]) {
+        glm::dvec2 w(project(r.sample.world));
+        const BrushSample* nearest = nullptr;
+        double best = 2.0;
+        for (const BrushSample& g : gpu) {
+          double d = glm::distance(glm::dvec2(project(g.world)), w);
+          if (d <= best) best = d, nearest = &g;
+        }
+        if (!nearest) {
+          ++unmatched;
+          continue;
+        }
+        worst_t = std::max(worst_t, std::abs(nearest->t - r.sample.t));
+        carried += std::abs(r.sample.t - r.s) > 2.0;  // where arc length would fail the test
+        ++compared;
+      }
+    }
+    std::printf("brush parameters, %s orbit, %d frames: %zu reference samples matched within 2 px (%zu unmatched, "
+                "%zu whose t is 2 px or more off arc length), t within %.3g px\n",
+                name, kFrames, compared, unmatched, carried, worst_t);
+    EXPECT_GT(compared, 100u) << name;
+    EXPECT_GT(carried, 20u) << name;
+    EXPECT_LE(worst_t, 2.0) << name;
+    EXPECT_LE(unmatched, compared / 100) << name;
+  }
+}
+
+// The GPU's carry reads nothing back: a frame that follows one votes, fits and samples on the
+// GPU, and reads back what the same frame without it does (the counts the first frame after
+// a camera move sizes its buffers by), its pass timed with the rest.
+Frame following_frame(bool on) {
+  Scene at = scene_at_frame(coherent(testing::orbit_scene("torus_strokes.json", 2), on), 0);
+  gpu::Renderer renderer(at);
+  renderer.render();
+  move_along_path(at, 1), renderer.camera_moved();
+  Frame timing;
+  renderer.render_frame(timing);
+  return timing;
+}
+
+TEST_F(BrushParametersParity, AFrameThatFollowsReadsNothingMoreBack) {
+  Frame on = following_frame(true), off = following_frame(false);
+  EXPECT_EQ(on.readback_bytes, off.readback_bytes);
+  auto ran = std::find_if(on.ran.begin(), on.ran.end(), [](const PassTime& p) { return p.name == "brush_parameters"; });
+  ASSERT_NE(ran, on.ran.end());
+  std::printf("torus, a frame that follows: brush_parameters %.3f ms (GPU timer), %zu bytes read back (%zu without)\n",
+              ran->ms, on.readback_bytes, off.readback_bytes);
+}
+
+}  // namespace
+}  // namespace plumbago
