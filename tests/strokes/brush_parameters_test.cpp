@@ -109,9 +109,10 @@ TEST_F(BrushParametersParity, TheGpuRendererCarriesAsTheReference) {
         ++compared;
       }
     }
-    std::printf("brush parameters, %s orbit, %d frames: %zu reference samples matched within 2 px (%zu unmatched, "
-                "%zu whose t is 2 px or more off arc length), t within %.3g px\n",
-                name, kFrames, compared, unmatched, carried, worst_t);
+    std::printf(
+        "brush parameters, %s orbit, %d frames: %zu reference samples matched within 2 px (%zu unmatched, "
+        "%zu whose t is 2 px or more off arc length), t within %.3g px\n",
+        name, kFrames, compared, unmatched, carried, worst_t);
     EXPECT_GT(compared, 100u) << name;
     EXPECT_GT(carried, 20u) << name;
     EXPECT_LE(worst_t, 2.0) << name;
