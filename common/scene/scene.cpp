@@ -242,8 +242,8 @@ class SceneReader {
     for (int i = 1; i < a.frames; ++i) {
       Camera c = camera_at(s.camera, a, i, center, radius);
       std::string frame = "frame " + std::to_string(i) + "'s camera: ";
-      if (glm::dot(glm::dvec3(c.target) - glm::dvec3(c.eye), glm::dvec3(s.camera.target) - glm::dvec3(s.camera.eye)) <=
-          0)
+      if (a.kind == Animation::Kind::Dolly && glm::dot(glm::dvec3(c.target) - glm::dvec3(c.eye),
+                                                       glm::dvec3(s.camera.target) - glm::dvec3(s.camera.eye)) <= 0)
         fail(path + "/dolly", frame + "the eye reaches or passes the target (it moves " + format_number(a.amount) +
                                   " toward a target " + format_number(glm::distance(s.camera.eye, s.camera.target)) +
                                   " away): a dolly must stop short of it");

@@ -73,6 +73,9 @@ TEST(Animation, PathsThatCannotBeRenderedAreRefusedWithTheirKey) {
   EXPECT_NE(past.find("/animation/dolly: frame 1's camera: the eye reaches or passes the target"), std::string::npos)
       << past;
   EXPECT_EQ(refusal(R"({"dolly": 5.9, "frames": 3})"), "accepted");
+  // An orbit past 90 degrees looks at the target from behind where it started: not a dolly's fault.
+  EXPECT_EQ(refusal(R"({"orbit_deg": 180, "frames": 3})"), "accepted");
+  EXPECT_EQ(refusal(R"({"orbit_deg": -360, "frames": 37})"), "accepted");
 }
 
 class AnimationCli : public ::testing::Test {
