@@ -29,9 +29,13 @@ static_assert(sizeof(SampleRecord) == 40 && sizeof(VoteRecord) == 24 && sizeof(F
               "std430 layouts of brush_votes.comp");
 constexpr uint32_t kNoVote = 0xffffffffu;
 
+Program step(const char* name) {
+  return Program::compute("strokes/brush_votes.comp", std::string("#define ") + name + "\n");
+}
+
 }  // namespace
 
-BrushVotes::BrushVotes() : vote_(Program::compute("strokes/brush_votes.comp")) {}
+BrushVotes::BrushVotes() : bound_(step("STEP_BOUNDS")), vote_(step("STEP_VOTE")) {}
 
 void BrushVotes::operator()(const std::vector<BrushSample>& previous, const Camera& camera, int width, int height,
                             const RunTables& tables, const CoherenceParams& p) {
@@ -53,15 +57,16 @@ void BrushVotes::vote(const Buffer& samples, const Buffer& total, size_t slots, 
   if (slots == 0) return;
   check_memory_budget("the brush votes of " + std::to_string(slots) + " samples on the GPU",
                       double(slots) * double(sizeof(VoteRecord)));
-  votes_.reserve(slots * sizeof(VoteRecord));
+  votes_.reserve(slots * sizeof(VoteRecord)), boxes_.reserve(std::max<size_t>(tables.bound, 1) * sizeof(glm::dvec4));
   WindowProjection project(camera, width, height);
   const FrameRecord frame{project.clip, project.view, double(width), double(height), p.search_px, p.depth_tolerance};
   frame_ = scratch_of(std::vector<FrameRecord>{frame});
   glProgramUniform1ui(vote_.id(), vote_.uniform("slots"), GLuint(slots));
-  glProgramUniform1ui(vote_.id(), vote_.uniform("listed_at"), tables.listed.at);
-  const Buffer* bound[] = {tables.paths, tables.points,  tables.runs,    tables.listed.buffer,
-                           &samples,     &votes_.buffer, &frame_.buffer, &total};
-  for (GLuint b = 0; b < 8; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
+  for (const Program* s : {&bound_, &vote_}) glProgramUniform1ui(s->id(), s->uniform("listed_at"), tables.listed.at);
+  const Buffer* bound[] = {tables.paths,   tables.points,  tables.runs, tables.listed.buffer, &samples,
+                           &votes_.buffer, &frame_.buffer, &total,      &boxes_.buffer};
+  for (GLuint b = 0; b < 9; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
+  dispatch_strided(bound_, tables.bound);
   dispatch_strided(vote_, slots);
 }
 

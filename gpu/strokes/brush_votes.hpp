@@ -37,8 +37,8 @@ class BrushVotes {
   void vote(const Buffer& samples, const Buffer& total, size_t slots, const Camera& camera, int width, int height,
             const RunTables& tables, const CoherenceParams& p);
 
-  Program vote_;
-  ScratchBuffer samples_, total_, votes_, frame_;
+  Program bound_, vote_;  // the runs' boxes, then the votes
+  ScratchBuffer samples_, total_, votes_, frame_, boxes_;
   size_t slots_ = 0;
 };
 

@@ -6,7 +6,9 @@
 // nearest point, within search_px, of a visible silhouette run of this frame (the runs'
 // window polylines as strokes/run_walk.glsl walks them, the pieces' depths linear between
 // their ends) whose depth agrees within depth_tolerance of its own; the nearest, among
-// equals the first in run and piece order, as the reference takes it.
+// equals the first in run and piece order, as the reference takes it. STEP_BOUNDS first
+// boxes each run's window polyline, so that STEP_VOTE walks only the runs whose box, grown
+// by search_px, holds the sample.
 layout(local_size_x = 64) in;
 
 #define PATHS_BINDING 0
@@ -34,6 +36,7 @@ layout(std430, binding = 4) readonly buffer Samples { Sample samples[]; };
 layout(std430, binding = 5) writeonly buffer Votes { Vote votes[]; };
 layout(std430, binding = 6) readonly buffer FrameBlock { Frame f; };
 layout(std430, binding = 7) readonly buffer Total { uint total; };  // the samples (brush_samples.comp)
+layout(std430, binding = 8) buffer Boxes { dvec4 boxes[]; };  // per run listed: (x0, y0, x1, y1); x0 > x1: none
 
 uniform uint slots, listed_at;
 
@@ -73,6 +76,33 @@ void vote_on_run(uint r, dvec3 q, inout double best, inout Vote vote) {
   }
 }
 
+#ifdef STEP_BOUNDS
+// Run r's box: a silhouette run's points (none: empty).
+dvec4 run_box(uint r) {
+  dvec4 box = dvec4(1.0lf, 0.0lf, 0.0lf, 0.0lf);
+  Run run = run_rows[r];
+  Path p = paths[run.path];
+  if ((p.kind & 15u) != kSilhouette) return box;
+  RunWalk w = start_run_walk(run, p);
+  RunPoint a;
+  if (next_run_point(w, a)) box = dvec4(a.window, a.window);
+  while (next_run_point(w, a)) box = dvec4(min(box.xy, a.window), max(box.zw, a.window));
+  return box;
+}
+
+void main() {
+  for (uint r = gl_GlobalInvocationID.x; r < listed[listed_at]; r += gl_NumWorkGroups.x * 64u) boxes[r] = run_box(r);
+}
+#endif
+
+#ifdef STEP_VOTE
+// Whether a run of box b may hold a piece within search_px of q (a margin of 1e-6 px keeps
+// the box's rounding from losing a piece at exactly search_px).
+bool box_near(dvec4 b, dvec2 q) {
+  double grow = f.search_px + 1e-6lf;
+  return b.x <= b.z && all(greaterThanEqual(q, b.xy - grow)) && all(lessThanEqual(q, b.zw + grow));
+}
+
 void main() {
   for (uint i = gl_GlobalInvocationID.x; i < slots; i += gl_NumWorkGroups.x * 64u) {
     if (i >= total) {
@@ -84,7 +114,9 @@ void main() {
     Vote vote = Vote(0.0lf, x.t, kNoVote, x.stroke);
     double best = f.search_px;
     if (q.z > 0.0lf)
-      for (uint r = 0u; r < listed[listed_at]; ++r) vote_on_run(r, q, best, vote);
+      for (uint r = 0u; r < listed[listed_at]; ++r)
+        if (box_near(boxes[r], q.xy)) vote_on_run(r, q, best, vote);
     votes[i] = vote;
   }
 }
+#endif
