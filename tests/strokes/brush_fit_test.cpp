@@ -16,6 +16,7 @@
 #include "gpu/strokes/brush_fit.hpp"
 #include "gpu/strokes/brush_votes.hpp"
 #include "parity/lines.hpp"
+#include "tests/support/coherent_orbit.hpp"
 #include "tests/support/test_scenes.hpp"
 
 namespace plumbago {
@@ -148,35 +149,21 @@ TEST_F(BrushFitParity, OrbitVotesMatchTheReference) {
 // there and fitted: each run's knots as coherent_parameters gives them.
 TEST_F(BrushFitParity, VotesLeftOnTheGpuFitAsTheReference) {
   for (const char* name : testing::kOrbitScenes) {
-    Scene scene = testing::orbit_scene(name, 3);
-    CoherenceParams p;
-    std::vector<BrushSample> previous;
-    gpu::BrushVotes votes;
-    gpu::BrushFit fit;
     Tally t;
-    for (int frame = 0; frame < 3; ++frame) {
-      Scene at = scene_at_frame(scene, frame);
-      SceneLines found = scene_lines(at, "reference");
-      std::vector<BrushParameter> ref;
-      if (frame > 0) {
-        ref = coherent_parameters(previous, at.camera, found.lines, found.visibility, p);
-        gpu::UploadedRuns tables(found.lines, found.visibility);
-        votes(previous, at.camera, at.width, at.height, tables.tables(), p);
-        fit(votes, tables.tables(), p);
-        std::vector<BrushParameter> gpu = fit.parameters();
-        ASSERT_EQ(gpu.size(), ref.size()) << name;
-        for (size_t r = 0; r < ref.size(); ++r) {
-          ASSERT_EQ(gpu[r].size(), ref[r].size()) << name << " run " << r;
-          t.runs += ref[r].empty() ? 0 : 1, t.knots += ref[r].size();
-          for (size_t k = 0; k < ref[r].size(); ++k) {
-            EXPECT_EQ(gpu[r][k].x, ref[r][k].x) << name << " run " << r << " knot " << k;
-            EXPECT_NEAR(gpu[r][k].y, ref[r][k].y, kKnotTolerance) << name << " run " << r << " knot " << k;
-            t.worst = std::max(t.worst, std::abs(gpu[r][k].y - ref[r][k].y));
-          }
+    testing::follow_coherent_orbit(name, 3, [&](const testing::CoherentFrame& f) {
+      std::vector<BrushParameter> gpu = f.fit.parameters();
+      const std::vector<BrushParameter>& ref = f.reference;
+      ASSERT_EQ(gpu.size(), ref.size()) << name;
+      for (size_t r = 0; r < ref.size(); ++r) {
+        ASSERT_EQ(gpu[r].size(), ref[r].size()) << name << " run " << r;
+        t.runs += ref[r].empty() ? 0 : 1, t.knots += ref[r].size();
+        for (size_t k = 0; k < ref[r].size(); ++k) {
+          EXPECT_EQ(gpu[r][k].x, ref[r][k].x) << name << " run " << r << " knot " << k;
+          EXPECT_NEAR(gpu[r][k].y, ref[r][k].y, kKnotTolerance) << name << " run " << r << " knot " << k;
+          t.worst = std::max(t.worst, std::abs(gpu[r][k].y - ref[r][k].y));
         }
       }
-      previous = brush_samples(found.lines, found.visibility, ref, p);
-    }
+    });
     EXPECT_GT(t.runs, 2u) << name;
     std::printf("brush fit of the GPU's votes, %s orbit: %zu knots in %zu runs, t within %.3g px\n", name, t.knots,
                 t.runs, t.worst);

@@ -25,6 +25,7 @@
 #include "gpu/strokes/brush_votes.hpp"
 #include "gpu/strokes/stroke_samples.hpp"
 #include "parity/lines.hpp"
+#include "tests/support/coherent_orbit.hpp"
 #include "tests/support/stroke_cases.hpp"
 #include "tests/support/test_scenes.hpp"
 
@@ -177,32 +178,18 @@ class StrokeSamplesParity : public testing::GlTest {};
 // the reference draws the runs with the parameters coherent_parameters gives them.
 TEST_F(StrokeSamplesParity, CoherentParametersFittedOnTheGpuDrawAsTheReference) {
   for (const char* name : testing::kOrbitScenes) {
-    Scene scene = testing::orbit_scene(name, 3);
-    CoherenceParams p;
-    std::vector<BrushSample> previous;
-    gpu::BrushVotes votes;
-    gpu::BrushFit fit;
     Tally t;
     size_t brushed = 0;
-    for (int frame = 0; frame < 3; ++frame) {
-      Scene at = scene_at_frame(scene, frame);
-      SceneLines found = scene_lines(at, "reference");
-      std::vector<BrushParameter> brushes;
-      if (frame > 0) {
-        brushes = coherent_parameters(previous, at.camera, found.lines, found.visibility, p);
-        std::vector<StyledRun> runs = styled_runs(found.lines, found.visibility, at.strokes, at.seed);
-        for (size_t r = 0; r < runs.size(); ++r) runs[r].run.brush = brushes.at(r), brushed += brushes[r].size() >= 2;
-        gpu::UploadedRuns tables(found.lines, found.visibility);
-        gpu::RunStyleTables styles(at.strokes, found.lines.decal_styles);
-        votes(previous, at.camera, at.width, at.height, tables.tables(), p);
-        fit(votes, tables.tables(), p);
-        gpu::StrokeSamples gpu_samples;
-        gpu_samples(tables.tables(), styles, at.seed, &fit);
-        Tally frame_tally = compare(runs, gpu_samples);
-        t.samples += frame_tally.samples, t.runs += frame_tally.runs, t.differing += frame_tally.differing;
-      }
-      previous = brush_samples(found.lines, found.visibility, brushes, p);
-    }
+    testing::follow_coherent_orbit(name, 3, [&](const testing::CoherentFrame& f) {
+      std::vector<StyledRun> runs = styled_runs(f.found.lines, f.found.visibility, f.at.strokes, f.at.seed);
+      for (size_t r = 0; r < runs.size(); ++r)
+        runs[r].run.brush = f.reference.at(r), brushed += f.reference[r].size() >= 2;
+      gpu::RunStyleTables styles(f.at.strokes, f.found.lines.decal_styles);
+      gpu::StrokeSamples gpu_samples;
+      gpu_samples(f.tables, styles, f.at.seed, &f.fit);
+      Tally frame_tally = compare(runs, gpu_samples);
+      t.samples += frame_tally.samples, t.runs += frame_tally.runs, t.differing += frame_tally.differing;
+    });
     EXPECT_GT(brushed, 2u) << name;
     std::printf(
         "stroke samples, %s, coherent: %zu samples in %zu runs (%zu with a fitted parameter), %zu not "
