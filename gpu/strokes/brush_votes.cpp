@@ -35,7 +35,7 @@ Program step(const char* name) {
 
 }  // namespace
 
-BrushVotes::BrushVotes() : bound_(step("STEP_BOUNDS")), vote_(step("STEP_VOTE")) {}
+BrushVotes::BrushVotes() : box_(step("STEP_BOXES")), vote_(step("STEP_VOTE")) {}
 
 void BrushVotes::operator()(const std::vector<BrushSample>& previous, const Camera& camera, int width, int height,
                             const RunTables& tables, const CoherenceParams& p) {
@@ -62,11 +62,11 @@ void BrushVotes::vote(const Buffer& samples, const Buffer& total, size_t slots, 
   const FrameRecord frame{project.clip, project.view, double(width), double(height), p.search_px, p.depth_tolerance};
   frame_ = scratch_of(std::vector<FrameRecord>{frame});
   glProgramUniform1ui(vote_.id(), vote_.uniform("slots"), GLuint(slots));
-  for (const Program* s : {&bound_, &vote_}) glProgramUniform1ui(s->id(), s->uniform("listed_at"), tables.listed.at);
+  for (const Program* s : {&box_, &vote_}) glProgramUniform1ui(s->id(), s->uniform("listed_at"), tables.listed.at);
   const Buffer* bound[] = {tables.paths,   tables.points,  tables.runs, tables.listed.buffer, &samples,
                            &votes_.buffer, &frame_.buffer, &total,      &boxes_.buffer};
   for (GLuint b = 0; b < 9; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
-  dispatch_strided(bound_, tables.bound);
+  dispatch_strided(box_, tables.bound);
   dispatch_strided(vote_, slots);
 }
 

@@ -37,7 +37,7 @@ class BrushVotes {
   void vote(const Buffer& samples, const Buffer& total, size_t slots, const Camera& camera, int width, int height,
             const RunTables& tables, const CoherenceParams& p);
 
-  Program bound_, vote_;  // the runs' boxes, then the votes
+  Program box_, vote_;  // the runs' boxes, then the votes
   ScratchBuffer samples_, total_, votes_, frame_, boxes_;
   size_t slots_ = 0;
 };

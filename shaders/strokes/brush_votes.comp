@@ -6,7 +6,7 @@
 // nearest point, within search_px, of a visible silhouette run of this frame (the runs'
 // window polylines as strokes/run_walk.glsl walks them, the pieces' depths linear between
 // their ends) whose depth agrees within depth_tolerance of its own; the nearest, among
-// equals the first in run and piece order, as the reference takes it. STEP_BOUNDS first
+// equals the first in run and piece order, as the reference takes it. STEP_BOXES first
 // boxes each run's window polyline, so that STEP_VOTE walks only the runs whose box, grown
 // by search_px, holds the sample.
 layout(local_size_x = 64) in;
@@ -76,7 +76,7 @@ void vote_on_run(uint r, dvec3 q, inout double best, inout Vote vote) {
   }
 }
 
-#ifdef STEP_BOUNDS
+#ifdef STEP_BOXES
 // Run r's box: a silhouette run's points (none: empty).
 dvec4 run_box(uint r) {
   dvec4 box = dvec4(1.0lf, 0.0lf, 0.0lf, 0.0lf);
