@@ -47,7 +47,8 @@ std::string format_value(const ParamSpec& spec, double value);
 class SpecCollector {
  public:
   SpecCollector(std::string stage, std::vector<ParamSpec>& out) : stage_(std::move(stage)), out_(out) {}
-  void real(float&, const char* name, double def, double lo, double hi, const char* doc) {
+  template <class R>  // float, or double where a stage computes in double
+  void real(R&, const char* name, double def, double lo, double hi, const char* doc) {
     add(name, ParamType::Real, def, lo, hi, {}, doc);
   }
   void integer(int&, const char* name, int def, int lo, int hi, const char* doc) {
@@ -93,7 +94,10 @@ class ParamSet {
     const ParamSet& set;
     std::string stage;
     double at(const char* name) const { return set.value(stage + "." + name); }
-    void real(float& f, const char* n, double, double, double, const char*) { f = float(at(n)); }
+    template <class R>
+    void real(R& r, const char* n, double, double, double, const char*) {
+      r = R(at(n));
+    }
     void integer(int& i, const char* n, int, int, int, const char*) { i = int(at(n)); }
     void boolean(bool& b, const char* n, bool, const char*) { b = at(n) != 0.0; }
     template <class E>

@@ -29,12 +29,12 @@ inline bool strokes_coherent(const StageConfig& c) { return c.params.value("stro
 }  // namespace when
 
 struct BrushParametersStage {
-  using Params = TypeList<>;
+  using Params = TypeList<CoherenceParams>;
   static StageDesc describe() {
     return {.name = "brush_parameters",
             .kind = StageKind::Frame,
             .doc = "silhouette brush parameters carried over the surface from frame to frame (Kalnins et al. 2003)",
-            .params = {"strokes"},
+            .params = {"strokes", "coherence"},
             .inputs = {{.handle = kWindowLines}, {.handle = kVisibleRuns}},
             .outputs = {{.handle = kBrushParameters,
                          .channels = 0,
@@ -43,8 +43,8 @@ struct BrushParametersStage {
                         {.handle = kBrushSamples,
                          .channels = 0,
                          .texel = Texel::Host,
-                         .doc = "the silhouettes' surface points every 8 px and their t, which the next frame's votes "
-                                "read (the GPU keeps its own on the GPU)"}}};
+                         .doc = "the silhouettes' surface points every coherence.sample_px and their t, which the next "
+                                "frame's votes read (the GPU keeps its own on the GPU)"}}};
   }
 };
 

@@ -30,8 +30,9 @@
 //    The normal equations are solved by Eigen's LDLT. Beyond its votes the fit runs on at
 //    rate σ: the section is covered whole.
 //
-// Defaults are those of jot, the authors' system (votes searched within 6 px, samples every
-// 8 px, knots every 48 px, unit weights), and a claim needs 2 votes (1: measured in
+// The parameters are the scene's `coherence.*` (plumbago params). Their defaults are those of
+// jot, the authors' system (votes searched within 6 px, samples every 8 px, knots every
+// 48 px, unit weights), and a claim needs 2 votes (1: measured in
 // experiments/temporal_coherence, lower slide p95 on the statue, higher on the torus and cup).
 #pragma once
 
@@ -48,9 +49,28 @@
 namespace plumbago {
 
 struct CoherenceParams {
-  double sample_px = 8, search_px = 6, depth_tolerance = 0.01, jump_px = 4, knot_px = 48;
-  double scale_weight = 1, distort_weight = 1;
-  int claim_votes = 2;
+  static constexpr const char* stage = "coherence";
+  double sample_px, search_px, depth_tolerance, jump_px, knot_px, scale_weight, distort_weight;
+  int claim_votes;
+  template <class V>
+  void visit(V& v) {
+    v.real(
+        sample_px, "sample_px", 8.0, 1.0, 64.0,
+        "coherent silhouettes' brush samples along each visible silhouette run, window px apart (Kalnins et al. 2003)");
+    v.real(search_px, "search_px", 6.0, 0.5, 64.0,
+           "a brush sample of the last frame votes for the nearest visible silhouette point within this (px)");
+    v.real(depth_tolerance, "depth_tolerance", 0.01, 0.0, 1.0,
+           "and only where their linear view depths agree within this share of its own");
+    v.real(jump_px, "jump_px", 4.0, 0.0, 1000.0,
+           "a run's votes from one stroke split where |delta t| departs from delta s by more (px)");
+    v.integer(claim_votes, "claim_votes", 2, 1, 64,
+              "a group of votes parameterizes a section of its run where it has this many votes there");
+    v.real(knot_px, "knot_px", 48.0, 4.0, 4096.0, "the knots of the fit of t this far apart along a section (px)");
+    v.real(scale_weight, "scale_weight", 1.0, 0.0, 1e6,
+           "the fit's weight on uniformity: t at rate 1 in the image (against coherence, the votes' weight 1)");
+    v.real(distort_weight, "distort_weight", 1.0, 0.0, 1e6,
+           "the fit's weight on the second differences of t at its knots: smooth stretching");
+  }
 };
 
 // 1. A surface point a silhouette stroke drew, with its t and the stroke's index among its

@@ -6,12 +6,12 @@
 #include "common/core/frame.hpp"
 #include "common/scene/animation.hpp"
 #include "common/scene/gbuffer.hpp"
+#include "common/strokes/brush_parameters.hpp"
 #include "common/strokes/id_image.hpp"
 #include "common/strokes/stroke.hpp"
 #include "common/strokes/visibility.hpp"
 #include "experiments/shower_door/surface_motion.hpp"
 #include "reference/core/pipeline.hpp"
-#include "reference/strokes/stroke.hpp"
 
 namespace plumbago::temporal_coherence {
 
@@ -39,27 +39,23 @@ Scene study_scene(const std::string& path, const std::vector<std::string>& sets,
   return s;
 }
 
-StrokeFrame render_stroke_frame(const Scene& study, int t, CoherentCarry* coherent) {
+StrokeFrame render_stroke_frame(const Scene& study, int t, Carry* carry) {
   Scene s = scene_at_frame(study, t);
   std::vector<PassTime> ran;
-  reference::ReferenceFrame f = reference::run_stages(s, ran);
+  reference::ReferenceFrame f = reference::run_stages(s, ran, carry ? carry->before(t) : nullptr);
   const Visibility* visibility = f.get(maybe(kVisibleRuns));
   if (!visibility) throw std::logic_error("the stroke stages did not run");
+  f.previous = nullptr;
+  if (carry) *carry = {t, f.data};
   const WindowLines& lines = f.get(kWindowLines);
-  std::vector<BrushParameter> brushes;
-  if (coherent) {
-    Stopwatch watch;
-    brushes = coherent_parameters(coherent->previous, s.camera, lines, *visibility, coherent->params);
-    coherent->previous = brush_samples(lines, *visibility, brushes, coherent->params);
-    coherent->ms.push_back(watch.ms());
-  }
-  std::vector<RunStroke> strokes = run_strokes(lines, *visibility, s.strokes, s.seed, brushes);
-  Image layer = coherent ? reference::draw_strokes(stroke_triangles(strokes), s.seed, f.get(kPage), f.get(kPaperHeight),
-                                                   s.params.get<StrokePaperParams>())
-                               .color
-                         : f.get(kStrokeColor);
-  return {frame_strokes(s.camera, s.width, s.height, lines, *visibility, strokes), std::move(layer),
-          shower_door::surface_points(world_geometry(f.ordinary), f.get(kGBuffer))};
+  const std::vector<BrushParameter>* brushes = f.get(maybe(kBrushParameters));
+  std::vector<RunStroke> strokes =
+      run_strokes(lines, *visibility, s.strokes, s.seed, brushes ? *brushes : std::vector<BrushParameter>{});
+  StrokeFrame out{frame_strokes(s.camera, s.width, s.height, lines, *visibility, strokes), f.get(kStrokeColor),
+                  shower_door::surface_points(world_geometry(f.ordinary), f.get(kGBuffer))};
+  for (const PassTime& pass : ran)
+    if (pass.name == "brush_parameters") out.coherence_ms = pass.ms;
+  return out;
 }
 
 }  // namespace plumbago::temporal_coherence

@@ -3,12 +3,13 @@
 // read: the tracked strokes (stroke_track.hpp), the stroke layer and the surface points.
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "common/core/frame.hpp"
 #include "common/scene/scene.hpp"
-#include "common/strokes/coherent_silhouettes.hpp"
 #include "experiments/temporal_coherence/stroke_track.hpp"
 
 namespace plumbago::temporal_coherence {
@@ -25,20 +26,15 @@ struct StrokeFrame {
   FrameStrokes strokes;
   Image layer;   // RGB: stroke.color, the strokes over the page (the paper's grain included)
   Image points;  // shower_door::surface_points of the frame's G-buffer: the surface seen at each pixel
+  // The brush_parameters stage's time (ms, wall), where strokes.coherent ran it; else NaN.
+  double coherence_ms = NAN;
 };
 
-// The coherent strokes' state from frame to frame (Kalnins et al. 2003,
-// common/strokes/coherent_silhouettes.hpp): the last frame's brush samples.
-struct CoherentCarry {
-  CoherenceParams params;
-  std::vector<BrushSample> previous;
-  std::vector<double> ms;  // per frame: the votes, fits and brush samples (wall time)
-};
-
-// Frame t of the study scene's camera path. With `coherent`, the silhouettes' brush
-// parameters are propagated from its samples (frame t - 1's, none before the first frame),
-// which it then holds frame t's, and the layer is drawn from those strokes by the
-// reference's stroke raster (reference/strokes/stroke.hpp).
-StrokeFrame render_stroke_frame(const Scene& study, int t, CoherentCarry* coherent = nullptr);
+// Frame t of the study scene's camera path, by the CPU reference's stages. With
+// strokes.coherent (coherent silhouettes, Kalnins et al. 2003: the brush_parameters stage
+// and its coherence.* parameters), the silhouettes' brush parameters are voted for by what
+// `carry` holds of frame t - 1 (none before the first frame, or without a carry), and
+// `carry` then holds frame t's.
+StrokeFrame render_stroke_frame(const Scene& study, int t, Carry* carry = nullptr);
 
 }  // namespace plumbago::temporal_coherence

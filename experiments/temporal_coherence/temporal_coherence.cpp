@@ -32,8 +32,6 @@ struct Options {
   std::vector<std::string> sets;
   std::optional<double> orbit_step_deg;
   int frames = 0;
-  bool coherent = false;
-  CoherenceParams coherence;
   MatchParams match;
   shower_door::MotionParams motion;
 };
@@ -140,10 +138,12 @@ void run(const Options& o) {
   csv << kScene << ',' << kPairColumns << ',' << kStats << ',' << kLayerColumns << '\n';
   Pooled pooled;
   StrokeFrame prev;
-  CoherentCarry carry{o.coherence, {}, {}};
+  Carry carry;
+  std::vector<double> coherence_ms;  // per frame, where the brush_parameters stage ran
   for (int t = 0; t < frames; ++t) {
     auto start = std::chrono::steady_clock::now();
-    StrokeFrame next = render_stroke_frame(scene, t, o.coherent ? &carry : nullptr);
+    StrokeFrame next = render_stroke_frame(scene, t, &carry);
+    if (!std::isnan(next.coherence_ms)) coherence_ms.push_back(next.coherence_ms);
     if (t > 0) {
       Image motion = shower_door::surface_motion(prev.strokes.camera, prev.points, next.points, o.motion);
       shower_door::Residuals layer =
@@ -159,11 +159,13 @@ void run(const Options& o) {
     double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::fprintf(stderr, "frame %d/%d: %zu strokes, %.2f s\n", t + 1, frames, prev.strokes.runs.size(), s);
   }
-  double coherence_ms = o.coherent ? stats(carry.ms).median : NAN;
-  if (o.coherent)
-    std::printf("coherent silhouettes (votes, fits, brush samples): %.2f ms a frame (median; reference, wall)\n",
-                coherence_ms);
-  if (!o.summary.empty()) write_summary(o, scene_columns, pooled, frames - 1, coherence_ms);
+  double coherent_ms = coherence_ms.empty() ? NAN : stats(coherence_ms).median;
+  if (!coherence_ms.empty())
+    std::printf(
+        "coherent silhouettes (brush_parameters: votes, fits, brush samples): %.2f ms a frame (median; "
+        "reference, wall)\n",
+        coherent_ms);
+  if (!o.summary.empty()) write_summary(o, scene_columns, pooled, frames - 1, coherent_ms);
   std::printf("wrote %s%s (%d frame pairs)\n", o.out.c_str(), o.summary.empty() ? "" : (" and " + o.summary).c_str(),
               frames - 1);
 }
@@ -179,19 +181,10 @@ int main(int argc, char** argv) {
   app.add_option("--orbit-step-deg", o.orbit_step_deg, "replace the scene's camera path by an orbit of this step");
   app.add_option("--frames", o.frames, "frames of that orbit (default: the scene's, else 36)")
       ->check(CLI::Range(2, 3600));
-  app.add_option("--set", o.sets, "stage.param=value, as for plumbago render");
-  app.add_flag("--coherent", o.coherent,
-               "silhouettes' brush parameters carried from frame to frame (Kalnins et al. 2003)");
+  app.add_option("--set", o.sets,
+                 "stage.param=value, as for plumbago render (strokes.coherent=true: coherent silhouettes, Kalnins et "
+                 "al. 2003, with their coherence.* parameters)");
   app.add_option("--layers", o.layers, "folder for each frame's stroke layer, frame_000.png on");
-  app.add_option("--coherent-sample-px", o.coherence.sample_px, "brush samples this far apart (px)");
-  app.add_option("--coherent-search-px", o.coherence.search_px, "a vote lands at most this far (px)");
-  app.add_option("--coherent-depth-tolerance", o.coherence.depth_tolerance,
-                 "a vote's depth agrees within this share of its own");
-  app.add_option("--coherent-claim-votes", o.coherence.claim_votes, "a group claims a section with this many votes");
-  app.add_option("--coherent-jump-px", o.coherence.jump_px, "a group splits where t departs from s by more (px)");
-  app.add_option("--coherent-knot-px", o.coherence.knot_px, "the fit's knots this far apart (px)");
-  app.add_option("--coherent-scale-weight", o.coherence.scale_weight, "the fit's uniformity weight");
-  app.add_option("--coherent-distort-weight", o.coherence.distort_weight, "the fit's distortion weight");
   app.add_option("--match-px", o.match.radius_px, "a reprojected sample lands on a stroke at most this far (px)");
   app.add_option("--depth-tolerance", o.match.depth_tolerance, "and at a depth within this share of its own");
   app.add_option("--min-motion", o.motion.min_motion_px, "stroke layer: pixels whose surface moved less are left out");

@@ -19,7 +19,7 @@ class BrushParametersPass : public GpuPass {
     if (!tables) tables = &uploaded.emplace(f.get(kWindowLines), f.get(kVisibleRuns)).tables();
     const Camera& camera = f.scene.camera;
     const int width = f.scene.width, height = f.scene.height;
-    const CoherenceParams p;
+    const auto p = f.params<CoherenceParams>();
     // The samples the last frame left vote where this frame follows it; else none do (t = s).
     if (drawn_ && *drawn_ + 1 == f.scene.frame)
       votes_(samples_, camera, width, height, *tables, p);

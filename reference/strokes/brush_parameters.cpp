@@ -11,7 +11,7 @@ namespace plumbago::reference {
 PLUMBAGO_REFERENCE_STAGE(brush_parameters, [](ReferenceFrame& f) {
   const WindowLines& lines = f.get(kWindowLines);
   const Visibility& visibility = f.get(kVisibleRuns);
-  const CoherenceParams p;
+  const auto p = f.params<CoherenceParams>();
   std::vector<BrushParameter> brushes;
   if (const std::vector<BrushSample>* previous = f.before(kBrushSamples))
     brushes = coherent_parameters(*previous, f.scene.camera, lines, visibility, p);

@@ -44,13 +44,14 @@ struct DefaultsChecker {
     EXPECT_EQ(s.type, type) << s.key;
     return s;
   }
-  void real(float& f, const char* name, double def, double lo, double hi, const char*) {
+  template <class R>
+  void real(R& r, const char* name, double def, double lo, double hi, const char*) {
     const ParamSpec& s = spec(name, ParamType::Real);
     EXPECT_EQ(s.default_value, def) << s.key;
     EXPECT_EQ(s.min, lo) << s.key;
     EXPECT_EQ(s.max, hi) << s.key;
-    EXPECT_EQ(f, float(def)) << s.key;
-    EXPECT_EQ(f, float(s.default_value)) << s.key;
+    EXPECT_EQ(r, R(def)) << s.key;
+    EXPECT_EQ(r, R(s.default_value)) << s.key;
   }
   void integer(int& i, const char* name, int def, int lo, int hi, const char*) {
     const ParamSpec& s = spec(name, ParamType::Integer);

@@ -98,7 +98,7 @@ TEST_F(BrushFitParity, HardCasesMatchTheReference) {
   add(votes(0, 10, Line{0}, 0), 0);         // no length
   add(votes(0, 3000, Line{1e5}, 0), 3000);  // long: 63 knots, far from 0
   for (int claim_votes : {2, 1}) {
-    CoherenceParams p;
+    CoherenceParams p = ParamSet{}.get<CoherenceParams>();
     p.claim_votes = claim_votes;
     Tally t = compare(runs, lengths, p);
     EXPECT_GE(t.knots, 80u);
@@ -110,7 +110,7 @@ TEST_F(BrushFitParity, HardCasesMatchTheReference) {
 // The votes the silhouettes of `scene` get in frames 1 and 2 of an orbit (frame 1's from
 // frame 0's arc length, frame 2's from frame 1's fitted parameters), per run; lengths.
 void orbit_votes(const Scene& scene, std::vector<std::vector<BrushVote>>& runs, std::vector<double>& lengths) {
-  CoherenceParams p;
+  CoherenceParams p = ParamSet{}.get<CoherenceParams>();
   std::vector<BrushSample> previous;
   for (int frame = 0; frame < 3; ++frame) {
     Scene at = scene_at_frame(scene, frame);
@@ -138,7 +138,7 @@ TEST_F(BrushFitParity, OrbitVotesMatchTheReference) {
     orbit_votes(scene, runs, lengths);
     size_t voted = std::count_if(runs.begin(), runs.end(), [](const auto& v) { return !v.empty(); });
     ASSERT_GT(voted, 0u) << name;
-    Tally t = compare(runs, lengths, {});
+    Tally t = compare(runs, lengths, ParamSet{}.get<CoherenceParams>());
     std::printf("brush fit, %s orbit: %zu runs voted for, %zu knots in %zu runs, t within %.3g px\n", name, voted,
                 t.knots, t.runs, t.worst);
   }

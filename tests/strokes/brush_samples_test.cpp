@@ -23,7 +23,7 @@ class BrushSamplesParity : public testing::GlTest {};
 TEST_F(BrushSamplesParity, SilhouetteRunsSampleAsTheReference) {
   for (const char* name : testing::kOrbitScenes) {
     Scene scene = testing::orbit_scene(name, 2);
-    CoherenceParams p;
+    CoherenceParams p = ParamSet{}.get<CoherenceParams>();
     std::vector<BrushSample> previous;
     size_t compared = 0;
     double worst = 0, size = 0;

@@ -24,7 +24,7 @@ class BrushVotesParity : public testing::GlTest {};
 TEST_F(BrushVotesParity, OrbitSamplesVoteAsTheReference) {
   for (const char* name : testing::kOrbitScenes) {
     Scene scene = testing::orbit_scene(name, 3);
-    CoherenceParams p;
+    CoherenceParams p = ParamSet{}.get<CoherenceParams>();
     std::vector<BrushSample> previous;
     std::vector<BrushParameter> fitted;
     size_t votes = 0;
@@ -62,7 +62,7 @@ TEST_F(BrushVotesParity, OrbitSamplesVoteAsTheReference) {
 TEST_F(BrushVotesParity, SamplesLeftOnTheGpuVoteAsThoseReadBack) {
   for (const char* name : testing::kOrbitScenes) {
     Scene scene = testing::orbit_scene(name, 3);
-    CoherenceParams p;
+    CoherenceParams p = ParamSet{}.get<CoherenceParams>();
     gpu::BrushSamples left, given;
     gpu::BrushVotes from_gpu, from_cpu;
     gpu::BrushFit fit;

@@ -6,7 +6,9 @@
 // under the 2002 paper's arc length, the propagated parameter stays on the surface.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "common/strokes/coherent_silhouettes.hpp"
 #include "experiments/temporal_coherence/measures.hpp"
@@ -14,6 +16,8 @@
 
 namespace plumbago {
 namespace {
+
+const CoherenceParams kDefaults = ParamSet{}.get<CoherenceParams>();
 
 // Votes of `stroke` every 8 px from s0 to s1, carrying t(s).
 template <class F>
@@ -33,22 +37,22 @@ double worst(const BrushParameter& knots, double length, F want) {
 
 TEST(CoherentSilhouettes, FitCarriesAShiftedParameterOverTheWholeRun) {
   auto shifted = [](double s) { return s + 37.0; };
-  BrushParameter knots = fit_brush_parameter(votes(100, 200, shifted), 300, {});
+  BrushParameter knots = fit_brush_parameter(votes(100, 200, shifted), 300, kDefaults);
   ASSERT_GE(knots.size(), 2u);
   EXPECT_LT(worst(knots, 300, shifted), 1e-6);  // beyond the votes too: uniformity runs on at rate 1
 }
 
 TEST(CoherentSilhouettes, FitFollowsAPathTracedTheOtherWay) {
   auto reversed = [](double s) { return 500.0 - s; };
-  EXPECT_LT(worst(fit_brush_parameter(votes(0, 240, reversed), 240, {}), 240, reversed), 1e-6);
+  EXPECT_LT(worst(fit_brush_parameter(votes(0, 240, reversed), 240, kDefaults), 240, reversed), 1e-6);
 }
 
 TEST(CoherentSilhouettes, UniformityPullsAStretchedParameterTowardsRateOne) {
   auto stretched = [](double s) { return 1.5 * s; };
-  CoherenceParams free;
+  CoherenceParams free = kDefaults;
   free.scale_weight = 0;
   EXPECT_LT(worst(fit_brush_parameter(votes(0, 288, stretched), 288, free), 288, stretched), 1e-6);
-  BrushParameter balanced = fit_brush_parameter(votes(0, 288, stretched), 288, {});
+  BrushParameter balanced = fit_brush_parameter(votes(0, 288, stretched), 288, kDefaults);
   double rate = (brush_t(balanced, 288) - brush_t(balanced, 0)) / 288;
   EXPECT_GT(rate, 1.0);
   EXPECT_LT(rate, 1.5);
@@ -77,25 +81,25 @@ TEST(CoherentSilhouettes, EachGroupParameterizesItsSectionOfTheRun) {
   auto high = [](double s) { return s + 300; };
   // Two strokes voted for the run: it follows each on its side of their votes' midpoint.
   auto merged = [&](double s) { return s < 100 ? low(s) : high(s); };
-  BrushParameter both = fit_brush_parameter(two_strokes(low, 96, high, 104, 300), 300, {});
+  BrushParameter both = fit_brush_parameter(two_strokes(low, 96, high, 104, 300), 300, kDefaults);
   EXPECT_LT(worst_off_seam(both, 300, 100, merged), 1e-6);
   // One stroke whose t jumps (its seam) mid-way: two brush paths.
   auto jumps = [](double s) { return s < 148 ? s : s + 250; };
-  EXPECT_LT(worst_off_seam(fit_brush_parameter(votes(0, 200, jumps), 300, {}), 300, 148, jumps), 1e-6);
+  EXPECT_LT(worst_off_seam(fit_brush_parameter(votes(0, 200, jumps), 300, kDefaults), 300, 148, jumps), 1e-6);
   // A small group inside a larger one's span claims nothing.
   auto same = [](double s) { return s; };
   auto shifted = [](double s) { return s + 90; };
   std::vector<BrushVote> inside = two_strokes(same, 296, shifted, 120, 136);
-  EXPECT_LT(worst(fit_brush_parameter(inside, 300, {}), 300, same), 1e-6);
+  EXPECT_LT(worst(fit_brush_parameter(inside, 300, kDefaults), 300, same), 1e-6);
 }
 
 // A claim needs 2 votes: a single one leaves the arc length. Asked to take one, it fixes the
 // phase of t over the whole run at rate +1.
 TEST(CoherentSilhouettes, OneVoteLeavesTheArcLengthOrFixesThePhase) {
   auto shifted = [](double s) { return s + 5; };
-  EXPECT_TRUE(fit_brush_parameter(votes(40, 40, shifted), 100, {}).empty());
+  EXPECT_TRUE(fit_brush_parameter(votes(40, 40, shifted), 100, kDefaults).empty());
   EXPECT_EQ(brush_t({}, 42.0), 42.0);
-  CoherenceParams one;
+  CoherenceParams one = kDefaults;
   one.claim_votes = 1;
   EXPECT_LT(worst(fit_brush_parameter(votes(40, 40, shifted), 100, one), 100, shifted), 1e-6);
 }
@@ -114,12 +118,14 @@ TEST(CoherentSilhouettes, TheTextureRunsAtTheBrushParameter) {
 // The torus's silhouette slide along an orbit, median and p95 (px a frame pair).
 std::pair<double, double> torus_slide(bool coherent) {
   using namespace temporal_coherence;
-  Scene scene = study_scene(PLUMBAGO_SOURCE_DIR "/scenes/torus_strokes.json", {}, -2.0, 4);
-  CoherentCarry carry;
+  Scene scene = study_scene(PLUMBAGO_SOURCE_DIR "/scenes/torus_strokes.json",
+                            {std::string("strokes.coherent=") + (coherent ? "true" : "false")}, -2.0, 4);
+  Carry carry;
   std::vector<double> slide;
-  StrokeFrame prev = render_stroke_frame(scene, 0, coherent ? &carry : nullptr);
+  StrokeFrame prev = render_stroke_frame(scene, 0, &carry);
   for (int t = 1; t < 4; ++t) {
-    StrokeFrame next = render_stroke_frame(scene, t, coherent ? &carry : nullptr);
+    StrokeFrame next = render_stroke_frame(scene, t, &carry);
+    EXPECT_EQ(std::isnan(next.coherence_ms), !coherent);
     for (const auto& [kind, m] : pair_measures(prev.strokes, next.strokes))
       if (kind == "silhouette") slide.insert(slide.end(), m.slide_px.begin(), m.slide_px.end());
     prev = std::move(next);

@@ -29,7 +29,7 @@ struct CoherentFrame {
 template <class Check>
 void follow_coherent_orbit(const char* name, int frames, Check check) {
   Scene scene = orbit_scene(name, frames);
-  CoherenceParams p;
+  CoherenceParams p = ParamSet{}.get<CoherenceParams>();
   std::vector<BrushSample> previous;
   gpu::BrushVotes votes;
   gpu::BrushFit fit;
