@@ -133,6 +133,7 @@ void Session::make_renderer() {
   Stopwatch watch;
   renderer_.reset();
   renderer_ = std::make_unique<gpu::Renderer>(scene_, preprocessed_);
+  renderer_->follow_every_frame();  // the orbit's views follow each other: coherent strokes carry
   setup_ms_ = watch.ms();
 }
 

@@ -5,11 +5,12 @@
 // frame's brush samples, for the next frame's votes.
 //
 // A frame reads the samples of the frame before it on the camera path only where its renderer
-// drew that one last (the reference: FrameOptions::carry; a GPU renderer: its last frame). A
-// frame that follows none (the first, or one drawn alone) has no votes: t = s, the 2002
-// paper's arc length from each run's start. PathFrames (render, bench, the Python module)
-// draws the frames before the one asked for first, so that frame k of a path is the same
-// whether the path is drawn in order or frame k alone.
+// drew that one last (the reference: FrameOptions::carry; a GPU renderer: its last frame). In
+// the viewer every frame follows the one before it (gpu::Renderer::follow_every_frame), so its
+// orbit carries too. A frame that follows none (the first, or one drawn alone) has no votes:
+// t = s, the 2002 paper's arc length from each run's start. PathFrames (render, bench, the
+// Python module) draws the frames before the one asked for first, so that frame k of a path
+// is the same whether the path is drawn in order or frame k alone.
 #pragma once
 
 #include <vector>

@@ -49,6 +49,7 @@ struct Renderer::State {
       Context::get().check_errors(name);
     }
     glFinish();
+    frame.last_drawn = frame.scene.frame;
   }
 
   // Every buffer the frame's stages declare (common/core/stage.hpp dumped_buffers).
@@ -72,6 +73,8 @@ Renderer::Renderer(const Scene& scene, std::shared_ptr<const Preprocessed> prepr
 }
 
 Renderer::~Renderer() = default;
+
+void Renderer::follow_every_frame() { state_->frame.every_frame_follows = true; }
 
 void Renderer::camera_moved() {
   GpuFrame& f = state_->frame;

@@ -30,6 +30,11 @@ class Renderer {
   // where they follow it, a path's frame): what the passes made of the old one is made again,
   // the rest kept; the next frame sizes the stroke buffers again (it reads their counts back).
   void camera_moved();
+  // From now on each frame follows the one drawn before it, whatever its path frame (the
+  // viewer's orbit): what carries from frame to frame (coherent silhouettes,
+  // common/strokes/brush_parameters.hpp) carries into it. Else only the path's next frame
+  // follows (PathFrames).
+  void follow_every_frame();
   // Renders one frame and reads it back. `ran` holds the preprocessing steps that made
   // its data (once, possibly by an earlier renderer) and the GPU times per pass, plus
   // "readback" (CPU wall time of downloading the image).

@@ -45,6 +45,14 @@ class GpuFrame : public FrameData {
   // The window lines (common/strokes/id_image.hpp) hold the paths the GPU made as well, read
   // back (Renderer::render: its counts; a dump always); else only those the CPU made.
   bool whole_lines = false;
+  // The path frame the renderer drew last (none before its first), and whether every frame
+  // follows the one drawn before it (Renderer::follow_every_frame).
+  std::optional<int> last_drawn;
+  bool every_frame_follows = false;
+
+  // Whether what the last frame left carries into this one (on the reference: Carry::before):
+  // it is the next frame of the camera path, or every frame follows.
+  bool follows_last() const { return last_drawn && (every_frame_follows || *last_drawn + 1 == scene.frame); }
 
   template <class P>
   P params() const {

@@ -21,13 +21,12 @@ class BrushParametersPass : public GpuPass {
     const int width = f.scene.width, height = f.scene.height;
     const auto p = f.params<CoherenceParams>();
     // The samples the last frame left vote where this frame follows it; else none do (t = s).
-    if (drawn_ && *drawn_ + 1 == f.scene.frame)
+    if (f.follows_last())
       votes_(samples_, camera, width, height, *tables, p);
     else
       votes_(std::vector<BrushSample>{}, camera, width, height, *tables, p);
     fit_(votes_, *tables, p);
     samples_(*tables, camera, width, height, &fit_, p);
-    drawn_ = f.scene.frame;
     f.put(kBrushFit, fit_);
     f.put(kGpuBrushSamples, samples_);
   }
@@ -36,7 +35,6 @@ class BrushParametersPass : public GpuPass {
   BrushVotes votes_;
   BrushFit fit_;
   BrushSamples samples_;
-  std::optional<int> drawn_;  // the path frame drawn last
 };
 
 }  // namespace

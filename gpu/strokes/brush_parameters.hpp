@@ -1,7 +1,8 @@
 // The brush parameters of coherent silhouettes on the GPU (Kalnins et al. 2003; the stage in
 // common/strokes/brush_parameters.hpp), the twin of reference/strokes/brush_parameters.cpp,
-// kept on the GPU from frame to frame: the samples the renderer's last frame left
-// (gpu/strokes/brush_samples.hpp) vote for this frame's runs (gpu/strokes/brush_votes.hpp),
+// kept on the GPU from frame to frame: where this frame follows the renderer's last
+// (GpuFrame::follows_last), the samples that frame left (gpu/strokes/brush_samples.hpp) vote
+// for this frame's runs (gpu/strokes/brush_votes.hpp),
 // the votes are fitted (gpu/strokes/brush_fit.hpp), which the stroke pass draws
 // (gpu/strokes/stroke_samples.hpp), and this frame's runs are sampled for the next. Nothing
 // is read back, and nothing per run or sample goes through the CPU.

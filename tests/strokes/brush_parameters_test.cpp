@@ -143,5 +143,38 @@ TEST_F(BrushParametersParity, AFrameThatFollowsReadsNothingMoreBack) {
               ran->ms, on.readback_bytes, off.readback_bytes);
 }
 
+// The viewer's renderer (every frame follows the one before it) carries along views that are
+// no path's frames as a renderer along the path does: the same samples, t bit for bit. A
+// renderer whose frames follow only their path's next one draws those views at arc length.
+TEST_F(BrushParametersParity, ARendererWhoseEveryFrameFollowsCarriesAlongFreeViews) {
+  Scene path = coherent(testing::orbit_scene("torus_strokes.json", kFrames), true);
+  Scene at = scene_at_frame(path, 0), free = at;
+  free.animation.reset();  // views of no path: frame 0 each
+  gpu::Renderer along(at), viewer(free), alone(free);
+  viewer.follow_every_frame();
+  size_t samples = 0, off_arc_length = 0;
+  for (int k = 0; k < kFrames; ++k) {
+    if (k > 0) {
+      move_along_path(at, k), along.camera_moved();
+      take_view(free, at), free.frame = 0, free.path_start = free.camera;
+      viewer.camera_moved(), alone.camera_moved();
+    }
+    along.render(), viewer.render(), alone.render();
+    const auto brushed = [](const gpu::Renderer& r) { return r.frame().get(gpu::kGpuBrushSamples).samples(); };
+    std::vector<BrushSample> want = brushed(along), got = brushed(viewer), arc = brushed(alone);
+    ASSERT_EQ(got.size(), want.size()) << "frame " << k;
+    ASSERT_EQ(arc.size(), want.size()) << "frame " << k;
+    for (size_t i = 0; i < want.size(); ++i) {
+      EXPECT_EQ(got[i].t, want[i].t) << "frame " << k << " sample " << i;
+      EXPECT_EQ(got[i].world, want[i].world) << "frame " << k << " sample " << i;
+      off_arc_length += std::abs(arc[i].t - want[i].t) > 2.0;
+    }
+    samples += want.size();
+  }
+  std::printf("torus orbit as free views, every frame following: %zu samples as along the path (%zu off arc length)\n",
+              samples, off_arc_length);
+  EXPECT_GT(off_arc_length, 20u) << "the views did not carry";
+}
+
 }  // namespace
 }  // namespace plumbago
