@@ -147,27 +147,38 @@ TEST_F(BrushFitParity, OrbitVotesMatchTheReference) {
 // The whole of a frame's coherence on the GPU but its brush samples: the last frame's samples
 // vote over the runs on the GPU (gpu/strokes/brush_votes.hpp), the votes are bucketed by run
 // there and fitted: each run's knots as coherent_parameters gives them.
-TEST_F(BrushFitParity, VotesLeftOnTheGpuFitAsTheReference) {
-  for (const char* name : testing::kOrbitScenes) {
-    Tally t;
-    testing::follow_coherent_orbit(name, 3, [&](const testing::CoherentFrame& f) {
-      std::vector<BrushParameter> gpu = f.fit.parameters();
-      const std::vector<BrushParameter>& ref = f.reference;
-      ASSERT_EQ(gpu.size(), ref.size()) << name;
-      for (size_t r = 0; r < ref.size(); ++r) {
-        ASSERT_EQ(gpu[r].size(), ref[r].size()) << name << " run " << r;
-        t.runs += ref[r].empty() ? 0 : 1, t.knots += ref[r].size();
-        for (size_t k = 0; k < ref[r].size(); ++k) {
-          EXPECT_EQ(gpu[r][k].x, ref[r][k].x) << name << " run " << r << " knot " << k;
-          EXPECT_NEAR(gpu[r][k].y, ref[r][k].y, kKnotTolerance) << name << " run " << r << " knot " << k;
-          t.worst = std::max(t.worst, std::abs(gpu[r][k].y - ref[r][k].y));
+// The GPU's fit of its own votes along scene `name`'s orbit against the reference's, with the
+// coherence parameters `sets` (stage.param=value).
+void fit_of_gpu_votes(const char* name, const std::vector<std::string>& sets) {
+  Tally t;
+  testing::follow_coherent_orbit(
+      name, 3,
+      [&](const testing::CoherentFrame& f) {
+        std::vector<BrushParameter> gpu = f.fit.parameters();
+        const std::vector<BrushParameter>& ref = f.reference;
+        ASSERT_EQ(gpu.size(), ref.size()) << name;
+        for (size_t r = 0; r < ref.size(); ++r) {
+          ASSERT_EQ(gpu[r].size(), ref[r].size()) << name << " run " << r;
+          t.runs += ref[r].empty() ? 0 : 1, t.knots += ref[r].size();
+          for (size_t k = 0; k < ref[r].size(); ++k) {
+            EXPECT_EQ(gpu[r][k].x, ref[r][k].x) << name << " run " << r << " knot " << k;
+            EXPECT_NEAR(gpu[r][k].y, ref[r][k].y, kKnotTolerance) << name << " run " << r << " knot " << k;
+            t.worst = std::max(t.worst, std::abs(gpu[r][k].y - ref[r][k].y));
+          }
         }
-      }
-    });
-    EXPECT_GT(t.runs, 2u) << name;
-    std::printf("brush fit of the GPU's votes, %s orbit: %zu knots in %zu runs, t within %.3g px\n", name, t.knots,
-                t.runs, t.worst);
-  }
+      },
+      sets);
+  EXPECT_GT(t.runs, 2u) << name;
+  std::printf(
+      "brush fit of the GPU's votes, %s orbit (%s coherence parameters): %zu knots in %zu runs, t within %.3g px\n",
+      name, sets.empty() ? "default" : "changed", t.knots, t.runs, t.worst);
+}
+
+// With the default coherence parameters, and with each away from its default.
+TEST_F(BrushFitParity, VotesLeftOnTheGpuFitAsTheReference) {
+  for (bool defaults : {true, false})
+    for (const char* name : testing::kOrbitScenes)
+      fit_of_gpu_votes(name, defaults ? std::vector<std::string>{} : testing::kCoherenceSets);
 }
 
 }  // namespace

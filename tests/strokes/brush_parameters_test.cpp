@@ -16,6 +16,7 @@
 #include "gpu/strokes/brush_parameters.hpp"
 #include "parity/path_frames.hpp"
 #include "reference/core/pipeline.hpp"
+#include "tests/support/coherent_orbit.hpp"
 #include "tests/support/test_scenes.hpp"
 
 namespace plumbago {
@@ -65,7 +66,7 @@ std::vector<std::vector<Sampled>> reference_samples(const Scene& path) {
     reference::ReferenceFrame f = reference::run_stages(at, ran, carry.before(k));
     const std::vector<BrushSample>& carried = f.get(kBrushSamples);
     std::vector<BrushSample> arc =
-        brush_samples(f.get(kWindowLines), f.get(kVisibleRuns), {}, ParamSet{}.get<CoherenceParams>());
+        brush_samples(f.get(kWindowLines), f.get(kVisibleRuns), {}, at.params.get<CoherenceParams>());
     out.emplace_back();
     for (size_t i = 0; i < carried.size(); ++i) out.back().push_back({carried[i], arc.at(i).t});
     carry = {k, f.data};
@@ -80,45 +81,67 @@ class BrushParametersParity : public testing::GlTest {};
 // the GPU's nearest in the window, of the same run where the runs match. A run end 1 px
 // apart moves a sample by at most 2 px (its start and its spacing: s = L j / n) and its s,
 // so its t, by at most 2 px; the reference's t and the GPU's are compared there.
+// How the GPU renderer's brush samples along a path compare with the reference's.
+struct Carried {
+  size_t compared = 0, unmatched = 0, carried = 0;
+  double worst_t = 0;
+};
+
+Carried carried_as_the_reference(const Scene& path) {
+  std::vector<std::vector<Sampled>> ref = reference_samples(path);
+  Scene at = scene_at_frame(path, 0);
+  gpu::Renderer renderer(at);
+  Carried c;
+  for (int k = 0; k < kFrames; ++k) {
+    if (k > 0) move_along_path(at, k), renderer.camera_moved();
+    renderer.render();
+    std::vector<BrushSample> gpu = renderer.frame().get(gpu::kGpuBrushSamples).samples();
+    WindowProjection project(at.camera, at.width, at.height);
+    for (const Sampled& r : ref[k]) {
+      glm::dvec2 w(project(r.sample.world));
+      const BrushSample* nearest = nullptr;
+      double best = 2.0;
+      for (const BrushSample& g : gpu) {
+        double d = glm::distance(glm::dvec2(project(g.world)), w);
+        if (d <= best) best = d, nearest = &g;
+      }
+      if (!nearest) {
+        ++c.unmatched;
+        continue;
+      }
+      c.worst_t = std::max(c.worst_t, std::abs(nearest->t - r.sample.t));
+      c.carried += std::abs(r.sample.t - r.s) > 2.0;  // where arc length would fail the test
+      ++c.compared;
+    }
+  }
+  std::printf(
+      "brush parameters, %d frames: %zu reference samples matched within 2 px (%zu unmatched, %zu whose t is 2 px or "
+      "more off arc length), t within %.3g px\n",
+      kFrames, c.compared, c.unmatched, c.carried, c.worst_t);
+  EXPECT_GT(c.compared, 100u);
+  EXPECT_GT(c.carried, 20u);
+  EXPECT_LE(c.worst_t, 2.0);
+  EXPECT_LE(c.unmatched, c.compared / 100);
+  return c;
+}
+
 TEST_F(BrushParametersParity, TheGpuRendererCarriesAsTheReference) {
   for (const char* name : testing::kOrbitScenes) {
-    Scene path = coherent(testing::orbit_scene(name, kFrames), true);
-    std::vector<std::vector<Sampled>> ref = reference_samples(path);
-    Scene at = scene_at_frame(path, 0);
-    gpu::Renderer renderer(at);
-    size_t compared = 0, unmatched = 0, carried = 0;
-    double worst_t = 0;
-    for (int k = 0; k < kFrames; ++k) {
-      if (k > 0) move_along_path(at, k), renderer.camera_moved();
-      renderer.render();
-      std::vector<BrushSample> gpu = renderer.frame().get(gpu::kGpuBrushSamples).samples();
-      WindowProjection project(at.camera, at.width, at.height);
-      for (const Sampled& r : ref[k]) {
-        glm::dvec2 w(project(r.sample.world));
-        const BrushSample* nearest = nullptr;
-        double best = 2.0;
-        for (const BrushSample& g : gpu) {
-          double d = glm::distance(glm::dvec2(project(g.world)), w);
-          if (d <= best) best = d, nearest = &g;
-        }
-        if (!nearest) {
-          ++unmatched;
-          continue;
-        }
-        worst_t = std::max(worst_t, std::abs(nearest->t - r.sample.t));
-        carried += std::abs(r.sample.t - r.s) > 2.0;  // where arc length would fail the test
-        ++compared;
-      }
-    }
-    std::printf(
-        "brush parameters, %s orbit, %d frames: %zu reference samples matched within 2 px (%zu unmatched, "
-        "%zu whose t is 2 px or more off arc length), t within %.3g px\n",
-        name, kFrames, compared, unmatched, carried, worst_t);
-    EXPECT_GT(compared, 100u) << name;
-    EXPECT_GT(carried, 20u) << name;
-    EXPECT_LE(worst_t, 2.0) << name;
-    EXPECT_LE(unmatched, compared / 100) << name;
+    std::printf("%s orbit: ", name);
+    carried_as_the_reference(coherent(testing::orbit_scene(name, kFrames), true));
   }
+}
+
+// Both renderers read the scene's coherence.* parameters: with every one away from its
+// default, the GPU still carries as the reference does, and the reference's samples are
+// another set than the defaults give (the parameters reached it).
+TEST_F(BrushParametersParity, BothRenderersReadTheCoherenceParameters) {
+  Scene path = coherent(testing::orbit_scene("torus_strokes.json", kFrames), true);
+  for (const std::string& set : testing::kCoherenceSets) path.params.set_assignment(set);
+  std::printf("torus orbit, every coherence parameter set: ");
+  carried_as_the_reference(path);
+  Scene defaults = coherent(testing::orbit_scene("torus_strokes.json", kFrames), true);
+  EXPECT_NE(reference_samples(path).back().size(), reference_samples(defaults).back().size());
 }
 
 // The GPU's carry reads nothing back: a frame that follows one votes, fits and samples on the

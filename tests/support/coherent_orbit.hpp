@@ -3,6 +3,7 @@
 // and fitted there: what the coherence parity tests compare, frame after frame.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "common/scene/animation.hpp"
@@ -13,6 +14,12 @@
 #include "tests/support/test_scenes.hpp"
 
 namespace plumbago::testing {
+
+// Every coherence parameter away from its default (the tests that check both backends read
+// them all).
+inline const std::vector<std::string> kCoherenceSets = {
+    "coherence.sample_px=5",   "coherence.search_px=9", "coherence.depth_tolerance=0.02", "coherence.jump_px=2",
+    "coherence.claim_votes=3", "coherence.knot_px=24",  "coherence.scale_weight=0.5",     "coherence.distort_weight=3"};
 
 // A frame after the first: the reference's parameters (coherent_parameters) and the GPU's
 // fit of the same samples' votes, over the runs `tables` put up.
@@ -25,11 +32,13 @@ struct CoherentFrame {
 };
 
 // Hands each frame after the first of scene `name`'s orbit of `frames` frames to `check`; each
-// frame's brush samples are drawn with the reference's parameters.
+// frame's brush samples are drawn with the reference's parameters. The coherence parameters
+// are the scene's, with `sets` (stage.param=value) applied.
 template <class Check>
-void follow_coherent_orbit(const char* name, int frames, Check check) {
+void follow_coherent_orbit(const char* name, int frames, Check check, const std::vector<std::string>& sets = {}) {
   Scene scene = orbit_scene(name, frames);
-  CoherenceParams p = ParamSet{}.get<CoherenceParams>();
+  for (const std::string& set : sets) scene.params.set_assignment(set);
+  const CoherenceParams p = scene.params.get<CoherenceParams>();
   std::vector<BrushSample> previous;
   gpu::BrushVotes votes;
   gpu::BrushFit fit;
