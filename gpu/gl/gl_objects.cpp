@@ -177,10 +177,9 @@ Buffer make_buffer(const void* data, size_t bytes) {
   return Buffer(id);
 }
 
-void clear_buffer(const Buffer& buffer) {
-  const uint32_t zero = 0;
+void clear_buffer(const Buffer& buffer, uint32_t value) {
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer.id());  // not glClearNamedBufferData: OSMesa has no such entry
-  glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &value);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
 }
 

@@ -1,6 +1,7 @@
 // RAII owners of GL objects (direct state access, GL 4.5) and image transfer.
 #pragma once
 
+#include <cstdint>
 #include <initializer_list>
 #include <utility>
 #include <vector>
@@ -102,8 +103,8 @@ template <class T>
 ScratchBuffer scratch_of(const std::vector<T>& records) {
   return {make_buffer(records.data(), records.size() * sizeof(T)), records.size() * sizeof(T)};
 }
-// Sets every uint32 of `buffer` to 0, on the GPU.
-void clear_buffer(const Buffer& buffer);
+// Sets every uint32 of `buffer` to `value`, on the GPU.
+void clear_buffer(const Buffer& buffer, uint32_t value = 0);
 // Copies `bytes` from the start of `from` into `to` from byte `offset`, on the GPU.
 void copy_buffer(const Buffer& from, const Buffer& to, size_t bytes, size_t offset = 0);
 // Reads `bytes` of a buffer from `offset` back into `out`.

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "common/util/memory_budget.hpp"
@@ -92,18 +93,19 @@ void BrushFit::operator()(const BrushVotes& votes, const RunTables& tables, cons
     glProgramUniform1ui(s->id(), s->uniform("vote_slots"), GLuint(votes.slots()));
     glProgramUniform1ui(s->id(), s->uniform("listed_at"), tables.listed.at);
   }
-  auto step = [&](const Program& s, size_t over) {
+  over_listed_(*tables.listed.buffer, tables.listed.at);
+  auto step = [&](const Program& s, std::optional<size_t> over) {
     const Buffer* bound[] = {&votes.buffer(), &counts_.buffer, &fill_.buffer,        &votes_.buffer,
                              &runs_.buffer,   tables.runs,     tables.listed.buffer, &params_.buffer};
     for (GLuint b = 0; b < 8; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
-    dispatch_strided(s, over);
+    over ? dispatch_strided(s, *over) : over_listed_.dispatch(s);
   };
   step(count_, votes.slots());
   scan_(counts_, run_count_ + 1, *tables.listed.buffer, tables.listed.at, 1);
   step(scatter_, votes.slots());
-  step(bounds_, run_count_);
+  step(bounds_, {});
   scan_(fill_, run_count_ + 1, *tables.listed.buffer, tables.listed.at, 1);
-  step(runs_step_, run_count_);
+  step(runs_step_, {});
   fit();
 }
 
@@ -121,7 +123,7 @@ void BrushFit::reserve(size_t votes, double knots) {
 void BrushFit::fit() {
   const ScratchBuffer* bound[] = {&votes_, &runs_, &groups_, &claims_, &rows_, &knots_, &params_};
   for (GLuint b = 0; b < 7; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
-  dispatch_strided(fit_, run_count_);
+  listed_.buffer ? over_listed_.dispatch(fit_) : dispatch_strided(fit_, run_count_);
 }
 
 std::vector<BrushParameter> BrushFit::parameters() const {

@@ -9,6 +9,7 @@
 
 #include "common/strokes/coherent_silhouettes.hpp"
 #include "gpu/gl/gl_objects.hpp"
+#include "gpu/gl/groups.hpp"
 #include "gpu/gl/program.hpp"
 #include "gpu/gl/scan.hpp"
 #include "gpu/strokes/brush_votes.hpp"
@@ -52,6 +53,7 @@ class BrushFit {
 
   Program fit_, count_, scatter_, bounds_, runs_step_;
   ExclusiveScan scan_;
+  GroupsOver over_listed_;  // the runs listed, where the tables'
   ScratchBuffer votes_, runs_, groups_, claims_, rows_, knots_, params_, counts_, fill_;
   size_t run_count_ = 0;
   GpuCount listed_;  // the runs listed, where the tables' (else run_count_)

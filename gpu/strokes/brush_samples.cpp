@@ -73,6 +73,7 @@ void BrushSamples::sample(const RunTables& tables, const Camera& camera, int wid
     glProgramUniform1ui(s->id(), s->uniform("capacity"), capacity_);
     glProgramUniform1ui(s->id(), s->uniform("with_knots"), fit_runs ? 1u : 0u);
   }
+  over_listed_(*tables.listed.buffer, tables.listed.at);
   auto over_runs = [&](const Program& s) {
     const Buffer* bound_at[] = {tables.paths,    tables.points,
                                 tables.runs,     tables.listed.buffer,
@@ -80,7 +81,7 @@ void BrushSamples::sample(const RunTables& tables, const Camera& camera, int wid
                                 &knots,          &samples_.buffer,
                                 &frame_.buffer,  &total_.buffer};
     for (GLuint b = 0; b < 10; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound_at[b]->id());
-    dispatch_strided(s, tables.bound);
+    over_listed_.dispatch(s);
   };
   over_runs(count_);
   scan_(counts_, size_t(tables.bound) + 1, *tables.listed.buffer, tables.listed.at, 1);

@@ -8,6 +8,7 @@
 
 #include "common/strokes/coherent_silhouettes.hpp"
 #include "gpu/gl/gl_objects.hpp"
+#include "gpu/gl/groups.hpp"
 #include "gpu/gl/program.hpp"
 #include "gpu/gl/scan.hpp"
 #include "gpu/strokes/window_paths.hpp"
@@ -44,6 +45,7 @@ class BrushSamples {
 
   Program count_, write_;
   ExclusiveScan scan_;
+  GroupsOver over_listed_;  // the runs listed
   ScratchBuffer counts_, fit_runs_, knots_, samples_, frame_, total_;
   uint32_t capacity_ = 0;
 };

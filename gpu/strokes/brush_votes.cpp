@@ -2,6 +2,7 @@
 #include "gpu/strokes/brush_votes.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "common/strokes/strokes.hpp"
@@ -23,10 +24,13 @@ struct VoteRecord {
 };
 struct FrameRecord {
   glm::dmat4 clip, view;
-  double width, height, search_px, depth_tolerance;
+  double width, height, search_px, depth_tolerance, cell;
+  uint32_t columns, rows;
+  double pad[2] = {0, 0};  // std430 rounds the struct to 32 bytes (its dmat4)
 };
-static_assert(sizeof(SampleRecord) == 40 && sizeof(VoteRecord) == 24 && sizeof(FrameRecord) == 288,
+static_assert(sizeof(SampleRecord) == 40 && sizeof(VoteRecord) == 24 && sizeof(FrameRecord) == 320,
               "std430 layouts of brush_votes.comp");
+constexpr size_t kPieceBytes = 80;  // brush_votes.comp Piece (std430: 16-aligned for its dvec2)
 constexpr uint32_t kNoVote = 0xffffffffu;
 
 Program step(const char* name) {
@@ -35,7 +39,7 @@ Program step(const char* name) {
 
 }  // namespace
 
-BrushVotes::BrushVotes() : box_(step("STEP_BOXES")), vote_(step("STEP_VOTE")) {}
+BrushVotes::BrushVotes() : pieces_(step("STEP_PIECES")), bin_(step("STEP_BIN")), vote_(step("STEP_VOTE")) {}
 
 void BrushVotes::operator()(const std::vector<BrushSample>& previous, const Camera& camera, int width, int height,
                             const RunTables& tables, const CoherenceParams& p) {
@@ -53,21 +57,46 @@ void BrushVotes::operator()(const BrushSamples& previous, const Camera& camera, 
 
 void BrushVotes::vote(const Buffer& samples, const Buffer& total, size_t slots, const Camera& camera, int width,
                       int height, const RunTables& tables, const CoherenceParams& p) {
-  slots_ = slots;
-  if (slots == 0) return;
-  check_memory_budget("the brush votes of " + std::to_string(slots) + " samples on the GPU",
-                      double(slots) * double(sizeof(VoteRecord)));
-  votes_.reserve(slots * sizeof(VoteRecord)), boxes_.reserve(std::max<size_t>(tables.bound, 1) * sizeof(glm::dvec4));
+  slots_ = tables.bound == 0 ? 0 : slots;  // no runs listed: no votes
+  if (slots_ == 0) return;
+  double bound = 1;  // the silhouette runs' pieces: their points less one each
+  for (const RunBound& b : tables.bounds)
+    if (b.style == PathTable::kSilhouetteStyle) bound += b.points;
+  check_memory_budget("the brush votes of " + std::to_string(slots) + " samples over " + std::to_string(tables.bound) +
+                          " runs on the GPU",
+                      double(slots) * double(sizeof(VoteRecord)) + bound * double(kPieceBytes + 5 * sizeof(uint32_t)));
+  // The reference's grid (common/strokes/coherent_silhouettes.cpp brush_votes).
+  const double cell = std::max(4.0, 2 * p.search_px);
+  const auto columns = uint32_t(std::ceil(width / cell)) + 1, rows = uint32_t(std::ceil(height / cell)) + 1;
+  const auto pieces = size_t(std::ceil(bound)), cells = size_t(columns) * rows;
+  votes_.reserve(slots * sizeof(VoteRecord)), pieces_at_.reserve(pieces * kPieceBytes);
+  cells_.reserve((cells + 1) * sizeof(uint32_t)), entries_.reserve(4 * pieces * sizeof(uint32_t));
+  longs_.reserve(pieces * sizeof(uint32_t)), counts_.reserve(2 * sizeof(uint32_t));
   WindowProjection project(camera, width, height);
-  const FrameRecord frame{project.clip, project.view, double(width), double(height), p.search_px, p.depth_tolerance};
+  const FrameRecord frame{project.clip, project.view, double(width), double(height), p.search_px, p.depth_tolerance,
+                          cell,         columns,      rows};
   frame_ = scratch_of(std::vector<FrameRecord>{frame});
   glProgramUniform1ui(vote_.id(), vote_.uniform("slots"), GLuint(slots));
-  for (const Program* s : {&box_, &vote_}) glProgramUniform1ui(s->id(), s->uniform("listed_at"), tables.listed.at);
-  const Buffer* bound[] = {tables.paths,   tables.points,  tables.runs, tables.listed.buffer, &samples,
-                           &votes_.buffer, &frame_.buffer, &total,      &boxes_.buffer};
-  for (GLuint b = 0; b < 9; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
-  dispatch_strided(box_, tables.bound);
-  dispatch_strided(vote_, slots);
+  glProgramUniform1ui(pieces_.id(), pieces_.uniform("listed_at"), tables.listed.at);
+  for (const Program* s : {&pieces_, &bin_, &vote_})
+    glProgramUniform1ui(s->id(), s->uniform("piece_capacity"), GLuint(pieces));
+  clear_buffer(cells_), clear_buffer(counts_), clear_buffer(votes_, kNoVote);  // a slot past the samples: no vote
+  const Buffer* bound_at[] = {tables.paths,   tables.points,    tables.runs,   tables.listed.buffer, &samples,
+                              &votes_.buffer, &frame_.buffer,   &total,        &pieces_at_.buffer,   &counts_.buffer,
+                              &cells_.buffer, &entries_.buffer, &longs_.buffer};
+  const auto bind = [&] {
+    for (GLuint b = 0; b < 13; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound_at[b]->id());
+  };
+  over_(*tables.listed.buffer, tables.listed.at);
+  bind();
+  over_.dispatch(pieces_);
+  scan_(cells_, cells);
+  over_(counts_, 0);
+  bind();  // the scan and the groups bind their own
+  over_.dispatch(bin_);
+  over_(total, 0);
+  bind();
+  over_.dispatch(vote_);
 }
 
 std::vector<BrushVote> BrushVotes::votes() const {

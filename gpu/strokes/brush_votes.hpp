@@ -9,7 +9,9 @@
 
 #include "common/strokes/coherent_silhouettes.hpp"
 #include "gpu/gl/gl_objects.hpp"
+#include "gpu/gl/groups.hpp"
 #include "gpu/gl/program.hpp"
+#include "gpu/gl/scan.hpp"
 #include "gpu/strokes/brush_samples.hpp"
 #include "gpu/strokes/window_paths.hpp"
 
@@ -37,8 +39,10 @@ class BrushVotes {
   void vote(const Buffer& samples, const Buffer& total, size_t slots, const Camera& camera, int width, int height,
             const RunTables& tables, const CoherenceParams& p);
 
-  Program box_, vote_;  // the runs' boxes, then the votes
-  ScratchBuffer samples_, total_, votes_, frame_, boxes_;
+  Program pieces_, bin_, vote_;  // the runs' pieces, their cells, then the votes
+  ExclusiveScan scan_;           // the cells' counts made their starts
+  GroupsOver over_;              // the runs listed, then the pieces
+  ScratchBuffer samples_, total_, votes_, frame_, pieces_at_, counts_, cells_, entries_, longs_;
   size_t slots_ = 0;
 };
 

@@ -24,7 +24,7 @@ uint32_t PathTable::style_of(const WindowPath& p) {
     case LineKind::Border:
       return 1;
     case LineKind::Silhouette:
-      return 2;
+      return kSilhouetteStyle;
     case LineKind::Decal:
     case LineKind::Hatching:
       break;

@@ -44,6 +44,7 @@ static_assert(sizeof(PathRow) == 56 && sizeof(PointRow) == 64 && sizeof(RunRow) 
 struct PathTable {
   explicit PathTable(const WindowLines& lines, size_t skip = 0);
   static uint32_t style_of(const WindowPath& p);
+  static constexpr uint32_t kSilhouetteStyle = 2;
   std::vector<PathRow> paths;
   std::vector<PointRow> points;
   uint32_t entries = 0;

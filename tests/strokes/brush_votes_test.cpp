@@ -99,5 +99,18 @@ TEST_F(BrushVotesParity, SamplesLeftOnTheGpuVoteAsThoseReadBack) {
   }
 }
 
+// A frame with no lines at all (the mesh left the view) after one with samples: no votes.
+TEST_F(BrushVotesParity, AFrameWithoutRunsHasNoVotes) {
+  Scene scene = testing::orbit_scene(testing::kOrbitScenes[0], 2);
+  CoherenceParams p = ParamSet{}.get<CoherenceParams>();
+  SceneLines found = scene_lines(scene, "reference");
+  std::vector<BrushSample> previous = brush_samples(found.lines, found.visibility, {}, p);
+  ASSERT_FALSE(previous.empty());
+  gpu::BrushVotes votes;
+  votes(previous, scene.camera, scene.width, scene.height, gpu::RunTables{}, p);
+  EXPECT_TRUE(votes.votes().empty());
+  EXPECT_EQ(votes.slots(), 0u);
+}
+
 }  // namespace
 }  // namespace plumbago
