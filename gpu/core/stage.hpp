@@ -53,6 +53,8 @@ class GpuFrame : public FrameData {
   // Whether what the last frame left carries into this one (on the reference: Carry::before):
   // it is the next frame of the camera path, or every frame follows.
   bool follows_last() const { return last_drawn && (every_frame_follows || *last_drawn + 1 == scene.frame); }
+  // Whether a later frame may follow this one: the scene is a camera path, or every frame follows.
+  bool may_be_followed() const { return every_frame_follows || scene.animation.has_value(); }
 
   template <class P>
   P params() const {
@@ -83,6 +85,11 @@ class GpuFrame : public FrameData {
   template <class T>
   void put(Shared<T> shared, const T& object) {
     shared_[shared.name] = &object;
+  }
+  // None this frame (a pass that made one before and makes none now).
+  template <class T>
+  void withhold(Shared<T> shared) {
+    shared_[shared.name] = static_cast<const T*>(nullptr);
   }
   template <class T>
   const T* get(Maybe<Shared<T>> shared) const {

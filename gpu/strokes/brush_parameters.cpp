@@ -14,6 +14,14 @@ class BrushParametersPass : public GpuPass {
   explicit BrushParametersPass(GpuFrame&) {}
 
   void run(GpuFrame& f) override {
+    // A frame that follows none and that none may follow (a still scene, not the viewer) has
+    // t = s and leaves nothing to carry: no work, and the stroke pass draws arc length.
+    const bool follows = f.follows_last() && carried_;
+    carried_ = follows || f.may_be_followed();
+    if (!carried_) {
+      f.withhold(kBrushFit), f.withhold(kGpuBrushSamples);
+      return;
+    }
     const RunTables* tables = f.get(maybe(kRunTables));
     std::optional<UploadedRuns> uploaded;  // where visibility ran elsewhere
     if (!tables) tables = &uploaded.emplace(f.get(kWindowLines), f.get(kVisibleRuns)).tables();
@@ -21,7 +29,7 @@ class BrushParametersPass : public GpuPass {
     const int width = f.scene.width, height = f.scene.height;
     const auto p = f.params<CoherenceParams>();
     // The samples the last frame left vote where this frame follows it; else none do (t = s).
-    if (f.follows_last())
+    if (follows)
       votes_(samples_, camera, width, height, *tables, p);
     else
       votes_(std::vector<BrushSample>{}, camera, width, height, *tables, p);
@@ -35,6 +43,7 @@ class BrushParametersPass : public GpuPass {
   BrushVotes votes_;
   BrushFit fit_;
   BrushSamples samples_;
+  bool carried_ = false;  // whether samples_ hold the last frame's
 };
 
 }  // namespace

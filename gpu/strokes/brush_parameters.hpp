@@ -5,7 +5,9 @@
 // for this frame's runs (gpu/strokes/brush_votes.hpp),
 // the votes are fitted (gpu/strokes/brush_fit.hpp), which the stroke pass draws
 // (gpu/strokes/stroke_samples.hpp), and this frame's runs are sampled for the next. Nothing
-// is read back, and nothing per run or sample goes through the CPU.
+// is read back, and nothing per run or sample goes through the CPU. A frame that follows
+// none and that none may follow (GpuFrame::may_be_followed: a still scene outside the viewer)
+// does none of this: its runs take t = s, as with no votes.
 #pragma once
 
 #include "gpu/core/stage.hpp"
@@ -14,7 +16,8 @@
 
 namespace plumbago::gpu {
 
-// This frame's fit, which the stroke pass draws; and its brush samples (tests read them back).
+// This frame's fit, which the stroke pass draws; and its brush samples (tests read them back);
+// neither where the frame did no work.
 inline constexpr Shared<BrushFit> kBrushFit{"brush_parameters.fit"};
 inline constexpr Shared<BrushSamples> kGpuBrushSamples{"brush_parameters.gpu_samples"};
 

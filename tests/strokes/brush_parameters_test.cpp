@@ -168,18 +168,20 @@ TEST_F(BrushParametersParity, AFrameThatFollowsReadsNothingMoreBack) {
 
 // The viewer's renderer (every frame follows the one before it) carries along views that are
 // no path's frames as a renderer along the path does: the same samples, t bit for bit. A
-// renderer whose frames follow only their path's next one draws those views at arc length.
+// renderer whose frames follow only their path's next one draws those views (each frame 0 of
+// a path) at arc length.
 TEST_F(BrushParametersParity, ARendererWhoseEveryFrameFollowsCarriesAlongFreeViews) {
   Scene path = coherent(testing::orbit_scene("torus_strokes.json", kFrames), true);
-  Scene at = scene_at_frame(path, 0), free = at;
+  Scene at = scene_at_frame(path, 0), free = at, first = at;
   free.animation.reset();  // views of no path: frame 0 each
-  gpu::Renderer along(at), viewer(free), alone(free);
+  gpu::Renderer along(at), viewer(free), alone(first);
   viewer.follow_every_frame();
   size_t samples = 0, off_arc_length = 0;
   for (int k = 0; k < kFrames; ++k) {
     if (k > 0) {
       move_along_path(at, k), along.camera_moved();
       take_view(free, at), free.frame = 0, free.path_start = free.camera;
+      take_view(first, at), first.frame = 0, first.path_start = first.camera;
       viewer.camera_moved(), alone.camera_moved();
     }
     along.render(), viewer.render(), alone.render();
@@ -197,6 +199,22 @@ TEST_F(BrushParametersParity, ARendererWhoseEveryFrameFollowsCarriesAlongFreeVie
   std::printf("torus orbit as free views, every frame following: %zu samples as along the path (%zu off arc length)\n",
               samples, off_arc_length);
   EXPECT_GT(off_arc_length, 20u) << "the views did not carry";
+}
+
+// A still scene (no camera path) outside the viewer: no frame follows another, so the GPU's
+// stage does no work (no fit, no samples) and the strokes are drawn at arc length, as with
+// strokes.coherent off, pixel for pixel.
+TEST_F(BrushParametersParity, AStillSceneDoesNoCoherenceWork) {
+  Scene still = scene_at_frame(coherent(testing::orbit_scene("torus_strokes.json", kFrames), true), 1);
+  still.animation.reset();
+  Scene off = coherent(still, false);
+  gpu::Renderer on_renderer(still), off_renderer(off);
+  for (int k = 0; k < 2; ++k) {  // the second frame too: it follows none either
+    Image on = on_renderer.render().color, drawn_off = off_renderer.render().color;
+    EXPECT_EQ(on.data, drawn_off.data) << "frame " << k;
+    EXPECT_EQ(on_renderer.frame().get(maybe(gpu::kGpuBrushSamples)), nullptr) << "frame " << k;
+    EXPECT_EQ(on_renderer.frame().get(maybe(gpu::kBrushFit)), nullptr) << "frame " << k;
+  }
 }
 
 }  // namespace
