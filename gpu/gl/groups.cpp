@@ -3,8 +3,10 @@
 
 namespace plumbago::gpu {
 
-GroupsOver::GroupsOver()
-    : step_(Program::compute("util/groups.comp")), groups_(make_buffer(nullptr, 3 * sizeof(uint32_t))) {}
+GroupsOver::GroupsOver(uint32_t group_size)
+    : step_(Program::compute("util/groups.comp")), groups_(make_buffer(nullptr, 3 * sizeof(uint32_t))) {
+  glProgramUniform1ui(step_.id(), step_.uniform("group_size"), group_size);
+}
 
 void GroupsOver::operator()(const Buffer& counts, uint32_t at) {
   glProgramUniform1ui(step_.id(), step_.uniform("at"), at);

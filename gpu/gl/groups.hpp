@@ -13,9 +13,9 @@ namespace plumbago::gpu {
 
 class GroupsOver {
  public:
-  GroupsOver();
-  // The groups of 64 over counts[at] (1 at least, 65535 at most: the steps loop by their
-  // grid's stride), written on the GPU. Binds storage buffers 0 and 1.
+  explicit GroupsOver(uint32_t group_size = 64);  // the programs' local_size_x
+  // The groups over counts[at] (1 at least, 65535 at most: the steps loop by their grid's
+  // stride), written on the GPU. Binds storage buffers 0 and 1.
   void operator()(const Buffer& counts, uint32_t at);
   // Dispatches `program` over them.
   void dispatch(const Program& program) const;

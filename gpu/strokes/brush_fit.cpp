@@ -94,6 +94,7 @@ void BrushFit::operator()(const BrushVotes& votes, const RunTables& tables, cons
     glProgramUniform1ui(s->id(), s->uniform("listed_at"), tables.listed.at);
   }
   over_listed_(*tables.listed.buffer, tables.listed.at);
+  over_each_run_(*tables.listed.buffer, tables.listed.at);
   auto step = [&](const Program& s, std::optional<size_t> over) {
     const Buffer* bound[] = {&votes.buffer(), &counts_.buffer, &fill_.buffer,        &votes_.buffer,
                              &runs_.buffer,   tables.runs,     tables.listed.buffer, &params_.buffer};
@@ -123,7 +124,13 @@ void BrushFit::reserve(size_t votes, double knots) {
 void BrushFit::fit() {
   const ScratchBuffer* bound[] = {&votes_, &runs_, &groups_, &claims_, &rows_, &knots_, &params_};
   for (GLuint b = 0; b < 7; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
-  listed_.buffer ? over_listed_.dispatch(fit_) : dispatch_strided(fit_, run_count_);
+  if (listed_.buffer) {
+    over_each_run_.dispatch(fit_);
+    return;
+  }
+  glUseProgram(fit_.id());  // one run a workgroup (brush_fit.comp)
+  glDispatchCompute(GLuint(std::clamp<size_t>(run_count_, 1, 65535)), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
 std::vector<BrushParameter> BrushFit::parameters() const {

@@ -53,7 +53,8 @@ class BrushFit {
 
   Program fit_, count_, scatter_, bounds_, runs_step_;
   ExclusiveScan scan_;
-  GroupsOver over_listed_;  // the runs listed, where the tables'
+  GroupsOver over_listed_;       // the runs listed, where the tables'
+  GroupsOver over_each_run_{1};  // the same, a workgroup each (the fit's)
   ScratchBuffer votes_, runs_, groups_, claims_, rows_, knots_, params_, counts_, fill_;
   size_t run_count_ = 0;
   GpuCount listed_;  // the runs listed, where the tables' (else run_count_)

@@ -5,7 +5,10 @@
 // each section's t fitted on its knots by the normal equations, solved as a banded LDL^T
 // (the reference: Eigen's dense LDLT). Scratch per run: its groups and claims from its first
 // vote's slot (claims two a vote), its normal equations from its first knot's slot.
-layout(local_size_x = 64) in;
+// One run a workgroup: llvmpipe runs at most 65535 loop iterations in a SIMD batch, all its
+// loops and lanes together (LP_MAX_TGSI_LOOP_ITERATIONS), so that a run of many votes or
+// sections would cut another's loops short in a shared batch (gpu/strokes/brush_fit.hpp).
+layout(local_size_x = 1) in;
 
 struct Vote {  // gpu/strokes/brush_fit.cpp VoteRecord
   double s, t;
@@ -45,12 +48,20 @@ bool before(Vote a, Vote b) {
   return a.t < b.t;
 }
 
-void sort_votes(uint first, uint count) {  // insertion sort: a run's votes are few
-  for (uint i = first + 1u; i < first + count; ++i) {
-    Vote v = votes[i];
-    uint j = i;
-    for (; j > first && before(v, votes[j - 1u]); --j) votes[j] = votes[j - 1u];
-    votes[j] = v;
+// Shell sort (Ciura's gaps, then x 2.25): the votes come in any order (the bucketing's
+// atomics), and an insertion sort of a long run's would loop ~n^2 / 4 times, past the 65535
+// loop iterations llvmpipe allows a shader batch before it cuts every loop short
+// (LP_MAX_TGSI_LOOP_ITERATIONS). The total order makes any sort's result the same.
+void sort_votes(uint first, uint count) {
+  const uint gaps[11] = uint[](8858u, 3937u, 1750u, 701u, 301u, 132u, 57u, 23u, 10u, 4u, 1u);
+  for (uint g = 0u; g < 11u; ++g) {
+    uint gap = gaps[g];
+    for (uint i = first + gap; i < first + count; ++i) {
+      Vote v = votes[i];
+      uint j = i;
+      for (; j >= first + gap && before(v, votes[j - gap]); j -= gap) votes[j] = votes[j - gap];
+      votes[j] = v;
+    }
   }
 }
 
@@ -105,6 +116,17 @@ uint add_piece(uint c0, uint nc, uint first, uint g, double x, double y) {
   return nc + 1u;
 }
 
+// The first of the claims [c0, c0 + nc) that reaches x (to >= x): they are disjoint and
+// sorted by from, so by to too; the claims before it end before x (claim_span skips them).
+uint first_reaching(uint c0, uint nc, double x) {
+  uint lo = 0u, hi = nc;
+  while (lo < hi) {
+    uint mid = (lo + hi) / 2u;
+    if (claims[c0 + mid].to < x) lo = mid + 1u; else hi = mid;
+  }
+  return lo;
+}
+
 // 3. Group g's span less the claims [c0, c0 + nc) (sorted by from, then to), split at their
 // ends: the pieces the reference's interval subtraction leaves, each claimed where its
 // votes are enough, appended. The claims' count after.
@@ -112,7 +134,7 @@ uint claim_span(uint c0, uint nc, uint first, uint g) {
   double a = votes[groups[first + g].first].s, b = votes[groups[first + g].last].s, x = a;
   uint made = nc;
   bool open = true;  // [x, b] is still free
-  for (uint k = 0u; k < nc && open; ++k) {
+  for (uint k = first_reaching(c0, nc, a); k < nc && open; ++k) {
     Claim c = claims[c0 + k];
     if (c.to < x) continue;    // before the piece
     if (c.from > b) break;     // past the span, as every claim after it
@@ -263,5 +285,5 @@ void at_run(uint r) {
 }
 
 void main() {
-  for (uint r = gl_GlobalInvocationID.x; r < p.run_count; r += gl_NumWorkGroups.x * 64u) at_run(r);
+  for (uint r = gl_GlobalInvocationID.x; r < p.run_count; r += gl_NumWorkGroups.x) at_run(r);
 }

@@ -58,9 +58,11 @@ struct Line {
   double operator()(double s) const { return offset + rate * s; }
 };
 
-// Votes of `stroke` every `step` px from s0 to s1, carrying t(s).
+// Votes of `stroke` every `step` px from s0 to s1 (by default sample_px, as the last frame's
+// samples land), carrying t(s).
 template <class F>
-std::vector<BrushVote> votes(double s0, double s1, F t, uint32_t stroke, double step = 8) {
+std::vector<BrushVote> votes(double s0, double s1, F t, uint32_t stroke,
+                             double step = ParamSet{}.get<CoherenceParams>().sample_px) {
   std::vector<BrushVote> out;
   for (double s = s0; s <= s1; s += step) out.push_back({0, s, t(s), stroke});
   return out;
@@ -97,6 +99,10 @@ TEST_F(BrushFitParity, HardCasesMatchTheReference) {
   add({}, 100);                             // no votes
   add(votes(0, 10, Line{0}, 0), 0);         // no length
   add(votes(0, 3000, Line{1e5}, 0), 3000);  // long: 63 knots, far from 0
+  // Votes farther apart than 3 sample_px, each its own group, hundreds (a claim each where
+  // one vote claims): the claims are searched, not walked, so that the fit's loops stay
+  // within what llvmpipe runs (65535 iterations a shader batch, all loops together).
+  add(votes(0, 3000, Line{7}, 0, 4 * ParamSet{}.get<CoherenceParams>().sample_px), 3000);
   for (int claim_votes : {2, 1}) {
     CoherenceParams p = ParamSet{}.get<CoherenceParams>();
     p.claim_votes = claim_votes;
