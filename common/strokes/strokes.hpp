@@ -75,7 +75,7 @@ struct StrokesParams {
     v.real(vis_step_px, "vis_step_px", 2.0, 0.25, 64.0,
            "visibility samples along a path, pixels apart (Kalnins et al. "
            "2002, §4.6)");
-    v.boolean(coherent, "coherent", false,
+    v.boolean(coherent, "coherent", true,
               "silhouette brush parameters carried over the surface from each frame of a camera path to the next "
               "(Kalnins et al. 2003; false: restarted at each visible run, Kalnins et al. 2002, §4.1)");
   }

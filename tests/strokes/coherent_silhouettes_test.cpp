@@ -19,11 +19,11 @@ namespace {
 
 const CoherenceParams kDefaults = ParamSet{}.get<CoherenceParams>();
 
-// Votes of `stroke` every 8 px from s0 to s1, carrying t(s).
+// Votes of `stroke` every sample_px from s0 to s1 (as the last frame's samples land), carrying t(s).
 template <class F>
 std::vector<BrushVote> votes(double s0, double s1, F t, uint32_t stroke = 0) {
   std::vector<BrushVote> out;
-  for (double s = s0; s <= s1; s += 8) out.push_back({0, s, t(s), stroke});
+  for (double s = s0; s <= s1; s += kDefaults.sample_px) out.push_back({0, s, t(s), stroke});
   return out;
 }
 
