@@ -17,12 +17,6 @@ void GroupsOver::operator()(const Buffer& counts, uint32_t at) {
   glMemoryBarrier(GL_COMMAND_BARRIER_BIT);
 }
 
-void GroupsOver::dispatch(const Program& program) const {
-  glUseProgram(program.id());
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, groups_.id());
-  glDispatchComputeIndirect(0);
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-}
+void GroupsOver::dispatch(const Program& program) const { dispatch_indirect(program, groups_); }
 
 }  // namespace plumbago::gpu

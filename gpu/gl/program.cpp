@@ -165,4 +165,12 @@ void dispatch_strided(const Program& program, size_t count) {
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
+void dispatch_indirect(const Program& program, const Buffer& groups, size_t offset) {
+  glUseProgram(program.id());
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, groups.id());
+  glDispatchComputeIndirect(GLintptr(offset));
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
 }  // namespace plumbago::gpu

@@ -141,6 +141,9 @@ void dispatch_in_chunks(const Program& program, size_t count, const char* first)
 // over every (groups x 64)th of `count` items: ceil(count / 64) groups, at least 1 and at
 // most 65535; then a barrier, so that what follows reads what it wrote to storage buffers.
 void dispatch_strided(const Program& program, size_t count);
+// Dispatches a compute program with the groups (x, y, z) the GPU wrote at byte `offset` of
+// `groups`; then the same barrier.
+void dispatch_indirect(const Program& program, const Buffer& groups, size_t offset = 0);
 
 // Reads shaders/<file> (PLUMBAGO_SHADER_DIR, overridable by the environment variable of
 // the same name), expanding includes.

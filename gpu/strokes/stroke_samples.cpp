@@ -257,13 +257,7 @@ void StrokeSamples::over_knots(const Program& step, const BrushFit& brushes) con
 }
 
 // A step over the runs listed, dispatched as run_args_ says.
-void StrokeSamples::over_runs(const Program& step) const {
-  glUseProgram(step.id());
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, run_args_.id());
-  glDispatchComputeIndirect(0);
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-}
+void StrokeSamples::over_runs(const Program& step) const { dispatch_indirect(step, run_args_); }
 
 void StrokeSamples::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, samples_.id());
