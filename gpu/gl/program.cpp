@@ -159,9 +159,9 @@ void dispatch_in_chunks(const Program& program, size_t count, const char* first)
   }
 }
 
-void dispatch_strided(const Program& program, size_t count) {
+void dispatch_strided(const Program& program, size_t count, size_t group_size) {
   glUseProgram(program.id());
-  glDispatchCompute(GLuint(std::clamp<size_t>((count + 63) / 64, 1, 65535)), 1, 1);
+  glDispatchCompute(GLuint(std::clamp<size_t>((count + group_size - 1) / group_size, 1, 65535)), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 

@@ -137,10 +137,11 @@ void set_lights(const Program& program, const std::vector<Light>& view_lights);
 // gets each chunk's first invocation.
 void dispatch_in_chunks(const Program& program, size_t count, const char* first);
 
-// Dispatches a compute program whose work groups are 64 wide and whose invocations each go
-// over every (groups x 64)th of `count` items: ceil(count / 64) groups, at least 1 and at
-// most 65535; then a barrier, so that what follows reads what it wrote to storage buffers.
-void dispatch_strided(const Program& program, size_t count);
+// Dispatches a compute program whose work groups are `group_size` wide and whose invocations
+// each go over every (groups x group_size)th of `count` items: ceil(count / group_size)
+// groups, at least 1 and at most 65535; then a barrier, so that what follows reads what it
+// wrote to storage buffers.
+void dispatch_strided(const Program& program, size_t count, size_t group_size = 64);
 // Dispatches a compute program with the groups (x, y, z) the GPU wrote at byte `offset` of
 // `groups`; then the same barrier.
 void dispatch_indirect(const Program& program, const Buffer& groups, size_t offset = 0);

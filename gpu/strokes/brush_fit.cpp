@@ -124,13 +124,8 @@ void BrushFit::reserve(size_t votes, double knots) {
 void BrushFit::fit() {
   const ScratchBuffer* bound[] = {&votes_, &runs_, &groups_, &claims_, &rows_, &knots_, &params_};
   for (GLuint b = 0; b < 7; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, bound[b]->id());
-  if (listed_.buffer) {
-    over_each_run_.dispatch(fit_);
-    return;
-  }
-  glUseProgram(fit_.id());  // one run a workgroup (brush_fit.comp)
-  glDispatchCompute(GLuint(std::clamp<size_t>(run_count_, 1, 65535)), 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  // One run a workgroup (brush_fit.comp).
+  listed_.buffer ? over_each_run_.dispatch(fit_) : dispatch_strided(fit_, run_count_, 1);
 }
 
 std::vector<BrushParameter> BrushFit::parameters() const {

@@ -7,7 +7,8 @@
 // vote's slot (claims two a vote), its normal equations from its first knot's slot.
 // One run a workgroup: llvmpipe runs at most 65535 loop iterations in a SIMD batch, all its
 // loops and lanes together (LP_MAX_TGSI_LOOP_ITERATIONS), so that a run of many votes or
-// sections would cut another's loops short in a shared batch (gpu/strokes/brush_fit.hpp).
+// sections would cut another's loops short in a shared batch (found by BrushFitParity's hard
+// cases: tests/strokes/brush_fit_test.cpp).
 layout(local_size_x = 1) in;
 
 struct Vote {  // gpu/strokes/brush_fit.cpp VoteRecord
