@@ -350,7 +350,7 @@ double brush_t(const BrushParameter& knots, double s) {
 StampedOffset rubber_stamp(const OffsetExample& example, double s, double run_length) {
   const auto& o = example.offsets;
   double t = s / example.length_px;
-  double scale = std::min(run_length / example.length_px, 1.0);
+  double scale = example.scales ? std::min(run_length / example.length_px, 1.0) : 1.0;
   if (example.repeats)
     t -= std::floor(t);  // (s mod L_drawn) / L_drawn
   else

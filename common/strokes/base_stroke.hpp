@@ -34,9 +34,9 @@
 // 4. Offsets, rubber-stamped (Kalnins et al. 2002, §4.3, §5, App. A; Kalnins et al. 2003). At arc length s the
 //    example's offset list is interpolated linearly at t = (s mod L_drawn) / L_drawn, wrapping from its last
 //    offset to its first (period L_drawn); the displacement is scaled by
-//    min(L / L_drawn, 1). An offset with its break flag lifts the pen until the next
-//    offset: the ribbon is not drawn there, so it splits into pieces. A lift of zero
-//    length (e.g. a break on an offset at t = 1 when the first is at t = 0) splits nothing.
+//    min(L / L_drawn, 1) (by 1 for an example that does not scale, OffsetExample::scales).
+//    An offset with its break flag lifts the pen until the next offset: the ribbon is not drawn there, so it splits
+//    into pieces. A lift of zero length (e.g. a break on an offset at t = 1 when the first is at t = 0) splits nothing.
 //    An example made to span its run (OffsetExample::repeats false: a decal's pressure, a
 //    synthesized example, whose L_drawn is the run's window length while its spline may be
 //    a little longer) does not wrap: t = s / L_drawn is held in [0, 1], the first offset
@@ -44,8 +44,9 @@
 //    Samples move along the base curve's normal by the displacement. Where the run carries a
 //    brush parameter (6.) and the example repeats, the example is stamped at t(s) instead of
 //    s, its lifts and landings placed where t takes them (on each linear piece of t), so
-//    that the offsets stay on the surface with the texture (Kalnins et al. 2003); an example
-//    made to span its run stays on s.
+//    that the offsets stay on the surface with the texture (Kalnins et al. 2003; a synthesized
+//    style's example is then its brush path's, common/strokes/coherent_silhouettes.hpp 5.); an
+//    example made to span its run stays on s.
 // 5. Width and alpha per sample, dl = min(s, L - s) the distance to the nearer end (a closed
 //    run has no ends: none of these apply):
 //      taper  w x sqrt(1 - ((T - dl)/T)^2)             dl < T = taper_px
@@ -111,7 +112,7 @@ std::vector<glm::dvec2> catmull_rom_resample(const std::vector<glm::dvec2>& poin
 // The example's offset at arc length s of a run of length run_length (4. above); the
 // example must be one validate_stroke_style accepts.
 struct StampedOffset {
-  double displacement_px;  // already scaled by min(run_length / L_drawn, 1)
+  double displacement_px;  // already scaled by min(run_length / L_drawn, 1) where the example scales
   double pressure;
   bool pen_down;  // false inside a lift
 };

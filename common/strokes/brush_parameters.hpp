@@ -1,8 +1,8 @@
 // The brush parameters of coherent silhouettes (Kalnins, Davidson, Markosian and Finkelstein
 // 2003; the method: common/strokes/coherent_silhouettes.hpp), the stage that runs where
 // `strokes.coherent` is on: each visible silhouette run's parameter t, voted for by the brush
-// samples the path's previous frame drew and fitted, which the stroke raster draws; and this
-// frame's brush samples, for the next frame's votes.
+// samples the path's previous frame drew and fitted, and the brush path whose offsets it draws,
+// which the stroke raster draws; and this frame's brush samples, for the next frame's votes.
 //
 // A frame reads the samples of the frame before it on the camera path only where its renderer
 // drew that one last (the reference: FrameOptions::carry; a GPU renderer: its last frame). In
@@ -22,7 +22,7 @@
 
 namespace plumbago {
 
-inline constexpr Slot<std::vector<BrushParameter>> kBrushParameters{"brush_parameters.parameters"};
+inline constexpr Slot<std::vector<RunBrush>> kBrushParameters{"brush_parameters.parameters"};
 inline constexpr Slot<std::vector<BrushSample>> kBrushSamples{"brush_parameters.samples"};
 
 namespace when {
@@ -32,20 +32,22 @@ inline bool strokes_coherent(const StageConfig& c) { return c.params.value("stro
 struct BrushParametersStage {
   using Params = TypeList<CoherenceParams>;
   static StageDesc describe() {
-    return {.name = "brush_parameters",
-            .kind = StageKind::Frame,
-            .doc = "silhouette brush parameters carried over the surface from frame to frame (Kalnins et al. 2003)",
-            .params = {"strokes", "coherence"},
-            .inputs = {{.handle = kWindowLines}, {.handle = kVisibleRuns}},
-            .outputs = {{.handle = kBrushParameters,
-                         .channels = 0,
-                         .texel = Texel::Host,
-                         .doc = "per visible run: its knots (s, t); none: t = s (the GPU keeps its fit on the GPU)"},
-                        {.handle = kBrushSamples,
-                         .channels = 0,
-                         .texel = Texel::Host,
-                         .doc = "the silhouettes' surface points every coherence.sample_px and their t, which the next "
-                                "frame's votes read (the GPU keeps its own on the GPU)"}}};
+    return {
+        .name = "brush_parameters",
+        .kind = StageKind::Frame,
+        .doc = "silhouette brush parameters carried over the surface from frame to frame (Kalnins et al. 2003)",
+        .params = {"strokes", "coherence"},
+        .inputs = {{.handle = kWindowLines}, {.handle = kVisibleRuns}},
+        .outputs = {{.handle = kBrushParameters,
+                     .channels = 0,
+                     .texel = Texel::Host,
+                     .doc = "per visible run: its knots (s, t), none: t = s; its brush path (the GPU keeps its fit on "
+                            "the GPU)"},
+                    {.handle = kBrushSamples,
+                     .channels = 0,
+                     .texel = Texel::Host,
+                     .doc = "the silhouettes' surface points every coherence.sample_px, their t and brush path, which "
+                            "the next frame's votes read (the GPU keeps its own on the GPU)"}}};
   }
 };
 

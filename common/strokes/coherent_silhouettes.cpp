@@ -9,6 +9,7 @@
 
 #include <Eigen/Dense>
 
+#include "common/strokes/stroke.hpp"
 #include "common/strokes/strokes.hpp"
 #include "common/util/segment_grid.hpp"
 
@@ -57,7 +58,7 @@ class PieceGrid {
       bool nearer = distance < best_distance || (distance == best_distance && i < best_piece);
       if (!nearer || std::abs(depth - q.z) > depth_tolerance * q.z) return;
       best_distance = distance, best_piece = i;
-      best = BrushVote{piece.run, std::lerp(piece.sa, piece.sb, f), 0.0, 0};
+      best = BrushVote{piece.run, std::lerp(piece.sa, piece.sb, f), 0.0, 0, 0};
     });
     return best;
   }
@@ -175,19 +176,20 @@ BrushParameter fit_section(const Section& section, const CoherenceParams& p) {
 }  // namespace
 
 std::vector<BrushSample> brush_samples(const WindowLines& lines, const Visibility& visibility,
-                                       const std::vector<BrushParameter>& parameters, const CoherenceParams& p) {
+                                       const std::vector<RunBrush>& brushes, const CoherenceParams& p, uint32_t seed) {
   std::vector<BrushSample> out;
+  std::vector<uint32_t> ordinals = run_ordinals(visibility.runs);
   for (uint32_t i = 0; i < visibility.runs.size(); ++i) {
     const VisibleRun& run = visibility.runs[i];
     const WindowPath& path = lines.paths[run.path];
     if (path.kind != LineKind::Silhouette) continue;
     double length = run.s1 - run.s0;
     int n = std::max(1, int(std::ceil(length / p.sample_px)));
-    const BrushParameter none;
-    const BrushParameter& knots = i < parameters.size() ? parameters[i] : none;
+    const RunBrush brush = i < brushes.size() ? brushes[i] : RunBrush{};
+    const uint32_t key = brush_path_key(brush, seed, path, ordinals[i]);
     for (int j = 0; j <= n - (run.closed ? 1 : 0); ++j) {
       double s = length * j / n;
-      out.push_back({world_at(path, run.s0 + s), brush_t(knots, s), i});
+      out.push_back({world_at(path, run.s0 + s), brush_t(brush.knots, s), i, key});
     }
   }
   return out;
@@ -202,29 +204,31 @@ std::vector<BrushVote> brush_votes(const std::vector<BrushSample>& previous, con
     glm::dvec3 seen = project(b.world);
     if (!(seen.z > 0)) continue;
     if (std::optional<BrushVote> v = grid.nearest(seen, p.search_px, p.depth_tolerance))
-      out.push_back({v->run, v->s, b.t, b.stroke});
+      out.push_back({v->run, v->s, b.t, b.stroke, b.path});
   }
   return out;
 }
 
-BrushParameter fit_brush_parameter(std::vector<BrushVote> votes, double length_px, const CoherenceParams& p) {
+RunBrush fit_brush_parameter(std::vector<BrushVote> votes, double length_px, const CoherenceParams& p) {
   if (!(length_px > 0) || votes.empty()) return {};
-  BrushParameter out;
+  RunBrush out;
+  size_t most = 0;
   for (const Section& section :
        sections(vote_groups(std::move(votes), p), length_px, size_t(std::max(1, p.claim_votes)))) {
     BrushParameter knots = fit_section(section, p);
     if (knots.empty()) return {};
-    out.insert(out.end(), knots.begin(), knots.end());
+    out.knots.insert(out.knots.end(), knots.begin(), knots.end());
+    if (section.votes.size() > most) most = section.votes.size(), out.path = section.votes.front().path;  // 5.
   }
   return out;
 }
 
-std::vector<BrushParameter> coherent_parameters(const std::vector<BrushSample>& previous, const Camera& camera,
-                                                const WindowLines& lines, const Visibility& visibility,
-                                                const CoherenceParams& p) {
+std::vector<RunBrush> coherent_parameters(const std::vector<BrushSample>& previous, const Camera& camera,
+                                          const WindowLines& lines, const Visibility& visibility,
+                                          const CoherenceParams& p) {
   std::vector<std::vector<BrushVote>> per_run(visibility.runs.size());
   for (const BrushVote& v : brush_votes(previous, camera, lines, visibility, p)) per_run[v.run].push_back(v);
-  std::vector<BrushParameter> out;
+  std::vector<RunBrush> out;
   for (size_t r = 0; r < per_run.size(); ++r)
     out.push_back(fit_brush_parameter(std::move(per_run[r]), visibility.runs[r].s1 - visibility.runs[r].s0, p));
   return out;

@@ -29,6 +29,18 @@
 //    +1 for a single vote).
 //    The normal equations are solved by Eigen's LDLT. Beyond its votes the fit runs on at
 //    rate σ: the section is covered whole.
+// 5. Brush paths. Each brush sample also carries the brush path its stroke drew: a key that
+//    a run keeps from frame to frame, so that what is drawn along a path's t stays with it.
+//    A run draws the brush path of its largest section (the most votes; equal: the first in
+//    s); a run with no section starts a new one, keyed as the 2002 synthesis keys a run's
+//    walk (the scene seed, its path's key, its ordinal: common/strokes/stroke.hpp
+//    brush_path_key). A style whose offsets are synthesized (Kalnins et al. 2002, §5.3) draws
+//    on a coherent silhouette its brush path's walk, one offset every step along t, made
+//    periodic over kBrushOffsetPeriodPx (the walk's last offset runs into its first) and
+//    stamped at t (common/strokes/base_stroke.hpp 4.) at full size: the offsets stay on the
+//    surface as the texture does. On t in [0, L] a new run draws what the 2002 synthesis
+//    draws along its arc length (where L <= kBrushOffsetPeriodPx - 4). Reading: one brush path a
+//    run; where two merge, the smaller one's offsets change once.
 //
 // The parameters are the scene's `coherence.*` (plumbago params). Their defaults are those of
 // jot, the authors' system (votes searched within 6 px, knots every 48 px, unit weights), but
@@ -76,36 +88,49 @@ struct CoherenceParams {
   }
 };
 
-// 1. A surface point a silhouette stroke drew, with its t and the stroke's index among its
-// frame's runs.
+// 5. The period of a brush path's synthesized offsets along t (px).
+inline constexpr double kBrushOffsetPeriodPx = 1024;
+// A run's brush path before it is known: a run with no section starts a new one.
+inline constexpr uint32_t kNewBrushPath = 0xffffffffu;
+
+// A visible run's brush: its parameter (knots; none: t = s) and its brush path (5.).
+struct RunBrush {
+  BrushParameter knots;
+  uint32_t path = kNewBrushPath;
+};
+
+// 1. A surface point a silhouette stroke drew, with its t, the stroke's index among its
+// frame's runs and its brush path (5.).
 struct BrushSample {
   glm::dvec3 world;
   double t;
-  uint32_t stroke;
+  uint32_t stroke, path;
 };
 
-// Every `sample_px` along each visible silhouette run (runs[i] parameterized by
-// parameters[i]; a run past the end of `parameters` by t = s).
+// Every `sample_px` along each visible silhouette run (runs[i] drawn with brushes[i]; a run
+// past the end of `brushes` by t = s and a new brush path); `seed` the scene's, which keys
+// new brush paths.
 std::vector<BrushSample> brush_samples(const WindowLines& lines, const Visibility& visibility,
-                                       const std::vector<BrushParameter>& parameters, const CoherenceParams& p);
+                                       const std::vector<RunBrush>& brushes, const CoherenceParams& p, uint32_t seed);
 
-// 2. A vote for run `run` of the new frame: at its s, t, from the previous frame's `stroke`.
+// 2. A vote for run `run` of the new frame: at its s, t, from the previous frame's `stroke`,
+// which drew brush path `path`.
 struct BrushVote {
   uint32_t run;
   double s, t;
-  uint32_t stroke;
+  uint32_t stroke, path;
 };
 
 std::vector<BrushVote> brush_votes(const std::vector<BrushSample>& previous, const Camera& camera,
                                    const WindowLines& lines, const Visibility& visibility, const CoherenceParams& p);
 
-// 3.-4. One run's parameter from its votes (any order), L its window length: its sections'
-// fits; none where no group claims a section.
-BrushParameter fit_brush_parameter(std::vector<BrushVote> votes, double length_px, const CoherenceParams& p);
+// 3.-5. One run's brush from its votes (any order), L its window length: its sections' fits
+// and the brush path of its largest; none (t = s, a new path) where no group claims a section.
+RunBrush fit_brush_parameter(std::vector<BrushVote> votes, double length_px, const CoherenceParams& p);
 
-// Each visible run's parameter in the new frame (none where no group votes for it).
-std::vector<BrushParameter> coherent_parameters(const std::vector<BrushSample>& previous, const Camera& camera,
-                                                const WindowLines& lines, const Visibility& visibility,
-                                                const CoherenceParams& p);
+// Each visible run's brush in the new frame (none where no group votes for it).
+std::vector<RunBrush> coherent_parameters(const std::vector<BrushSample>& previous, const Camera& camera,
+                                          const WindowLines& lines, const Visibility& visibility,
+                                          const CoherenceParams& p);
 
 }  // namespace plumbago

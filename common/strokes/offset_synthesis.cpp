@@ -327,6 +327,21 @@ OffsetExample OffsetSynthesizer::synthesize_example(double length_px, CounterStr
   return out;
 }
 
+OffsetExample OffsetSynthesizer::synthesize_period(double period_px, CounterStream rng) const {
+  const double step = options_.step_px;
+  if (!(period_px >= step) || !std::isfinite(period_px))
+    throw std::invalid_argument("synthesize_period: the period must be finite and at least one step");
+  size_t n = offset_count(period_px, step) - 1;  // k step < period_px
+  std::vector<size_t> states = walk(n, rng);
+  OffsetExample out;
+  out.length_px = period_px;
+  out.scales = false;
+  for (size_t k = 0; k < n; ++k)
+    out.offsets.push_back({double(k) * step / period_px, states.empty() ? 0.0 : values_[states[k]],
+                           states.empty() ? 1.0 : pressures_[states[k]], false});
+  return out;
+}
+
 double OffsetSynthesizer::probability(size_t i, size_t j) const {
   if (!markov_ || i >= rows_.size()) return 0;
   const Row& row = rows_[i];

@@ -133,6 +133,12 @@ class OffsetSynthesizer {
   OffsetExample synthesize_example(double length_px, uint32_t seed, std::string_view name) const;
   // The same from a given stream.
   OffsetExample synthesize_example(double length_px, CounterStream stream) const;
+  // The walk from `stream` as a periodic example of period_px (a brush path's along its
+  // brush parameter: common/strokes/coherent_silhouettes.hpp 5.): offset k at t = k step /
+  // period_px while that is below 1, the last one running into the first; it repeats and
+  // does not scale. On [0, L] it is synthesize_example(L, stream)'s, L <= period_px - step. Throws
+  // std::invalid_argument where period_px is not finite, below step or over 1e7 offsets.
+  OffsetExample synthesize_period(double period_px, CounterStream stream) const;
 
   // Inspection, for tests.
   size_t state_count() const { return values_.size(); }

@@ -97,7 +97,11 @@ OffsetSynthesizer offset_chain(LineKind kind, const StrokeStyles& styles) {
   return drawn.empty() ? OffsetSynthesizer(*line_style(kind, styles).offsets) : OffsetSynthesizer(drawn);
 }
 
-StrokeStyle RunStyles::of(const WindowPath& path, const VisibleRun& run, uint32_t ordinal) {
+uint32_t brush_path_key(const RunBrush& brush, uint32_t seed, const WindowPath& path, uint32_t ordinal) {
+  return brush.path != kNewBrushPath ? brush.path : stream_key({seed, path.key, ordinal, kOffsetWalk});
+}
+
+StrokeStyle RunStyles::of(const WindowPath& path, const VisibleRun& run, uint32_t ordinal, const RunBrush* brush) {
   if (path.kind == LineKind::Decal) return decal_style(decals_.at(path.decal), path, run);
   if (path.kind == LineKind::Hatching) {  // Kalnins et al. 2002, §6: faded and thickened by its level of detail
     StrokeStyle style = decal_style(decals_.at(path.decal), path, run);
@@ -121,8 +125,13 @@ StrokeStyle RunStyles::of(const WindowPath& path, const VisibleRun& run, uint32_
   }
   auto it = chains_.find(path.kind);
   if (it == chains_.end()) it = chains_.emplace(path.kind, offset_chain(path.kind, styles_)).first;
-  CounterStream walk(stream_key({seed_, path.key, ordinal, kOffsetWalk}));
-  style.offsets = it->second.synthesize_example(run.s1 - run.s0, walk);
+  if (brush && path.kind == LineKind::Silhouette) {  // its brush path's, along t (Kalnins et al. 2003)
+    CounterStream walk(brush_path_key(*brush, seed_, path, ordinal));
+    style.offsets = it->second.synthesize_period(kBrushOffsetPeriodPx, walk);
+  } else {
+    style.offsets =
+        it->second.synthesize_example(run.s1 - run.s0, CounterStream(brush_path_key({}, seed_, path, ordinal)));
+  }
   return style;
 }
 
@@ -134,35 +143,35 @@ std::vector<uint32_t> run_ordinals(const std::vector<VisibleRun>& runs) {
 }
 
 std::vector<StrokeStyle> run_styles(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
-                                    uint32_t seed) {
+                                    uint32_t seed, const std::vector<RunBrush>& brushes) {
   std::vector<StrokeStyle> out;
   RunStyles of_run(styles, seed, lines.decal_styles);
   std::vector<uint32_t> ordinals = run_ordinals(visibility.runs);
   for (size_t i = 0; i < visibility.runs.size(); ++i)
-    out.push_back(of_run.of(lines.paths[visibility.runs[i].path], visibility.runs[i], ordinals[i]));
+    out.push_back(of_run.of(lines.paths[visibility.runs[i].path], visibility.runs[i], ordinals[i],
+                            i < brushes.size() ? &brushes[i] : nullptr));
   return out;
 }
 
 std::vector<StyledRun> styled_runs(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
-                                   uint32_t seed) {
+                                   uint32_t seed, const std::vector<RunBrush>& brushes) {
   std::vector<StyledRun> out;
-  std::vector<StrokeStyle> of_run = run_styles(lines, visibility, styles, seed);
+  std::vector<StrokeStyle> of_run = run_styles(lines, visibility, styles, seed, brushes);
   for (size_t i = 0; i < visibility.runs.size(); ++i) {
     const VisibleRun& run = visibility.runs[i];
-    out.push_back({{run.window, run.closed, run.occluded_start, run.occluded_end}, std::move(of_run[i])});
+    BrushParameter knots = i < brushes.size() ? brushes[i].knots : BrushParameter{};
+    out.push_back(
+        {{run.window, run.closed, run.occluded_start, run.occluded_end, std::move(knots)}, std::move(of_run[i])});
   }
   return out;
 }
 
 std::vector<RunStroke> run_strokes(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
-                                   uint32_t seed, const std::vector<BrushParameter>& brushes) {
+                                   uint32_t seed, const std::vector<RunBrush>& brushes) {
   check_stroke_memory(lines, visibility, styles);
   std::vector<RunStroke> out;
-  std::vector<StyledRun> runs = styled_runs(lines, visibility, styles, seed);
-  for (size_t i = 0; i < runs.size(); ++i) {
-    if (i < brushes.size()) runs[i].run.brush = brushes[i];
-    out.push_back({runs[i].style, base_stroke_samples(runs[i].run, runs[i].style)});
-  }
+  for (StyledRun& r : styled_runs(lines, visibility, styles, seed, brushes))
+    out.push_back({r.style, base_stroke_samples(r.run, r.style)});
   return out;
 }
 

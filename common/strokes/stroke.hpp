@@ -60,13 +60,17 @@ OffsetSynthesizer offset_chain(LineKind kind, const StrokeStyles& styles);
 // The keys of a run's counter-based streams: which drawn example a path starts its stamps
 // with, and the Markov walk of its run `ordinal` (common/util/random.hpp stream_key).
 enum RunStream : uint32_t { kStampStart = 1, kOffsetWalk = 2 };
+// The brush path a run draws (common/strokes/coherent_silhouettes.hpp 5.): `brush`'s, else a
+// new one keyed by the run's Markov walk (the scene seed, its path's key, its ordinal).
+uint32_t brush_path_key(const RunBrush& brush, uint32_t seed, const WindowPath& path, uint32_t ordinal);
 
 class RunStyles {
  public:
   RunStyles(const StrokeStyles& styles, uint32_t seed, const std::vector<StrokeStyle>& decals)
       : styles_(styles), seed_(seed), decals_(decals) {}
-  // `ordinal`: the run's place among its path's runs (run_ordinals).
-  StrokeStyle of(const WindowPath& path, const VisibleRun& run, uint32_t ordinal);
+  // `ordinal`: the run's place among its path's runs (run_ordinals); `brush`: the run's
+  // where coherent silhouettes are on (a synthesized style draws its brush path's offsets).
+  StrokeStyle of(const WindowPath& path, const VisibleRun& run, uint32_t ordinal, const RunBrush* brush = nullptr);
 
  private:
   const StrokeStyles& styles_;
@@ -78,9 +82,10 @@ class RunStyles {
 // Each run's place among its path's runs, in visibility.runs' order.
 std::vector<uint32_t> run_ordinals(const std::vector<VisibleRun>& runs);
 
-// Every visible run's style (RunStyles::of), in drawing order (visibility.runs' order).
+// Every visible run's style (RunStyles::of), in drawing order (visibility.runs' order); run i
+// with brushes[i] where coherent silhouettes are on (brushes one a run), else none.
 std::vector<StrokeStyle> run_styles(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
-                                    uint32_t seed);
+                                    uint32_t seed, const std::vector<RunBrush>& brushes = {});
 
 // One visible run as a base stroke takes it (its window polyline and ends) and the style it
 // is drawn in (RunStyles::of).
@@ -89,10 +94,11 @@ struct StyledRun {
   StrokeStyle style;
 };
 
-// Every visible run with its style, in drawing order (visibility.runs' order): what both
-// backends make the stroke samples of (the GPU: gpu/strokes/stroke_samples.hpp).
+// Every visible run with its style and, where coherent silhouettes are on (brushes one a
+// run), its brush's knots, in drawing order (visibility.runs' order): what both backends make
+// the stroke samples of (the GPU: gpu/strokes/stroke_samples.hpp).
 std::vector<StyledRun> styled_runs(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
-                                   uint32_t seed);
+                                   uint32_t seed, const std::vector<RunBrush>& brushes = {});
 
 // One visible run as it is drawn: its style (RunStyles::of) and its base stroke's samples.
 struct RunStroke {
@@ -102,10 +108,11 @@ struct RunStroke {
 
 // Every visible run's stroke, in drawing order (visibility.runs' order): what
 // stroke_triangles draws, and what experiments/temporal_coherence measures. Run i takes
-// brushes[i] as its brush parameter where there is one (Kalnins et al. 2003,
-// common/strokes/coherent_silhouettes.hpp), else t = s.
+// brushes[i] as its brush where coherent silhouettes are on (Kalnins et al. 2003,
+// common/strokes/coherent_silhouettes.hpp: one a run; its knots, or t = s, and its brush
+// path's offsets), else t = s (brushes empty).
 std::vector<RunStroke> run_strokes(const WindowLines& lines, const Visibility& visibility, const StrokeStyles& styles,
-                                   uint32_t seed, const std::vector<BrushParameter>& brushes = {});
+                                   uint32_t seed, const std::vector<RunBrush>& brushes = {});
 
 // The ribbons of `strokes`, three vertices a triangle, in their order.
 std::vector<StrokeVertex> stroke_triangles(const std::vector<RunStroke>& strokes);

@@ -54,6 +54,9 @@ struct OffsetExample {
   // false: made to span one run (a decal's drawn pressure, a synthesized example): past its
   // length it holds its last offset instead of starting over (common/strokes/base_stroke.hpp 4.).
   bool repeats = true;
+  // false: drawn at full size on a run of any length, not scaled by min(L / L_drawn, 1) (a
+  // brush path's synthesized offsets: common/strokes/coherent_silhouettes.hpp 5.).
+  bool scales = true;
 };
 
 enum class OffsetSynthesis { Stamp, Markov };

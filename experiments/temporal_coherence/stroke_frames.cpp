@@ -48,9 +48,9 @@ StrokeFrame render_stroke_frame(const Scene& study, int t, Carry* carry) {
   f.previous = nullptr;
   if (carry) *carry = {t, f.data};
   const WindowLines& lines = f.get(kWindowLines);
-  const std::vector<BrushParameter>* brushes = f.get(maybe(kBrushParameters));
+  const std::vector<RunBrush>* brushes = f.get(maybe(kBrushParameters));
   std::vector<RunStroke> strokes =
-      run_strokes(lines, *visibility, s.strokes, s.seed, brushes ? *brushes : std::vector<BrushParameter>{});
+      run_strokes(lines, *visibility, s.strokes, s.seed, brushes ? *brushes : std::vector<RunBrush>{});
   StrokeFrame out{frame_strokes(s.camera, s.width, s.height, lines, *visibility, strokes), f.get(kStrokeColor),
                   shower_door::surface_points(world_geometry(f.ordinary), f.get(kGBuffer))};
   for (const PassTime& pass : ran)

@@ -15,7 +15,7 @@ namespace {
 // The records of shaders/strokes/brush_fit.comp (std430).
 struct VoteRecord {
   double s, t;
-  uint32_t stroke, group = 0;
+  uint32_t stroke, group = 0, path = 0, pad = 0;
 };
 struct GroupRecord {
   uint32_t stroke, first, last, size, order, pad;
@@ -31,7 +31,7 @@ struct ParamsRecord {
   double sample_px, jump_px, knot_px, scale_weight, distort_weight;
   uint32_t claim_votes, run_count;
 };
-static_assert(sizeof(VoteRecord) == 24 && sizeof(FitRunRecord) == 24 && sizeof(GroupRecord) == 24 &&
+static_assert(sizeof(VoteRecord) == 32 && sizeof(FitRunRecord) == 32 && sizeof(GroupRecord) == 24 &&
                   sizeof(ClaimRecord) == 40 && sizeof(RowRecord) == 32 && sizeof(ParamsRecord) == 48,
               "std430 layouts of brush_fit.comp");
 
@@ -69,7 +69,7 @@ void BrushFit::operator()(const std::vector<std::vector<BrushVote>>& votes, cons
   double knots = 0;
   for (size_t r = 0; r < votes.size(); ++r) {
     runs.push_back({lengths.at(r), uint32_t(vote_records.size()), uint32_t(votes[r].size()), uint32_t(knots)});
-    for (const BrushVote& v : votes[r]) vote_records.push_back({v.s, v.t, v.stroke});
+    for (const BrushVote& v : votes[r]) vote_records.push_back({v.s, v.t, v.stroke, 0, v.path});
     knots += votes[r].empty() ? 0.0 : knot_bound(lengths[r], votes[r].size(), p);
   }
   reserve(vote_records.size(), knots);
@@ -128,15 +128,16 @@ void BrushFit::fit() {
   listed_.buffer ? over_each_run_.dispatch(fit_) : dispatch_strided(fit_, run_count_, 1);
 }
 
-std::vector<BrushParameter> BrushFit::parameters() const {
+std::vector<RunBrush> BrushFit::parameters() const {
   std::vector<FitRunRecord> runs(listed_.buffer ? listed_.read() : run_count_);
   if (runs.empty()) return {};
   read_buffer(runs_, runs.data(), runs.size() * sizeof(FitRunRecord));
-  std::vector<BrushParameter> out;
+  std::vector<RunBrush> out;
   for (const FitRunRecord& r : runs) {
-    out.emplace_back(r.knot_count);
+    out.push_back({BrushParameter(r.knot_count), r.path});
     if (r.knot_count > 0)
-      read_buffer(knots_, out.back().data(), r.knot_count * sizeof(glm::dvec2), r.first_knot * sizeof(glm::dvec2));
+      read_buffer(knots_, out.back().knots.data(), r.knot_count * sizeof(glm::dvec2),
+                  r.first_knot * sizeof(glm::dvec2));
   }
   return out;
 }

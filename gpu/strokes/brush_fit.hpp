@@ -21,10 +21,10 @@ namespace plumbago::gpu {
 double knot_bound(double length_px, size_t votes, const CoherenceParams& p);
 
 // A run's record in BrushFit::runs_buffer() (std430, shaders/strokes/fit_run.glsl FitRun):
-// its window length, its votes, and its knots in knots_buffer().
+// its window length, its votes, its knots in knots_buffer() and its brush path.
 struct FitRunRecord {
   double length;
-  uint32_t first_vote, vote_count, first_knot, knot_count = 0;
+  uint32_t first_vote, vote_count, first_knot, knot_count = 0, path = kNewBrushPath, pad = 0;
 };
 
 class BrushFit {
@@ -38,9 +38,9 @@ class BrushFit {
   // length: s1 - s0), however many it lists: the votes bucketed by run there
   // (shaders/strokes/brush_buckets.comp), each run's knots placed by its knot_bound.
   void operator()(const BrushVotes& votes, const RunTables& tables, const CoherenceParams& p);
-  // Read back, for tests (while the tables live): each run's knots (none where it has no
-  // claim, as the reference).
-  std::vector<BrushParameter> parameters() const;
+  // Read back, for tests (while the tables live): each run's knots and brush path (none and
+  // a new one where it has no claim, as the reference).
+  std::vector<RunBrush> parameters() const;
   // On the GPU (shaders/strokes/brush_fit.comp): per run its FitRunRecord, the knots, and
   // how many knots the buffer holds.
   const Buffer& runs_buffer() const { return runs_.buffer; }

@@ -34,7 +34,7 @@ class BrushParametersPass : public GpuPass {
     else
       votes_(std::vector<BrushSample>{}, camera, width, height, *tables, p);
     fit_(votes_, *tables, p);
-    samples_(*tables, camera, width, height, &fit_, p);
+    samples_(*tables, camera, width, height, &fit_, p, f.scene.seed);
     f.put(kBrushFit, fit_);
     f.put(kGpuBrushSamples, samples_);
   }

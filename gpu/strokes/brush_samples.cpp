@@ -16,13 +16,13 @@ namespace {
 // The records of shaders/strokes/brush_samples.comp (std430).
 struct SampleRecord {
   double x, y, z, t;
-  uint32_t stroke, pad;
+  uint32_t stroke, path;
 };
 struct FrameRecord {
   glm::dmat4 clip, unclip, view, projection;
   double width, height, sample_px, pad = 0;
 };
-static_assert(sizeof(SampleRecord) == 40 && sizeof(FitRunRecord) == 24 && sizeof(FrameRecord) == 544,
+static_assert(sizeof(SampleRecord) == 40 && sizeof(FitRunRecord) == 32 && sizeof(FrameRecord) == 544,
               "std430 layouts of brush_samples.comp");
 
 Program step(const char* name) {
@@ -34,26 +34,27 @@ Program step(const char* name) {
 BrushSamples::BrushSamples() : count_(step("STEP_COUNT")), write_(step("STEP_WRITE")) {}
 
 void BrushSamples::operator()(const RunTables& tables, const Camera& camera, int width, int height,
-                              const std::vector<BrushParameter>& parameters, const CoherenceParams& p) {
+                              const std::vector<RunBrush>& brushes, const CoherenceParams& p, uint32_t seed) {
   std::vector<FitRunRecord> runs;
   std::vector<glm::dvec2> knots;
-  for (const BrushParameter& k : parameters) {
-    runs.push_back({0, 0, 0, uint32_t(knots.size()), uint32_t(k.size())});
-    knots.insert(knots.end(), k.begin(), k.end());
+  for (const RunBrush& b : brushes) {
+    runs.push_back({0, 0, 0, uint32_t(knots.size()), uint32_t(b.knots.size()), b.path});
+    knots.insert(knots.end(), b.knots.begin(), b.knots.end());
   }
   runs.resize(std::max<size_t>(tables.bound, 1), FitRunRecord{0, 0, 0, 0, 0});
   fit_runs_ = scratch_of(runs), knots_ = scratch_of(knots);
-  sample(tables, camera, width, height, parameters.empty() ? nullptr : &fit_runs_.buffer, knots_, p);
+  sample(tables, camera, width, height, brushes.empty() ? nullptr : &fit_runs_.buffer, knots_, p, seed);
 }
 
 void BrushSamples::operator()(const RunTables& tables, const Camera& camera, int width, int height, const BrushFit* fit,
-                              const CoherenceParams& p) {
+                              const CoherenceParams& p, uint32_t seed) {
   knots_.reserve(sizeof(glm::dvec2));
-  sample(tables, camera, width, height, fit ? &fit->runs_buffer() : nullptr, fit ? fit->knots_buffer() : knots_, p);
+  sample(tables, camera, width, height, fit ? &fit->runs_buffer() : nullptr, fit ? fit->knots_buffer() : knots_, p,
+         seed);
 }
 
 void BrushSamples::sample(const RunTables& tables, const Camera& camera, int width, int height, const Buffer* fit_runs,
-                          const Buffer& knots, const CoherenceParams& p) {
+                          const Buffer& knots, const CoherenceParams& p, uint32_t seed) {
   double bound = 1;  // n + 1 samples a run, n <= L / sample_px + 1
   for (const RunBound& b : tables.bounds) bound += b.length / p.sample_px + 2 * b.runs;
   check_memory_budget("the brush samples of " + std::to_string(tables.bound) + " runs on the GPU",
@@ -72,6 +73,7 @@ void BrushSamples::sample(const RunTables& tables, const Camera& camera, int wid
     glProgramUniform1ui(s->id(), s->uniform("listed_at"), tables.listed.at);
     glProgramUniform1ui(s->id(), s->uniform("capacity"), capacity_);
     glProgramUniform1ui(s->id(), s->uniform("with_knots"), fit_runs ? 1u : 0u);
+    glProgramUniform1ui(s->id(), s->uniform("seed"), seed);
   }
   over_listed_(*tables.listed.buffer, tables.listed.at);
   auto over_runs = [&](const Program& s) {
@@ -94,7 +96,7 @@ std::vector<BrushSample> BrushSamples::samples() const {
   std::vector<SampleRecord> records(total);
   if (!records.empty()) read_buffer(samples_, records.data(), records.size() * sizeof(SampleRecord));
   std::vector<BrushSample> out;
-  for (const SampleRecord& r : records) out.push_back({{r.x, r.y, r.z}, r.t, r.stroke});
+  for (const SampleRecord& r : records) out.push_back({{r.x, r.y, r.z}, r.t, r.stroke, r.path});
   return out;
 }
 

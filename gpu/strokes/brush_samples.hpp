@@ -21,14 +21,15 @@ class BrushSamples {
  public:
   BrushSamples();
   // The samples of the silhouette runs of `tables`, seen by `camera` in a width x height
-  // window; run i parameterized by parameters[i] (none given, or past its end: t = s). They
-  // stay on the GPU until the next call, as many as the runs' bounds hold.
+  // window; run i drawn with brushes[i] (none given, or past its end: t = s, a new brush path
+  // keyed with `seed`, the scene's). They stay on the GPU until the next call, as many as the
+  // runs' bounds hold.
   void operator()(const RunTables& tables, const Camera& camera, int width, int height,
-                  const std::vector<BrushParameter>& parameters, const CoherenceParams& p);
-  // The same, run i parameterized by the GPU's fit for the same tables (null: t = s): nothing
-  // goes through the CPU but the tables' bounds.
+                  const std::vector<RunBrush>& brushes, const CoherenceParams& p, uint32_t seed);
+  // The same, run i drawn with the GPU's fit for the same tables (null: t = s, new brush
+  // paths): nothing goes through the CPU but the tables' bounds.
   void operator()(const RunTables& tables, const Camera& camera, int width, int height, const BrushFit* fit,
-                  const CoherenceParams& p);
+                  const CoherenceParams& p, uint32_t seed);
   // Read back, for tests: the samples, in the order of their runs.
   std::vector<BrushSample> samples() const;
   // On the GPU (shaders/strokes/brush_samples.comp Sample), what the next frame's votes read
@@ -41,7 +42,7 @@ class BrushSamples {
  private:
   // Samples every run of `tables`, its knots where `fit_runs` is given.
   void sample(const RunTables& tables, const Camera& camera, int width, int height, const Buffer* fit_runs,
-              const Buffer& knots, const CoherenceParams& p);
+              const Buffer& knots, const CoherenceParams& p, uint32_t seed);
 
   Program count_, write_;
   ExclusiveScan scan_;

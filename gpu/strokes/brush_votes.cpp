@@ -16,11 +16,11 @@ namespace {
 // The records of shaders/strokes/brush_votes.comp (std430).
 struct SampleRecord {
   double x, y, z, t;
-  uint32_t stroke, pad = 0;
+  uint32_t stroke, path;
 };
 struct VoteRecord {
   double s, t;
-  uint32_t run, stroke;
+  uint32_t run, stroke, path, pad;
 };
 struct FrameRecord {
   glm::dmat4 clip, view;
@@ -28,7 +28,7 @@ struct FrameRecord {
   uint32_t columns, rows;
   double pad[2] = {0, 0};  // std430 rounds the struct to 32 bytes (its dmat4)
 };
-static_assert(sizeof(SampleRecord) == 40 && sizeof(VoteRecord) == 24 && sizeof(FrameRecord) == 320,
+static_assert(sizeof(SampleRecord) == 40 && sizeof(VoteRecord) == 32 && sizeof(FrameRecord) == 320,
               "std430 layouts of brush_votes.comp");
 constexpr size_t kPieceBytes = 80;  // brush_votes.comp Piece (std430: 16-aligned for its dvec2)
 constexpr uint32_t kNoVote = 0xffffffffu;
@@ -44,7 +44,7 @@ BrushVotes::BrushVotes() : pieces_(step("STEP_PIECES")), bin_(step("STEP_BIN")),
 void BrushVotes::operator()(const std::vector<BrushSample>& previous, const Camera& camera, int width, int height,
                             const RunTables& tables, const CoherenceParams& p) {
   std::vector<SampleRecord> samples;
-  for (const BrushSample& b : previous) samples.push_back({b.world.x, b.world.y, b.world.z, b.t, b.stroke});
+  for (const BrushSample& b : previous) samples.push_back({b.world.x, b.world.y, b.world.z, b.t, b.stroke, b.path});
   samples_ = scratch_of(samples);
   total_ = scratch_of(std::vector<uint32_t>{uint32_t(samples.size())});
   vote(samples_, total_, samples.size(), camera, width, height, tables, p);
@@ -105,7 +105,7 @@ std::vector<BrushVote> BrushVotes::votes() const {
   read_buffer(votes_, records.data(), records.size() * sizeof(VoteRecord));
   std::vector<BrushVote> out;
   for (const VoteRecord& v : records)
-    if (v.run != kNoVote) out.push_back({v.run, v.s, v.t, v.stroke});
+    if (v.run != kNoVote) out.push_back({v.run, v.s, v.t, v.stroke, v.path});
   return out;
 }
 

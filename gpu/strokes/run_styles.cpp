@@ -82,7 +82,10 @@ double RunStyleTables::sample_bound(uint32_t style, double length, double runs) 
 
 double RunStyleTables::synthesized_offsets(uint32_t style, double length, double runs) const {
   const StyleRow& row = rows_.at(style);  // per run: max(l, 1) / step + 3 at most, max(l, 1) <= l + 1
-  return row.offsets == kSynthesizedOffsets ? (length + runs) / row.step + 3 * runs : 0.0;
+  if (row.offsets != kSynthesizedOffsets) return 0.0;
+  double along_runs = (length + runs) / row.step + 3 * runs;
+  if (style != PathTable::kSilhouetteStyle) return along_runs;
+  return along_runs + runs * (std::ceil(kBrushOffsetPeriodPx / row.step) + 1);  // or along brush paths
 }
 
 void RunStyleTables::bind() const {

@@ -37,7 +37,8 @@ enum RunFlags : uint32_t {
   kOccludedEnd = 4,
   kPressureWidth = 8,
   kPressureAlpha = 16,
-  kRepeats = 32
+  kRepeats = 32,
+  kUnscaled = 64
 };  // stroke_runs.glsl's
 
 // A style's fields as RunInput and StyleRow hold them (flags: its pressure's), and an
@@ -91,8 +92,10 @@ class RunStyleTables {
   uint32_t own_offsets() const { return uint32_t(offsets_.size()); }
   void copy_offsets(const Buffer& to) const;
   // At least the samples of `runs` runs `length` px long together in style `style`, of one
-  // path or several, whichever examples they stamp (their pen lifts included), and the offsets they make themselves (a
-  // synthesized example's; a decal's are bounded by its path's points).
+  // path or several, whichever examples they stamp (their pen lifts included), and the
+  // offsets they make themselves (a synthesized example's, over the run or, a silhouette's
+  // where they are coherent, over its brush path's period: common/strokes/coherent_silhouettes.hpp
+  // 5.; a decal's are bounded by its path's points).
   double sample_bound(uint32_t style, double length, double runs) const;
   double synthesized_offsets(uint32_t style, double length, double runs) const;
   bool decal(uint32_t style) const { return rows_.at(style).offsets == kDecalPressure; }

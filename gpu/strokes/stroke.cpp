@@ -35,7 +35,8 @@ class StrokePass : public GpuPass {
     if (!tables) tables = &uploaded.emplace(lines, f.get(kVisibleRuns)).tables();
     if (!styles_ || styles_->decal_count() != lines.decal_styles.size())
       styles_.emplace(f.scene.strokes, lines.decal_styles);  // the scene's: made once
-    samples_(*tables, *styles_, f.scene.seed, f.ran("brush_parameters") ? f.get(maybe(kBrushFit)) : nullptr);
+    const bool coherent = f.ran("brush_parameters");         // a still frame's fit is withheld: new brush paths
+    samples_(*tables, *styles_, f.scene.seed, coherent ? f.get(maybe(kBrushFit)) : nullptr, coherent);
     Texture& target = f.put(kStrokeColor);
     if (drawn_over(find_output(kStrokeColor.name), f.stages).empty()) copy_page(f.get(kPage), target);
     if (!samples_.draw()) return;

@@ -37,7 +37,7 @@ double polyline_length(const StrokeRun& run) {
 // A run's own flags (its style's are put_style's).
 uint32_t flags(const StrokeRun& r, const std::optional<OffsetExample>& example) {
   return (r.closed ? kClosed : 0u) | (r.occluded_start ? kOccludedStart : 0u) | (r.occluded_end ? kOccludedEnd : 0u) |
-         (example && example->repeats ? kRepeats : 0u);
+         (example && example->repeats ? kRepeats : 0u) | (example && !example->scales ? kUnscaled : 0u);
 }
 
 }  // namespace
@@ -164,11 +164,15 @@ StrokeSamples::StrokeSamples()
 void StrokeSamples::operator()(const std::vector<StyledRun>& runs) { run(Inputs(runs), nullptr, nullptr, nullptr); }
 
 void StrokeSamples::operator()(const RunTables& tables, const RunStyleTables& styles, uint32_t seed,
-                               const BrushFit* brushes) {
+                               const BrushFit* brushes, bool coherent) {
+  coherent = coherent || brushes;
   for (const Program* p : {&inputs_args_, &inputs_count_, &inputs_write_}) {
     glProgramUniform1ui(p->id(), p->uniform("seed"), seed);
     glProgramUniform1ui(p->id(), p->uniform("own_offsets"), styles.own_offsets());
     glProgramUniform1ui(p->id(), p->uniform("listed_at"), tables.listed.at);
+    glProgramUniform1ui(p->id(), p->uniform("coherent_silhouettes"), coherent ? 1u : 0u);
+    glProgramUniform1ui(p->id(), p->uniform("with_fit"), brushes ? 1u : 0u);
+    glProgramUniform1d(p->id(), p->uniform("brush_period"), kBrushOffsetPeriodPx);
   }
   if (tables.sized) sized_ = Inputs(tables, styles);
   Inputs in(sized_);
@@ -231,9 +235,15 @@ void StrokeSamples::make_inputs(const RunTables& tables, const RunStyleTables& s
     const Buffer* at[] = {tables.paths, tables.points, tables.runs};
     for (GLuint k = 0; k < 3; ++k) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k, at[k]->id());
     styles.bind();
-    const Buffer* out[] = {&point_counts_.buffer, &offset_counts_.buffer, &runs_in_.buffer, &points_.buffer,
-                           &offsets_.buffer,      tables.listed.buffer,   &run_args_};
-    for (GLuint k = 0; k < 7; ++k) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7 + k, out[k]->id());
+    const Buffer* out[] = {&point_counts_.buffer,
+                           &offset_counts_.buffer,
+                           &runs_in_.buffer,
+                           &points_.buffer,
+                           &offsets_.buffer,
+                           tables.listed.buffer,
+                           &run_args_,
+                           brushes ? &brushes->runs_buffer() : &run_args_};
+    for (GLuint k = 0; k < 8; ++k) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7 + k, out[k]->id());
   };
   bind_all();
   glUseProgram(inputs_args_.id());

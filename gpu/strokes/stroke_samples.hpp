@@ -48,9 +48,12 @@ class StrokeSamples {
   // from the paths' run bounds, or (tables not sized: RunTables::sized) as the last sized call
   // sized them.
   // With `brushes`, each run takes the brush parameter the GPU fitted for it (Kalnins et al.
-  // 2003, gpu/strokes/brush_fit.hpp; shaders/strokes/run_knots.comp), else t = s.
+  // 2003, gpu/strokes/brush_fit.hpp; shaders/strokes/run_knots.comp), else t = s. Where
+  // silhouettes are `coherent` (or `brushes` given) a synthesized style's silhouette runs draw
+  // their brush paths' offsets (common/strokes/coherent_silhouettes.hpp 5.): the fit's, else
+  // new ones.
   void operator()(const RunTables& tables, const RunStyleTables& styles, uint32_t seed,
-                  const BrushFit* brushes = nullptr);
+                  const BrushFit* brushes = nullptr, bool coherent = false);
   // The samples and runs to SSBO bindings 0 and 1, as common_ribbon.glsl reads them.
   void bind() const;
   // The ribbons' draw (DrawArraysIndirectCommand, GL_TRIANGLES); none without runs.

@@ -12,10 +12,10 @@ PLUMBAGO_REFERENCE_STAGE(brush_parameters, [](ReferenceFrame& f) {
   const WindowLines& lines = f.get(kWindowLines);
   const Visibility& visibility = f.get(kVisibleRuns);
   const auto p = f.params<CoherenceParams>();
-  std::vector<BrushParameter> brushes;
+  std::vector<RunBrush> brushes(visibility.runs.size());  // none voted for: t = s, new brush paths
   if (const std::vector<BrushSample>* previous = f.before(kBrushSamples))
     brushes = coherent_parameters(*previous, f.scene.camera, lines, visibility, p);
-  f.put(kBrushSamples, brush_samples(lines, visibility, brushes, p));
+  f.put(kBrushSamples, brush_samples(lines, visibility, brushes, p, f.scene.seed));
   f.put(kBrushParameters, std::move(brushes));
 });
 

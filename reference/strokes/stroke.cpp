@@ -55,9 +55,9 @@ StrokeRaster draw_strokes(const std::vector<StrokeVertex>& triangles, uint32_t s
 }
 
 PLUMBAGO_REFERENCE_STAGE(stroke, [](ReferenceFrame& f) {
-  const std::vector<BrushParameter>* brushes = f.get(maybe(kBrushParameters));
+  const std::vector<RunBrush>* brushes = f.get(maybe(kBrushParameters));
   std::vector<RunStroke> strokes = run_strokes(f.get(kWindowLines), f.get(kVisibleRuns), f.scene.strokes, f.scene.seed,
-                                               brushes ? *brushes : std::vector<BrushParameter>{});
+                                               brushes ? *brushes : std::vector<RunBrush>{});
   StrokeRaster r = draw_strokes(stroke_triangles(strokes), f.scene.seed, f.get(kPage), f.get(kPaperHeight),
                                 f.params<StrokePaperParams>());
   f.put(kStrokeColor, std::move(r.color));

@@ -10,15 +10,15 @@ layout(local_size_x = 64) in;
 
 struct Vote {  // shaders/strokes/brush_votes.comp Vote; run kNoVote: none
   double s, t;
-  uint run, stroke;
+  uint run, stroke, path, pad;
 };
 struct FitVote {  // shaders/strokes/brush_fit.comp Vote
   double s, t;
-  uint stroke, group;
+  uint stroke, group, path, pad;
 };
 struct FitRun {  // shaders/strokes/brush_fit.comp Run
   double length;
-  uint first_vote, vote_count, first_knot, knot_count;
+  uint first_vote, vote_count, first_knot, knot_count, path, pad;
 };
 struct Run {  // strokes/window_paths.glsl Run
   uint path, flags;
@@ -50,7 +50,7 @@ void main() {
 #ifdef STEP_COUNT
     atomicAdd(counts[v.run], 1u);
 #else
-    fit_votes[counts[v.run] + atomicAdd(fill[v.run], 1u)] = FitVote(v.s, v.t, v.stroke, 0u);
+    fit_votes[counts[v.run] + atomicAdd(fill[v.run], 1u)] = FitVote(v.s, v.t, v.stroke, 0u, v.path, 0u);
 #endif
   }
 }
@@ -61,7 +61,7 @@ void at_run(uint r) {
 #ifdef STEP_BOUNDS
   fill[r] = votes_of == 0u ? 0u : uint(floor((run.s1 - run.s0) / p.knot_px)) + 4u * votes_of + 2u;
 #else
-  fit_runs[r] = FitRun(run.s1 - run.s0, counts[r], votes_of, fill[r], 0u);
+  fit_runs[r] = FitRun(run.s1 - run.s0, counts[r], votes_of, fill[r], 0u, 0xffffffffu, 0u);
   if (r == 0u) p.run_count = listed[listed_at];
 #endif
 }

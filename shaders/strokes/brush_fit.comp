@@ -13,11 +13,11 @@ layout(local_size_x = 1) in;
 
 struct Vote {  // gpu/strokes/brush_fit.cpp VoteRecord
   double s, t;
-  uint stroke, group;  // group: what 3. makes of it
+  uint stroke, group, path, pad;  // group: what 3. makes of it
 };
-struct Run {  // gpu/strokes/brush_fit.cpp RunRecord
+struct Run {  // gpu/strokes/brush_fit.hpp FitRunRecord
   double length;
-  uint first_vote, vote_count, first_knot, knot_count;  // knot_count: written
+  uint first_vote, vote_count, first_knot, knot_count, path, pad;  // knot_count, path: written
 };
 struct Group {  // the stroke it follows, its first and last vote, its size, and (by slot) the
   uint stroke, first, last, size, order, pad;  // groups in the order they claim
@@ -41,6 +41,8 @@ layout(std430, binding = 3) buffer Claims { Claim claims[]; };
 layout(std430, binding = 4) buffer Rows { Row rows[]; };
 layout(std430, binding = 5) writeonly buffer Knots { dvec2 knots[]; };
 layout(std430, binding = 6) readonly buffer FitParams { Params p; };
+
+const uint kNewBrushPath = 0xffffffffu;  // common/strokes/coherent_silhouettes.hpp
 
 // The reference's total order of votes: s, then stroke, then t.
 bool before(Vote a, Vote b) {
@@ -268,9 +270,20 @@ bool fit_section(uint first, uint r0, Claim c, uint at, out uint written) {
   return true;
 }
 
+// 5. The brush path of the largest section: the most votes, the first in s among equals.
+uint largest_path(uint first, uint sections) {
+  uint most = 0u, path = kNewBrushPath;
+  for (uint i = 0u; i < sections; ++i) {
+    Claim c = claims[2u * first + i];
+    uint own = votes_within(first, c.group, c.piece_from, c.piece_to);
+    if (own > most) most = own, path = votes[groups[first + c.group].first].path;
+  }
+  return path;
+}
+
 void at_run(uint r) {
   Run run = runs[r];
-  runs[r].knot_count = 0u;
+  runs[r].knot_count = 0u, runs[r].path = kNewBrushPath;
   if (!(run.length > 0.0lf) || run.vote_count == 0u) return;
   uint first = run.first_vote;
   sort_votes(first, run.vote_count);
@@ -282,7 +295,7 @@ void at_run(uint r) {
     if (!fit_section(first, run.first_knot, claims[2u * first + i], at, written)) return;
     at += written;
   }
-  runs[r].knot_count = at - run.first_knot;
+  runs[r].knot_count = at - run.first_knot, runs[r].path = largest_path(first, sections);
 }
 
 void main() {

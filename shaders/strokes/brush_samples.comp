@@ -3,10 +3,11 @@
 // common/strokes/coherent_silhouettes.hpp, in double, one invocation per visible run as the
 // visibility steps leave them on the GPU: a silhouette run of length L = s1 - s0 is sampled
 // at s = L j / n, n = max(1, ceil(L / sample_px)) (a whole closed path's last sample is its
-// first: left out), each sample the world point drawn there and its brush parameter t(s)
-// (the run's knots; none: t = s). The world point is the window point at s0 + s unprojected
-// at its depth (window_paths.glsl depth_at): the point of the world segment that projects
-// there, which the reference's world_at interpolates. STEP_COUNT counts each run's
+// first: left out), each sample the world point drawn there, its brush parameter t(s) (the
+// run's knots; none: t = s) and the run's brush path (strokes/brush_path.glsl). The world
+// point is the window point at s0 + s unprojected at its depth (window_paths.glsl depth_at):
+// the point of the world segment that projects there, which the reference's world_at
+// interpolates. STEP_COUNT counts each run's
 // samples; after a prefix sum over the counts, STEP_WRITE writes them and how many it wrote
 // (what the next frame's votes read: shaders/strokes/brush_votes.comp).
 layout(local_size_x = 64) in;
@@ -18,7 +19,7 @@ layout(local_size_x = 64) in;
 
 struct Sample {  // gpu/strokes/brush_samples.cpp SampleRecord (shaders/strokes/brush_votes.comp Sample)
   double x, y, z, t;
-  uint stroke, pad;
+  uint stroke, path;
 };
 struct Frame {  // world to clip and back, world to view, view to clip; the window; the spacing
   dmat4 clip, unclip, view, projection;
@@ -34,7 +35,10 @@ layout(std430, binding = 7) writeonly buffer Samples { Sample samples[]; };
 layout(std430, binding = 8) readonly buffer FrameBlock { Frame f; };
 layout(std430, binding = 9) writeonly buffer Total { uint total; };  // the samples written
 
-uniform uint listed_at, capacity, with_knots;
+uniform uint listed_at, capacity, with_knots, seed;
+
+#include "util/random.glsl"
+#include "strokes/brush_path.glsl"
 
 dvec2 brush_knot(uint i) { return knots[i]; }
 #include "strokes/brush_parameter.glsl"
@@ -67,12 +71,13 @@ void at_run(uint r) {
   Run run = run_rows[r];
   Path p = paths[run.path];
   uint count = sample_count(run), n = sample_intervals(run), at = counts[r];
-  FitRun k = with_knots != 0u ? fit_runs[r] : FitRun(0.0lf, 0u, 0u, 0u, 0u);
+  FitRun k = with_knots != 0u ? fit_runs[r] : FitRun(0.0lf, 0u, 0u, 0u, 0u, kNewBrushPath, 0u);
+  uint path = brush_path_key(k.path, seed, p.key, r);
   double length = run.s1 - run.s0;
   for (uint j = 0u; j < count && at + j < capacity; ++j) {
     double s = length * double(j) / double(n);
     dvec3 world = unproject(window_at(p, run.s0 + s), depth_at(p, run.s0 + s));
-    samples[at + j] = Sample(world.x, world.y, world.z, brush_t_at(k.first_knot, k.knot_count, s), r, 0u);
+    samples[at + j] = Sample(world.x, world.y, world.z, brush_t_at(k.first_knot, k.knot_count, s), r, path);
   }
 }
 #endif

@@ -26,11 +26,11 @@ layout(local_size_x = 64) in;
 
 struct Sample {  // gpu/strokes/brush_votes.cpp SampleRecord
   double x, y, z, t;
-  uint stroke, pad;
+  uint stroke, path;
 };
 struct Vote {  // gpu/strokes/brush_votes.cpp VoteRecord; run kNoVote: none
   double s, t;
-  uint run, stroke;
+  uint run, stroke, path, pad;
 };
 struct Frame {  // world to clip, to view; the window; the search; the grid's cell
   dmat4 clip, view;
@@ -173,7 +173,7 @@ void main() {
     dvec3 q = project(dvec3(x.x, x.y, x.z));
     Best best = Best(f.search_px, kNoVote, kNoVote, 0.0lf);
     if (q.z > 0.0lf && piece_count <= piece_capacity) nearest(q, best);
-    votes[i] = Vote(best.s, x.t, best.run, x.stroke);
+    votes[i] = Vote(best.s, x.t, best.run, x.stroke, x.path, 0u);
   }
 }
 #endif

@@ -13,11 +13,13 @@
 layout(local_size_x = 64) in;
 
 #include "strokes/stroke_runs.glsl"
+#include "strokes/fit_run.glsl"
 #define PATHS_BINDING 0
 #define POINTS_BINDING 1
 #include "strokes/window_paths.glsl"
 #include "strokes/run_walk.glsl"
 #include "util/lerp.glsl"
+#include "util/random.glsl"
 
 struct Style {  // gpu/strokes/run_styles.hpp StyleRow
   vec4 color_layer;
@@ -43,7 +45,6 @@ struct Target {  // TargetRow: a row's allowed target and its cumulative weight;
   uint to, pad;
 };
 const uint kNone = 0u, kOwn = 1u, kDrawn = 2u, kSynthesized = 3u, kDecal = 4u;
-const uint kStampStart = 1u, kOffsetWalk = 2u;  // common/strokes/stroke.hpp RunStream
 
 layout(std430, binding = 2) readonly buffer RunRows { Run run_rows[]; };
 layout(std430, binding = 3) readonly buffer Styles { Style styles[]; };
@@ -58,6 +59,7 @@ layout(std430, binding = 10) writeonly buffer Points { dvec2 points[]; };
 layout(std430, binding = 11) writeonly buffer Offsets { Offset offsets[]; };  // after the examples' own
 layout(std430, binding = 12) readonly buffer Listed { uint listed[]; };        // the runs listed, at listed_at
 layout(std430, binding = 13) buffer RunArgs { uint run_args[4]; };  // (groups, 1, 1) over the runs, their count
+layout(std430, binding = 14) readonly buffer FitRuns { FitRun fit_runs[]; };  // with_fit: per run, its brush path
 
 uniform uint run_count, seed;  // run_count: the rows' bound
 uniform uint listed_at;
@@ -65,29 +67,12 @@ uniform uint own_offsets;  // the examples' offsets, at the start of offsets[]
 // The points and offsets the buffers hold: a run whose own would pass them is not drawn (a
 // frame sized by an earlier one, gpu/core/pipeline.hpp Renderer::render_frame).
 uniform uint point_capacity, offset_capacity;
+// Coherent silhouettes (Kalnins et al. 2003): whether they are on, whether this frame has the
+// fit's brush paths (else each run starts a new one), and their offsets' period (px).
+uniform uint coherent_silhouettes, with_fit;
+uniform double brush_period;
 
-// common/util/random.hpp hash32, stream_key and CounterStream.
-uint hash32(uint x) {
-  x ^= x >> 16;
-  x *= 0x7feb352du;
-  x ^= x >> 15;
-  x *= 0x846ca68bu;
-  return x ^ (x >> 16);
-}
-uint stream_key(uint a, uint b, uint c) { return hash32(hash32(hash32(a) ^ b) ^ c); }
-uint stream_key(uint a, uint b, uint c, uint d) { return hash32(stream_key(a, b, c) ^ d); }
-double uniform_at(uint key, uint k) { return double(hash32(key ^ hash32(k)) >> 8) * (1.0lf / 16777216.0lf); }
-
-// The run's place among its path's runs (common/strokes/stroke.cpp run_ordinals): a path's
-// runs are listed together, in order.
-uint ordinal(uint run) {
-  uint path = run_rows[run].path, lo = 0u, hi = run;
-  while (lo < hi) {
-    uint mid = (lo + hi) / 2u;
-    if (run_rows[mid].path < path) lo = mid + 1u; else hi = mid;
-  }
-  return run - lo;
-}
+#include "strokes/brush_path.glsl"
 
 // A path's pieces: 0. the run's window polyline (run_along).
 uint polyline_point(uint at, uint n, dvec2 p) {
@@ -183,9 +168,31 @@ uint synthesized_offsets(Style st, Run r, Path p, uint ord, uint at) {
   return put_offset(at, n, 1.0lf, lerp(v0, v1, f), lerp(p0, p1, f));
 }
 
+// Whether the run draws its brush path's synthesized offsets along t (RunStyles::of): a
+// silhouette's (SampleKind 1) where silhouettes are coherent.
+bool on_brush_path(Style st, Path p) {
+  return st.offsets == kSynthesized && coherent_silhouettes != 0u && (p.kind & 15u) == 1u;
+}
+
+// OffsetSynthesizer::synthesize_period: the run's brush path's walk, an offset every step
+// while below the period, from the stream keyed by the brush path.
+uint brush_path_offsets(Style st, Path p, uint run, uint at) {
+  uint count = uint(ceil(brush_period / st.step * (1.0lf - 1e-12lf)));
+#if defined(STEP_WRITE)
+  uint fitted = with_fit != 0u ? fit_runs[run].path : kNewBrushPath;
+  Walk w = start_walk(st, brush_path_key(fitted, seed, p.key, run));
+  for (uint k = 0u; k < count; ++k) {
+    if (k > 0u) step_walk(st, w);
+    put_offset(at, k, double(k) * st.step / brush_period, value_of(st, w), pressure_of(st, w));
+  }
+#endif
+  return count;
+}
+
 // The offsets the run makes itself (written from `at`): their count.
 uint own_run_offsets(Style st, Run r, Path p, uint run, uint at) {
   if (st.offsets == kDecal) return pressure_offsets(r, p, at);
+  if (on_brush_path(st, p)) return brush_path_offsets(st, p, run, at);
   if (st.offsets == kSynthesized) return synthesized_offsets(st, r, p, ordinal(run), at);
   return 0u;
 }
@@ -212,10 +219,11 @@ RunIn run_input(Style st, Run r, Path p, uint run, uint points_at, uint point_co
     Example e = stamped_example(st, p, run);
     made.first_offset = e.first_offset, made.offset_count = e.offset_count, made.example_length = e.length;
     if (e.repeats != 0u) made.flags |= kRepeats;
-  } else if (st.offsets != kNone) {  // made for the run: does not repeat
+  } else if (st.offsets != kNone) {  // made for the run: does not repeat; or its brush path's
     made.first_offset = own_offsets + offset_counts[run];
     made.offset_count = offset_counts[run + 1u] - offset_counts[run];
     made.example_length = max(r.s1 - r.s0 > 0.0lf ? r.s1 - r.s0 : 0.0lf, 1.0lf);
+    if (on_brush_path(st, p)) made.example_length = brush_period, made.flags |= kRepeats | kUnscaled;
   }
   return made;
 }

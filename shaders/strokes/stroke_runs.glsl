@@ -6,7 +6,7 @@ struct RunIn {  // gpu/strokes/run_styles.hpp RunInput
   uint first_point, point_count, first_offset, offset_count;
   double example_length;  // the offsets example's L_drawn (no offsets: offset_count 0)
   float width, alpha, taper, fade, halo, flare, sample_px, period;
-  uint flags;       // kClosed | kOccludedStart | kOccludedEnd | kPressureWidth | kPressureAlpha | kRepeats
+  uint flags;       // kClosed | kOccludedStart | kOccludedEnd | kPressureWidth | kPressureAlpha | kRepeats | kUnscaled
   uint knot_count;  // its brush parameter's knots, after its points (none: t = s)
 };
 struct Offset {  // gpu/strokes/run_styles.hpp OffsetInput
@@ -15,3 +15,4 @@ struct Offset {  // gpu/strokes/run_styles.hpp OffsetInput
 };
 const uint kClosed = 1u, kOccludedStart = 2u, kOccludedEnd = 4u, kPressureWidth = 8u, kPressureAlpha = 16u;
 const uint kRepeats = 32u;  // the offsets example repeats (common/strokes/stroke_style.hpp OffsetExample::repeats)
+const uint kUnscaled = 64u;  // and is not scaled to the run (OffsetExample::scales false)

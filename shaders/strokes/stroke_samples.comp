@@ -356,7 +356,8 @@ struct Stamped {
 
 Stamped rubber_stamp(RunIn r, double s, double run_length) {
   if (r.offset_count == 0u) return Stamped(0.0lf, 1.0lf, true);
-  double t = s / r.example_length, scale = min(run_length / r.example_length, 1.0lf);
+  double t = s / r.example_length;
+  double scale = (r.flags & kUnscaled) != 0u ? 1.0lf : min(run_length / r.example_length, 1.0lf);
   t = repeats(r) ? t - floor(t) : clamp(t, 0.0lf, 1.0lf);
   uint count = 0u;  // offsets with t_i <= t (they are sorted)
   for (uint lo = 0u, hi = r.offset_count; lo < hi;) {

@@ -35,18 +35,19 @@ Tally compare(const std::vector<std::vector<BrushVote>>& votes, const std::vecto
               const CoherenceParams& p) {
   gpu::BrushFit fit;
   fit(votes, lengths, p);
-  std::vector<BrushParameter> gpu = fit.parameters();
+  std::vector<RunBrush> gpu = fit.parameters();
   Tally t;
   EXPECT_EQ(gpu.size(), votes.size());
   for (size_t r = 0; r < votes.size() && r < gpu.size(); ++r) {
-    BrushParameter ref = fit_brush_parameter(votes[r], lengths[r], p);
-    EXPECT_EQ(gpu[r].size(), ref.size()) << "run " << r;
-    if (gpu[r].size() != ref.size()) continue;
-    t.runs += ref.empty() ? 0 : 1, t.knots += ref.size();
-    for (size_t k = 0; k < ref.size(); ++k) {
-      EXPECT_EQ(gpu[r][k].x, ref[k].x) << "run " << r << " knot " << k;
-      EXPECT_NEAR(gpu[r][k].y, ref[k].y, kKnotTolerance) << "run " << r << " knot " << k;
-      t.worst = std::max(t.worst, std::abs(gpu[r][k].y - ref[k].y));
+    RunBrush ref = fit_brush_parameter(votes[r], lengths[r], p);
+    EXPECT_EQ(gpu[r].path, ref.path) << "run " << r;
+    EXPECT_EQ(gpu[r].knots.size(), ref.knots.size()) << "run " << r;
+    if (gpu[r].knots.size() != ref.knots.size()) continue;
+    t.runs += ref.knots.empty() ? 0 : 1, t.knots += ref.knots.size();
+    for (size_t k = 0; k < ref.knots.size(); ++k) {
+      EXPECT_EQ(gpu[r].knots[k].x, ref.knots[k].x) << "run " << r << " knot " << k;
+      EXPECT_NEAR(gpu[r].knots[k].y, ref.knots[k].y, kKnotTolerance) << "run " << r << " knot " << k;
+      t.worst = std::max(t.worst, std::abs(gpu[r].knots[k].y - ref.knots[k].y));
     }
   }
   return t;
@@ -121,7 +122,7 @@ void orbit_votes(const Scene& scene, std::vector<std::vector<BrushVote>>& runs, 
   for (int frame = 0; frame < 3; ++frame) {
     Scene at = scene_at_frame(scene, frame);
     SceneLines found = scene_lines(at, "reference");
-    std::vector<BrushParameter> fitted;
+    std::vector<RunBrush> fitted(found.visibility.runs.size());
     if (frame > 0) {
       std::vector<std::vector<BrushVote>> per_run(found.visibility.runs.size());
       for (const BrushVote& v : brush_votes(previous, at.camera, found.lines, found.visibility, p))
@@ -132,7 +133,7 @@ void orbit_votes(const Scene& scene, std::vector<std::vector<BrushVote>>& runs, 
       }
       fitted = coherent_parameters(previous, at.camera, found.lines, found.visibility, p);
     }
-    previous = brush_samples(found.lines, found.visibility, fitted, p);
+    previous = brush_samples(found.lines, found.visibility, fitted, p, at.seed);
   }
 }
 
@@ -160,16 +161,18 @@ void fit_of_gpu_votes(const char* name, const std::vector<std::string>& sets) {
   testing::follow_coherent_orbit(
       name, 3,
       [&](const testing::CoherentFrame& f) {
-        std::vector<BrushParameter> gpu = f.fit.parameters();
-        const std::vector<BrushParameter>& ref = f.reference;
+        std::vector<RunBrush> gpu = f.fit.parameters();
+        const std::vector<RunBrush>& ref = f.reference;
         ASSERT_EQ(gpu.size(), ref.size()) << name;
         for (size_t r = 0; r < ref.size(); ++r) {
-          ASSERT_EQ(gpu[r].size(), ref[r].size()) << name << " run " << r;
-          t.runs += ref[r].empty() ? 0 : 1, t.knots += ref[r].size();
-          for (size_t k = 0; k < ref[r].size(); ++k) {
-            EXPECT_EQ(gpu[r][k].x, ref[r][k].x) << name << " run " << r << " knot " << k;
-            EXPECT_NEAR(gpu[r][k].y, ref[r][k].y, kKnotTolerance) << name << " run " << r << " knot " << k;
-            t.worst = std::max(t.worst, std::abs(gpu[r][k].y - ref[r][k].y));
+          EXPECT_EQ(gpu[r].path, ref[r].path) << name << " run " << r;
+          const BrushParameter &g = gpu[r].knots, &k = ref[r].knots;
+          ASSERT_EQ(g.size(), k.size()) << name << " run " << r;
+          t.runs += k.empty() ? 0 : 1, t.knots += k.size();
+          for (size_t i = 0; i < k.size(); ++i) {
+            EXPECT_EQ(g[i].x, k[i].x) << name << " run " << r << " knot " << i;
+            EXPECT_NEAR(g[i].y, k[i].y, kKnotTolerance) << name << " run " << r << " knot " << i;
+            t.worst = std::max(t.worst, std::abs(g[i].y - k[i].y));
           }
         }
       },

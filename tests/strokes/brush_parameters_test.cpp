@@ -66,7 +66,7 @@ std::vector<std::vector<Sampled>> reference_samples(const Scene& path) {
     reference::ReferenceFrame f = reference::run_stages(at, ran, carry.before(k));
     const std::vector<BrushSample>& carried = f.get(kBrushSamples);
     std::vector<BrushSample> arc =
-        brush_samples(f.get(kWindowLines), f.get(kVisibleRuns), {}, at.params.get<CoherenceParams>());
+        brush_samples(f.get(kWindowLines), f.get(kVisibleRuns), {}, at.params.get<CoherenceParams>(), at.seed);
     out.emplace_back();
     for (size_t i = 0; i < carried.size(); ++i) out.back().push_back({carried[i], arc.at(i).t});
     carry = {k, f.data};

@@ -31,16 +31,17 @@ TEST_F(BrushSamplesParity, SilhouetteRunsSampleAsTheReference) {
     for (int frame = 0; frame < 2; ++frame) {
       Scene at = scene_at_frame(scene, frame);
       SceneLines found = scene_lines(at, "reference");
-      std::vector<BrushParameter> fitted;
+      std::vector<RunBrush> fitted(found.visibility.runs.size());
       if (frame > 0) fitted = coherent_parameters(previous, at.camera, found.lines, found.visibility, p);
-      std::vector<BrushSample> ref = brush_samples(found.lines, found.visibility, fitted, p);
+      std::vector<BrushSample> ref = brush_samples(found.lines, found.visibility, fitted, p, at.seed);
       gpu::UploadedRuns tables(found.lines, found.visibility);
-      gpu_samples(tables.tables(), at.camera, at.width, at.height, fitted, p);
+      gpu_samples(tables.tables(), at.camera, at.width, at.height, fitted, p, at.seed);
       std::vector<BrushSample> gpu = gpu_samples.samples();
       ASSERT_EQ(gpu.size(), ref.size()) << name << " frame " << frame;
       for (const BrushSample& b : ref) size = std::max(size, glm::length(b.world));
       for (size_t i = 0; i < ref.size(); ++i) {
         EXPECT_EQ(gpu[i].stroke, ref[i].stroke) << name << " sample " << i;
+        EXPECT_EQ(gpu[i].path, ref[i].path) << name << " sample " << i;
         EXPECT_EQ(gpu[i].t, ref[i].t) << name << " sample " << i;
         double d = glm::distance(gpu[i].world, ref[i].world);
         EXPECT_LE(d, 1e-9 * std::max(size, 1.0)) << name << " sample " << i;

@@ -26,7 +26,7 @@ TEST_F(BrushVotesParity, OrbitSamplesVoteAsTheReference) {
     Scene scene = testing::orbit_scene(name, 3);
     CoherenceParams p = ParamSet{}.get<CoherenceParams>();
     std::vector<BrushSample> previous;
-    std::vector<BrushParameter> fitted;
+    std::vector<RunBrush> fitted;
     size_t votes = 0;
     double worst = 0;
     gpu::BrushVotes gpu_votes;
@@ -43,13 +43,14 @@ TEST_F(BrushVotesParity, OrbitSamplesVoteAsTheReference) {
           EXPECT_EQ(gpu[i].run, ref[i].run) << name << " vote " << i;
           EXPECT_EQ(gpu[i].t, ref[i].t) << name << " vote " << i;
           EXPECT_EQ(gpu[i].stroke, ref[i].stroke) << name << " vote " << i;
+          EXPECT_EQ(gpu[i].path, ref[i].path) << name << " vote " << i;
           EXPECT_NEAR(gpu[i].s, ref[i].s, 1e-6) << name << " vote " << i;
           worst = std::max(worst, std::abs(gpu[i].s - ref[i].s));
         }
         votes += ref.size();
         fitted = coherent_parameters(previous, at.camera, found.lines, found.visibility, p);
       }
-      previous = brush_samples(found.lines, found.visibility, fitted, p);
+      previous = brush_samples(found.lines, found.visibility, fitted, p, at.seed);
     }
     EXPECT_GT(votes, 20u) << name;
     std::printf("brush votes, %s orbit: %zu votes, s within %.3g px\n", name, votes, worst);
@@ -80,16 +81,18 @@ TEST_F(BrushVotesParity, SamplesLeftOnTheGpuVoteAsThoseReadBack) {
         EXPECT_EQ(gpu[i].run, cpu[i].run) << name << " vote " << i;
         EXPECT_EQ(gpu[i].s, cpu[i].s) << name << " vote " << i;
         EXPECT_EQ(gpu[i].t, cpu[i].t) << name << " vote " << i;
+        EXPECT_EQ(gpu[i].path, cpu[i].path) << name << " vote " << i;
       }
       votes += cpu.size();
       fit(from_gpu, tables.tables(), p);
-      left(tables.tables(), at.camera, at.width, at.height, &fit, p);
-      given(tables.tables(), at.camera, at.width, at.height, fit.parameters(), p);
+      left(tables.tables(), at.camera, at.width, at.height, &fit, p, at.seed);
+      given(tables.tables(), at.camera, at.width, at.height, fit.parameters(), p, at.seed);
       std::vector<BrushSample> a = left.samples(), b = given.samples();
       ASSERT_EQ(a.size(), b.size()) << name << " frame " << frame;
       for (size_t i = 0; i < a.size(); ++i) {
         EXPECT_EQ(a[i].t, b[i].t) << name << " sample " << i;
         EXPECT_EQ(a[i].world, b[i].world) << name << " sample " << i;
+        EXPECT_EQ(a[i].path, b[i].path) << name << " sample " << i;
       }
       samples += a.size();
     }
@@ -104,7 +107,7 @@ TEST_F(BrushVotesParity, AFrameWithoutRunsHasNoVotes) {
   Scene scene = testing::orbit_scene(testing::kOrbitScenes[0], 2);
   CoherenceParams p = ParamSet{}.get<CoherenceParams>();
   SceneLines found = scene_lines(scene, "reference");
-  std::vector<BrushSample> previous = brush_samples(found.lines, found.visibility, {}, p);
+  std::vector<BrushSample> previous = brush_samples(found.lines, found.visibility, {}, p, scene.seed);
   ASSERT_FALSE(previous.empty());
   gpu::BrushVotes votes;
   votes(previous, scene.camera, scene.width, scene.height, gpu::RunTables{}, p);

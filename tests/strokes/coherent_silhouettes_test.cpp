@@ -11,6 +11,7 @@
 #include <string>
 
 #include "common/strokes/coherent_silhouettes.hpp"
+#include "common/strokes/offset_synthesis.hpp"
 #include "experiments/temporal_coherence/measures.hpp"
 #include "experiments/temporal_coherence/stroke_frames.hpp"
 
@@ -19,11 +20,12 @@ namespace {
 
 const CoherenceParams kDefaults = ParamSet{}.get<CoherenceParams>();
 
-// Votes of `stroke` every sample_px from s0 to s1 (as the last frame's samples land), carrying t(s).
+// Votes of `stroke` every sample_px from s0 to s1 (as the last frame's samples land), carrying
+// t(s) and the stroke's brush path, 100 + stroke.
 template <class F>
 std::vector<BrushVote> votes(double s0, double s1, F t, uint32_t stroke = 0) {
   std::vector<BrushVote> out;
-  for (double s = s0; s <= s1; s += kDefaults.sample_px) out.push_back({0, s, t(s), stroke});
+  for (double s = s0; s <= s1; s += kDefaults.sample_px) out.push_back({0, s, t(s), stroke, 100 + stroke});
   return out;
 }
 
@@ -37,22 +39,23 @@ double worst(const BrushParameter& knots, double length, F want) {
 
 TEST(CoherentSilhouettes, FitCarriesAShiftedParameterOverTheWholeRun) {
   auto shifted = [](double s) { return s + 37.0; };
-  BrushParameter knots = fit_brush_parameter(votes(100, 200, shifted), 300, kDefaults);
-  ASSERT_GE(knots.size(), 2u);
-  EXPECT_LT(worst(knots, 300, shifted), 1e-6);  // beyond the votes too: uniformity runs on at rate 1
+  RunBrush brush = fit_brush_parameter(votes(100, 200, shifted), 300, kDefaults);
+  ASSERT_GE(brush.knots.size(), 2u);
+  EXPECT_LT(worst(brush.knots, 300, shifted), 1e-6);  // beyond the votes too: uniformity runs on at rate 1
+  EXPECT_EQ(brush.path, 100u);                        // the brush path its votes drew (5.)
 }
 
 TEST(CoherentSilhouettes, FitFollowsAPathTracedTheOtherWay) {
   auto reversed = [](double s) { return 500.0 - s; };
-  EXPECT_LT(worst(fit_brush_parameter(votes(0, 240, reversed), 240, kDefaults), 240, reversed), 1e-6);
+  EXPECT_LT(worst(fit_brush_parameter(votes(0, 240, reversed), 240, kDefaults).knots, 240, reversed), 1e-6);
 }
 
 TEST(CoherentSilhouettes, UniformityPullsAStretchedParameterTowardsRateOne) {
   auto stretched = [](double s) { return 1.5 * s; };
   CoherenceParams free = kDefaults;
   free.scale_weight = 0;
-  EXPECT_LT(worst(fit_brush_parameter(votes(0, 288, stretched), 288, free), 288, stretched), 1e-6);
-  BrushParameter balanced = fit_brush_parameter(votes(0, 288, stretched), 288, kDefaults);
+  EXPECT_LT(worst(fit_brush_parameter(votes(0, 288, stretched), 288, free).knots, 288, stretched), 1e-6);
+  BrushParameter balanced = fit_brush_parameter(votes(0, 288, stretched), 288, kDefaults).knots;
   double rate = (brush_t(balanced, 288) - brush_t(balanced, 0)) / 288;
   EXPECT_GT(rate, 1.0);
   EXPECT_LT(rate, 1.5);
@@ -81,27 +84,32 @@ TEST(CoherentSilhouettes, EachGroupParameterizesItsSectionOfTheRun) {
   auto high = [](double s) { return s + 300; };
   // Two strokes voted for the run: it follows each on its side of their votes' midpoint.
   auto merged = [&](double s) { return s < 100 ? low(s) : high(s); };
-  BrushParameter both = fit_brush_parameter(two_strokes(low, 96, high, 104, 300), 300, kDefaults);
-  EXPECT_LT(worst_off_seam(both, 300, 100, merged), 1e-6);
+  RunBrush both = fit_brush_parameter(two_strokes(low, 96, high, 104, 300), 300, kDefaults);
+  EXPECT_LT(worst_off_seam(both.knots, 300, 100, merged), 1e-6);
+  EXPECT_EQ(both.path, 102u);  // the run draws the brush path of its largest section (5.)
+  RunBrush other = fit_brush_parameter(two_strokes(low, 204, high, 212, 300), 300, kDefaults);
+  EXPECT_EQ(other.path, 101u);
   // One stroke whose t jumps (its seam) mid-way: two brush paths.
   auto jumps = [](double s) { return s < 148 ? s : s + 250; };
-  EXPECT_LT(worst_off_seam(fit_brush_parameter(votes(0, 200, jumps), 300, kDefaults), 300, 148, jumps), 1e-6);
+  EXPECT_LT(worst_off_seam(fit_brush_parameter(votes(0, 200, jumps), 300, kDefaults).knots, 300, 148, jumps), 1e-6);
   // A small group inside a larger one's span claims nothing.
   auto same = [](double s) { return s; };
   auto shifted = [](double s) { return s + 90; };
   std::vector<BrushVote> inside = two_strokes(same, 296, shifted, 120, 136);
-  EXPECT_LT(worst(fit_brush_parameter(inside, 300, kDefaults), 300, same), 1e-6);
+  EXPECT_LT(worst(fit_brush_parameter(inside, 300, kDefaults).knots, 300, same), 1e-6);
 }
 
 // A claim needs 2 votes: a single one leaves the arc length. Asked to take one, it fixes the
 // phase of t over the whole run at rate +1.
 TEST(CoherentSilhouettes, OneVoteLeavesTheArcLengthOrFixesThePhase) {
   auto shifted = [](double s) { return s + 5; };
-  EXPECT_TRUE(fit_brush_parameter(votes(40, 40, shifted), 100, kDefaults).empty());
+  RunBrush none = fit_brush_parameter(votes(40, 40, shifted), 100, kDefaults);
+  EXPECT_TRUE(none.knots.empty());
+  EXPECT_EQ(none.path, kNewBrushPath);
   EXPECT_EQ(brush_t({}, 42.0), 42.0);
   CoherenceParams one = kDefaults;
   one.claim_votes = 1;
-  EXPECT_LT(worst(fit_brush_parameter(votes(40, 40, shifted), 100, one), 100, shifted), 1e-6);
+  EXPECT_LT(worst(fit_brush_parameter(votes(40, 40, shifted), 100, one).knots, 100, shifted), 1e-6);
 }
 
 TEST(CoherentSilhouettes, TheTextureRunsAtTheBrushParameter) {
@@ -113,6 +121,28 @@ TEST(CoherentSilhouettes, TheTextureRunsAtTheBrushParameter) {
   Ribbon r = ribbon(b, style);
   ASSERT_FALSE(r.triangles.empty());
   EXPECT_NEAR(r.triangles[0].uv.x, 50.0 / style.texture_period_px, 1e-6);
+}
+
+// The offsets a brush path's walk gives (5.) stay with its t: two runs over which the same
+// t runs, shifted by 100 px of s, are both displaced by the walk at t, at full size.
+TEST(CoherentSilhouettes, SynthesizedOffsetsFollowTheBrushParameter) {
+  OffsetExample drawn{
+      80, {{0, 0, 1, false}, {0.25, 3, 1, false}, {0.5, -2, 1, false}, {0.75, 4, 1, false}, {1, 0, 1, false}}};
+  StrokeStyle style = default_stroke_style();
+  style.offsets = OffsetSynthesizer(drawn).synthesize_period(kBrushOffsetPeriodPx, CounterStream(9));
+  StrokeRun a{{{0, 0}, {200, 0}}, false, false, false, {{0, 300}, {200, 500}}};
+  StrokeRun b{{{0, 0}, {300, 0}}, false, false, false, {{0, 200}, {300, 500}}};
+  double worst = 0, largest = 0;
+  size_t samples = 0;
+  for (const StrokeRun& run : {a, b})
+    for (const StrokeSample& q : base_stroke_samples(run, style).samples) {
+      double walk = rubber_stamp(*style.offsets, q.t, 1).displacement_px;  // unscaled: any length
+      worst = std::max(worst, std::abs(q.position.y - q.base.y - walk)), largest = std::max(largest, std::abs(walk));
+      ++samples;
+    }
+  EXPECT_GT(samples, 80u);
+  EXPECT_LT(worst, 1e-9);
+  EXPECT_GT(largest, 1.0);  // at full size: scaled by 200 / 1024 it would stay under 0.8 px
 }
 
 // The torus's silhouette slide along an orbit, median and p95 (px a frame pair).

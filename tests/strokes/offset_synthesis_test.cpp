@@ -310,6 +310,37 @@ TEST(OffsetSynthesis, OffsetListForRubberStamp) {
   EXPECT_EQ(synthesize_offset_example(sine(50), 1000, 3, "stamp").offsets.size(), 251u);
 }
 
+// A brush path's offsets (common/strokes/coherent_silhouettes.hpp 5.): the walk as a periodic
+// example, drawn at full size, which on [0, L] is the run's own synthesis for L up to its
+// period less a step (then its last offset runs into its first): a new run draws what the
+// 2002 synthesis draws along its arc length.
+TEST(OffsetSynthesis, PeriodOfABrushPathStartsAsTheRunsOwn) {
+  OffsetSynthesizer synth(random_walk());
+  const double period = 1024;
+  OffsetExample periodic = synth.synthesize_period(period, CounterStream(77));
+  EXPECT_TRUE(periodic.repeats);
+  EXPECT_FALSE(periodic.scales);
+  EXPECT_EQ(periodic.offsets.size(), 256u);
+  StrokeStyle style = default_stroke_style();
+  style.offsets = periodic;
+  EXPECT_NO_THROW(validate_stroke_style(style, "brush path"));
+  for (double length : {1020.0, 300.0, 37.5}) {
+    OffsetExample own = synth.synthesize_example(length, CounterStream(77));
+    double worst = 0;
+    for (double s = 0; s <= length; s += 0.25)
+      worst = std::max(worst, std::abs(rubber_stamp(periodic, s, length).displacement_px -
+                                       rubber_stamp(own, s, length).displacement_px));
+    EXPECT_LT(worst, 1e-9) << length << " px";
+  }
+  // Periodic in t (negative t too), unscaled on a short run.
+  for (double s : {3.0, 500.5, 1021.0})
+    EXPECT_NEAR(rubber_stamp(periodic, s - 2 * period, 10).displacement_px,
+                rubber_stamp(periodic, s, 2000).displacement_px, 1e-9);
+  EXPECT_THROW(synth.synthesize_period(2, CounterStream(1)), std::invalid_argument);
+  EXPECT_THROW(synth.synthesize_period(std::numeric_limits<double>::infinity(), CounterStream(1)),
+               std::invalid_argument);
+}
+
 TEST(OffsetSynthesis, DegenerateExamplesTerminateFinite) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();

@@ -181,9 +181,9 @@ TEST_F(StrokeSamplesParity, CoherentParametersFittedOnTheGpuDrawAsTheReference) 
     Tally t;
     size_t brushed = 0;
     testing::follow_coherent_orbit(name, 3, [&](const testing::CoherentFrame& f) {
-      std::vector<StyledRun> runs = styled_runs(f.found.lines, f.found.visibility, f.at.strokes, f.at.seed);
-      for (size_t r = 0; r < runs.size(); ++r)
-        runs[r].run.brush = f.reference.at(r), brushed += f.reference[r].size() >= 2;
+      std::vector<StyledRun> runs =
+          styled_runs(f.found.lines, f.found.visibility, f.at.strokes, f.at.seed, f.reference);
+      for (const RunBrush& b : f.reference) brushed += b.knots.size() >= 2;
       gpu::RunStyleTables styles(f.at.strokes, f.found.lines.decal_styles);
       gpu::StrokeSamples gpu_samples;
       gpu_samples(f.tables, styles, f.at.seed, &f.fit);

@@ -26,7 +26,7 @@ inline const std::vector<std::string> kCoherenceSets = {
 struct CoherentFrame {
   const Scene& at;
   const SceneLines& found;
-  const std::vector<BrushParameter>& reference;
+  const std::vector<RunBrush>& reference;
   const gpu::RunTables& tables;
   const gpu::BrushFit& fit;
 };
@@ -45,7 +45,7 @@ void follow_coherent_orbit(const char* name, int frames, Check check, const std:
   for (int frame = 0; frame < frames; ++frame) {
     Scene at = scene_at_frame(scene, frame);
     SceneLines found = scene_lines(at, "reference");
-    std::vector<BrushParameter> reference;
+    std::vector<RunBrush> reference(found.visibility.runs.size());
     if (frame > 0) {
       reference = coherent_parameters(previous, at.camera, found.lines, found.visibility, p);
       gpu::UploadedRuns tables(found.lines, found.visibility);
@@ -53,7 +53,7 @@ void follow_coherent_orbit(const char* name, int frames, Check check, const std:
       fit(votes, tables.tables(), p);
       check(CoherentFrame{at, found, reference, tables.tables(), fit});
     }
-    previous = brush_samples(found.lines, found.visibility, reference, p);
+    previous = brush_samples(found.lines, found.visibility, reference, p, at.seed);
   }
 }
 
