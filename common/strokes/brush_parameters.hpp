@@ -25,8 +25,12 @@ namespace plumbago {
 inline constexpr Slot<std::vector<RunBrush>> kBrushParameters{"brush_parameters.parameters"};
 inline constexpr Slot<std::vector<BrushSample>> kBrushSamples{"brush_parameters.samples"};
 
+// Whether silhouettes are coherent (`strokes.coherent`): then the stage runs, and a
+// synthesized style's silhouettes draw their brush paths' offsets, new ones where the stage's
+// are not there (a still frame on the GPU, a stage fed alone in parity).
+inline bool strokes_coherent(const ParamSet& p) { return p.value("strokes.coherent") != 0.0; }
 namespace when {
-inline bool strokes_coherent(const StageConfig& c) { return c.params.value("strokes.coherent") != 0.0; }
+inline bool strokes_coherent(const StageConfig& c) { return plumbago::strokes_coherent(c.params); }
 }  // namespace when
 
 struct BrushParametersStage {

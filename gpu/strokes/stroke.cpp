@@ -35,8 +35,10 @@ class StrokePass : public GpuPass {
     if (!tables) tables = &uploaded.emplace(lines, f.get(kVisibleRuns)).tables();
     if (!styles_ || styles_->decal_count() != lines.decal_styles.size())
       styles_.emplace(f.scene.strokes, lines.decal_styles);  // the scene's: made once
-    const bool coherent = f.ran("brush_parameters");         // a still frame's fit is withheld: new brush paths
-    samples_(*tables, *styles_, f.scene.seed, coherent ? f.get(maybe(kBrushFit)) : nullptr, coherent);
+    // Coherent: the fit's brush paths, else (a still frame's fit is withheld) new ones.
+    const bool coherent = strokes_coherent(f.scene.params);
+    const BrushFit* fit = coherent && f.ran("brush_parameters") ? f.get(maybe(kBrushFit)) : nullptr;
+    samples_(*tables, *styles_, f.scene.seed, fit, coherent);
     Texture& target = f.put(kStrokeColor);
     if (drawn_over(find_output(kStrokeColor.name), f.stages).empty()) copy_page(f.get(kPage), target);
     if (!samples_.draw()) return;

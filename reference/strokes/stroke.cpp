@@ -55,9 +55,11 @@ StrokeRaster draw_strokes(const std::vector<StrokeVertex>& triangles, uint32_t s
 }
 
 PLUMBAGO_REFERENCE_STAGE(stroke, [](ReferenceFrame& f) {
-  const std::vector<RunBrush>* brushes = f.get(maybe(kBrushParameters));
-  std::vector<RunStroke> strokes = run_strokes(f.get(kWindowLines), f.get(kVisibleRuns), f.scene.strokes, f.scene.seed,
-                                               brushes ? *brushes : std::vector<RunBrush>{});
+  const Visibility& visibility = f.get(kVisibleRuns);
+  const std::vector<RunBrush>* carried = f.get(maybe(kBrushParameters));
+  std::vector<RunBrush> brushes;  // none: the 2002 paper's; coherent without the stage's: new brush paths
+  if (strokes_coherent(f.scene.params)) brushes = carried ? *carried : std::vector<RunBrush>(visibility.runs.size());
+  std::vector<RunStroke> strokes = run_strokes(f.get(kWindowLines), visibility, f.scene.strokes, f.scene.seed, brushes);
   StrokeRaster r = draw_strokes(stroke_triangles(strokes), f.scene.seed, f.get(kPage), f.get(kPaperHeight),
                                 f.params<StrokePaperParams>());
   f.put(kStrokeColor, std::move(r.color));

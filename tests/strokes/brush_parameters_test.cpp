@@ -14,6 +14,7 @@
 #include "gpu/core/pipeline.hpp"
 #include "gpu/core/stage.hpp"
 #include "gpu/strokes/brush_parameters.hpp"
+#include "parity/parity.hpp"
 #include "parity/path_frames.hpp"
 #include "reference/core/pipeline.hpp"
 #include "tests/support/coherent_orbit.hpp"
@@ -215,6 +216,32 @@ TEST_F(BrushParametersParity, AStillSceneDoesNoCoherenceWork) {
     EXPECT_EQ(on_renderer.frame().get(maybe(gpu::kGpuBrushSamples)), nullptr) << "frame " << k;
     EXPECT_EQ(on_renderer.frame().get(maybe(gpu::kBrushFit)), nullptr) << "frame " << k;
   }
+}
+
+// Markov-synthesized silhouettes on loops longer than a brush path's period (the torus's,
+// 1024 px): with strokes.coherent on, each backend draws every silhouette's brush path
+// (common/strokes/coherent_silhouettes.hpp 5.; new ones in a frame that follows none),
+// whether the stroke stage is fed alone (the parity harness, which feeds no brush
+// parameters) or runs in a whole frame; the periodic walk differs from the run's own past
+// its period, so a backend that took the run's own would not agree.
+TEST_F(BrushParametersParity, SynthesizedSilhouettesDrawTheirBrushPathsOnBothBackends) {
+  Scene scene = scene_at_frame(coherent(testing::orbit_scene("torus_strokes.json", kFrames), true), 1);
+  scene.animation.reset();
+  scene.strokes.silhouette = load_stroke_style("sketchy_pencil");
+  ASSERT_EQ(scene.strokes.silhouette.synthesis, OffsetSynthesis::Markov);
+  for (const StageParity& r : run_parity(scene, {"stroke"})) {
+    std::printf("%s: max %.3g, %.4f%% over %.3g\n", r.name.c_str(), r.diff.max_abs, 100 * r.diff.over_tolerance,
+                r.diff.tolerance);
+    EXPECT_TRUE(r.pass) << r.name;
+  }
+  Image gpu = gpu::Renderer(scene).render().color;
+  Image reference = reference::render(scene).color;
+  ImageDiff whole = compare_images(reference, gpu, tolerance::kByte);
+  std::printf("whole frame, GPU against reference: max %.3g, %.4f%% of pixels over %.3g\n", whole.max_abs,
+              100 * whole.over_tolerance, tolerance::kByte);
+  EXPECT_LT(whole.over_tolerance, 1e-4);
+  Image off = gpu::Renderer(coherent(scene, false)).render().color;
+  EXPECT_GT(compare_images(off, gpu, tolerance::kByte).over_tolerance, 1e-4) << "past the period the two walks differ";
 }
 
 }  // namespace
