@@ -172,7 +172,7 @@ void StrokeSamples::operator()(const RunTables& tables, const RunStyleTables& st
     glProgramUniform1ui(p->id(), p->uniform("listed_at"), tables.listed.at);
     glProgramUniform1ui(p->id(), p->uniform("coherent_silhouettes"), coherent ? 1u : 0u);
     glProgramUniform1ui(p->id(), p->uniform("with_fit"), brushes ? 1u : 0u);
-    glProgramUniform1d(p->id(), p->uniform("brush_period"), kBrushOffsetPeriodPx);
+    glProgramUniform1f(p->id(), p->uniform("brush_period_px"), float(kBrushOffsetPeriodPx));
   }
   if (tables.sized) sized_ = Inputs(tables, styles);
   Inputs in(sized_);

@@ -68,9 +68,11 @@ uniform uint own_offsets;  // the examples' offsets, at the start of offsets[]
 // frame sized by an earlier one, gpu/core/pipeline.hpp Renderer::render_frame).
 uniform uint point_capacity, offset_capacity;
 // Coherent silhouettes (Kalnins et al. 2003): whether they are on, whether this frame has the
-// fit's brush paths (else each run starts a new one), and their offsets' period (px).
+// fit's brush paths (else each run starts a new one), and their offsets' period (px, a
+// whole number: a float holds it exactly, and not every GL exports double uniforms' setters).
 uniform uint coherent_silhouettes, with_fit;
-uniform double brush_period;
+uniform float brush_period_px;
+double brush_period() { return double(brush_period_px); }
 
 #include "strokes/brush_path.glsl"
 
@@ -177,13 +179,13 @@ bool on_brush_path(Style st, Path p) {
 // OffsetSynthesizer::synthesize_period: the run's brush path's walk, an offset every step
 // while below the period, from the stream keyed by the brush path.
 uint brush_path_offsets(Style st, Path p, uint run, uint at) {
-  uint count = uint(ceil(brush_period / st.step * (1.0lf - 1e-12lf)));
+  uint count = uint(ceil(brush_period() / st.step * (1.0lf - 1e-12lf)));
 #if defined(STEP_WRITE)
   uint fitted = with_fit != 0u ? fit_runs[run].path : kNewBrushPath;
   Walk w = start_walk(st, brush_path_key(fitted, seed, p.key, run));
   for (uint k = 0u; k < count; ++k) {
     if (k > 0u) step_walk(st, w);
-    put_offset(at, k, double(k) * st.step / brush_period, value_of(st, w), pressure_of(st, w));
+    put_offset(at, k, double(k) * st.step / brush_period(), value_of(st, w), pressure_of(st, w));
   }
 #endif
   return count;
@@ -223,7 +225,7 @@ RunIn run_input(Style st, Run r, Path p, uint run, uint points_at, uint point_co
     made.first_offset = own_offsets + offset_counts[run];
     made.offset_count = offset_counts[run + 1u] - offset_counts[run];
     made.example_length = max(r.s1 - r.s0 > 0.0lf ? r.s1 - r.s0 : 0.0lf, 1.0lf);
-    if (on_brush_path(st, p)) made.example_length = brush_period, made.flags |= kRepeats | kUnscaled;
+    if (on_brush_path(st, p)) made.example_length = brush_period(), made.flags |= kRepeats | kUnscaled;
   }
   return made;
 }
