@@ -97,14 +97,14 @@ std::string svg(const Scene& scene, const WindowLines& lines, const Visibility& 
   std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(scene.width) +
                     "\" height=\"" + std::to_string(scene.height) + "\" viewBox=\"0 0 " + std::to_string(scene.width) +
                     " " + std::to_string(scene.height) + "\">\n";
-  RunStyles run_styles(scene.strokes, scene.seed, lines.decal_styles);
-  std::vector<uint32_t> ordinals = run_ordinals(v.runs);
-  for (size_t i = 0; i < v.runs.size(); ++i) {
-    const VisibleRun& run = v.runs[i];
-    const WindowPath& p = lines.paths[run.path];
-    StrokeStyle style = run_styles.of(p, run, ordinals[i]);
-    std::string d =
-        outline(base_stroke({run.window, run.closed, run.occluded_start, run.occluded_end}, style), scene.height);
+  // As the stroke stage draws a view alone: coherent silhouettes start new brush paths.
+  std::vector<RunBrush> brushes;
+  if (strokes_coherent(scene.params)) brushes.resize(v.runs.size());
+  std::vector<StyledRun> runs = styled_runs(lines, v, scene.strokes, scene.seed, brushes);
+  for (size_t i = 0; i < runs.size(); ++i) {
+    const WindowPath& p = lines.paths[v.runs[i].path];
+    const StrokeStyle& style = runs[i].style;
+    std::string d = outline(base_stroke(runs[i].run, style), scene.height);
     if (d.empty()) continue;
     char fill[160];
     std::snprintf(fill, sizeof fill, "fill=\"rgb(%d,%d,%d)\" fill-opacity=\"%.3f\"", int(style.color_r * 255 + 0.5f),
